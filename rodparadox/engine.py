@@ -1,0 +1,316 @@
+"""Runs a scenario: impacts, the rod's rigid response, the order of impacts (PHYSICS.md rules 1-6). Pure.
+
+Everything is computed in S, the rod's rest frame before any impact, as exact
+segments; `History` is the result, and `kinematics` boosts it to any frame.
+
+The rod's motion is a chain of *turns*. An impact at event E on one end
+changes the rod's rapidity from theta to theta'; the struck end (the pivot)
+kinks at E, and the rod's lines of simultaneity turn about E from rapidity
+theta to theta' (rule 3). The far end, a proper distance L from E, moves on the
+hyperbola E + side*L*(cosh phi, sinh phi), phi from theta to theta', then on at
+theta'. The rod's own time orders the impacts (rule 4): while the lines of
+simultaneity still fan out from E, only the far end can be struck, and such
+an impact stops the turn at the fan's line through it (rule 6): the rod's rest
+frame there is phi, the pivot's kink becomes theta -> phi, and a new turn
+begins about the new impact, with the old pivot as its far end.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+from .collision import elastic
+from .errors import ScenarioError
+from .kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
+from .scenario import Particle, Scenario
+
+#: impacts at the two ends closer than this on the rod's own time axis (units of L) are one simultaneous impact (rule 5)
+SIMULTANEITY_TOLERANCE = 1e-10
+#: a scenario with more impacts than this is refused rather than run forever
+MAX_IMPACTS = 1000
+
+WORLDLINE_NAMES = ("A", "B", "rod_left", "rod_right")
+
+
+@dataclass(frozen=True)
+class Impact:
+    """One particle striking one end of the rod, at `event` (coordinates in S).
+
+    Rapidities are in S; the rod's are of its rest frame just before and the
+    new rest frame just after the impact. `simultaneous_with` names the impact
+    at the other end on the same line of the rod's simultaneity (rule 5);
+    `while_turning` says the rod had not finished its previous turn (rule 6).
+    """
+
+    label: str
+    particle: str
+    end: str
+    event: Event
+    particle_rapidity_before: float
+    particle_rapidity_after: float
+    rod_rapidity_before: float
+    rod_rapidity_after: float
+    simultaneous_with: str | None = None
+    while_turning: bool = False
+
+
+@dataclass(frozen=True)
+class History:
+    """The exact world-lines of a scenario in S, its impacts in the rod's own order, and each particle's event at t = 0."""
+
+    scenario: Scenario
+    impacts: tuple[Impact, ...]
+    worldlines: tuple[tuple[str, WorldLine], ...]
+    starts: tuple[tuple[str, Event], ...]
+
+    def worldline(self, name: str) -> WorldLine | None:
+        """The world-line of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
+        return dict(self.worldlines).get(name)
+
+
+def run(scenario: Scenario) -> History:
+    """The history of a scenario: particles placed (gap or timing), then simulated in S."""
+    starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
+    for p in scenario.particles:
+        if p.timed_with is not None:
+            starts[p.name] = _start_from_timing(scenario, p, starts)
+    history = _simulate(scenario, starts)
+    for p in scenario.particles:
+        if not any(i.particle == p.name for i in history.impacts):
+            raise ScenarioError(f"particles.{p.name} never reaches the rod; give it a speed towards the rod.",
+                                f"particles.{p.name}")
+    return history
+
+
+def _start_from_gap(scenario: Scenario, p: Particle) -> Event:
+    side = -1.0 if p.name == "A" else 1.0
+    return Event(side * scenario.L * (0.5 + p.gap), 0.0)
+
+
+def _particle_rapidity(scenario: Scenario, p: Particle) -> float:
+    return math.atanh(scenario.speed(p)) * (1.0 if p.name == "A" else -1.0)
+
+
+def _start_from_timing(scenario: Scenario, p: Particle, starts: dict[str, Event]) -> Event:
+    """Place p so that its first impact comes `delay` after the other particle's first, in the timing frame.
+
+    The rod's history up to p's first impact does not depend on p (rule 4), so
+    the target event is read off p's end of the rod in the scenario without p;
+    the full run then must find p's impact there and the other particle's first
+    impact unchanged, else the timing asked for contradicts itself.
+    """
+    timing = p.timed_with
+    key = f"particles.{p.name}.timed_with"
+    other = scenario.particle(timing.particle)
+    without = Scenario(scenario.name, scenario.v, (other,), scenario.L)
+    reference = next(i for i in _simulate(without, {other.name: starts[other.name]}).impacts if i.particle == other.name)
+    eta = math.atanh(scenario.frame_velocity(timing.frame))
+    end_name = "rod_left" if p.end == "left" else "rod_right"
+    end_line = _simulate(without, {other.name: starts[other.name]}).worldline(end_name).boosted(eta)
+    target_time = reference.event.boosted(eta).t + timing.delay * scenario.L
+    target = end_line.event_at_time(target_time).boosted(-eta)
+    start = Event(target.x - math.tanh(_particle_rapidity(scenario, p)) * target.t, 0.0)
+
+    history = _simulate(scenario, {**starts, p.name: start})
+    first = {name: next((i for i in history.impacts if i.particle == name), None) for name in (p.name, other.name)}
+    scale = scenario.L + abs(target.t) + abs(target.x)
+    lands = first[p.name] is not None and _distance(first[p.name].event, target) <= 1e-9 * scale
+    reference_kept = first[other.name] is not None and _distance(first[other.name].event, reference.event) <= 1e-9 * scale
+    if not (lands and reference_kept):
+        raise ScenarioError(
+            f"{key}: {p.name} cannot strike the rod {timing.delay:g} L after {other.name}'s first impact in that "
+            f"frame, because its impact would come first in the rod's own time and move {other.name}'s; "
+            f"time {other.name} against {p.name} instead, or give {p.name} a gap.", key)
+    return start
+
+
+def _distance(a: Event, b: Event) -> float:
+    return math.hypot(a.x - b.x, a.t - b.t)
+
+
+# --- the simulation -------------------------------------------------------------------------------
+
+@dataclass
+class _ParticleState:
+    name: str
+    mass: float
+    rapidity: float
+    start: Event
+    initial_rapidity: float
+    since: Event | None = None  # last impact
+    kinks: list = None  # [(event, rapidity after)]
+    impacts: int = 0
+
+
+@dataclass(frozen=True)
+class _Phase:
+    """From the rod simultaneity line (left0, right0) at rapidity theta0: a turn about `pivot` to theta1, then free motion."""
+
+    theta0: float
+    left0: Event
+    right0: Event
+    pivot: str | None
+    theta1: float
+    L: float
+    bounded: bool = True  # False for the rod's motion before any impact, which has no start
+
+    @property
+    def turn(self) -> HyperbolicArc | None:
+        """The far end's hyperbola: proper distance L from the pivot, rapidity theta0 -> theta1."""
+        if self.pivot is None:
+            return None
+        centre, side = (self.left0, 1) if self.pivot == "left" else (self.right0, -1)
+        return HyperbolicArc(centre, self.L, side, self.theta0, self.theta1)
+
+
+def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
+    L = scenario.L
+    tolerance = SIMULTANEITY_TOLERANCE * L
+    particles = {
+        p.name: _ParticleState(p.name, p.mass, _particle_rapidity(scenario, p), starts[p.name],
+                                _particle_rapidity(scenario, p), kinks=[])
+        for p in scenario.particles if p.name in starts
+    }
+    ends: dict[str, list[Segment]] = {"left": [], "right": []}
+    impacts: list[Impact] = []
+    phase = _Phase(0.0, Event(-L / 2, 0.0), Event(L / 2, 0.0), None, 0.0, L, bounded=False)
+
+    while True:
+        if len(impacts) > MAX_IMPACTS:
+            raise ScenarioError(f"the rod is struck more than {MAX_IMPACTS} times; this scenario does not settle.")
+        arc = phase.turn
+        hit = _hit_while_turning(arc, L, particles) if arc is not None else None
+        if hit is not None:
+            name, phi, completed = hit
+            far = "right" if arc.side == 1 else "left"
+            stopped = HyperbolicArc(arc.centre, arc.radius, arc.side, arc.phi_start, phi)
+            ends[far].append(stopped)
+            event = stopped.end
+            struck = [(name, far, event)]
+            rod_rapidity, while_turning = phi, not completed
+            new_left, new_right = (arc.centre, event) if far == "right" else (event, arc.centre)
+        else:
+            if arc is not None:
+                far = "right" if arc.side == 1 else "left"
+                ends[far].append(arc)
+                left1, right1 = (arc.centre, arc.end) if far == "right" else (arc.end, arc.centre)
+            else:
+                left1, right1 = phase.left0, phase.right0
+            theta = phase.theta1
+            found = _hits_after_turn(theta, left1, right1, particles, phase.bounded, tolerance)
+            if not found:
+                break
+            rod_rapidity, while_turning = theta, False
+            struck = found
+            first_name, first_end, first_event = found[0]
+            if first_end == "left":
+                new_left, new_right = first_event, first_event.displaced(L, theta)
+            else:
+                new_left, new_right = first_event.displaced(-L, theta), first_event
+            struck = [(n, e, new_left if e == "left" else new_right) for n, e, _ in found]
+            if phase.bounded:
+                for end, a, b in (("left", left1, new_left), ("right", right1, new_right)):
+                    if _distance(a, b) > 1e-12 * L:
+                        ends[end].append(Line(a, b))
+
+        relative = tuple(particles[n].rapidity - rod_rapidity for n, _, _ in struck)
+        rod_change, particle_after = elastic(tuple(particles[n].mass for n, _, _ in struck), relative)
+        new_theta = rod_rapidity + rod_change
+        labels = []
+        for (name, end, event), after in zip(struck, particle_after):
+            state = particles[name]
+            state.impacts += 1
+            labels.append(f"{name}{state.impacts}")
+            impacts.append(Impact(labels[-1], name, end, event, state.rapidity, rod_rapidity + after,
+                                  rod_rapidity, new_theta, while_turning=while_turning))
+            state.rapidity = rod_rapidity + after
+            state.since = event
+            state.kinks.append((event, state.rapidity))
+        if len(struck) == 2:
+            a, b = impacts[-2], impacts[-1]
+            impacts[-2:] = [replace(a, simultaneous_with=b.label), replace(b, simultaneous_with=a.label)]
+            pivot = None if rod_change == 0 else ("left" if rod_change > 0 else "right")
+        else:
+            pivot = struck[0][1] if rod_change != 0 else None
+        phase = _Phase(rod_rapidity, new_left, new_right, pivot, new_theta, L)
+
+    worldlines = [(name, _particle_worldline(state)) for name, state in particles.items()]
+    for end, origin in (("left", Event(-L / 2, 0.0)), ("right", Event(L / 2, 0.0))):
+        worldlines.append((f"rod_{end}", WorldLine(origin, 0.0, tuple(ends[end]), phase.theta1)))
+    order = {n: i for i, n in enumerate(WORLDLINE_NAMES)}
+    worldlines.sort(key=lambda item: order[item[0]])
+    return History(scenario, tuple(impacts), tuple(worldlines),
+                   tuple((name, state.start) for name, state in sorted(particles.items())))
+
+
+def _particle_worldline(state: _ParticleState) -> WorldLine:
+    kinks = state.kinks
+    before = state.initial_rapidity
+    if not kinks:
+        return WorldLine(state.start, before)
+    segments = tuple(Line(a, b) for (a, _), (b, _) in zip(kinks, kinks[1:]))
+    return WorldLine(kinks[0][0], before, segments, kinks[-1][1])
+
+
+def _hit_while_turning(arc: HyperbolicArc, L: float, particles: dict) -> tuple[str, float, bool] | None:
+    """The far end struck during the turn: (particle, rapidity phi of the fan line through it, on the last line?), or None.
+
+    In the particle's rest frame the arc is x = side*L*cosh(phi - psi) about the
+    pivot, the particle stands at its proper distance D from the pivot, so they
+    meet where cosh(phi - psi) = side*D/L; the closing root is phi = psi + side*acosh(.).
+    """
+    name = "B" if arc.side == 1 else "A"
+    state = particles.get(name)
+    if state is None:
+        return None
+    here = state.since or state.start
+    psi = state.rapidity
+    dx, dt = here.x - arc.centre.x, here.t - arc.centre.t
+    distance = math.cosh(psi) * dx - math.sinh(psi) * dt
+    c = arc.side * distance / L
+    if not c > 1.0:
+        return None
+    phi = psi + arc.side * math.acosh(c)
+    s = arc.side
+    if not s * (phi - arc.phi_start) > 1e-13:
+        return None
+    if s * (phi - arc.phi_end) > 1e-12:
+        return None
+    completed = s * (phi - arc.phi_end) >= -1e-12
+    phi = arc.phi_end if completed else phi  # a hit on the turn's last line (Fig. 2's A1, B2) ends a complete turn
+    if state.since is not None and arc.point(phi).t < state.since.t - 1e-12 * L:
+        return None
+    return name, phi, completed
+
+
+def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, bounded: bool,
+                     tolerance: float) -> list[tuple[str, str, Event]]:
+    """The next impact(s) on the rod moving freely at rapidity theta from the simultaneity line (left, right).
+
+    Computed in the rod's rest frame, where the ends stand still: the earliest
+    on the rod's own time axis, both ends if within `tolerance` (rule 5).
+    """
+    start_time = left.proper_time_in(theta)
+    candidates = []
+    for name, end_event, sign in (("A", left, 1.0), ("B", right, -1.0)):
+        state = particles.get(name)
+        if state is None:
+            continue
+        w = math.tanh(state.rapidity - theta)
+        if not sign * w > 0:
+            continue  # moving away from its end, or with it
+        here = (state.since or state.start).boosted(theta)
+        end_x = end_event.boosted(theta).x
+        t = here.t + (end_x - here.x) / w
+        if bounded and t < start_time - tolerance:
+            continue
+        if state.since is not None and t < here.t - tolerance:
+            continue
+        candidates.append((t, name, Event(end_x, t).boosted(-theta)))
+    if not candidates:
+        return []
+    candidates.sort(key=lambda c: c[0])
+    first_time = candidates[0][0]
+    return [(name, "left" if name == "A" else "right", event)
+            for t, name, event in candidates if t - first_time <= tolerance]

@@ -1,0 +1,243 @@
+"""Frames, boosts and exact world-line segments (PHYSICS.md, "Units, frames, coordinates").
+
+Pure: plain floats in, plain floats out; numpy only to return sampled points.
+Every velocity is also carried as a rapidity (velocity = tanh(rapidity)),
+because boosts add rapidities and a hyperbolic arc boosts by shifting its angle.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Union
+
+import numpy as np
+
+#: default drawing tolerance: a sampled polyline stays this close to the true curve, in units of L
+SAMPLING_TOLERANCE = 1e-4
+
+
+def gamma(velocity: float) -> float:
+    """Lorentz factor g = 1/sqrt(1 - v^2)."""
+    return 1.0 / math.sqrt((1.0 - velocity) * (1.0 + velocity))
+
+
+def rapidity(velocity: float) -> float:
+    return math.atanh(velocity)
+
+
+def velocity(rapidity_: float) -> float:
+    return math.tanh(rapidity_)
+
+
+@dataclass(frozen=True)
+class Event:
+    """A point of spacetime, (x, t), in the coordinates of the frame it was read in."""
+
+    x: float
+    t: float
+
+    def boosted(self, frame_rapidity: float) -> "Event":
+        """Coordinates in a frame moving at tanh(frame_rapidity) relative to this one.
+
+        x' = g(x - u t), t' = g(t - u x); with u = -v this is the paper's
+        x' = g(x + v t), t' = g(t + v x) (its printed t' = g(t - v x) is a misprint).
+        """
+        c, s = math.cosh(frame_rapidity), math.sinh(frame_rapidity)
+        return Event(c * self.x - s * self.t, c * self.t - s * self.x)
+
+    def displaced(self, distance: float, rapidity_: float) -> "Event":
+        """The event at proper distance `distance` along the simultaneity line of rapidity `rapidity_`."""
+        return Event(self.x + distance * math.cosh(rapidity_), self.t + distance * math.sinh(rapidity_))
+
+    def proper_time_in(self, frame_rapidity: float) -> float:
+        """This event's time coordinate in the frame of rapidity `frame_rapidity`."""
+        return math.cosh(frame_rapidity) * self.t - math.sinh(frame_rapidity) * self.x
+
+
+@dataclass(frozen=True)
+class Line:
+    """A straight piece of world-line from event `start` to the later event `end`."""
+
+    start: Event
+    end: Event
+
+    @property
+    def rapidity_at_start(self) -> float:
+        return math.atanh((self.end.x - self.start.x) / (self.end.t - self.start.t))
+
+    rapidity_at_end = rapidity_at_start
+
+    def boosted(self, frame_rapidity: float) -> "Line":
+        return Line(self.start.boosted(frame_rapidity), self.end.boosted(frame_rapidity))
+
+    def event_at_time(self, t: float) -> Event:
+        f = (t - self.start.t) / (self.end.t - self.start.t)
+        return Event(self.start.x + f * (self.end.x - self.start.x), t)
+
+    def clipped(self, t_lo: float, t_hi: float) -> "Line | None":
+        a, b = max(t_lo, self.start.t), min(t_hi, self.end.t)
+        if a >= b:
+            return None
+        return Line(self.event_at_time(a), self.event_at_time(b))
+
+    def sample(self, tolerance: float) -> np.ndarray:
+        return np.array([[self.start.x, self.start.t], [self.end.x, self.end.t]])
+
+
+@dataclass(frozen=True)
+class HyperbolicArc:
+    """Part of the hyperbola (x - x_E)^2 - (t - t_E)^2 = d^2 centred on the event E (PHYSICS.md rule 3).
+
+    Its points are E + side * d * (cosh phi, sinh phi); the world-line there has
+    rapidity phi, and the straight line from E through it is the rod's line of
+    simultaneity at that instant. phi runs from `phi_start` to `phi_end`
+    (increasing when side = +1, decreasing when side = -1, so t always increases).
+    """
+
+    centre: Event
+    radius: float
+    side: int
+    phi_start: float
+    phi_end: float
+
+    @property
+    def rapidity_at_start(self) -> float:
+        return self.phi_start
+
+    @property
+    def rapidity_at_end(self) -> float:
+        return self.phi_end
+
+    def point(self, phi: float) -> Event:
+        return self.centre.displaced(self.side * self.radius, phi)
+
+    @property
+    def start(self) -> Event:
+        return self.point(self.phi_start)
+
+    @property
+    def end(self) -> Event:
+        return self.point(self.phi_end)
+
+    def boosted(self, frame_rapidity: float) -> "HyperbolicArc":
+        """A boost moves the centre and shifts every angle by -frame_rapidity; d and side stay."""
+        return HyperbolicArc(
+            self.centre.boosted(frame_rapidity),
+            self.radius,
+            self.side,
+            self.phi_start - frame_rapidity,
+            self.phi_end - frame_rapidity,
+        )
+
+    def phi_at_time(self, t: float) -> float:
+        return math.asinh((t - self.centre.t) / (self.side * self.radius))
+
+    def event_at_time(self, t: float) -> Event:
+        return self.point(self.phi_at_time(t))
+
+    def clipped(self, t_lo: float, t_hi: float) -> "HyperbolicArc | None":
+        a, b = max(t_lo, self.start.t), min(t_hi, self.end.t)
+        if a >= b:
+            return None
+        phi_a = self.phi_start if a == self.start.t else self.phi_at_time(a)
+        phi_b = self.phi_end if b == self.end.t else self.phi_at_time(b)
+        return HyperbolicArc(self.centre, self.radius, self.side, phi_a, phi_b)
+
+    def sample(self, tolerance: float) -> np.ndarray:
+        """Points whose polyline lies within `tolerance` of the arc everywhere.
+
+        On a hyperbola the tangent is parallel to the chord from phi_a to phi_b
+        exactly at the mid-angle, so the chord's largest error is the distance of
+        that mid-angle point from it: bisecting until it is small is exact.
+        """
+        phis = [self.phi_start]
+        stack = [(self.phi_start, self.phi_end)]
+        while stack:
+            a, b = stack.pop()
+            pa, pb, pm = self.point(a), self.point(b), self.point(0.5 * (a + b))
+            dx, dt = pb.x - pa.x, pb.t - pa.t
+            chord = math.hypot(dx, dt)
+            error = abs(dx * (pm.t - pa.t) - dt * (pm.x - pa.x)) / chord if chord > 0 else 0.0
+            if error > tolerance:
+                stack.append((0.5 * (a + b), b))
+                stack.append((a, 0.5 * (a + b)))
+            else:
+                phis.append(b)
+        return np.array([[p.x, p.t] for p in map(self.point, phis)])
+
+
+Segment = Union[Line, HyperbolicArc]
+
+
+@dataclass(frozen=True)
+class WorldLine:
+    """A continuous time-like world-line: straight before `segments`, the exact segments, straight after.
+
+    `rapidity_before` continues the world-line into the past from the first
+    segment's start, `rapidity_after` into the future from the last segment's
+    end. A world-line with no segments is the straight line through `origin`.
+    """
+
+    origin: Event
+    rapidity_before: float
+    segments: tuple[Segment, ...] = ()
+    rapidity_after: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.rapidity_after is None:
+            object.__setattr__(self, "rapidity_after", self.rapidity_before)
+
+    @property
+    def first(self) -> Event:
+        return self.segments[0].start if self.segments else self.origin
+
+    @property
+    def last(self) -> Event:
+        return self.segments[-1].end if self.segments else self.origin
+
+    def boosted(self, frame_rapidity: float) -> "WorldLine":
+        return WorldLine(
+            self.origin.boosted(frame_rapidity),
+            self.rapidity_before - frame_rapidity,
+            tuple(s.boosted(frame_rapidity) for s in self.segments),
+            self.rapidity_after - frame_rapidity,
+        )
+
+    def pieces(self, t_lo: float, t_hi: float) -> tuple[Segment, ...]:
+        """Exact segments covering t_lo <= t <= t_hi, the straight ends included as Lines."""
+        first, last = self.first, self.last
+        before = Line(_along(first, self.rapidity_before, min(t_lo, first.t) - first.t), first)
+        after = Line(last, _along(last, self.rapidity_after, max(t_hi, last.t) - last.t))
+        out = []
+        for piece in (before, *self.segments, after):
+            clipped = piece.clipped(t_lo, t_hi)
+            if clipped is not None:
+                out.append(clipped)
+        return tuple(out)
+
+    def event_at_time(self, t: float) -> Event:
+        """The world-line's event at time t (time-like, so there is exactly one)."""
+        first, last = self.first, self.last
+        if t <= first.t:
+            return _along(first, self.rapidity_before, t - first.t)
+        if t >= last.t:
+            return _along(last, self.rapidity_after, t - last.t)
+        for segment in self.segments:
+            if segment.start.t <= t <= segment.end.t:
+                return segment.event_at_time(t)
+        raise AssertionError("segments do not cover their own time span")
+
+    def sample(self, t_lo: float, t_hi: float, tolerance: float) -> np.ndarray:
+        """(n, 2) array of [x, t] points from t_lo to t_hi, every kink included."""
+        parts = [p.sample(tolerance) for p in self.pieces(t_lo, t_hi)]
+        if not parts:
+            e = self.event_at_time(t_lo)
+            return np.array([[e.x, e.t]])
+        points = [parts[0]] + [p[1:] for p in parts[1:]]
+        return np.concatenate(points)
+
+
+def _along(event: Event, rapidity_: float, dt: float) -> Event:
+    """The event a time dt after `event` on the straight world-line of the given rapidity."""
+    return Event(event.x + math.tanh(rapidity_) * dt, event.t + dt)
