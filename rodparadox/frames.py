@@ -1,0 +1,108 @@
+"""A history seen from one frame: events, velocities and world-lines in that frame's coordinates. Pure.
+
+Shared by `export` (numbers) and `render` (pictures), so both show the same
+events, over the same time window, sampled the same way.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .engine import WORLDLINE_NAMES, History, Impact
+from .kinematics import SAMPLING_TOLERANCE, Event, Segment
+
+
+@dataclass(frozen=True)
+class Frame:
+    """An inertial frame by its velocity relative to S: `rest` is S, `moving` is S' (velocity -v)."""
+
+    name: str
+    velocity: float
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.velocity) and -1.0 < self.velocity < 1.0):
+            raise ValueError(f"a frame's velocity must be between -1 and 1, got {self.velocity}")
+
+    @property
+    def rapidity(self) -> float:
+        return math.atanh(self.velocity)
+
+    def rod_velocity(self) -> float:
+        """The rod's velocity in this frame before any impact."""
+        return -self.velocity
+
+
+def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, ...]:
+    """S and S', and optionally one more frame of the given velocity relative to S."""
+    frames = [Frame("rest", 0.0), Frame("moving", -v)]
+    if extra_velocity is not None:
+        frames.append(Frame(f"u={extra_velocity:g}", extra_velocity))
+    return tuple(frames)
+
+
+@dataclass(frozen=True)
+class EventView:
+    """An impact in one frame: where, when, and the velocities just before and after."""
+
+    impact: Impact
+    x: float
+    t: float
+    particle_velocity_before: float
+    particle_velocity_after: float
+    rod_velocity_before: float
+    rod_velocity_after: float
+
+
+@dataclass(frozen=True)
+class FrameView:
+    frame: Frame
+    events: tuple[EventView, ...]
+    t_range: tuple[float, float]
+    segments: tuple[tuple[str, tuple[Segment, ...]], ...]  # exact pieces within t_range, per world-line
+    starts: tuple[tuple[str, Event], ...]  # each particle at t = 0 in S, in this frame's coordinates
+
+    def worldline_points(self, tolerance: float) -> dict[str, np.ndarray]:
+        """Each world-line as an (n, 2) array of [x, t], every kink included, arcs within `tolerance`."""
+        out = {}
+        for name, pieces in self.segments:
+            parts = [p.sample(tolerance) for p in pieces]
+            out[name] = np.concatenate([parts[0]] + [p[1:] for p in parts[1:]]) if parts else np.empty((0, 2))
+        return out
+
+
+def time_window(history: History, frame: Frame) -> tuple[float, float]:
+    """The frame's times to show: from the scenario's start (or before the first impact) to as long after the last.
+
+    Before the first impact it shows back to the earliest of the particles' and
+    the rod ends' events at t = 0 in S, clamped to between L/2 and 2L of lead;
+    after the last impact it shows the same lead again.
+    """
+    eta, L = frame.rapidity, history.scenario.L
+    times = [i.event.boosted(eta).t for i in history.impacts]
+    first, last = min(times), max(times)
+    at_start = [e.boosted(eta).t for _, e in history.starts]
+    at_start += [Event(sign * L / 2, 0.0).boosted(eta).t for sign in (-1, 1)]
+    lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)
+    return first - lead, last + lead
+
+
+def view(history: History, frame: Frame) -> FrameView:
+    eta = frame.rapidity
+    t_lo, t_hi = time_window(history, frame)
+    events = []
+    for i in history.impacts:
+        e = i.event.boosted(eta)
+        events.append(EventView(i, e.x, e.t, math.tanh(i.particle_rapidity_before - eta),
+                                math.tanh(i.particle_rapidity_after - eta), math.tanh(i.rod_rapidity_before - eta),
+                                math.tanh(i.rod_rapidity_after - eta)))
+    segments = tuple((name, history.worldline(name).boosted(eta).pieces(t_lo, t_hi))
+                     for name in WORLDLINE_NAMES if history.worldline(name) is not None)
+    starts = tuple((name, e.boosted(eta)) for name, e in history.starts)
+    return FrameView(frame, tuple(events), (t_lo, t_hi), segments, starts)
+
+
+def sampling_tolerance(history: History) -> float:
+    return SAMPLING_TOLERANCE * history.scenario.L
