@@ -30,14 +30,15 @@ def _scenario(name: str, v: float | None, L: float | None):
         raise BadInput(str(e)) from None
 
 
-def _history(scenario):
+def _history(scenario, source: str):
+    """Run a scenario; `source` is the name or path the user gave, to start any error sentence."""
     from rodparadox.engine import run
     from rodparadox.errors import ScenarioError
 
     try:
         return run(scenario)
     except ScenarioError as e:
-        raise BadInput(f"{scenario.name}: {e}") from None
+        raise BadInput(f"{source}: {e}") from None
 
 
 def _frame_velocity(u: float | None) -> float | None:
@@ -94,7 +95,7 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     s = _scenario(scenario, v, L)
     frames = paper_frames(s.v, _frame_velocity(frame_velocity))
-    click.echo(to_table(_history(s), frames), nl=False)
+    click.echo(to_table(_history(s, scenario), frames), nl=False)
 
 
 @main.command()
@@ -118,7 +119,7 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     s = _scenario(scenario, v, L)
     frames = paper_frames(s.v, _frame_velocity(frame_velocity))
-    text = (to_json if fmt == "json" else to_csv)(_history(s), frames)
+    text = (to_json if fmt == "json" else to_csv)(_history(s, scenario), frames)
     if output == "-":
         sys.stdout.write(text)
         return

@@ -119,8 +119,8 @@ def _start_from_timing(scenario: Scenario, p: Particle, starts: dict[str, Event]
     reference_kept = first[other.name] is not None and _distance(first[other.name].event, reference.event) <= 1e-9 * scale
     if not (lands and reference_kept):
         raise ScenarioError(
-            f"{key}: {p.name} cannot strike the rod {timing.delay:g} L after {other.name}'s first impact in that "
-            f"frame, because its impact would come first in the rod's own time and move {other.name}'s; "
+            f"{key}: {p.name} cannot strike the rod with delay {timing.delay:g} after {other.name}'s first impact, "
+            f"because its impact would come first in the rod's own time and move {other.name}'s; "
             f"time {other.name} against {p.name} instead, or give {p.name} a gap.", key)
     return start
 
@@ -175,6 +175,7 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
     ends: dict[str, list[Segment]] = {"left": [], "right": []}
     impacts: list[Impact] = []
     phase = _Phase(0.0, Event(-L / 2, 0.0), Event(L / 2, 0.0), None, 0.0, L, bounded=False)
+    first_line = None
 
     while True:
         if len(impacts) > MAX_IMPACTS:
@@ -233,10 +234,14 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
             pivot = None if rod_change == 0 else ("left" if rod_change > 0 else "right")
         else:
             pivot = struck[0][1] if rod_change != 0 else None
+        first_line = first_line or (new_left, new_right)
         phase = _Phase(rod_rapidity, new_left, new_right, pivot, new_theta, L)
 
     worldlines = [(name, _particle_worldline(state)) for name, state in particles.items()]
-    for end, origin in (("left", Event(-L / 2, 0.0)), ("right", Event(L / 2, 0.0))):
+    # each end's world-line starts at the rod's simultaneity line through the first impact, so that
+    # impact is a point of it even where the end does not kink (Fig. 1)
+    origins = first_line or (Event(-L / 2, 0.0), Event(L / 2, 0.0))
+    for end, origin in zip(("left", "right"), origins):
         worldlines.append((f"rod_{end}", WorldLine(origin, 0.0, tuple(ends[end]), phase.theta1)))
     order = {n: i for i, n in enumerate(WORLDLINE_NAMES)}
     worldlines.sort(key=lambda item: order[item[0]])

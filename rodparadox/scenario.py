@@ -201,7 +201,7 @@ class _Document:
                 if key not in schema:
                     allowed = ", ".join(schema)
                     close = difflib.get_close_matches(key, list(schema), n=1)
-                    hint = f"; did you mean {close[0]}?" if close else ""
+                    hint = f"; did you mean {close[0]}?" if close else "."
                     raise ScenarioError(f"unknown key {key!r} in {path or 'the top level'} "
                                         f"(allowed: {allowed}){hint}", where, line)
                 self.lines[where] = line
@@ -210,7 +210,7 @@ class _Document:
         if isinstance(schema, dict):
             shown = "a list" if isinstance(node, yaml.SequenceNode) else repr(loader.construct_object(node, deep=True))
             raise ScenarioError(f"{path or 'the scenario'} must be a mapping of keys ({', '.join(schema)}), "
-                                f"got {shown}.", path)
+                                f"got {shown}.", path, node.start_mark.line + 1 if path else None)
         value = loader.construct_object(node, deep=True)
         return value
 

@@ -1,0 +1,177 @@
+"""Scenario files: the schema, defaults, overrides, and every bad input refused with one sentence naming key and line."""
+
+import math
+import textwrap
+
+import pytest
+
+from rodparadox.errors import RodParadoxError, ScenarioError
+from rodparadox.scenario import Particle, Scenario, Timing, builtin_names, load, parse
+
+
+def refused(text: str) -> str:
+    with pytest.raises(ScenarioError) as info:
+        parse(textwrap.dedent(text), "s.yaml", "s")
+    return str(info.value)
+
+
+GOOD = """\
+v: 0.6
+particles:
+  A: {gap: 0.5}
+"""
+
+
+def test_minimal_scenario_takes_the_documented_defaults():
+    s = parse(GOOD, "s.yaml", "s")
+    assert (s.name, s.v, s.L, s.description) == ("s", 0.6, 1.0, "")
+    (a,) = s.particles
+    assert (a.name, a.mass, a.gap, a.timed_with, a.end) == ("A", 1.0, 0.5, None, "left")
+    assert s.speed(a) == 0.6  # a particle without a speed moves at v
+
+
+def test_every_key_is_read():
+    s = parse(textwrap.dedent("""\
+        name: mine
+        description: a test
+        v: 0.3
+        L: 2.5
+        particles:
+          B: {mass: 2, speed: 0.4, gap: 1.5}
+          A: {mass: 0.5, timed_with: {particle: B, frame: 0.2, delay: 0.1}}
+        """), "s.yaml", "s")
+    assert (s.name, s.description, s.v, s.L) == ("mine", "a test", 0.3, 2.5)
+    assert s.particle("B") == Particle("B", mass=2.0, speed=0.4, gap=1.5)
+    assert s.particle("A").timed_with == Timing("B", 0.2, 0.1)
+    assert s.frame_velocity("rest") == 0.0 and s.frame_velocity("moving") == -0.3 and s.frame_velocity(0.2) == 0.2
+
+
+def test_builtin_scenarios_include_the_paper_and_three_more():
+    names = builtin_names()
+    assert {"fig1", "fig2"} <= set(names) and len(names) >= 5
+    for name in names:
+        assert load(name).name == name
+
+
+def test_fig2_places_a_by_its_timing_not_by_a_typed_position():
+    a = load("fig2").particle("A")
+    assert a.gap is None and a.timed_with == Timing("B", "moving", 0.0)
+
+
+def test_a_path_and_a_builtin_name_give_the_same_scenario(tmp_path):
+    from rodparadox.scenario import configs_folder
+
+    copy = tmp_path / "copy.yaml"
+    copy.write_text((configs_folder() / "fig2.yaml").read_text())
+    assert load(str(copy)) == load("fig2")
+
+
+def test_overrides_replace_v_and_L_and_keep_the_rest():
+    s = load("fig1").with_overrides(v=0.8, L=3.0)
+    assert (s.v, s.L) == (0.8, 3.0) and s.particles == load("fig1").particles
+
+
+@pytest.mark.parametrize("option, value, message", [
+    ("v", 1.0, "option --v: v must be a number with 0 < v < 1 (units of c), got 1."),
+    ("v", 0.0, "option --v: v must be a number with 0 < v < 1 (units of c), got 0."),
+    ("v", -0.5, "option --v: v must be a number with 0 < v < 1 (units of c), got -0.5."),
+    ("v", math.nan, "option --v: v must be a number with 0 < v < 1 (units of c), got nan."),
+    ("L", 0.0, "option --L: L must be a positive length (the rod's proper length), got 0."),
+    ("L", math.inf, "option --L: L must be a positive length (the rod's proper length), got inf."),
+])
+def test_bad_overrides_name_the_option(option, value, message):
+    with pytest.raises(ScenarioError) as info:
+        load("fig1").with_overrides(**{option: value})
+    assert str(info.value) == message
+
+
+@pytest.mark.parametrize("text, message", [
+    ("v: 0.6\nparticles:\n  A: {gap: 0.5, spead: 0.3}\n",
+     "s.yaml, line 3: unknown key 'spead' in particles.A (allowed: mass, speed, gap, timed_with); did you mean speed?"),
+    ("v: 0.6\nparticle:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 2: unknown key 'particle' in the top level (allowed: name, description, v, L, particles); "
+     "did you mean particles?"),
+    ("v: 0.6\nparticles:\n  C: {gap: 0.5}\n",
+     "s.yaml, line 3: unknown key 'C' in particles (allowed: A, B)."),
+    ("v: 0.6\nv: 0.7\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 2: v is given twice (first on line 1); keep one."),
+    ("v: 0.6\nparticles:\n  A: {gap: 0.5}\n  A: {gap: 0.6}\n",
+     "s.yaml, line 4: particles.A is given twice (first on line 3); keep one."),
+    ('v: "fast"\nparticles:\n  A: {gap: 0.5}\n',
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got 'fast'."),
+    ("v: yes\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got yes/true (a boolean)."),
+    ("v: 1\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got 1."),
+    ("v: -1.5\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got -1.5."),
+    ("v: 0\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got 0."),
+    ("v: .nan\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 1: v must be a number with 0 < v < 1 (units of c), got nan."),
+    ("v: 0.5\nL: -1\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 2: L must be a positive length (the rod's proper length), got -1."),
+    ("v: 0.5\nL: .inf\nparticles:\n  A: {gap: 0.5}\n",
+     "s.yaml, line 2: L must be a positive length (the rod's proper length), got inf."),
+    ("v: 0.5\nparticles:\n  A: {gap: 0.5, speed: 0}\n",
+     "s.yaml, line 3: particles.A.speed must be a number with 0 < speed < 1 (towards the rod, units of c), got 0; "
+     "a particle that is at rest or moves away never reaches the rod."),
+    ("v: 0.5\nparticles:\n  B:\n    gap: 0.5\n    speed: -0.2\n",
+     "s.yaml, line 5: particles.B.speed must be a number with 0 < speed < 1 (towards the rod, units of c), got -0.2; "
+     "a particle that is at rest or moves away never reaches the rod."),
+    ("v: 0.5\nparticles:\n  A: {gap: -0.2}\n",
+     "s.yaml, line 3: particles.A.gap must be a number >= 0 (distance from its end of the rod at t = 0, units of L), "
+     "got -0.2; a negative gap puts the particle inside the rod."),
+    ("v: 0.5\nparticles:\n  A: {gap: 0.5, mass: 0}\n",
+     "s.yaml, line 3: particles.A.mass must be a positive number (units of the rod's mass M), got 0."),
+    ("v: 0.5\nparticles:\n  A: {speed: 0.5}\n",
+     "s.yaml, line 3: particles.A needs exactly one of gap (its distance from the rod at t = 0) or timed_with "
+     "(its impact timed against the other particle's)."),
+    ("v: 0.5\nparticles:\n  A: {timed_with: {particle: B}}\n",
+     "s.yaml, line 3: particles.A.timed_with.particle is B, but the scenario has no particle B."),
+    ("v: 0.5\nparticles:\n  A: {timed_with: {particle: A}}\n  B: {gap: 1}\n",
+     "s.yaml, line 3: particles.A.timed_with.particle must name the other particle, not A itself."),
+    ("v: 0.5\nparticles:\n  A: {timed_with: {particle: B}}\n  B: {timed_with: {particle: A}}\n",
+     "s.yaml, line 3: particles.A.timed_with.particle: A and B cannot both be timed against each other; give B a gap."),
+    ("v: 0.5\nparticles:\n  A: {timed_with: {particle: B, frame: lab}}\n  B: {gap: 1}\n",
+     "s.yaml, line 3: particles.A.timed_with.frame must be rest, moving or a velocity u with -1 < u < 1, got 'lab'."),
+    ("v: 0.5\nparticles:\n  A: {timed_with: {frame: rest}}\n  B: {gap: 1}\n",
+     "s.yaml, line 3: particles.A.timed_with needs the key particle (the other particle, A or B)."),
+    ("v: 0.5\nparticles: {}\n", "s.yaml, line 2: particles must name at least one of A and B."),
+    ("v: 0.5\n", "s.yaml: the scenario needs the key particles."),
+    ("v: 0.5\nparticles: [A, B]\n",
+     "s.yaml, line 2: particles must be a mapping of keys (A, B), got a list."),
+    ("- 1\n- 2\n", "s.yaml: the scenario must be a mapping of keys (name, description, v, L, particles), got a list."),
+    ("", "s.yaml: the file is empty; a scenario needs at least v and particles."),
+    ("v: 0.5\nparticles:\n  A: {gap: 0.5\n  B: x\n", "s.yaml, line 4: YAML syntax error: expected ',' or '}', but got ':'."),
+    ("v: 0.5\nname: 12\nparticles:\n  A: {gap: 0.5}\n", "s.yaml, line 2: name must be text, got 12."),
+])
+def test_bad_scenarios_are_refused_with_one_sentence(text, message):
+    assert refused(text) == message
+
+
+def test_scenario_errors_are_value_errors_of_the_project():
+    assert issubclass(ScenarioError, ValueError) and issubclass(ScenarioError, RodParadoxError)
+
+
+def test_missing_file_and_unknown_name(tmp_path):
+    with pytest.raises(ScenarioError, match=r"^scenario file '.*nope.yaml' does not exist; check the path"):
+        load(str(tmp_path / "nope.yaml"))
+    with pytest.raises(ScenarioError, match=r"^there is no built-in scenario 'fig9' and no file of that name; "
+                                            r"built-in: fig1, fig2, "):
+        load("fig9")
+    with pytest.raises(ScenarioError, match=r"is a folder; give a .yaml file\.$"):
+        load(str(tmp_path) + "/")
+
+
+def test_not_utf8(tmp_path):
+    bad = tmp_path / "latin.yaml"
+    bad.write_bytes(b"v: 0.5 # \xe9\n")
+    with pytest.raises(ScenarioError, match=r"is not UTF-8 text\.$"):
+        load(str(bad))
+
+
+def test_frozen():
+    s = Scenario("x", 0.5, (Particle("A", gap=0.1),))
+    with pytest.raises(AttributeError):
+        s.v = 0.7
