@@ -1,0 +1,131 @@
+"""The figure styles of `sears-paradox plot`: plain data, no matplotlib import (the CLI's --help reads the names).
+
+Each style says how every element of a diagram is drawn (its colour, line
+width and dash pattern) and what rcParams `render` sets while it draws and
+saves, inside a context that restores them. Colours are the Okabe-Ito
+palette, safe for the common forms of colour blindness; the `print` style is
+black and grey only, and every element keeps a line style of its own.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+#: formats `plot` writes, in the order it writes them
+FORMATS = ("svg", "pdf", "png")
+
+# Okabe & Ito (2008), "Color Universal Design"
+_BLUE, _VERMILLION, _GREEN, _ORANGE, _PURPLE, _SKY, _GREY = (
+    "#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9", "#6E6E6E")
+
+# dash patterns, in units of the line width (matplotlib's (offset, (on, off, ...)))
+SOLID = "solid"
+PARTICLE_DASH = (0, (5.0, 2.5))
+REST_DOTS = (0, (1.0, 1.8))
+MOVING_DASHDOT = (0, (6.0, 2.0, 1.2, 2.0))
+AXES_DASHDOTDOT = (0, (7.0, 2.0, 1.2, 2.0, 1.2, 2.0))
+CONE_SHORT_DASH = (0, (2.0, 2.0))
+
+
+@dataclass(frozen=True)
+class Ink:
+    """How one kind of line is drawn."""
+
+    colour: str
+    width: float  # points
+    dashes: Any = SOLID
+
+
+@dataclass(frozen=True)
+class Style:
+    """Everything that differs between the default, print and slides figures."""
+
+    name: str
+    about: str
+    font_size: float  # points: tick labels and legend; labels and titles are scaled from it
+    panel_height: float  # inches, the largest a panel is drawn
+    max_width: float  # inches, the widest a figure is drawn
+    png_dpi: int
+    rod: Ink
+    sheet: str  # fill of the rod's world-sheet
+    particles: dict[str, Ink]
+    impact_colour: str
+    impact_size: float  # marker diameter, points
+    rest_simultaneity: Ink  # lines t = const of S
+    moving_simultaneity: Ink  # lines t' = const of S'
+    other_axes: Ink
+    light_cone: Ink
+    hyperbola: Ink
+    grid: Ink
+    rc: dict[str, Any] = field(default_factory=dict)
+
+
+_COMMON_RC = {
+    "svg.hashsalt": "sears-paradox",  # fixed ids: the same figure gives the same bytes
+    "svg.fonttype": "path",  # glyphs as shared paths: the SVG looks the same without our fonts
+    "pdf.fonttype": 42,  # TrueType, as journals ask (no Type 3 fonts)
+    "path.simplify": False,  # keep every sampled point: curves stay within 1e-4 L
+    "axes.unicode_minus": True,
+    "figure.dpi": 72,  # one display unit per point while laying out
+    "axes.titlepad": 5.0,
+    "xtick.direction": "out",
+    "ytick.direction": "out",
+    "lines.dash_capstyle": "butt",
+    "lines.solid_capstyle": "round",
+    "legend.frameon": False,
+}
+
+_SANS = {"font.family": "sans-serif", "font.sans-serif": ["DejaVu Sans"], "mathtext.fontset": "dejavusans"}
+_SERIF = {"font.family": "serif", "font.serif": ["STIXGeneral", "DejaVu Serif"], "mathtext.fontset": "stix"}
+
+STYLES: dict[str, Style] = {
+    "default": Style(
+        name="default",
+        about="colour (Okabe-Ito, colour-blind safe), sans-serif, 7 in wide: for the screen and colour print",
+        font_size=9.0, panel_height=3.4, max_width=7.0, png_dpi=200,
+        rod=Ink(_BLUE, 1.7), sheet="#d4e6f3",
+        particles={"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, PARTICLE_DASH)},
+        impact_colour="#000000", impact_size=5.0,
+        rest_simultaneity=Ink(_ORANGE, 1.3, REST_DOTS),
+        moving_simultaneity=Ink(_PURPLE, 1.1, MOVING_DASHDOT),
+        other_axes=Ink(_GREY, 0.9, AXES_DASHDOTDOT),
+        light_cone=Ink(_SKY, 0.9, CONE_SHORT_DASH),
+        hyperbola=Ink("#9a9a9a", 0.6),
+        grid=Ink("#e3e3e3", 0.5),
+        rc={**_COMMON_RC, **_SANS},
+    ),
+    "print": Style(
+        name="print",
+        about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
+        font_size=8.5, panel_height=3.2, max_width=7.0, png_dpi=600,
+        rod=Ink("#000000", 1.5), sheet="#e4e4e4",
+        particles={"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PARTICLE_DASH)},
+        impact_colour="#000000", impact_size=4.5,
+        rest_simultaneity=Ink("#000000", 0.9, REST_DOTS),
+        moving_simultaneity=Ink("#000000", 0.7, MOVING_DASHDOT),
+        other_axes=Ink("#555555", 0.7, AXES_DASHDOTDOT),
+        light_cone=Ink("#555555", 0.6, CONE_SHORT_DASH),
+        hyperbola=Ink("#8c8c8c", 0.45),
+        grid=Ink("#e6e6e6", 0.4),
+        rc={**_COMMON_RC, **_SERIF},
+    ),
+    "slides": Style(
+        name="slides",
+        about="colour, large type and thick lines on a 13.3 in (16:9) canvas: for projecting",
+        font_size=17.0, panel_height=4.7, max_width=13.33, png_dpi=150,
+        rod=Ink(_BLUE, 3.2), sheet="#d4e6f3",
+        particles={"A": Ink(_VERMILLION, 2.6, PARTICLE_DASH), "B": Ink(_GREEN, 2.6, PARTICLE_DASH)},
+        impact_colour="#000000", impact_size=10.0,
+        rest_simultaneity=Ink(_ORANGE, 2.4, REST_DOTS),
+        moving_simultaneity=Ink(_PURPLE, 2.0, MOVING_DASHDOT),
+        other_axes=Ink(_GREY, 1.6, AXES_DASHDOTDOT),
+        light_cone=Ink(_SKY, 1.6, CONE_SHORT_DASH),
+        hyperbola=Ink("#9a9a9a", 1.1),
+        grid=Ink("#e3e3e3", 0.9),
+        rc={**_COMMON_RC, **_SANS, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
+            "xtick.major.size": 6.0, "ytick.major.size": 6.0},
+    ),
+}
+
+STYLE_NAMES = tuple(STYLES)
