@@ -1,12 +1,212 @@
-"""`sears-paradox plot`: placeholder until the drawing command lands (issue 3)."""
+"""`sears-paradox plot`: draw the paper's Minkowski diagrams into SVG, PDF or PNG files.
+
+Thin: parse the options, call `rodparadox.render` and `rodparadox.output`,
+print the paths written. matplotlib is imported inside the command, so
+`--help` never loads it.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
 
 import click
 
+from rodparadox.styles import FORMATS, STYLE_NAMES
+
+#: where figures go when -o is not given; the only output folder `plot` creates itself
+DEFAULT_FOLDER = "outputs"
+
+_EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"))
+
+
+def _number(value: float) -> str:
+    return f"{value:.15g}"
+
+
+def parse_frames(spec: str, v: float):
+    """--frame: rest, moving, both or a velocity U relative to S, or a comma-separated list of these."""
+    from rodparadox.frames import Frame
+
+    from .main import BadInput
+
+    frames: list = []
+    for item in (part.strip() for part in spec.split(",")):
+        if item in ("rest", "both"):
+            frames.append(Frame("rest", 0.0))
+        if item in ("moving", "both"):
+            frames.append(Frame("moving", -v))
+        if item in ("rest", "moving", "both"):
+            continue
+        try:
+            u = float(item)
+        except ValueError:
+            u = math.nan
+        if not (math.isfinite(u) and -1.0 < u < 1.0):
+            raise BadInput(f"option --frame must be rest, moving, both or a velocity U with -1 < U < 1 "
+                           f"(or a comma-separated list of these), got {item!r}.")
+        frames.append(Frame(f"u={u:g}", u))
+    unique = []
+    for f in frames:
+        if f not in unique:
+            unique.append(f)
+    return tuple(unique)
+
+
+def _frame_suffix(spec: str) -> str:
+    """The --frame part of a file name: empty for `both`, else e.g. `_rest` or `_rest_u0.3`."""
+    items = [part.strip() for part in spec.split(",")]
+    if items == ["both"]:
+        return ""
+    return "".join("_" + (item if item in ("rest", "moving", "both") else "u" + _number(float(item))) for item in items)
+
+
+def output_name(stem: str, scenario, v: float | None, L: float | None, frame: str, style: str, extras: dict) -> str:
+    """The file name (without extension) of a figure: the scenario's name, then every non-default choice.
+
+    `fig2` for the defaults; `fig2_v0.8`, `fig2_v0.8_L2`, `fig2_rest`, `fig2_print`, `fig2_grid`, ...
+    otherwise, so a figure with other options never overwrites the default one.
+    """
+    name = stem
+    if v is not None and v != scenario.v:
+        name += f"_v{_number(v)}"
+    if L is not None and L != scenario.L:
+        name += f"_L{_number(L)}"
+    name += _frame_suffix(frame)
+    if style != "default":
+        name += f"_{style}"
+    name += "".join(f"_{short}" for key, short in _EXTRAS if extras[key])
+    return name
+
+
+def _formats(spec: str) -> list[str]:
+    from .main import BadInput
+
+    formats = [part.strip().lower() for part in spec.split(",") if part.strip()]
+    bad = [f for f in formats if f not in FORMATS]
+    if bad or not formats:
+        raise BadInput(f"option --format must be one or more of {', '.join(FORMATS)}, comma-separated, "
+                       f"got {spec!r}.")
+    return list(dict.fromkeys(formats))
+
 
 @click.command()
-def plot() -> None:
-    """Draw Minkowski diagrams (not yet available).
+@click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
+@click.option("--v", "v", type=float, metavar="V",
+              help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
+@click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
+@click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
+              help="Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
+                   "a comma-separated list gives several (e.g. both,0.3).")
+@click.option("--format", "fmt", default="svg", metavar="svg,pdf,png",
+              help="One or more formats, comma-separated. [default: svg, or the extension of -o FILE]")
+@click.option("-o", "--output", "output", metavar="PATH_OR_DIR", default=None,
+              help=f"A folder to write into (it must exist), or a file name for one scenario in one format. "
+                   f"[default: {DEFAULT_FOLDER}/, created if missing]")
+@click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
+              help="default: colour, colour-blind safe; print: black and white, serif; slides: large type.")
+@click.option("--other-axes", is_flag=True, help="Draw the other frame's x and t axes, tilted, on each panel.")
+@click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
+@click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
+@click.option("--grid", is_flag=True, help="Draw a grid at the ticks.")
+@click.option("--verbose", is_flag=True, help="Also name the files left untouched because they had not changed.")
+def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, fmt: str | None,
+         output: str | None, style: str, other_axes: bool, light_cones: bool, hyperbolae: bool, grid: bool,
+         verbose: bool) -> None:
+    """Draw Minkowski diagrams of each SCENARIO: both frames side by side (the paper's Figs. 1 and 2).
+
+    Writes OUTPUT/NAME.FORMAT, NAME being the scenario's name followed by every
+    non-default option (fig2.svg, fig2_v0.8.svg, fig2_rest_print.pdf, ...), and
+    prints the paths it wrote; a file whose bytes would not change is left alone.
 
     Example: sears-paradox plot fig2 --v 0.6
     """
-    raise click.ClickException("plot is not implemented yet.")
+    from rodparadox.errors import OutputError
+
+    from .main import BadInput, _history, _scenario
+
+    extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid}
+    folder, file = _destination(output, len(scenarios))
+    if file is not None and fmt is None:
+        fmt = file.suffix.lstrip(".").lower()
+        if fmt not in FORMATS:
+            raise BadInput(f"option -o: cannot tell the format of {str(file)!r} from its extension; "
+                           f"name it .{', .'.join(FORMATS)} or give --format.")
+    formats = _formats(fmt or "svg")
+    if file is not None:
+        if len(formats) > 1:
+            raise BadInput(f"option -o names one file, {str(file)!r}, but --format asks for {len(formats)} formats; "
+                           f"give a folder instead.")
+        if file.suffix.lstrip(".").lower() != formats[0]:
+            raise BadInput(f"option -o names {str(file)!r} but --format is {formats[0]}; make them agree.")
+
+    jobs = []  # (history, frames, {format: path})
+    for name in scenarios:
+        base = _scenario(name, None, None)
+        s = _scenario(name, v, L)
+        frames = parse_frames(frame, s.v)
+        stem = output_name(Path(name).stem if name.endswith((".yaml", ".yml")) else Path(name).name,
+                           base, v, L, frame, style, extras)
+        paths = {f: file if file is not None else folder / f"{stem}.{f}" for f in formats}
+        jobs.append((s, frames, paths))
+    seen: dict[Path, str] = {}
+    for (s, _, paths), name in zip(jobs, scenarios):
+        for path in paths.values():
+            if path in seen and seen[path] != name:
+                raise BadInput(f"{seen[path]} and {name} would both be written to {path}; rename one of the files.")
+            seen[path] = name
+    histories = [_history(s, name) for (s, _, _), name in zip(jobs, scenarios)]
+
+    if folder is not None and output is None:
+        try:
+            os.makedirs(folder, exist_ok=True)
+        except OSError as e:
+            raise BadInput(f"cannot create the output folder {folder}: {(e.strerror or str(e)).lower()}.") from None
+
+    from rodparadox import render  # matplotlib: only now, after every input has been checked
+    from rodparadox.output import write_atomic
+
+    options = render.Options(**extras)
+    written = set()
+    for history, (_, frames, paths) in zip(histories, jobs):
+        figure = render.draw(history, frames, style, options)
+        for f, path in paths.items():
+            if path in written:
+                continue
+            try:
+                changed = write_atomic(path, render.figure_bytes(figure, f, style))
+            except OutputError as e:
+                raise BadInput(str(e)) from None
+            written.add(path)
+            if changed:
+                click.echo(str(path))
+            elif verbose:
+                click.echo(f"{path} (unchanged)")
+
+
+def _destination(output: str | None, count: int) -> tuple[Path | None, Path | None]:
+    """(folder, None) or (None, file) for -o; a file only for one scenario. Says what is wrong in one sentence."""
+    from .main import BadInput
+
+    if output is None:
+        return Path(DEFAULT_FOLDER), None
+    path = Path(output)
+    if path.is_dir():
+        if not os.access(path, os.W_OK | os.X_OK):
+            raise BadInput(f"cannot write into the output folder {output}: permission denied.")
+        return path, None
+    looks_like_file = path.suffix.lstrip(".").lower() in FORMATS and not output.endswith(("/", os.sep))
+    if not looks_like_file:
+        if path.exists():
+            raise BadInput(f"option -o: {output} is a file, not a folder; give a folder or a name ending in "
+                           f".{', .'.join(FORMATS)}.")
+        raise BadInput(f"the output folder {output} does not exist; create it first.")
+    if count > 1:
+        raise BadInput(f"option -o names one file, {output!r}, but {count} scenarios were given; give a folder instead.")
+    parent = path.parent
+    if not parent.is_dir():
+        raise BadInput(f"cannot write {output}: the folder {parent} does not exist; create it first.")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise BadInput(f"cannot write {output}: permission denied in the folder {parent}.")
+    return None, path

@@ -22,8 +22,7 @@ import io
 import math
 import re
 from contextlib import contextmanager
-from dataclasses import dataclass
-from typing import Iterator, Sequence
+from typing import Iterator, NamedTuple, Sequence
 
 import matplotlib
 import numpy as np
@@ -31,7 +30,7 @@ from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.textpath import TextToPath
+from matplotlib.textpath import text_to_path
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from .engine import History
@@ -45,6 +44,8 @@ PANEL_LETTERS = "abcdefgh"
 ASPECT_RANGE = (0.62, 1.6)
 #: empty margin around the world-lines, as a fraction of the larger side of the data box
 MARGIN = 0.09
+#: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
+CONE_REACH = 0.16
 
 # metadata that would make two runs differ (dates, versions) is left out
 _METADATA = {
@@ -54,8 +55,7 @@ _METADATA = {
 }
 
 
-@dataclass(frozen=True)
-class Options:
+class Options(NamedTuple):
     """The teacher's extras, all off by default because they crowd a printed figure."""
 
     other_axes: bool = False  # the other frame's x and t axes, tilted
@@ -93,12 +93,18 @@ def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
 # --- what the panels say --------------------------------------------------------------------------
 
 def frame_symbol(frame: Frame) -> str:
-    """The frame's name in the paper's notation (mathtext): S, S' or S_u for any other frame."""
-    return {"rest": "S", "moving": "S'"}.get(frame.name, "S_u")
+    """The frame's name as the paper writes it: S, S′, or u = ... for any other frame."""
+    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {_number(frame.velocity)}")
 
 
 def coordinate_names(frame: Frame) -> tuple[str, str]:
-    return {"rest": ("x", "t"), "moving": ("x'", "t'")}.get(frame.name, ("x_u", "t_u"))
+    """The frame's (x, t) as plain italic text, or mathtext for a frame of velocity u (x_u, t_u)."""
+    return {"rest": ("x", "t"), "moving": ("x\N{PRIME}", "t\N{PRIME}")}.get(frame.name, ("$x_u$", "$t_u$"))
+
+
+def axis_label(name: str) -> str:
+    """x -> x/L (set in italics), $x_u$ -> $x_u/L$ (mathtext)."""
+    return f"{name[:-1]}/L$" if name.endswith("$") else f"{name}/L"
 
 
 def impact_text(label: str) -> str:
@@ -124,19 +130,17 @@ def _signed(value: float) -> str:
 def _velocity_phrase(before: float, after: float) -> str:
     """The rod's velocity in a panel's frame, before the first impact and after the last."""
     def at(u: float) -> str:
-        return "at rest" if abs(u) < 5e-13 else f"at ${_signed(u)}$"
+        return "at rest" if abs(u) < 5e-13 else f"at {_signed(u)}"
     if abs(before - after) < 5e-13:
         return f"rod {at(before)} before and after"
     return f"rod first {at(before)}, finally {at(after)}"
 
 
 def _panel_title(letter: str, fv: FrameView) -> str:
+    """Plain text, no mathtext (each mathtext string costs milliseconds to lay out): the frame and the rod's velocity."""
     frame = fv.frame
     after = fv.events[-1].rod_velocity_after if fv.events else frame.rod_velocity()
-    name = f"frame ${frame_symbol(frame)}$"
-    if frame.name not in ("rest", "moving"):
-        name = f"frame ${frame_symbol(frame)}$ ($u = {_number(frame.velocity)}$)"
-    return f"({letter}) {name}: {_velocity_phrase(frame.rod_velocity(), after)}"
+    return f"({letter}) frame {frame_symbol(frame)}: {_velocity_phrase(frame.rod_velocity(), after)}"
 
 
 def _mathtext_safe(text: str) -> str:
@@ -161,60 +165,82 @@ def _clip_line(x: float, t: float, dx: float, dt: float, box: tuple[float, float
     return np.array([[x + lo * dx, t + lo * dt], [x + hi * dx, t + hi * dt]])
 
 
-def _boxes_hit_segments(box: np.ndarray, segments: np.ndarray) -> int:
-    """How many of the segments (n, 4: x0 y0 x1 y1) cross the box (xmin, ymin, xmax, ymax) (Liang-Barsky)."""
+def _boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """For each box (k, 4: xmin ymin xmax ymax), how many segments (n, 4: x0 y0 x1 y1) cross it (Liang-Barsky)."""
     if len(segments) == 0:
-        return 0
-    x0, y0, x1, y1 = segments.T
+        return np.zeros(len(boxes), dtype=int)
+    x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
     dx, dy = x1 - x0, y1 - y0
-    lo = np.zeros(len(segments))
-    hi = np.ones(len(segments))
-    ok = np.ones(len(segments), dtype=bool)
+    lo = np.zeros((len(boxes), len(segments)))
+    hi = np.ones_like(lo)
+    ok = np.ones(lo.shape, dtype=bool)
+    b = [boxes[:, i][:, None] for i in range(4)]
     with np.errstate(divide="ignore", invalid="ignore"):
-        for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
+        for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
             zero = p == 0
             ok &= ~(zero & (q < 0))
             r = q / np.where(zero, 1.0, p)
             lo = np.where(p < 0, np.maximum(lo, r), lo)
             hi = np.where(p > 0, np.minimum(hi, r), hi)
-    return int(np.count_nonzero(ok & (lo <= hi)))
+    return np.count_nonzero(ok & (lo <= hi), axis=1)
 
 
-def _boxes_overlap(a, b) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+_TEXT_SIZES: dict[tuple, tuple[float, float, float]] = {}
 
 
-_TEXT_TO_PATH = TextToPath()
+def text_size(text: str, size: float, italic: bool = False) -> tuple[float, float, float]:
+    """(width, height, descent) in points of a text as the SVG and PDF backends lay it out (current rcParams).
+
+    Parsing mathtext costs milliseconds, and the renderer parses each string
+    again, so this is used only for the labels placed among the lines, where
+    an exact box matters; the layout uses `approximate_size`.
+    """
+    rc = matplotlib.rcParams
+    key = (text, size, italic, rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
+           tuple(rc["font.serif"]))
+    if key not in _TEXT_SIZES:
+        prop = FontProperties(size=size, style="italic" if italic else "normal")
+        w, h, d = text_to_path.get_text_width_height_descent(text, prop, ismath="$" in text)
+        _TEXT_SIZES[key] = (float(w), float(h), float(d))
+    return _TEXT_SIZES[key]
 
 
-def text_size(text: str, size: float) -> tuple[float, float, float]:
-    """(width, height, descent) in points of a text as the SVG and PDF backends lay it out."""
-    w, h, d = _TEXT_TO_PATH.get_text_width_height_descent(text, FontProperties(size=size), ismath="$" in text)
-    return float(w), float(h), float(d)
+_PLAIN = {"$": "", "{": "", "}": "", "'": "\N{PRIME}", "\\pm": "\N{PLUS-MINUS SIGN}", "^2": "\N{SUPERSCRIPT TWO}",
+          "\\$": "$"}
 
 
-@dataclass
-class _Label:
+def approximate_size(text: str, size: float) -> tuple[float, float, float]:
+    """A slight over-estimate of `text_size` without parsing mathtext: the text as plain characters, plus 4 %."""
+    if "$" not in text:
+        return text_size(text, size)
+    plain = re.sub(r"\\\$|\\pm|\^2|[${}']", lambda m: _PLAIN[m.group(0)], text)
+    w, h, d = text_size(plain, size)
+    return w * 1.04 + 2.0, max(h, size * 1.1), max(d, size * 0.25)
+
+
+class _Label(NamedTuple):
+    """A text to place beside `anchor` (data units), clear of every line, marker and other label."""
+
     gid: str
     text: str
-    anchor: tuple[float, float]  # data units
+    anchor: tuple[float, float]
     preferred: float  # direction, degrees, counter-clockwise from +x
     colour: str
     size: float
     avoid_radius: float = 0.0  # points kept clear around the anchor (a marker)
+    italic: bool = False  # plain text in italics: a single letter needs no mathtext
+    guides_block: bool = False  # an axis's name: it must not sit on any line, its own included
 
 
 # --- the diagram ---------------------------------------------------------------------------------
 
-@dataclass
 class _Panel:
-    letter: str
-    view: FrameView
-    worldlines: dict[str, np.ndarray]  # units of L
-    box: list[float]  # x0, x1, t0, t1: the axes limits, units of L
-    title: str
-    width: float = 0.0  # points
-    height: float = 0.0
+    """One frame's panel while the figure is laid out."""
+
+    def __init__(self, letter: str, view_: FrameView, worldlines: dict[str, np.ndarray], box: list[float], title: str):
+        self.letter, self.view, self.worldlines, self.title = letter, view_, worldlines, title
+        self.box = box  # x0, x1, t0, t1: the axes limits, units of L
+        self.width = self.height = 0.0  # points
 
 
 class _Diagram:
@@ -258,78 +284,66 @@ class _Diagram:
             box[3] += pad
 
     # layout ------------------------------------------------------------------------------------------
-    def _ticks(self, box: list[float]) -> tuple[np.ndarray, np.ndarray, float]:
-        """Ticks at one step for both axes (equal scales)."""
-        sides = sorted((box[1] - box[0], box[3] - box[2]))
-        raw = max(sides[1] / 8.0, sides[0] / 4.0)  # at least about four ticks on the shorter side, at most eight
-        magnitude = 10.0 ** math.floor(math.log10(raw))
-        step = next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw)
-        def ticks(lo, hi):
-            k = np.arange(math.ceil(lo / step - 1e-9), math.floor(hi / step + 1e-9) + 1)
-            return k * step
-        return ticks(box[0], box[1]), ticks(box[2], box[3]), step
-
     def _build(self) -> Figure:
+        """Lay the figure out in points: suptitle, then per panel its title, axes and tick labels, then the legend."""
         st, fs = self.style, self.fs
-        names = [coordinate_names(p.view.frame) for p in self.panels]
-        tick_len, tick_pad, label_pad = 3.5, 3.5, 4.0
-        if st.name == "slides":
-            tick_len = 6.0
-        ticks = [self._ticks(p.box) for p in self.panels]
-        fmt = [lambda value, step=step: self._tick_text(value, step) for _, _, step in ticks]
+        tick_len = 6.0 if st.name == "slides" else 3.5
+        tick_pad, label_pad, gap, right = 3.5, 4.0, 6.0, 10.0
+        label_h = approximate_size("$x_u/L$", fs["label"])  # the tallest axis label
+        tick_h = approximate_size("0123456789", fs["tick"])[1]
+        bottom_axis = tick_len + tick_pad + tick_h + label_pad + label_h[1] + 6
+        title_h = max(approximate_size(p.title, fs["title"])[1] for p in self.panels) + st.rc["axes.titlepad"] + 8
 
-        tick_h = text_size("0123456789", fs["tick"])[1]
-        label_h = text_size("$x/L$", fs["label"])
-        left_gutters = []
-        for (xt, tt, step), f in zip(ticks, fmt):
-            widest = max((text_size(f(value), fs["tick"])[0] for value in tt), default=0.0)
-            left_gutters.append(widest + tick_len + tick_pad + label_pad + label_h[0] * 0 + text_size("$t/L$", fs["label"])[1] + 4)
-        bottom_axis = tick_len + tick_pad + tick_h + label_pad + label_h[1] + label_h[2] + 4
-        title_h = text_size(self.panels[0].title, fs["title"])[1] + 5.0 + 8
-
-        # panel sizes: one height for all, each width from its aspect, wide enough for its title
+        # one height for all panels, each width from its aspect, each at least as wide as its title
+        steps = [self._tick_step(p.box) for p in self.panels]
+        gutters = []
+        for p, step in zip(self.panels, steps):
+            widest = max(approximate_size(self._tick_text(value, step), fs["tick"])[0]
+                         for value in self._ticks_at(p.box[2], p.box[3], step))
+            gutters.append(widest + tick_len + tick_pad + label_pad + label_h[1] + 4)
         aspects = [(p.box[1] - p.box[0]) / (p.box[3] - p.box[2]) for p in self.panels]
-        right = 10.0
-        fixed = sum(left_gutters) + right + 6.0 * (len(self.panels) - 1)
+        fixed = sum(gutters) + right + gap * (len(self.panels) - 1)
         height = min(st.panel_height * 72, (st.max_width * 72 - fixed) / sum(aspects))
         for p, aspect in zip(self.panels, aspects):
-            p.height = height
-            p.width = height * aspect
-            title_w = text_size(p.title, fs["title"])[0] + 6
-            if title_w > p.width:  # widen the box (empty space both sides) to make room for the title
+            p.height, p.width = height, height * aspect
+            title_w = approximate_size(p.title, fs["title"])[0] + 6
+            if title_w > p.width:  # pad the box with empty space on both sides, to make room for the title
                 extra = (title_w / height - aspect) * (p.box[3] - p.box[2]) / 2
                 p.box[0] -= extra
                 p.box[1] += extra
                 p.width = title_w
-        ticks = [self._ticks(p.box)[:2] + (step,) for p, (_, _, step) in zip(self.panels, ticks)]
-        ticks = [(self._ticks_at(p.box[0], p.box[1], step), self._ticks_at(p.box[2], p.box[3], step), step)
-                 for p, (_, _, step) in zip(self.panels, ticks)]
-
         width = fixed + sum(p.width for p in self.panels)
+
         handles, labels = self._legend_entries()
         legend_rows, legend_cols = self._legend_shape(labels, width)
         legend_h = legend_rows * fs["legend"] * 1.75 + 6
         suptitle = self._suptitle(width)
-        top = (text_size(suptitle, fs["suptitle"])[1] + 14) if suptitle else 6
-        fig_w = width
+        top = approximate_size(suptitle, fs["suptitle"])[1] + 14
         fig_h = top + title_h + height + bottom_axis + legend_h
 
-        figure = Figure(figsize=(fig_w / 72, fig_h / 72), dpi=72)
+        figure = Figure(figsize=(width / 72, fig_h / 72), dpi=72)
         x = 0.0
-        for p, gutter, (xt, tt, step), (xname, tname) in zip(self.panels, left_gutters, ticks, names):
+        for p, gutter, step in zip(self.panels, gutters, steps):
             x += gutter
-            ax = figure.add_axes((x / fig_w, (bottom_axis + legend_h) / fig_h, p.width / fig_w, p.height / fig_h))
-            x += p.width + 6.0
+            ax = figure.add_axes((x / width, (bottom_axis + legend_h) / fig_h, p.width / width, p.height / fig_h))
+            x += p.width + gap
             ax.set_gid(f"{p.letter}-axes")
-            self._axes(ax, p, xt, tt, step, xname, tname, tick_len, tick_pad, label_pad)
-        if suptitle:
-            figure.text(0.5, 1 - 7 / fig_h, suptitle, ha="center", va="top", fontsize=fs["suptitle"], gid="title")
+            self._axes(ax, p, step, tick_len, tick_pad, label_pad)
+        figure.text(0.5, 1 - 7 / fig_h, suptitle, ha="center", va="top", fontsize=fs["suptitle"], gid="title")
         legend = figure.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, (legend_h - 2) / fig_h),
                                ncol=legend_cols, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
                                handler_map=self._handler_map)
         legend.set_gid("legend")
         return figure
+
+    @staticmethod
+    def _tick_step(box: list[float]) -> float:
+        """One tick step for both axes (equal scales): about four ticks or more on the shorter side, at most eight."""
+        sides = sorted((box[1] - box[0], box[3] - box[2]))
+        raw = max(sides[1] / 8.0, sides[0] / 4.0)
+        magnitude = 10.0 ** math.floor(math.log10(raw))
+        return next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))
 
     @staticmethod
     def _ticks_at(lo: float, hi: float, step: float) -> np.ndarray:
@@ -350,12 +364,10 @@ class _Diagram:
         # the description's first clause: up to a semicolon or the end of its first sentence
         clause = re.split(r";|\.(?=\s+[A-Z]|\s*$)", " ".join(s.description.split()))[0].strip()
         if clause:
+            clause = re.sub(r"\b([SxXtT])'", "\\1\N{PRIME}", clause)  # S' as in the panels: S′
             full = f"{head}: {_mathtext_safe(clause)}"
-            try:
-                if text_size(full, self.fs["suptitle"])[0] <= width - 10:
-                    return full
-            except ValueError:  # a description that is not valid mathtext
-                pass
+            if approximate_size(full, self.fs["suptitle"])[0] <= width - 10:
+                return full
         return head
 
     # legend ----------------------------------------------------------------------------------------
@@ -372,14 +384,14 @@ class _Diagram:
         entries.append((Line2D([], [], linestyle="none", marker="o", markersize=st.impact_size,
                                markerfacecolor=st.impact_colour, markeredgecolor="white", markeredgewidth=0.6),
                         "impact"))
-        entries.append((self._line_handle(st.rest_simultaneity), "simultaneous in $S$ ($t$ = const)"))
-        entries.append((self._line_handle(st.moving_simultaneity), "simultaneous in $S'$ ($t'$ = const)"))
+        entries.append((self._line_handle(st.rest_simultaneity), "line of simultaneity of S"))
+        entries.append((self._line_handle(st.moving_simultaneity), "line of simultaneity of S\N{PRIME}"))
         if o.other_axes:
             entries.append((self._line_handle(st.other_axes), "axes of the other frame"))
         if o.light_cones:
             entries.append((self._line_handle(st.light_cone), "light cone of an impact"))
         if o.hyperbolae:
-            entries.append((self._line_handle(st.hyperbola), "calibration hyperbolae $t^2 - x^2 = \\pm k^2$"))
+            entries.append((self._line_handle(st.hyperbola), "calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}"))
         handles = [h for h, _ in entries]
         labels = [label for _, label in entries]
         from matplotlib.legend_handler import HandlerTuple  # noqa: PLC0415  (only the legend needs it)
@@ -389,17 +401,20 @@ class _Diagram:
     def _legend_shape(self, labels: list[str], width: float) -> tuple[int, int]:
         """(rows, columns) of the widest legend that fits; columns filled as matplotlib does (array_split)."""
         fs = self.fs["legend"]
-        entry = np.array([text_size(label, fs)[0] + (3.2 + 0.6) * fs for label in labels])
+        # handle 3.2 em, gap 0.6 em, and 8 % for the renderers' own text widths (hinting)
+        entry = np.array([approximate_size(label, fs)[0] * 1.08 + (3.2 + 0.6) * fs for label in labels])
         for cols in range(len(labels), 0, -1):
             columns = [c for c in np.array_split(entry, cols) if len(c)]
-            if sum(c.max() for c in columns) + 1.6 * fs * (len(columns) - 1) <= width - 10:
+            if sum(c.max() for c in columns) + 1.6 * fs * (len(columns) - 1) <= width - 16:
                 return math.ceil(len(labels) / cols), cols
         return len(labels), 1
 
     # one panel -------------------------------------------------------------------------------------
-    def _axes(self, ax, p: _Panel, xt, tt, step, xname, tname, tick_len, tick_pad, label_pad) -> None:
+    def _axes(self, ax, p: _Panel, step: float, tick_len: float, tick_pad: float, label_pad: float) -> None:
         st, fs, o = self.style, self.fs, self.options
         x0, x1, t0, t1 = p.box
+        xt, tt = self._ticks_at(x0, x1, step), self._ticks_at(t0, t1, step)
+        xname, tname = coordinate_names(p.view.frame)
         ax.set_xlim(x0, x1)
         ax.set_ylim(t0, t1)
         ax.set_aspect("equal", adjustable="box")
@@ -409,14 +424,16 @@ class _Diagram:
         ax.xaxis.set_major_formatter(formatter)
         ax.yaxis.set_major_formatter(formatter)
         ax.tick_params(labelsize=fs["tick"], length=tick_len, pad=tick_pad)
-        ax.set_xlabel(f"${xname}/L$", fontsize=fs["label"], labelpad=label_pad)
-        ax.set_ylabel(f"${tname}/L$", fontsize=fs["label"], labelpad=label_pad)
-        ax.set_title(p.title, fontsize=fs["title"])
+        italic = "normal" if "$" in xname else "italic"
+        ax.set_xlabel(axis_label(xname), fontsize=fs["label"], fontstyle=italic, labelpad=label_pad)
+        ax.set_ylabel(axis_label(tname), fontsize=fs["label"], fontstyle=italic, labelpad=label_pad)
+        ax.set_title(p.title, fontsize=fs["title"], y=1.0)  # y given: no search for tick labels above the axes
         if o.grid:
             ax.grid(True, color=st.grid.colour, linewidth=st.grid.width, linestyle=st.grid.dashes, zorder=0)
             ax.set_axisbelow(True)
 
-        obstacles: list[np.ndarray] = []  # polylines in data units, for placing labels
+        obstacles: list[np.ndarray] = []  # polylines in data units that labels must not cross
+        guides: list[np.ndarray] = []  # the extras' lines: a label may cross them, on a white ground
         letter = p.letter
         frame = p.view.frame
 
@@ -472,25 +489,29 @@ class _Diagram:
                         continue
                     ax.plot(segment[:, 0], segment[:, 1], color=st.other_axes.colour, linewidth=st.other_axes.width,
                             linestyle=st.other_axes.dashes, zorder=2, gid=f"{letter}-axis-{other}-{axis}")
-                    obstacles.append(segment)
+                    guides.append(segment)
                     end = segment[1]
                     inward = math.degrees(math.atan2((t0 + t1) / 2 - end[1], (x0 + x1) / 2 - end[0]))
-                    labels.append(_Label(f"{letter}-axis-label-{other}-{axis}", f"${name}$", (end[0], end[1]),
-                                         inward, st.other_axes.colour, fs["impact"]))
+                    labels.append(_Label(f"{letter}-axis-label-{other}-{axis}", name,
+                                         (end[0], end[1]), inward, st.other_axes.colour, fs["impact"], italic=True,
+                                         guides_block=True))
         if o.light_cones:
+            reach = CONE_REACH * min(x1 - x0, t1 - t0)  # short arms: a cone per impact, not a lattice of lines
             for label, _, x, t in events:
                 for side, slope in (("right", 1.0), ("left", -1.0)):
-                    segment = _clip_line(x, t, 1.0, slope, p.box)
+                    segment = _clip_line(x, t, 1.0, slope, (x - reach, x + reach, t - reach, t + reach))
+                    segment = None if segment is None else _clip_line(x, t, 1.0, slope, p.box)
                     if segment is not None:
+                        segment = np.clip(segment, [[x - reach, t - reach]], [[x + reach, t + reach]])
                         ax.plot(segment[:, 0], segment[:, 1], color=st.light_cone.colour,
                                 linewidth=st.light_cone.width, linestyle=st.light_cone.dashes, zorder=1.5,
                                 gid=f"{letter}-light-cone-{label}-{side}")
-                        obstacles.append(segment)
+                        guides.append(segment)
         if o.hyperbolae:
             for k, points in enumerate(self._hyperbolae(p.box, step)):
                 ax.plot(points[:, 0], points[:, 1], color=st.hyperbola.colour, linewidth=st.hyperbola.width,
                         linestyle=st.hyperbola.dashes, zorder=1.2, gid=f"{letter}-hyperbola-{k}")
-                obstacles.append(points)
+                guides.append(points)
 
         # impacts: markers on top, labelled the same in every panel
         for label, end, x, t in events:
@@ -508,9 +529,10 @@ class _Diagram:
                 first = next((e.t / self.L for e in p.view.events if e.impact.particle == name), points[-1, 1])
                 t_at = points[0, 1] + min(0.1 * (p.box[3] - p.box[2]), 0.6 * (first - points[0, 1]))
                 x_at = float(np.interp(t_at, points[:, 1], points[:, 0]))
-                labels.append(_Label(f"{letter}-particle-label-{name}", f"${name}$", (x_at, t_at),
-                                     180.0 if name == "A" else 0.0, st.particles[name].colour, fs["particle"]))
-        self._place(ax, p, labels, obstacles)
+                labels.append(_Label(f"{letter}-particle-label-{name}", name, (x_at, t_at),
+                                     180.0 if name == "A" else 0.0, st.particles[name].colour, fs["particle"],
+                                     italic=True))
+        self._place(ax, p, labels, obstacles, guides)
 
     def _hyperbolae(self, box: list[float], step: float) -> list[np.ndarray]:
         """t^2 - x^2 = +-k^2 about the shared origin, k a multiple of the tick step, sampled within 1e-4 L."""
@@ -538,51 +560,84 @@ class _Diagram:
         return out
 
     # label placement --------------------------------------------------------------------------------
-    def _place(self, ax, p: _Panel, labels: list[_Label], obstacles: list[np.ndarray]) -> None:
-        """Put each label near its anchor where its box crosses no line, marker or earlier label."""
+    def _place(self, ax, p: _Panel, labels: list[_Label], obstacles: list[np.ndarray], guides: list[np.ndarray]) -> None:
+        """Put each label near its anchor where its box crosses no line, marker or earlier label.
+
+        Candidates ring the anchor (24 directions, growing distances). The first
+        free one wins: nearest ring first, then nearest the preferred direction.
+        Crossing a guide (an extra's line) costs as much as three rings outwards,
+        and such a label gets a white ground; crossing anything else is a last resort.
+        """
         x0, x1, t0, t1 = p.box
         sx, st_ = p.width / (x1 - x0), p.height / (t1 - t0)  # points per unit of L (equal, up to rounding)
 
         def to_pt(points: np.ndarray) -> np.ndarray:
             return np.column_stack([(points[:, 0] - x0) * sx, (points[:, 1] - t0) * st_])
 
-        segments = np.concatenate([np.column_stack([q[:-1], q[1:]]) for q in map(to_pt, obstacles) if len(q) > 1])
+        def segments_of(polylines: list[np.ndarray]) -> np.ndarray:
+            parts = [np.column_stack([q[:-1], q[1:]]) for q in map(to_pt, polylines) if len(q) > 1]
+            return np.concatenate(parts) if parts else np.empty((0, 4))
+
+        def crossings(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+            lo, hi = boxes[:, :2].min(0), boxes[:, 2:].max(0)  # only nearby segments can be hit
+            near = ((np.maximum(segments[:, 0], segments[:, 2]) >= lo[0]) & (np.minimum(segments[:, 0], segments[:, 2]) <= hi[0])
+                    & (np.maximum(segments[:, 1], segments[:, 3]) >= lo[1]) & (np.minimum(segments[:, 1], segments[:, 3]) <= hi[1]))
+            return _boxes_hit_segments(boxes, segments[near])
+
+        hard, soft = segments_of(obstacles), segments_of(guides)
         taken = [self._marker_box(to_pt(np.array([l.anchor]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
         pad, edge = 2.0 + self._widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
-        radii = (2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0)
-        directions = np.arange(0, 360, 15)
+        radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
+        angles = np.arange(0, 360, 15)
+        never = 10 ** 9
         for label in labels:
-            w, h, d = text_size(label.text, label.size)
+            w, h, _ = text_size(label.text, label.size, label.italic)
             anchor = to_pt(np.array([label.anchor]))[0]
-            order = sorted(directions, key=lambda a: (abs((a - label.preferred + 180) % 360 - 180), a))
-            best = None
-            for ri, r in enumerate(radii):
-                for angle in order:
-                    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
-                    px, py = anchor[0] + (r + label.avoid_radius) * c, anchor[1] + (r + label.avoid_radius) * s
-                    ha = "left" if c > 0.3 else "right" if c < -0.3 else "center"
-                    va = "bottom" if s > 0.3 else "top" if s < -0.3 else "center"
-                    bx = px if ha == "left" else px - w if ha == "right" else px - w / 2
-                    by = py if va == "bottom" else py - h if va == "top" else py - h / 2
-                    box = (bx - pad, by - pad, bx + w + pad, by + h + pad)
-                    if box[0] < edge or box[1] < edge or box[2] > p.width - edge or box[3] > p.height - edge:
-                        continue
-                    hits = _boxes_hit_segments(np.array(box), segments)
-                    hits += sum(_boxes_overlap(box, other) for other in taken)
-                    score = (hits, ri)
-                    if best is None or score < best[0]:
-                        best = (score, (px, py, ha, va, box))
-                    if hits == 0:
-                        break
-                if best is not None and best[0][0] == 0:
+            turn = np.abs((angles - label.preferred + 180) % 360 - 180)
+            order = angles[np.lexsort((angles, turn))]
+            ring = np.repeat(np.arange(len(radii)), len(order))
+            r = radii[ring] + label.avoid_radius
+            a = np.radians(np.tile(order, len(radii)))
+            c, s_ = np.cos(a), np.sin(a)
+            px, py = anchor[0] + r * c, anchor[1] + r * s_
+            ha = np.where(c > 0.3, 0, np.where(c < -0.3, 2, 1))  # left, center, right
+            va = np.where(s_ > 0.3, 0, np.where(s_ < -0.3, 2, 1))  # bottom, center, top
+            bx, by = px - ha * w / 2, py - va * h / 2
+            boxes = np.column_stack([bx - pad, by - pad, bx + w + pad, by + h + pad])
+            inside = ((boxes[:, 0] >= edge) & (boxes[:, 1] >= edge) & (boxes[:, 2] <= p.width - edge)
+                      & (boxes[:, 3] <= p.height - edge))
+            cost = np.full(len(boxes), never)
+            crossed_guides = np.zeros(len(boxes), dtype=int)
+            for first, last in ((0, 3), (3, 6), (6, len(radii))):  # nearest rings first; stop once one is free
+                chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
+                if len(chunk) == 0:
+                    continue
+                b = boxes[chunk]
+                blocked = crossings(b, hard)
+                if taken:
+                    other = np.array(taken)
+                    blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
+                                & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
+                crossed_guides[chunk] = crossings(b, soft)
+                if label.guides_block:
+                    blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
+                cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk]
+                if (blocked + crossed_guides[chunk] == 0).any():
                     break
-            if best is None:  # no room inside the panel at all: put it on the anchor
-                best = ((0, 0), (anchor[0], anchor[1], "center", "center", (0, 0, 0, 0)))
-            px, py, ha, va, box = best[1]
+            k = int(np.lexsort((np.arange(len(boxes)), cost))[0])  # cheapest; among equals, nearest the preferred side
+            if cost[k] == never:  # no room inside the panel at all: centre it on the anchor
+                box = (anchor[0] - w / 2, anchor[1] - h / 2, anchor[0] + w / 2, anchor[1] + h / 2)
+                position, alignment, ground = anchor, ("center", "center"), True
+            else:
+                box = tuple(boxes[k])
+                position = (px[k], py[k])
+                alignment = (("left", "center", "right")[ha[k]], ("bottom", "center", "top")[va[k]])
+                ground = crossed_guides[k] > 0 or cost[k] >= 1000
             taken.append(box)
-            # mathtext's baseline sits `d` above the box bottom; "bottom"/"top"/"center" align the full box
-            ax.text(x0 + px / sx, t0 + py / st_, label.text, ha=ha, va=va, fontsize=label.size, color=label.colour,
-                    zorder=8, gid=label.gid)
+            ax.text(x0 + position[0] / sx, t0 + position[1] / st_, label.text, ha=alignment[0], va=alignment[1],
+                    fontsize=label.size, fontstyle="italic" if label.italic else "normal", color=label.colour,
+                    zorder=8, gid=label.gid,
+                    bbox=dict(boxstyle="square,pad=0.1", facecolor="white", edgecolor="none") if ground else None)
 
     @staticmethod
     def _marker_box(centre, radius: float):

@@ -9,8 +9,7 @@ black and grey only, and every element keeps a line style of its own.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 #: formats `plot` writes, in the order it writes them
 FORMATS = ("svg", "pdf", "png")
@@ -28,8 +27,7 @@ AXES_DASHDOTDOT = (0, (7.0, 2.0, 1.2, 2.0, 1.2, 2.0))
 CONE_SHORT_DASH = (0, (2.0, 2.0))
 
 
-@dataclass(frozen=True)
-class Ink:
+class Ink(NamedTuple):
     """How one kind of line is drawn."""
 
     colour: str
@@ -37,8 +35,7 @@ class Ink:
     dashes: Any = SOLID
 
 
-@dataclass(frozen=True)
-class Style:
+class Style(NamedTuple):
     """Everything that differs between the default, print and slides figures."""
 
     name: str
@@ -58,7 +55,7 @@ class Style:
     light_cone: Ink
     hyperbola: Ink
     grid: Ink
-    rc: dict[str, Any] = field(default_factory=dict)
+    rc: dict[str, Any]  # rcParams set while drawing and saving
 
 
 _COMMON_RC = {
@@ -76,8 +73,8 @@ _COMMON_RC = {
     "legend.frameon": False,
 }
 
-_SANS = {"font.family": "sans-serif", "font.sans-serif": ["DejaVu Sans"], "mathtext.fontset": "dejavusans"}
-_SERIF = {"font.family": "serif", "font.serif": ["STIXGeneral", "DejaVu Serif"], "mathtext.fontset": "stix"}
+_SANS = {"font.family": ["DejaVu Sans"], "mathtext.fontset": "dejavusans"}
+_SERIF = {"font.family": ["STIXGeneral", "DejaVu Serif"], "mathtext.fontset": "stix"}  # DejaVu: the glyphs STIX lacks (italic prime)
 
 STYLES: dict[str, Style] = {
     "default": Style(
