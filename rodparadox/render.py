@@ -219,15 +219,15 @@ def approximate_size(text: str, size: float) -> tuple[float, float, float]:
 
 
 class _Label(NamedTuple):
-    """A text to place beside `anchor` (data units), clear of every line, marker and other label."""
+    """A text to place beside one of its anchors (data units, best first), clear of every line, marker and label."""
 
     gid: str
     text: str
-    anchor: tuple[float, float]
+    anchors: tuple[tuple[float, float], ...]
     preferred: float  # direction, degrees, counter-clockwise from +x
     colour: str
     size: float
-    avoid_radius: float = 0.0  # points kept clear around the anchor (a marker)
+    avoid_radius: float = 0.0  # points kept clear around the first anchor (a marker)
     italic: bool = False  # plain text in italics: a single letter needs no mathtext
     guides_block: bool = False  # an axis's name: it must not sit on any line, its own included
 
@@ -339,9 +339,9 @@ class _Diagram:
 
     @staticmethod
     def _tick_step(box: list[float]) -> float:
-        """One tick step for both axes (equal scales): about four ticks or more on the shorter side, at most eight."""
+        """One tick step for both axes (equal scales): about five ticks on the shorter side, at most ten on the longer."""
         sides = sorted((box[1] - box[0], box[3] - box[2]))
-        raw = max(sides[1] / 8.0, sides[0] / 4.0)
+        raw = max(sides[1] / 10.0, sides[0] / 5.0)
         magnitude = 10.0 ** math.floor(math.log10(raw))
         return next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))
 
@@ -493,7 +493,7 @@ class _Diagram:
                     end = segment[1]
                     inward = math.degrees(math.atan2((t0 + t1) / 2 - end[1], (x0 + x1) / 2 - end[0]))
                     labels.append(_Label(f"{letter}-axis-label-{other}-{axis}", name,
-                                         (end[0], end[1]), inward, st.other_axes.colour, fs["impact"], italic=True,
+                                         ((end[0], end[1]),), inward, st.other_axes.colour, fs["impact"], italic=True,
                                          guides_block=True))
         if o.light_cones:
             reach = CONE_REACH * min(x1 - x0, t1 - t0)  # short arms: a cone per impact, not a lattice of lines
@@ -519,17 +519,19 @@ class _Diagram:
                     markerfacecolor=st.impact_colour, markeredgecolor="white", markeredgewidth=0.6,
                     zorder=7, gid=f"{letter}-impact-{label}")
             labels.insert(len([l for l in labels if "-impact-label-" in l.gid]),
-                          _Label(f"{letter}-impact-label-{label}", impact_text(label), (x, t),
+                          _Label(f"{letter}-impact-label-{label}", impact_text(label), ((x, t),),
                                  0.0 if end == "right" else 180.0, st.impact_colour, fs["impact"],
                                  avoid_radius=st.impact_size / 2 + 1.0))
-        # particles: their letter beside the first part of the world-line
+        # particles: their letter beside the first part of the world-line, else further along where there is room
         for name in ("A", "B"):
             if name in p.worldlines:
                 points = p.worldlines[name]
                 first = next((e.t / self.L for e in p.view.events if e.impact.particle == name), points[-1, 1])
-                t_at = points[0, 1] + min(0.1 * (p.box[3] - p.box[2]), 0.6 * (first - points[0, 1]))
-                x_at = float(np.interp(t_at, points[:, 1], points[:, 0]))
-                labels.append(_Label(f"{letter}-particle-label-{name}", name, (x_at, t_at),
+                span = points[-1, 1] - points[0, 1]
+                times = [points[0, 1] + min(0.1 * (p.box[3] - p.box[2]), 0.6 * (first - points[0, 1]))]
+                times += [points[0, 1] + f * span for f in (0.3, 0.5, 0.7, 0.9)]
+                anchors = tuple((float(np.interp(t, points[:, 1], points[:, 0])), t) for t in times)
+                labels.append(_Label(f"{letter}-particle-label-{name}", name, anchors,
                                      180.0 if name == "A" else 0.0, st.particles[name].colour, fs["particle"],
                                      italic=True))
         self._place(ax, p, labels, obstacles, guides)
@@ -585,21 +587,23 @@ class _Diagram:
             return _boxes_hit_segments(boxes, segments[near])
 
         hard, soft = segments_of(obstacles), segments_of(guides)
-        taken = [self._marker_box(to_pt(np.array([l.anchor]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
+        taken = [self._marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
         pad, edge = 2.0 + self._widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
         radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
         angles = np.arange(0, 360, 15)
         never = 10 ** 9
         for label in labels:
             w, h, _ = text_size(label.text, label.size, label.italic)
-            anchor = to_pt(np.array([label.anchor]))[0]
+            anchors = to_pt(np.array(label.anchors))
             turn = np.abs((angles - label.preferred + 180) % 360 - 180)
             order = angles[np.lexsort((angles, turn))]
-            ring = np.repeat(np.arange(len(radii)), len(order))
+            # candidates ordered by ring, then anchor, then direction: that order breaks ties in cost
+            ring = np.repeat(np.arange(len(radii)), len(anchors) * len(order))
+            which = np.tile(np.repeat(np.arange(len(anchors)), len(order)), len(radii))
+            a = np.radians(np.tile(order, len(radii) * len(anchors)))
             r = radii[ring] + label.avoid_radius
-            a = np.radians(np.tile(order, len(radii)))
             c, s_ = np.cos(a), np.sin(a)
-            px, py = anchor[0] + r * c, anchor[1] + r * s_
+            px, py = anchors[which, 0] + r * c, anchors[which, 1] + r * s_
             ha = np.where(c > 0.3, 0, np.where(c < -0.3, 2, 1))  # left, center, right
             va = np.where(s_ > 0.3, 0, np.where(s_ < -0.3, 2, 1))  # bottom, center, top
             bx, by = px - ha * w / 2, py - va * h / 2
@@ -621,11 +625,12 @@ class _Diagram:
                 crossed_guides[chunk] = crossings(b, soft)
                 if label.guides_block:
                     blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
-                cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk]
+                cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]
                 if (blocked + crossed_guides[chunk] == 0).any():
                     break
-            k = int(np.lexsort((np.arange(len(boxes)), cost))[0])  # cheapest; among equals, nearest the preferred side
-            if cost[k] == never:  # no room inside the panel at all: centre it on the anchor
+            k = int(np.lexsort((np.arange(len(boxes)), cost))[0])  # cheapest; among equals, the earliest candidate
+            if cost[k] == never:  # no room inside the panel at all: centre it on the first anchor
+                anchor = anchors[0]
                 box = (anchor[0] - w / 2, anchor[1] - h / 2, anchor[0] + w / 2, anchor[1] + h / 2)
                 position, alignment, ground = anchor, ("center", "center"), True
             else:
