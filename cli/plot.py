@@ -99,7 +99,7 @@ def _formats(spec: str) -> list[str]:
 @click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
               help="Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
                    "a comma-separated list gives several (e.g. both,0.3).")
-@click.option("--format", "fmt", default="svg", metavar="svg,pdf,png",
+@click.option("--format", "fmt", default=None, metavar="svg,pdf,png",
               help="One or more formats, comma-separated. [default: svg, or the extension of -o FILE]")
 @click.option("-o", "--output", "output", metavar="PATH_OR_DIR", default=None,
               help=f"A folder to write into (it must exist), or a file name for one scenario in one format. "
@@ -163,6 +163,9 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
             os.makedirs(folder, exist_ok=True)
         except OSError as e:
             raise BadInput(f"cannot create the output folder {folder}: {(e.strerror or str(e)).lower()}.") from None
+    first = next(iter(jobs[0][2].values()))
+    if not os.access(first.parent, os.W_OK | os.X_OK):  # before drawing anything (root passes; the write then tells)
+        raise BadInput(f"cannot write {first}: permission denied in the folder {first.parent}.")
 
     from rodparadox import render  # matplotlib: only now, after every input has been checked
     from rodparadox.output import write_atomic
@@ -193,8 +196,6 @@ def _destination(output: str | None, count: int) -> tuple[Path | None, Path | No
         return Path(DEFAULT_FOLDER), None
     path = Path(output)
     if path.is_dir():
-        if not os.access(path, os.W_OK | os.X_OK):
-            raise BadInput(f"cannot write into the output folder {output}: permission denied.")
         return path, None
     looks_like_file = path.suffix.lstrip(".").lower() in FORMATS and not output.endswith(("/", os.sep))
     if not looks_like_file:
@@ -205,8 +206,8 @@ def _destination(output: str | None, count: int) -> tuple[Path | None, Path | No
     if count > 1:
         raise BadInput(f"option -o names one file, {output!r}, but {count} scenarios were given; give a folder instead.")
     parent = path.parent
+    if parent.exists() and not parent.is_dir():
+        raise BadInput(f"cannot write {output}: {parent} is a file, not a folder.")
     if not parent.is_dir():
         raise BadInput(f"cannot write {output}: the folder {parent} does not exist; create it first.")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise BadInput(f"cannot write {output}: permission denied in the folder {parent}.")
     return None, path

@@ -1,0 +1,312 @@
+"""`sears-paradox plot`: file names, formats, quiet output, bad input (message + exit 2), determinism, make.
+
+Each test runs in its own temporary folder (the default output folder is
+./outputs). A few run the real command in a fresh process: determinism
+across processes, what --help imports, the Makefile.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from sears_paradox_cli.main import main
+from sears_paradox_cli.plot import plot
+
+ROOT = Path(__file__).resolve().parent.parent
+README = (ROOT / "README.md").read_text()
+
+
+@pytest.fixture(autouse=True)
+def in_tmp(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, ["plot", *args])
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+def error_of(*args) -> str:
+    """The one-sentence error a bad call prints; it must exit 2, print no traceback and write nothing."""
+    before = _files(Path.cwd())
+    result = run(*args, expect=2)
+    assert "Traceback" not in result.output
+    assert result.output.count("\n") == 1 and result.output.startswith("Error: "), result.output
+    assert _files(Path.cwd()) == before  # no figure, no temporary file
+    return result.output[len("Error: "):].rstrip("\n")
+
+
+def _files(folder: Path) -> set[str]:
+    return {str(p.relative_to(folder)) for p in folder.rglob("*") if p.is_file()}
+
+
+def command() -> list[str]:
+    script = Path(sys.executable).parent / "sears-paradox"
+    return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
+
+
+# --- names and places --------------------------------------------------------------------------------
+
+def test_default_writes_outputs_fig2_svg_and_prints_only_its_path(in_tmp):
+    result = run("fig2")
+    assert result.output == "outputs/fig2.svg\n"
+    assert (in_tmp / "outputs" / "fig2.svg").read_bytes().startswith(b"<?xml")
+    assert _files(in_tmp) == {"outputs/fig2.svg"}
+
+
+def test_an_unchanged_figure_is_not_rewritten_and_nothing_is_printed(in_tmp):
+    run("fig2")
+    path = in_tmp / "outputs" / "fig2.svg"
+    old = time.time() - 1000
+    os.utime(path, (old, old))
+    assert run("fig2").output == ""
+    assert path.stat().st_mtime == old
+    assert run("fig2", "--verbose").output == "outputs/fig2.svg (unchanged)\n"
+
+
+@pytest.mark.parametrize("options, name", [
+    ([], "fig2"),
+    (["--v", "0.6"], "fig2"),  # the scenario's own value: the same figure, the same file
+    (["--v", "0.8"], "fig2_v0.8"),
+    (["--v", "0.8", "--L", "2"], "fig2_v0.8_L2"),
+    (["--L", "2.5"], "fig2_L2.5"),
+    (["--frame", "rest"], "fig2_rest"),
+    (["--frame", "moving,0.3"], "fig2_moving_u0.3"),
+    (["--style", "print"], "fig2_print"),
+    (["--style", "slides", "--grid", "--other-axes"], "fig2_slides_axes_grid"),
+    (["--light-cones", "--hyperbolae"], "fig2_cones_hyperbolae"),
+])
+def test_every_non_default_option_is_in_the_file_name(options, name):
+    assert run("fig2", *options).output == f"outputs/{name}.svg\n"
+
+
+def test_several_scenarios_and_formats_in_one_call(in_tmp):
+    (in_tmp / "figs").mkdir()
+    shutil.copy(ROOT / "configs" / "fig1.yaml", in_tmp / "mine.yaml")
+    result = run("fig1", "fig2", "mine.yaml", "--format", "svg,pdf,png", "-o", "figs")
+    expected = [f"figs/{n}.{f}" for n in ("fig1", "fig2", "mine") for f in ("svg", "pdf", "png")]
+    assert result.output.splitlines() == expected
+    assert (in_tmp / "figs" / "fig2.pdf").read_bytes().startswith(b"%PDF-")
+    assert (in_tmp / "figs" / "fig2.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp):
+    assert run("fig1", "-o", "paper-figure.pdf").output == "paper-figure.pdf\n"
+    assert (in_tmp / "paper-figure.pdf").read_bytes().startswith(b"%PDF-")
+    assert run("fig1", "-o", "slide.png", "--format", "png", "--style", "slides").output == "slide.png\n"
+
+
+def test_the_default_folder_is_created_but_no_other(in_tmp):
+    run("fig1")
+    assert (in_tmp / "outputs").is_dir()
+
+
+def test_same_scenario_twice_is_written_once():
+    assert run("fig2", "fig2").output == "outputs/fig2.svg\n"
+
+
+# --- bad input: one sentence, exit 2, nothing written ----------------------------------------------------
+
+def test_missing_output_folder():
+    assert error_of("fig2", "-o", "nope") == "the output folder nope does not exist; create it first."
+    assert error_of("fig2", "-o", "nope/fig.svg") == (
+        "cannot write nope/fig.svg: the folder nope does not exist; create it first.")
+
+
+def test_output_folder_that_is_a_file(in_tmp):
+    (in_tmp / "afile").write_text("x")
+    assert error_of("fig2", "-o", "afile") == (
+        "option -o: afile is a file, not a folder; give a folder or a name ending in .svg, .pdf, .png.")
+    assert error_of("fig2", "-o", "afile/fig.svg") == "cannot write afile/fig.svg: afile is a file, not a folder."
+
+
+def test_unwritable_output_folder(in_tmp):
+    if os.geteuid() == 0:  # root writes through any mode bits; /sys refuses new files even to root
+        folder = Path("/sys")
+        if not folder.is_dir():
+            pytest.skip("no read-only folder to try as root")
+    else:
+        folder = in_tmp / "locked"
+        folder.mkdir()
+        folder.chmod(0o500)
+    try:
+        message = error_of("fig2", "-o", str(folder))
+    finally:
+        if folder != Path("/sys"):
+            folder.chmod(0o700)
+    assert message == f"cannot write {folder}/fig2.svg: permission denied in the folder {folder}."
+
+
+def test_bad_frame():
+    assert error_of("fig2", "--frame", "sideways") == (
+        "option --frame must be rest, moving, both or a velocity U with -1 < U < 1 "
+        "(or a comma-separated list of these), got 'sideways'.")
+    assert error_of("fig2", "--frame", "rest,1.5").endswith("got '1.5'.")
+
+
+def test_bad_format():
+    assert error_of("fig2", "--format", "jpg") == (
+        "option --format must be one or more of svg, pdf, png, comma-separated, got 'jpg'.")
+    assert error_of("fig2", "-o", "fig.jpg").startswith("the output folder fig.jpg does not exist")
+
+
+def test_one_file_for_several_outputs():
+    assert error_of("fig1", "fig2", "-o", "f.svg") == (
+        "option -o names one file, 'f.svg', but 2 scenarios were given; give a folder instead.")
+    assert error_of("fig2", "-o", "f.svg", "--format", "svg,pdf") == (
+        "option -o names one file, 'f.svg', but --format asks for 2 formats; give a folder instead.")
+    assert error_of("fig2", "-o", "f.svg", "--format", "pdf") == "option -o names 'f.svg' but --format is pdf; make them agree."
+
+
+def test_bad_scenario_and_bad_override_write_nothing_even_for_the_good_ones():
+    assert error_of("fig2", "nosuch").startswith("there is no built-in scenario 'nosuch'")
+    assert error_of("fig2", "--v", "1.2") == "option --v: v must be a number with 0 < v < 1 (units of c), got 1.2."
+    message = error_of("fig1", "while_turning", "--v", "0.1")
+    assert message.startswith("while_turning: particles.A.timed_with: A cannot strike the rod")
+
+
+def test_a_failed_write_leaves_no_partial_file(in_tmp, monkeypatch):
+    import rodparadox.output
+
+    def full_disk(src, dst):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(rodparadox.output.os, "replace", full_disk)
+    assert error_of("fig2") == "cannot write outputs/fig2.svg: no space left on device."
+    assert _files(in_tmp) == set()
+
+
+def test_a_failure_while_drawing_exits_non_zero_and_leaves_finished_files_whole(in_tmp, monkeypatch):
+    from rodparadox import render
+
+    real, calls = render.figure_bytes, []
+
+    def fails_second_time(*args, **kwargs):
+        calls.append(args[1])
+        if len(calls) == 2:
+            raise RuntimeError("renderer crashed")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(render, "figure_bytes", fails_second_time)
+    result = run("fig2", "--format", "svg,pdf", expect=1)
+    assert result.output == "outputs/fig2.svg\n"
+    assert _files(in_tmp) == {"outputs/fig2.svg"}
+    assert (in_tmp / "outputs" / "fig2.svg").read_bytes().rstrip().endswith(b"</svg>")
+
+
+# --- processes: determinism, imports, make --------------------------------------------------------------
+
+def test_byte_identical_svg_and_pdf_from_two_processes(in_tmp):
+    outputs = []
+    for seed, folder in (("1", "one"), ("2", "two")):
+        (in_tmp / folder).mkdir()
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        subprocess.run(command() + ["plot", "fig2", "--format", "svg,pdf", "-o", folder], check=True, env=env,
+                       capture_output=True)
+        outputs.append({f: (in_tmp / folder / f"fig2.{f}").read_bytes() for f in ("svg", "pdf")})
+    assert outputs[0] == outputs[1]
+
+
+def test_help_does_not_import_matplotlib_and_plot_never_imports_pyplot(in_tmp):
+    probe = (
+        "import sys\n"
+        "from sears_paradox_cli.main import main\n"
+        "def call(*args):\n"
+        "    try:\n"
+        "        main([*args])\n"
+        "    except SystemExit:\n"
+        "        pass\n"
+        "call('plot', '--help')\n"
+        "print('probe', 'matplotlib' in sys.modules, 'numpy' in sys.modules)\n"
+        "call('plot', 'fig1', '-o', '.')\n"
+        "print('probe', 'matplotlib' in sys.modules, 'matplotlib.pyplot' in sys.modules)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", probe], check=True, capture_output=True, text=True).stdout
+    assert [line for line in out.splitlines() if line.startswith("probe")] == ["probe False False", "probe True False"]
+
+
+@pytest.mark.skipif(shutil.which("make") is None, reason="needs make")
+def test_make_figures_builds_every_config_in_parallel_and_then_only_what_changed(in_tmp):
+    out = in_tmp / "made"
+    tool = " ".join(f"'{part}'" for part in command())
+    args = ["make", "-C", str(ROOT), "--no-print-directory", f"OUTPUTS={out}", "FORMATS=svg",
+            f"SEARS_PARADOX={tool}"]
+    first = subprocess.run(args + ["-j2", "figures"], check=True, capture_output=True, text=True).stdout
+    names = sorted(p.stem for p in (ROOT / "configs").glob("*.yaml"))
+    assert sorted(p.stem for p in out.glob("*.svg")) == names
+    assert sorted(re.findall(r"made/(\w+)\.svg", first)) == names
+
+    again = subprocess.run(args + ["figures"], check=True, capture_output=True, text=True).stdout
+    assert "Nothing to be done" in again
+
+    stamp, svg = out / ".stamps" / "fig1", out / "fig1.svg"
+    old = time.time() - 1000
+    os.utime(stamp, (old, old))  # as if configs/fig1.yaml had changed since
+    mtime = svg.stat().st_mtime
+    third = subprocess.run(args + ["figures"], check=True, capture_output=True, text=True).stdout
+    assert re.findall(r"plot configs/(\w+)\.yaml", third) == ["fig1"]
+    assert svg.stat().st_mtime == mtime  # same bytes: left untouched
+
+
+# --- README --------------------------------------------------------------------------------------------
+
+def _readme_plot_section() -> str:
+    return README.split("<!-- plot:start -->")[1].split("<!-- plot:end -->")[0]
+
+
+def test_readme_documents_every_plot_option_and_style():
+    section = _readme_plot_section()
+    for param in plot.params:
+        for flag in getattr(param, "opts", []):
+            if flag.startswith("--"):
+                assert f"`{flag}" in section, flag
+    for style in ("default", "print", "slides"):
+        assert f"`{style}`" in section
+
+
+def test_readme_figures_are_what_the_tool_draws_now():
+    """The README's figures are generated by `make readme-figures`; redraw them and compare."""
+    import matplotlib
+
+    from rodparadox import render
+    from rodparadox.engine import run as simulate
+    from rodparadox.frames import paper_frames
+    from rodparadox.scenario import load
+
+    section = _readme_plot_section()
+    made_with = (ROOT / "outputs" / "readme" / "made-with.txt").read_text().split()
+    for name in ("fig1", "fig2"):
+        path = ROOT / "outputs" / "readme" / f"{name}.svg"
+        assert f"outputs/readme/{name}.svg" in section
+        scenario = load(name)
+        drawn = render.figure_bytes(render.draw(simulate(scenario), paper_frames(scenario.v)), "svg")
+        committed = path.read_bytes()
+        if made_with == ["matplotlib", matplotlib.__version__]:
+            assert drawn == committed, f"{path} is out of date: run `make readme-figures`"
+        else:  # another matplotlib writes other bytes: compare what is drawn, to 0.01 pt
+            assert _geometry(drawn) == _geometry(committed), f"{path} is out of date: run `make readme-figures`"
+
+
+def _geometry(svg: bytes) -> dict[str, list[float]]:
+    import xml.etree.ElementTree as ET
+
+    ns = "{http://www.w3.org/2000/svg}"
+    out = {}
+    for group in ET.fromstring(svg).iter(f"{ns}g"):
+        gid = group.get("id", "")
+        if re.match(r"[ab]-(rod_left|rod_right|A|B|impact-\w+|simultaneity-.*)$", gid):
+            numbers = [round(float(n), 2) for p in group.iter(f"{ns}path") for n in re.findall(r"-?\d+\.?\d*", p.get("d", ""))]
+            out[gid] = numbers
+    return out

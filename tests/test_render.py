@@ -1,0 +1,441 @@
+"""The drawing: which lines, with which data, which markers, labels and styles (STYLE.md: assert on drawn objects).
+
+Figures are built with `rodparadox.render.draw` and inspected as matplotlib
+artists, found by their gid (`a-rod_left`, `b-impact-B1`, ...). A few tests
+draw with the Agg renderer to measure the texts as a reader would see them.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import xml.etree.ElementTree as ET
+from functools import lru_cache
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.colors import to_rgb
+
+from rodparadox import render
+from rodparadox.engine import run
+from rodparadox.errors import ScenarioError
+from rodparadox.frames import Frame, paper_frames, sampling_tolerance, view
+from rodparadox.kinematics import HyperbolicArc
+from rodparadox.scenario import builtin_names, load
+from rodparadox.styles import FORMATS, STYLE_NAMES, STYLES
+
+ROOT = Path(__file__).resolve().parent.parent
+SPEEDS = (0.1, 0.6, 0.95)
+
+
+@lru_cache(maxsize=None)
+def history(name: str, v: float | None = None, L: float | None = None):
+    return run(load(name).with_overrides(v=v, L=L))
+
+
+@lru_cache(maxsize=None)
+def figure(name: str, v: float = 0.6, style: str = "default", options: render.Options = render.Options(), L=None):
+    h = history(name, v, L)
+    return render.draw(h, paper_frames(h.scenario.v), style, options)
+
+
+def artist(fig, gid: str):
+    found = [a for a in fig.findobj(lambda a: a.get_gid() == gid)]
+    assert len(found) == 1, (gid, len(found))
+    return found[0]
+
+
+def gids(fig, pattern: str) -> list[str]:
+    return sorted(a.get_gid() for a in fig.findobj(lambda a: bool(a.get_gid()) and re.fullmatch(pattern, a.get_gid())))
+
+
+def xy(line) -> np.ndarray:
+    return np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float)
+
+
+def dashes(line) -> tuple | None:
+    """The line's dash pattern in units of its width, as the style gave it (None: solid)."""
+    pattern = line._unscaled_dash_pattern[1]  # no public getter in matplotlib
+    return tuple(pattern) if pattern else None
+
+
+def panels(fig):
+    return {ax.get_gid()[0]: ax for ax in fig.axes}
+
+
+# --- what is drawn ------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["fig1", "fig2"])
+def test_worldlines_are_the_frames_sampled_points_in_units_of_L(name):
+    L = 2.0
+    h = history(name, 0.6, L)
+    fig = figure(name, 0.6, L=L)
+    tolerance = sampling_tolerance(h)
+    for letter, frame in zip("ab", paper_frames(0.6)):
+        expected = view(h, frame).worldline_points(tolerance)
+        for wl in ("rod_left", "rod_right", "A", "B"):
+            np.testing.assert_allclose(xy(artist(fig, f"{letter}-{wl}")), expected[wl] / L, rtol=0, atol=1e-12)
+
+
+def test_a_diagram_in_units_of_L_does_not_depend_on_L():
+    one, two = figure("fig2", 0.6), figure("fig2", 0.6, L=2.0)
+    for gid in ("a-rod_left", "b-rod_right", "a-B", "b-A", "b-impact-A1"):
+        np.testing.assert_allclose(xy(artist(one, gid)), xy(artist(two, gid)), atol=1e-12)
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_rod_solid_particles_dashed_sheet_between_the_ends(style):
+    fig = figure("fig2", 0.6, style)
+    st = STYLES[style]
+    for letter in "ab":
+        for end in ("rod_left", "rod_right"):
+            line = artist(fig, f"{letter}-{end}")
+            assert line.get_linestyle() == "-" and line.get_linewidth() == st.rod.width
+            assert to_rgb(line.get_color()) == to_rgb(st.rod.colour)
+        for name in ("A", "B"):
+            line = artist(fig, f"{letter}-{name}")
+            assert line.get_linestyle() == "--"
+            assert dashes(line) == st.particles[name].dashes[1]
+        sheet = artist(fig, f"{letter}-sheet")
+        left, right = xy(artist(fig, f"{letter}-rod_left")), xy(artist(fig, f"{letter}-rod_right"))
+        vertices = sheet.get_xy()[:-1] if np.allclose(sheet.get_xy()[0], sheet.get_xy()[-1]) else sheet.get_xy()
+        np.testing.assert_allclose(vertices, np.concatenate([left, right[::-1]]))
+        assert to_rgb(sheet.get_facecolor()[:3]) == to_rgb(st.sheet)
+        assert sheet.get_zorder() < artist(fig, f"{letter}-rod_left").get_zorder()
+
+
+@pytest.mark.parametrize("name, labels", [("fig1", ["A1", "B1"]), ("fig2", ["A1", "B1", "B2"]), ("single", ["B1"])])
+def test_every_impact_has_a_marker_and_the_same_label_in_both_panels(name, labels):
+    h = history(name, 0.6)
+    fig = figure(name, 0.6)
+    for letter, frame in zip("ab", paper_frames(0.6)):
+        events = {e.impact.label: e for e in view(h, frame).events}
+        assert gids(fig, rf"{letter}-impact-\w+") == [f"{letter}-impact-{k}" for k in labels]
+        for label in labels:
+            marker = artist(fig, f"{letter}-impact-{label}")
+            assert marker.get_marker() == "o" and marker.get_linestyle() == "None"
+            np.testing.assert_allclose(xy(marker), [[events[label].x, events[label].t]], atol=1e-12)
+            text = artist(fig, f"{letter}-impact-label-{label}")
+            assert text.get_text() == f"${label[0]}_{{{label[1:]}}}$"
+            # the label sits near its marker: within 60 points
+            ax = panels(fig)[letter]
+            shift = ax.transData.transform(text.get_position()) - ax.transData.transform(xy(marker)[0])
+            assert math.hypot(*shift) < 60
+
+
+def test_particles_are_labelled_A_and_B_in_italics_in_their_colours():
+    fig = figure("fig2", 0.6)
+    for letter in "ab":
+        for name in ("A", "B"):
+            text = artist(fig, f"{letter}-particle-label-{name}")
+            assert text.get_text() == name and text.get_fontstyle() == "italic"
+            assert to_rgb(text.get_color()) == to_rgb(STYLES["default"].particles[name].colour)
+
+
+def _simultaneity_lines(fig, letter: str, family: str) -> dict[str, np.ndarray]:
+    return {gid.rsplit("-", 1)[1]: xy(artist(fig, gid)) for gid in gids(fig, rf"{letter}-simultaneity-{family}-[\w+]+")}
+
+
+@pytest.mark.parametrize("name", ["fig1", "fig2", "off_timing", "while_turning"])
+@pytest.mark.parametrize("v", SPEEDS)
+def test_through_every_impact_a_line_of_S_and_of_S_prime_with_the_right_slopes(name, v):
+    try:
+        h = history(name, v)
+    except ScenarioError:
+        pytest.skip(f"{name} is refused at v = {v}")
+    fig = figure(name, v)
+    for letter, frame in zip("ab", paper_frames(v)):
+        ax = panels(fig)[letter]
+        for family, velocity in (("rest", 0.0), ("moving", -v)):
+            slope = (velocity - frame.velocity) / (1 - velocity * frame.velocity)
+            lines = _simultaneity_lines(fig, letter, family)
+            covered = [label for key in lines for label in key.split("+")]
+            assert sorted(covered) == sorted(i.label for i in h.impacts)
+            for key, points in lines.items():
+                (x0, t0), (x1, t1) = points
+                assert (t1 - t0) / (x1 - x0) == pytest.approx(slope, abs=1e-12)
+                # it runs from edge to edge of the panel
+                box = (*ax.get_xlim(), *ax.get_ylim())
+                on_edge = [min(abs(x - box[0]), abs(x - box[1])) < 1e-9 or min(abs(t - box[2]), abs(t - box[3])) < 1e-9
+                           for x, t in points]
+                assert all(on_edge)
+                for label in key.split("+"):
+                    e = next(e for e in view(h, frame).events if e.impact.label == label)
+                    assert e.t == pytest.approx(t0 + slope * (e.x / h.scenario.L - x0), abs=1e-9)
+
+
+def test_fig1_impacts_share_a_line_of_S_and_fig2s_first_impacts_share_a_line_of_S_prime():
+    fig1, fig2 = figure("fig1"), figure("fig2")
+    for letter in "ab":
+        assert set(_simultaneity_lines(fig1, letter, "rest")) == {"A1+B1"}
+        assert set(_simultaneity_lines(fig1, letter, "moving")) == {"A1", "B1"}
+        assert set(_simultaneity_lines(fig2, letter, "moving")) == {"B1+A1", "B2"}
+        assert set(_simultaneity_lines(fig2, letter, "rest")) == {"B1", "A1", "B2"}
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_the_two_families_of_simultaneity_lines_look_different_and_the_legend_says_which(style):
+    fig = figure("fig2", 0.6, style)
+    st = STYLES[style]
+    rest, moving = artist(fig, "a-simultaneity-rest-B1"), artist(fig, "a-simultaneity-moving-B1+A1")
+    assert dashes(rest) == st.rest_simultaneity.dashes[1]
+    assert dashes(moving) == st.moving_simultaneity.dashes[1]
+    assert dashes(rest) != dashes(moving)
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "line of simultaneity of S" in legend and "line of simultaneity of S\N{PRIME}" in legend
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_every_kind_of_line_has_a_look_of_its_own_and_print_tells_them_apart_by_line_style_alone(style):
+    st = STYLES[style]
+    inks = {"rod": st.rod, "particle": st.particles["A"], "rest": st.rest_simultaneity,
+            "moving": st.moving_simultaneity, "other_axes": st.other_axes, "light_cone": st.light_cone,
+            "hyperbola": st.hyperbola}
+    looks = {(str(ink.dashes), ink.width, ink.colour) for ink in inks.values()}
+    assert len(looks) == len(inks)
+    if style == "print":
+        for ink in (*inks.values(), st.grid):
+            r, g, b = to_rgb(ink.colour)
+            assert r == g == b, ink  # grey only
+        # without colour, each kind differs from every other in dash pattern or (solid ones) clearly in width
+        patterns = [str(ink.dashes) for name, ink in inks.items()]
+        solid = [ink.width for ink in inks.values() if ink.dashes == "solid"]
+        assert len(set(patterns)) == len(patterns) - (len(solid) - 1)
+        assert min(solid) * 2.5 <= max(solid)
+
+
+def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_and_v():
+    fig = figure("fig2", 0.6)
+    a, b = panels(fig)["a"], panels(fig)["b"]
+    fig.canvas.draw() if hasattr(fig.canvas, "draw") else None
+    for ax in (a, b):
+        unit_x = ax.transData.transform([(1, 0)]) - ax.transData.transform([(0, 0)])
+        unit_t = ax.transData.transform([(0, 1)]) - ax.transData.transform([(0, 0)])
+        assert unit_x[0, 0] == pytest.approx(unit_t[0, 1], rel=1e-9) and unit_x[0, 1] == unit_t[0, 0] == 0
+    assert (a.get_xlabel(), a.get_ylabel()) == ("x/L", "t/L")
+    assert (b.get_xlabel(), b.get_ylabel()) == ("x\N{PRIME}/L", "t\N{PRIME}/L")
+    assert a.get_title() == "(a) frame S: rod at rest before and after"
+    assert b.get_title() == "(b) frame S\N{PRIME}: rod at +0.6 before and after"
+    title = artist(fig, "title").get_text()
+    assert title.startswith("fig2, $v = 0.6$")
+
+
+def test_a_frame_of_any_velocity_gets_its_own_panel():
+    h = history("fig2", 0.6)
+    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=0.3", 0.3)))
+    c = panels(fig)["b"]
+    assert c.get_title() == "(b) frame u = 0.3: rod at \N{MINUS SIGN}0.3 before and after"
+    assert c.get_xlabel() == "$x_u/L$"
+    events = {e.impact.label: e for e in view(h, Frame("u=0.3", 0.3)).events}
+    np.testing.assert_allclose(xy(artist(fig, "b-impact-B2")), [[events["B2"].x, events["B2"].t]])
+    # lines of S and S' still, with their slopes seen from u = 0.3
+    rest = xy(artist(fig, "b-simultaneity-rest-B2"))
+    assert (rest[1, 1] - rest[0, 1]) / (rest[1, 0] - rest[0, 0]) == pytest.approx(-0.3)
+    moving = xy(artist(fig, "b-simultaneity-moving-B2"))
+    assert (moving[1, 1] - moving[0, 1]) / (moving[1, 0] - moving[0, 0]) == pytest.approx((-0.6 - 0.3) / (1 + 0.18))
+
+
+# --- limits, clipping, overlaps -------------------------------------------------------------------------
+
+def _renderer(fig, style):
+    with render.style_context(style):
+        canvas = FigureCanvasAgg(fig)
+        renderer = canvas.get_renderer()
+        fig.draw(renderer)
+    return renderer
+
+
+def _collisions(fig, style) -> list[tuple[str, str]]:
+    """Texts in the panels that touch a line, a marker or another text; any text outside the figure."""
+    renderer = _renderer(fig, style)
+    problems, boxes = [], []
+    with render.style_context(style):
+        for ax in fig.axes:
+            axes_box = ax.get_window_extent(renderer)
+            for text in ax.texts:
+                box = text.get_window_extent(renderer)
+                for line in ax.lines:
+                    if line.get_linestyle() == "None":
+                        centre = line.get_transform().transform(xy(line))[0]
+                        if box.contains(*centre):
+                            problems.append((text.get_gid(), line.get_gid()))
+                    elif line.get_transform().transform_path(line.get_path()).intersects_bbox(box, filled=False):
+                        problems.append((text.get_gid(), line.get_gid()))
+                if not (axes_box.x0 <= box.x0 and box.x1 <= axes_box.x1 and axes_box.y0 <= box.y0 and box.y1 <= axes_box.y1):
+                    problems.append((text.get_gid(), "outside its panel"))
+                boxes.append((text.get_gid(), box))
+        for i, (g1, b1) in enumerate(boxes):
+            problems += [(g1, g2) for g2, b2 in boxes[i + 1:] if b1.overlaps(b2)]
+        everything = [t for t in fig.findobj(matplotlib.text.Text) if t.get_visible() and t.get_text()]
+        for text in everything:
+            box = text.get_window_extent(renderer)
+            if box.x0 < -0.5 or box.y0 < -0.5 or box.x1 > fig.bbox.x1 + 0.5 or box.y1 > fig.bbox.y1 + 0.5:
+                problems.append((text.get_text(), "outside the figure"))
+    return problems
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("v", SPEEDS)
+@pytest.mark.parametrize("name", builtin_names())
+def test_labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_figure(name, v, style):
+    try:
+        history(name, v)
+    except ScenarioError:
+        pytest.skip(f"{name} is refused at v = {v}")
+    assert _collisions(figure(name, v, style), style) == []
+
+
+@pytest.mark.parametrize("v", SPEEDS)
+def test_limits_frame_every_worldline_with_a_margin(v):
+    fig = figure("fig2", v)
+    for letter, ax in panels(fig).items():
+        (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
+        margin = 0.05 * max(x1 - x0, t1 - t0)
+        for wl in ("rod_left", "rod_right", "A", "B"):
+            points = xy(artist(fig, f"{letter}-{wl}"))
+            assert points[:, 0].min() >= x0 + margin and points[:, 0].max() <= x1 - margin
+            assert points[:, 1].min() >= t0 + margin and points[:, 1].max() <= t1 - margin
+        # every world-line runs from before the first impact to after the last
+        times = [xy(m)[0, 1] for m in ax.lines if (m.get_gid() or "").startswith(f"{letter}-impact-")]
+        for wl in ("rod_left", "rod_right", "A", "B"):
+            points = xy(artist(fig, f"{letter}-{wl}"))
+            assert points[0, 1] < min(times) and points[-1, 1] > max(times)
+
+
+def test_hyperbolic_arcs_are_drawn_within_1e_4_L_everywhere():
+    h = history("fig2", 0.8)
+    fig = figure("fig2", 0.8)
+    L = h.scenario.L
+    checked = 0
+    for letter, frame in zip("ab", paper_frames(0.8)):
+        for name, pieces in view(h, frame).segments:
+            polyline = xy(artist(fig, f"{letter}-{name}"))
+            for arc in (p for p in pieces if isinstance(p, HyperbolicArc)):
+                phis = np.linspace(arc.phi_start, arc.phi_end, 2001)
+                true = np.array([[arc.point(phi).x, arc.point(phi).t] for phi in phis]) / L
+                assert _distance_to_polyline(true, polyline).max() <= 1e-4 + 1e-12
+                checked += 1
+    assert checked >= 4
+
+
+def _distance_to_polyline(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
+    a, b = polyline[:-1][None], polyline[1:][None]
+    p = points[:, None]
+    d = b - a
+    s = np.clip(((p - a) * d).sum(-1) / np.maximum((d * d).sum(-1), 1e-300), 0, 1)
+    return np.linalg.norm(p - (a + s[..., None] * d), axis=-1).min(1)
+
+
+def test_the_svg_keeps_every_sampled_point():
+    """path.simplify is off: matplotlib would otherwise drop points closer than 1/9 pixel to the curve."""
+    fig = figure("fig2", 0.6)
+    svg = render.figure_bytes(fig, "svg").decode()
+    group = ET.fromstring(svg).find(".//{http://www.w3.org/2000/svg}g[@id='a-rod_left']")
+    path = group.find("{http://www.w3.org/2000/svg}path").get("d")
+    assert len(re.findall(r"[ML]", path)) == len(artist(fig, "a-rod_left").get_xdata())
+
+
+# --- options ----------------------------------------------------------------------------------------------
+
+def test_extras_are_off_by_default():
+    fig = figure("fig2")
+    assert gids(fig, r".*-(axis|light-cone|hyperbola)-.*") == []
+    assert not any(line.get_visible() for ax in fig.axes for line in ax.get_xgridlines())
+
+
+def test_other_frame_axes_are_drawn_tilted_and_named():
+    v = 0.6
+    fig = figure("fig2", v, options=render.Options(other_axes=True))
+    # in S, the t' axis is x = -v t and the x' axis is t = -v x; in S', the t axis is x' = v t'
+    for gid, slope in (("a-axis-moving-t", -1 / v), ("a-axis-moving-x", -v), ("b-axis-rest-t", 1 / v), ("b-axis-rest-x", v)):
+        (x0, t0), (x1, t1) = xy(artist(fig, gid))
+        assert (t1 - t0) / (x1 - x0) == pytest.approx(slope)
+        assert t0 - slope * x0 == pytest.approx(0, abs=1e-12)  # through the shared origin
+    assert artist(fig, "a-axis-label-moving-t").get_text() == "t\N{PRIME}"
+    assert artist(fig, "b-axis-label-rest-x").get_text() == "x"
+
+
+def test_light_cones_are_45_degree_lines_through_each_impact():
+    fig = figure("fig2", 0.6, options=render.Options(light_cones=True))
+    for letter in "ab":
+        for label in ("B1", "A1", "B2"):
+            (xe, te), = xy(artist(fig, f"{letter}-impact-{label}"))
+            for side, slope in (("right", 1), ("left", -1)):
+                (x0, t0), (x1, t1) = xy(artist(fig, f"{letter}-light-cone-{label}-{side}"))
+                assert (t1 - t0) / (x1 - x0) == pytest.approx(slope)
+                assert te - t0 == pytest.approx(slope * (xe - x0), abs=1e-12)
+
+
+def test_calibration_hyperbolae_are_exact_and_sampled_within_1e_4():
+    fig = figure("fig2", 0.6, options=render.Options(hyperbolae=True))
+    found = gids(fig, r"a-hyperbola-\d+")
+    assert len(found) >= 2
+    for gid in found:
+        x, t = xy(artist(fig, gid)).T
+        invariant = t ** 2 - x ** 2
+        assert np.ptp(invariant) < 1e-9 * max(1, abs(invariant[0]))
+        k = math.sqrt(abs(invariant[0]))
+        assert k == pytest.approx(round(k / 0.5) * 0.5)  # multiples of the tick step
+
+
+def test_grid_option_shows_the_grid_behind_everything():
+    fig = figure("fig2", 0.6, options=render.Options(grid=True))
+    ax = panels(fig)["a"]
+    assert all(line.get_visible() for line in ax.get_xgridlines())
+    assert ax.get_axisbelow() is True
+
+
+# --- styles ---------------------------------------------------------------------------------------------
+
+def test_drawing_and_saving_restore_every_rc_param():
+    before = dict(matplotlib.rcParams)
+    render.figure_bytes(figure("fig1", 0.6, "slides"), "svg", "slides")
+    assert dict(matplotlib.rcParams) == before
+
+
+def test_styles_differ_in_type_size_and_colour():
+    default, printed, slides = (figure("fig2", 0.6, s) for s in ("default", "print", "slides"))
+    size = {name: artist(f, "a-impact-label-B1").get_fontsize() for name, f in
+            (("default", default), ("print", printed), ("slides", slides))}
+    assert size["slides"] >= 1.8 * size["default"]
+    assert to_rgb(artist(default, "a-A").get_color()) != to_rgb(artist(printed, "a-A").get_color())
+    assert slides.get_size_inches()[0] > 1.5 * default.get_size_inches()[0]
+    assert printed.get_size_inches()[0] <= 7.05 and default.get_size_inches()[0] <= 7.05
+
+
+# --- output bytes -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_every_preset_renders_in_every_format_and_style(style):
+    magic = {"svg": b"<?xml", "pdf": b"%PDF-", "png": b"\x89PNG"}
+    for name in builtin_names():
+        h = history(name)
+        fig = render.draw(h, paper_frames(h.scenario.v), style)
+        for fmt in FORMATS:
+            data = render.figure_bytes(fig, fmt, style)
+            assert data.startswith(magic[fmt]) and len(data) > 5000, (name, fmt)
+
+
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_two_renderings_give_identical_bytes_without_dates_or_versions(fmt):
+    h = history("fig2", 0.6)
+    one = render.figure_bytes(render.draw(h, paper_frames(0.6)), fmt)
+    two = render.figure_bytes(render.draw(h, paper_frames(0.6)), fmt)
+    assert one == two
+    if fmt != "png":
+        for needle in (matplotlib.__version__.encode(), b"CreationDate", b"<dc:date>", b"Matplotlib v"):
+            assert needle not in one
+
+
+def test_fig2_svg_stays_small():
+    size = len(render.figure_bytes(figure("fig2", 0.6), "svg"))
+    assert size < 120_000
+
+
+def test_render_never_uses_pyplot():
+    source = (ROOT / "rodparadox" / "render.py").read_text()
+    assert "pyplot" not in source.replace("Never pyplot", "").replace("never pyplot", "")
+    assert "savefig(buffer" in source and "open(" not in source  # bytes only; rodparadox.output writes files
