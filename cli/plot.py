@@ -122,7 +122,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     Example: sears-paradox plot fig2 --v 0.6
     """
-    from rodparadox.errors import OutputError
+    from rodparadox.errors import OutputError, ScenarioError
 
     from .main import BadInput, _history, _scenario
 
@@ -144,7 +144,10 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     jobs = []  # (history, frames, {format: path})
     for name in scenarios:
         base = _scenario(name, None, None)
-        s = _scenario(name, v, L)
+        try:
+            s = base.with_overrides(v=v, L=L)
+        except ScenarioError as e:
+            raise BadInput(str(e)) from None
         frames = parse_frames(frame, s.v)
         stem = output_name(Path(name).stem if name.endswith((".yaml", ".yml")) else Path(name).name,
                            base, v, L, frame, style, extras)

@@ -126,6 +126,17 @@ def test_every_impact_has_a_marker_and_the_same_label_in_both_panels(name, label
             assert math.hypot(*shift) < 60
 
 
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("label", ["A1", "B1", "B2", "A7", "B12"])
+def test_the_box_placed_for_an_impact_label_holds_what_mathtext_draws(style, label):
+    """Impact labels are placed by a box from plain glyph metrics (no mathtext parse); it must hold the real one."""
+    with render.style_context(style):
+        size = STYLES[style].font_size * 1.1
+        w, h, _ = render.impact_text_size(label, size)
+        real_w, real_h, _ = render.text_size(render.impact_text(label), size)
+    assert real_w <= w <= 1.15 * real_w and real_h <= h <= 1.2 * real_h
+
+
 def test_particles_are_labelled_A_and_B_in_italics_in_their_colours():
     fig = figure("fig2", 0.6)
     for letter in "ab":
