@@ -29,7 +29,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
-from matplotlib.patches import Patch
+from matplotlib.patches import Patch, Polygon
 from matplotlib.textpath import text_to_path
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
@@ -455,8 +455,9 @@ class _Diagram:
 
         # the rod's world-sheet, then its ends
         left, right = p.worldlines["rod_left"], p.worldlines["rod_right"]
-        ax.fill(np.concatenate([left[:, 0], right[::-1, 0]]), np.concatenate([left[:, 1], right[::-1, 1]]),
-                facecolor=st.sheet, edgecolor="none", zorder=1, gid=f"{letter}-sheet")
+        # add_artist, not fill: the limits are fixed, and fill would walk every vertex to update them
+        ax.add_artist(Polygon(np.concatenate([left, right[::-1]]), closed=True, facecolor=st.sheet, edgecolor="none",
+                              zorder=1, gid=f"{letter}-sheet"))
         for name in ("rod_left", "rod_right"):
             points = p.worldlines[name]
             ax.plot(points[:, 0], points[:, 1], color=st.rod.colour, linewidth=st.rod.width,
@@ -546,7 +547,7 @@ class _Diagram:
                 first = next((e.t / self.L for e in p.view.events if e.impact.particle == name), points[-1, 1])
                 span = points[-1, 1] - points[0, 1]
                 times = [points[0, 1] + min(0.1 * (p.box[3] - p.box[2]), 0.6 * (first - points[0, 1]))]
-                times += [points[0, 1] + f * span for f in (0.3, 0.5, 0.7, 0.9)]
+                times += [points[0, 1] + f * span for f in (0.35, 0.65, 0.9)]
                 anchors = tuple((float(np.interp(t, points[:, 1], points[:, 0])), t) for t in times)
                 labels.append(_Label(f"{letter}-particle-label-{name}", name, anchors,
                                      180.0 if name == "A" else 0.0, st.particles[name].colour, fs["particle"],
@@ -582,7 +583,7 @@ class _Diagram:
     def _place(self, ax, p: _Panel, labels: list[_Label], obstacles: list[np.ndarray], guides: list[np.ndarray]) -> None:
         """Put each label near its anchor where its box crosses no line, marker or earlier label.
 
-        Candidates ring the anchor (24 directions, growing distances). The first
+        Candidates ring the anchor (16 directions, growing distances). The first
         free one wins: nearest ring first, then nearest the preferred direction.
         Crossing a guide (an extra's line) costs as much as three rings outwards,
         and such a label gets a white ground; crossing anything else is a last resort.
@@ -607,7 +608,7 @@ class _Diagram:
         taken = [self._marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
         pad, edge = 2.0 + self._widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
         radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
-        angles = np.arange(0, 360, 15)
+        angles = np.arange(0.0, 360.0, 22.5)
         never = 10 ** 9
         for label in labels:
             w, h = label.box_size or text_size(label.text, label.size, label.italic)[:2]
