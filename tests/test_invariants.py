@@ -1,0 +1,1066 @@
+"""Property tests of every invariant in PHYSICS.md ("What must hold, always"), on the presets and on generated
+scenarios (one particle, two, equal and unequal masses, simultaneous impacts, timings in any frame, impacts while
+the rod still turns).
+
+Every expected value comes from this file's own closed forms: world-lines are
+evaluated from the raw fields of their segments (a Line's end points, a
+HyperbolicArc's centre, radius, side and angles), boosts are written out as
+x' = g(x - u t), t' = g(t - u x), collisions are redone with velocities and the
+relativistic velocity-addition law. The engine's own `event_at_time`,
+`boosted` and `elastic` are what is being tested, never the reference.
+
+Engine bugs found here are pinned by strict xfail tests (search "engine bug"); the
+property tests set exactly those cases aside, by the named predicates
+`pivot_particle_left_inside` and `pivot_particle_grazes`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from dataclasses import replace
+from typing import NamedTuple
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, example, given, note, settings
+from hypothesis import strategies as st
+
+from rodparadox.engine import History, run
+from rodparadox.errors import ScenarioError
+from rodparadox.frames import Frame, view
+from rodparadox.kinematics import Event, HyperbolicArc, Line, WorldLine
+from rodparadox.scenario import Particle, Scenario, Timing, builtin_names, load
+
+PRESETS = builtin_names()
+ROD_ENDS = ("rod_left", "rod_right")
+#: each property over generated scenarios; the whole file runs in about 20 s on one core
+SETTINGS = settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+# --- this file's own spacetime arithmetic ----------------------------------------------------------
+
+def boost(x: float, t: float, u: float) -> tuple[float, float]:
+    """Coordinates in the frame moving at velocity u relative to the one (x, t) was read in."""
+    g = 1.0 / math.sqrt(1.0 - u * u)
+    return g * (x - u * t), g * (t - u * x)
+
+
+def add_velocities(w: float, u: float) -> float:
+    """Velocity w seen from a frame moving at u: (w - u)/(1 - w u)."""
+    return (w - u) / (1.0 - w * u)
+
+
+def scale_of(*values: float) -> float:
+    return max(1.0, *(abs(v) for v in values))
+
+
+class Piece(NamedTuple):
+    """One piece of a world-line from time t0 (x0) to t1 (x1): a ray has one end infinite and a rapidity, an arc its
+    HyperbolicArc, whose fields this file reads, never its methods."""
+
+    t0: float
+    t1: float
+    x0: float
+    x1: float
+    kind: str  # "ray", "line" or "arc"
+    rapidity: float = math.nan  # of a ray
+    arc: HyperbolicArc | None = None
+
+    def state(self, t: float) -> tuple[float, float]:
+        """(x, rapidity) at time t."""
+        if self.kind == "ray":
+            x_end, t_end = (self.x1, self.t1) if self.t0 == -math.inf else (self.x0, self.t0)
+            return x_end + math.tanh(self.rapidity) * (t - t_end), self.rapidity
+        if self.kind == "line":
+            slope = (self.x1 - self.x0) / (self.t1 - self.t0)
+            return self.x0 + slope * (t - self.t0), math.atanh(slope)
+        phi = math.asinh((t - self.arc.centre.t) / (self.arc.side * self.arc.radius))
+        return arc_point(self.arc, phi)[0], phi
+
+    def rapidity_at(self, end: bool) -> float:
+        if self.kind == "ray":
+            return self.rapidity
+        if self.kind == "line":
+            return math.atanh((self.x1 - self.x0) / (self.t1 - self.t0))
+        return self.arc.phi_end if end else self.arc.phi_start
+
+
+class Junction(NamedTuple):
+    """Where two consecutive pieces meet; `shortest` is the shorter piece's duration."""
+
+    x: float
+    t: float
+    rapidity_in: float
+    rapidity_out: float
+    shortest: float
+
+
+def arc_point(arc: HyperbolicArc, phi: float) -> tuple[float, float]:
+    """E + side*d*(cosh phi, sinh phi) (PHYSICS.md rule 3), as (x, t)."""
+    return (arc.centre.x + arc.side * arc.radius * math.cosh(phi),
+            arc.centre.t + arc.side * arc.radius * math.sinh(phi))
+
+
+class Track:
+    """A world-line as Pieces, evaluated with this file's own formulas: the ray before the first segment,
+    the segments, the ray after the last."""
+
+    def __init__(self, worldline: WorldLine):
+        inner = []
+        for s in worldline.segments:
+            if isinstance(s, Line):
+                inner.append(Piece(s.start.t, s.end.t, s.start.x, s.end.x, "line"))
+            else:
+                assert isinstance(s, HyperbolicArc)
+                x0, t0 = arc_point(s, s.phi_start)
+                x1, t1 = arc_point(s, s.phi_end)
+                inner.append(Piece(t0, t1, x0, x1, "arc", arc=s))
+        if inner:
+            tf, xf, tl, xl = inner[0].t0, inner[0].x0, inner[-1].t1, inner[-1].x1
+        else:
+            tf = tl = worldline.origin.t
+            xf = xl = worldline.origin.x
+        before = Piece(-math.inf, tf, math.nan, xf, "ray", worldline.rapidity_before)
+        after = Piece(tl, math.inf, xl, math.nan, "ray", worldline.rapidity_after)
+        self.pieces = [before, *inner, after]
+
+    def state(self, t: float) -> tuple[float, float]:
+        """(x, rapidity) at time t; in a rounding-sized gap between two pieces, from the nearer one."""
+        for piece in self.pieces:
+            if piece.t0 <= t <= piece.t1:
+                return piece.state(t)
+        gap, piece = min((min(abs(t - p.t0), abs(t - p.t1)), p) for p in self.pieces[1:-1])
+        assert gap <= 1e-12 * scale_of(t), f"time {t} is {gap} outside the world-line's pieces"
+        return piece.state(t)
+
+    def x(self, t: float) -> float:
+        return self.state(t)[0]
+
+    def junctions(self) -> list[Junction]:
+        return [Junction(b.x0, b.t0, a.rapidity_at(end=True), b.rapidity_at(end=False), min(a.t1 - a.t0, b.t1 - b.t0))
+                for a, b in zip(self.pieces, self.pieces[1:])]
+
+
+def meet(track: Track, x: float, t: float, phi: float, L: float) -> tuple[float, float]:
+    """Where the line of simultaneity of rapidity phi through (x, t) crosses `track`, as (x, t).
+
+    Along a time-like world-line the time measured in the frame phi,
+    cosh(phi)(t' - t) - sinh(phi)(x' - x), strictly increases, so bisection finds the one crossing.
+    """
+    c, s = math.cosh(phi), math.sinh(phi)
+
+    def f(tq: float) -> float:
+        return c * (tq - t) - s * (track.x(tq) - x)
+
+    step = L
+    lo = t - step
+    while f(lo) > 0:
+        step *= 2
+        lo = t - step
+    step = L
+    hi = t + step
+    while f(hi) < 0:
+        step *= 2
+        hi = t + step
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if f(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+    tq = 0.5 * (lo + hi)
+    return track.x(tq), tq
+
+
+# --- scenarios ------------------------------------------------------------------------------------
+
+RUNS: Counter = Counter()
+
+
+def history_of(scenario: Scenario) -> History:
+    """Run a generated scenario; a timing that contradicts itself is rejected (and counted)."""
+    note(repr(scenario))
+    try:
+        history = run(scenario)
+    except ScenarioError as e:
+        RUNS["rejected"] += 1
+        note(f"rejected: {e}")
+        assume(False)
+    RUNS["ran"] += 1
+    return history
+
+
+def runs_enough(prop, minimum: int, counted: str = "ran") -> None:
+    """Run a hypothesis property and check that `minimum` generated scenarios ran (or were `counted`, for a property
+    that sets some aside after running them): it cannot pass vacuously."""
+    RUNS.clear()
+    prop()
+    assert RUNS[counted] >= minimum, f"only {RUNS[counted]} generated scenarios {counted} ({dict(RUNS)})"
+    # about 1 in 10 generated scenarios times its particles inconsistently; far more means the engine refuses runnable ones
+    assert RUNS["rejected"] <= RUNS["ran"], f"{RUNS['rejected']} generated scenarios refused, {RUNS['ran']} ran"
+
+
+velocities = st.floats(0.02, 0.99)
+speeds = st.one_of(st.none(), st.floats(0.02, 0.99))
+masses = st.floats(0.1, 10.0)
+gaps = st.floats(0.0, 3.0)
+lengths = st.floats(0.1, 10.0)
+delays = st.floats(-1.5, 1.5)
+frames = st.one_of(st.sampled_from(["rest", "moving"]), st.floats(-0.99, 0.99))
+
+
+@st.composite
+def one_particle(draw):
+    name = draw(st.sampled_from("AB"))
+    return Scenario("one", draw(velocities), (Particle(name, draw(masses), draw(speeds), draw(gaps)),), draw(lengths))
+
+
+@st.composite
+def two_gaps(draw):
+    m_a = draw(masses)
+    m_b = draw(st.one_of(st.just(m_a), masses))
+    return Scenario("two", draw(velocities), (Particle("A", m_a, draw(speeds), draw(gaps)),
+                                               Particle("B", m_b, draw(speeds), draw(gaps))), draw(lengths))
+
+
+@st.composite
+def simultaneous(draw):
+    """Both particles at the same speed and gap: the impacts are simultaneous in S (rule 5), masses equal or not."""
+    m_a = draw(masses)
+    m_b = draw(st.one_of(st.just(m_a), masses))
+    speed, gap = draw(speeds), draw(gaps)
+    return Scenario("simultaneous", draw(velocities), (Particle("A", m_a, speed, gap), Particle("B", m_b, speed, gap)),
+                    draw(lengths))
+
+
+@st.composite
+def timed(draw):
+    """One particle placed by a gap, the other timed against it in S, S' or any frame."""
+    first = draw(st.sampled_from("AB"))
+    second = "B" if first == "A" else "A"
+    m_1 = draw(masses)
+    m_2 = draw(st.one_of(st.just(m_1), masses))
+    timing = Timing(first, draw(frames), draw(delays))
+    return Scenario("timed", draw(velocities), (Particle(first, m_1, draw(speeds), draw(gaps)),
+                                                 Particle(second, m_2, draw(speeds), timed_with=timing)),
+                    draw(lengths))
+
+
+@st.composite
+def while_turning(draw):
+    """A timed a little before B in S' (or a little after in S): A strikes while the rod still turns from B1 (rule 6)."""
+    m_b = draw(masses)
+    m_a = draw(st.one_of(st.just(m_b), masses))
+    timing = draw(st.one_of(st.builds(Timing, st.just("B"), st.just("moving"), st.floats(-0.6, 0.0)),
+                            st.builds(Timing, st.just("B"), st.just("rest"), st.floats(0.0, 0.6))))
+    return Scenario("while_turning", draw(velocities), (Particle("B", m_b, draw(speeds), draw(gaps)),
+                                                         Particle("A", m_a, draw(speeds), timed_with=timing)),
+                    draw(lengths))
+
+
+scenarios = st.one_of(one_particle(), two_gaps(), simultaneous(), timed(), while_turning())
+
+# explicit examples every property sees, whatever hypothesis draws: the presets' kinds at awkward values
+WHILE_TURNING = Scenario("wt", 0.8, (Particle("B", 1.0, None, 0.2),
+                                     Particle("A", 1.0, None, timed_with=Timing("B", "moving", -0.3))), 2.5)
+UNEQUAL_SIMULTANEOUS = Scenario("us", 0.9, (Particle("A", 0.3, 0.5, 1.0), Particle("B", 7.0, 0.5, 1.0)), 0.4)
+ZIGZAG = Scenario("zz", 0.95, (Particle("B", 1.0, None, 0.0),
+                               Particle("A", 1.0, None, timed_with=Timing("B", "moving", 0.0))), 7.0)
+
+
+def with_examples(*extra):
+    """Decorator: the property also runs on these scenarios (with `extra` for its other arguments)."""
+    def decorate(test):
+        for s in (WHILE_TURNING, UNEQUAL_SIMULTANEOUS, ZIGZAG):
+            test = example(s, *extra)(test)
+        return test
+    return decorate
+
+
+# --- the checks -----------------------------------------------------------------------------------
+
+def tracks(history: History, eta: float = 0.0) -> dict[str, Track]:
+    return {name: Track(w.boosted(eta) if eta else w) for name, w in history.worldlines}
+
+
+def time_window(history: History, eta: float) -> tuple[float, float]:
+    """Times (in the frame of rapidity eta) from before anything happens to after every turn has finished."""
+    L = history.scenario.L
+    times = [0.0]
+    for name, w in history.worldlines:
+        b = w.boosted(eta)
+        times += [b.first.t, b.last.t]
+    return min(times) - 2 * L, max(times) + 2 * L
+
+
+def sample_times(lo: float, hi: float, n: int, tracks_: list[Track]) -> list[float]:
+    """n times spread over [lo, hi] (off any grid the engine could share) and the middle of every piece."""
+    out = [lo + (hi - lo) * ((k + 0.5 + 0.3819660112501051 * k) % n) / n for k in range(n)]
+    for tr in tracks_:
+        out += [0.5 * (p.t0 + p.t1) for p in tr.pieces[1:-1]]
+    return out
+
+
+def check_rigidity(history: History, eta: float = 0.0, n: int = 24) -> None:
+    """Rule 3: on the rod's rest-frame line of simultaneity through any point of one end, the other end is L away."""
+    L = history.scenario.L
+    tr = tracks(history, eta)
+    left, right = tr["rod_left"], tr["rod_right"]
+    lo, hi = time_window(history, eta)
+    for t in sample_times(lo, hi, n, [left, right]):
+        for this, other, sign in ((left, right, 1.0), (right, left, -1.0)):
+            x, phi = this.state(t)
+            xq, tq = meet(other, x, t, phi, L)
+            c, s = math.cosh(phi), math.sinh(phi)
+            proper_distance = c * (xq - x) - s * (tq - t)  # x-separation in the rod's rest frame phi
+            interval = (xq - x) ** 2 - (tq - t) ** 2
+            tol = 1e-9 * scale_of(L, x, t) * c * c
+            assert proper_distance == pytest.approx(sign * L, abs=tol), (t, x, phi, xq, tq)
+            assert interval == pytest.approx(L * L, abs=tol * L * 4)
+
+
+def collisions(history: History):
+    """Impacts grouped into collisions: a simultaneous pair (rule 5) is one collision of three bodies."""
+    out, seen = [], set()
+    by_label = {i.label: i for i in history.impacts}
+    for i in history.impacts:
+        if i.label in seen:
+            continue
+        group = [i] + ([by_label[i.simultaneous_with]] if i.simultaneous_with else [])
+        seen.update(g.label for g in group)
+        out.append(group)
+    return out
+
+
+def check_impact_lines(history: History) -> None:
+    """At every impact both ends lie L apart on the rod's line of simultaneity before it, and after it about the pivot."""
+    L = history.scenario.L
+    tr = tracks(history)
+    groups = collisions(history)
+    for k, group in enumerate(groups):
+        before, after = group[0].rod_rapidity_before, group[0].rod_rapidity_after
+        for i in group:
+            assert i.rod_rapidity_before == before and i.rod_rapidity_after == after
+            other, sign = (tr["rod_right"], 1.0) if i.end == "left" else (tr["rod_left"], -1.0)
+            xq, tq = meet(other, i.event.x, i.event.t, before, L)
+            c, s = math.cosh(before), math.sinh(before)
+            tol = 1e-9 * scale_of(L, i.event.x, i.event.t) * c * c
+            assert c * (xq - i.event.x) - s * (tq - i.event.t) == pytest.approx(sign * L, abs=tol)
+        if after == before:
+            continue
+        # the pivot is the end pushed towards the new velocity's side of the old one: a velocity gain to the
+        # right must start at the left end, else the right end would move before the impact (causality)
+        pivot_end = "left" if after > before else "right"
+        pivots = [i for i in group if i.end == pivot_end]
+        assert pivots, f"the rod's rapidity went {before} -> {after} with no impact on its {pivot_end} end"
+        interrupted = k + 1 < len(groups) and groups[k + 1][0].while_turning
+        if interrupted:
+            continue  # the next impact stops the turn; its own line through the pivot is checked above
+        pivot = pivots[0]
+        other, sign = (tr["rod_right"], 1.0) if pivot_end == "left" else (tr["rod_left"], -1.0)
+        xq, tq = meet(other, pivot.event.x, pivot.event.t, after, L)
+        c, s = math.cosh(after), math.sinh(after)
+        tol = 1e-9 * scale_of(L, pivot.event.x, pivot.event.t) * c * c
+        assert c * (xq - pivot.event.x) - s * (tq - pivot.event.t) == pytest.approx(sign * L, abs=tol)
+
+
+def check_continuous_timelike(history: History, eta: float = 0.0) -> None:
+    L = history.scenario.L
+    for name, w in history.worldlines:
+        w = w.boosted(eta) if eta else w
+        assert math.isfinite(w.rapidity_before) and math.isfinite(w.rapidity_after)
+        pieces = Track(w).pieces
+        for a, b in zip(pieces[1:-1], pieces[2:-1]):
+            tol = 1e-12 * scale_of(L, a.t1, a.x1, b.t0, b.x0)
+            assert b.t0 == pytest.approx(a.t1, abs=tol) and b.x0 == pytest.approx(a.x1, abs=tol), (name, a, b)
+        for p in pieces:
+            # an arc may be a single point (a rapidity change of an ulp), a line may not: it would have no slope
+            assert p.t1 > p.t0 or p.kind == "arc" and p.t1 == p.t0, (name, "time runs backwards or stands still", p)
+            if p.kind == "ray":
+                assert math.isfinite(p.rapidity), (name, "a straight end at the speed of light")
+            elif p.kind == "line":
+                assert abs(p.x1 - p.x0) < p.t1 - p.t0, (name, "a straight piece at or above the speed of light", p)
+            else:
+                arc = p.arc
+                assert math.isfinite(arc.phi_start) and math.isfinite(arc.phi_end) and arc.radius > 0
+                assert arc.side * (arc.phi_end - arc.phi_start) >= 0, (name, "an arc run backwards in time", p)
+
+
+def check_kinks_at_impacts(history: History) -> None:
+    """A world-line kinks only where it is struck, and there with the impact's rapidities (rules 2, 3)."""
+    L = history.scenario.L
+    tr = tracks(history)
+    for name, track in tr.items():
+        if name in ROD_ENDS:
+            own = [i for i in history.impacts if f"rod_{i.end}" == name]
+        else:
+            own = [i for i in history.impacts if i.particle == name]
+        junctions = track.junctions()
+
+        def junction_at(e: Event) -> Junction | None:
+            """The junction nearest the event, if within rounding of it."""
+            distance, j = min((math.hypot(j.x - e.x, j.t - e.t), j) for j in junctions)
+            return j if distance <= 1e-9 * scale_of(L, e.x, e.t) else None
+
+        for j in junctions:
+            if abs(j.rapidity_in - j.rapidity_out) > 1e-9 * scale_of(j.rapidity_in):
+                tol = 1e-9 * scale_of(L, j.x, j.t)
+                assert any(abs(i.event.x - j.x) <= tol and abs(i.event.t - j.t) <= tol for i in own), (
+                    f"{name} kinks {j.rapidity_in} -> {j.rapidity_out} at ({j.x}, {j.t}), where nothing strikes it")
+        for i in own:
+            j = junction_at(i.event)
+            if name in ROD_ENDS:
+                # the struck end moves with the rod's rest frame just before the impact
+                r_in = j.rapidity_in if j else track.state(i.event.t)[1]
+                assert r_in == pytest.approx(i.rod_rapidity_before, abs=1e-9 * scale_of(r_in))
+            else:
+                assert j is not None, f"{name} is struck at {i.event} but its world-line does not pass there"
+                # a Line's slope comes from its end points: rounding there divided by its duration
+                tol = 1e-12 * scale_of(j.rapidity_in, j.rapidity_out) + 1e-15 * scale_of(L, i.event.x, i.event.t) / j.shortest
+                assert j.rapidity_in == pytest.approx(i.particle_rapidity_before, abs=tol)
+                assert j.rapidity_out == pytest.approx(i.particle_rapidity_after, abs=tol)
+    # every impact lies on its particle's and its end's world-line
+    for i in history.impacts:
+        tol = 1e-9 * scale_of(L, i.event.x, i.event.t)
+        for name in (i.particle, f"rod_{i.end}"):
+            assert tr[name].x(i.event.t) == pytest.approx(i.event.x, abs=tol), (name, i)
+
+
+def check_initial_state(history: History) -> None:
+    """Before the first impact the rod rests in S with its ends at -+L/2; each particle starts as placed."""
+    s, L = history.scenario, history.scenario.L
+    tr = tracks(history)
+    first = min(i.event.t for i in history.impacts)  # may be before t = 0 when a particle is timed in another frame
+    for name, sign in (("rod_left", -1.0), ("rod_right", 1.0)):
+        for t in (first - L, min(0.0, first), 0.5 * first if first > 0 else first - 0.5 * L, first):
+            assert tr[name].state(t)[0] == pytest.approx(sign * L / 2, abs=1e-12 * scale_of(L, t))
+    first_impact_of = {}
+    for i in history.impacts:
+        first_impact_of.setdefault(i.particle, i)
+    for p in s.particles:
+        direction = 1.0 if p.name == "A" else -1.0
+        speed = s.v if p.speed is None else p.speed
+        i = first_impact_of[p.name]
+        assert i.particle_rapidity_before == pytest.approx(direction * math.atanh(speed), rel=1e-12)
+        start = dict(history.starts)[p.name]
+        assert start.t == 0.0
+        if p.gap is not None:
+            assert start.x == pytest.approx(-direction * L * (0.5 + p.gap), rel=1e-12)
+        if i.event.t >= 0:  # else `start` is off the world-line: see test_timed_particle_never_strikes_first
+            x0 = tr[p.name].x(0.0)
+            assert x0 == pytest.approx(start.x, abs=1e-9 * scale_of(L, start.x))
+        if p.timed_with is not None:
+            # the timed particle's first impact comes `delay` L after the other's first, in the timing frame
+            u = {"rest": 0.0, "moving": -s.v}.get(p.timed_with.frame, p.timed_with.frame)
+            reference = first_impact_of[p.timed_with.particle].event
+            _, t_reference = boost(reference.x, reference.t, u)
+            _, t_own = boost(i.event.x, i.event.t, u)
+            assert t_own - t_reference == pytest.approx(p.timed_with.delay * L,
+                                                         abs=1e-9 * scale_of(L, t_own, t_reference))
+
+
+def four_momentum(mass: float, rapidity: float, eta: float) -> np.ndarray:
+    """(E, p) of the body in the frame of rapidity eta, from its velocity by velocity addition."""
+    w = add_velocities(math.tanh(rapidity), math.tanh(eta))
+    g = 1.0 / math.sqrt(1.0 - w * w)
+    return mass * g * np.array([1.0, w])
+
+
+def check_conservation(history: History, extra_frame: float) -> None:
+    """Rule 2: each collision conserves energy and momentum, in S, in S', in one more frame; and is elastic."""
+    s = history.scenario
+    mass = {p.name: p.mass for p in s.particles}
+    for group in collisions(history):
+        rod_b, rod_a = group[0].rod_rapidity_before, group[0].rod_rapidity_after
+        for eta in (0.0, -math.atanh(s.v), math.atanh(extra_frame)):
+            before = four_momentum(1.0, rod_b, eta) + sum(four_momentum(mass[i.particle], i.particle_rapidity_before, eta)
+                                                          for i in group)
+            after = four_momentum(1.0, rod_a, eta) + sum(four_momentum(mass[i.particle], i.particle_rapidity_after, eta)
+                                                         for i in group)
+            assert after == pytest.approx(before, rel=1e-9, abs=1e-9 * before[0]), (group, eta)
+        if len(group) == 1 and mass[group[0].particle] == 1.0:
+            # rule 2: equal masses exchange velocities in the rod's rest frame
+            i = group[0]
+            assert i.particle_rapidity_after == pytest.approx(rod_b, abs=1e-12 * scale_of(rod_b, i.particle_rapidity_before))
+            assert rod_a == pytest.approx(i.particle_rapidity_before, abs=1e-12 * scale_of(rod_b, i.particle_rapidity_before))
+        for i in group:
+            # closing before, separating after (else nothing happened, which also conserves everything)
+            toward = 1.0 if i.end == "left" else -1.0
+            assert toward * (i.particle_rapidity_before - rod_b) > 0, i
+            assert toward * (i.particle_rapidity_after - rod_a) < 0, i
+        check_reversal_in_centre_of_momentum(group, mass)
+
+
+def check_reversal_in_centre_of_momentum(group, mass) -> None:
+    """The documented rule (collision.py, rule 5): in the centre-of-momentum frame every velocity reverses.
+
+    Redone here with velocities: u_cm = P/E, each velocity w seen from u_cm, reversed, and seen back from S.
+    For a particle and the rod this is the unique elastic solution, so it is also the closed form of rule 2.
+    """
+    rod_b, rod_a = group[0].rod_rapidity_before, group[0].rod_rapidity_after
+    bodies = [(1.0, math.tanh(rod_b), math.tanh(rod_a))]
+    bodies += [(mass[i.particle], math.tanh(i.particle_rapidity_before), math.tanh(i.particle_rapidity_after))
+               for i in group]
+    energy = sum(m / math.sqrt(1 - w * w) for m, w, _ in bodies)
+    momentum = sum(m * w / math.sqrt(1 - w * w) for m, w, _ in bodies)
+    u_cm = momentum / energy
+    for m, w_before, w_after in bodies:
+        expected = add_velocities(-add_velocities(w_before, u_cm), -u_cm)
+        # compare rapidities, the natural scale near |w| = 1
+        assert math.atanh(w_after) == pytest.approx(math.atanh(expected), abs=1e-9 * scale_of(math.atanh(expected)))
+
+
+def check_ordering(history: History) -> None:
+    """Rule 4: impacts come in the rod's own time order; simultaneous ones lie on one rod simultaneity line, L apart."""
+    L = history.scenario.L
+    assert history.impacts[0].rod_rapidity_before == 0.0
+    assert all(i.end == {"A": "left", "B": "right"}[i.particle] for i in history.impacts)
+    groups = collisions(history)
+    for group in groups:
+        if len(group) == 2:
+            a, b = group
+            assert {a.end, b.end} == {"left", "right"}
+            dx, dt = b.event.x - a.event.x, b.event.t - a.event.t
+            c, s = math.cosh(a.rod_rapidity_before), math.sinh(a.rod_rapidity_before)
+            tol = 1e-9 * scale_of(L, a.event.x, a.event.t) * c
+            assert c * dt - s * dx == pytest.approx(0.0, abs=tol)
+            assert abs(c * dx - s * dt) == pytest.approx(L, abs=tol)
+    for previous, current in zip(groups, groups[1:]):
+        p, q = previous[0], current[0]
+        for eta in (p.rod_rapidity_before, q.rod_rapidity_before):
+            c, s = math.cosh(eta), math.sinh(eta)
+            later = c * (q.event.t - p.event.t) - s * (q.event.x - p.event.x)
+            assert later >= -1e-9 * scale_of(L, p.event.x, p.event.t) * c, (p, q, eta)
+        # the rod's rest frame carries on from one collision to the next: either the turn completed, or it
+        # stopped part way, at a rapidity between the old and the new one (rule 6)
+        if q.while_turning:
+            lo, hi = sorted((p.rod_rapidity_before, p.rod_rapidity_after))
+            assert lo - 1e-12 <= q.rod_rapidity_before <= hi + 1e-12
+        else:
+            assert q.rod_rapidity_before == pytest.approx(p.rod_rapidity_after, abs=1e-12 * scale_of(p.rod_rapidity_after))
+
+
+def check_no_pass_through(history: History, n: int = 60) -> None:
+    """Particles never pass through the rod: A stays left of the left end, B right of the right end, at every t in S."""
+    L = history.scenario.L
+    tr = tracks(history)
+    lo, hi = time_window(history, 0.0)
+    hi += 10 * L
+    times = sample_times(lo, hi, n, list(tr.values())) + [i.event.t for i in history.impacts]
+    times += [i.event.t + d * L for i in history.impacts for d in (1e-6, 1e-3, 0.1)]
+    for name, end, sign in (("A", "rod_left", 1.0), ("B", "rod_right", -1.0)):
+        if name not in tr:
+            continue
+        for t in times:
+            xp, xe = tr[name].x(t), tr[end].x(t)
+            assert sign * (xe - xp) >= -1e-9 * scale_of(L, xe, t), (
+                f"{name} at x = {xp} is inside the rod ({end} at x = {xe}) at t = {t}")
+
+
+def check_all(history: History, extra_frame: float = 0.37) -> None:
+    check_continuous_timelike(history)
+    check_continuous_timelike(history, math.atanh(extra_frame))
+    check_initial_state(history)
+    check_kinks_at_impacts(history)
+    check_rigidity(history)
+    check_rigidity(history, -math.atanh(history.scenario.v))
+    check_impact_lines(history)
+    check_conservation(history, extra_frame)
+    check_ordering(history)
+    check_no_pass_through(history)
+
+
+def pivot_particle_left_inside(history: History) -> bool:
+    """The engine bug of test_interrupted_turn_keeps_pivot_particle_outside: a turn stopped at rapidity phi (rule 6)
+    gives the pivot end velocity phi, but the particle that struck the pivot may move on faster than that."""
+    groups = collisions(history)
+    for previous, current in zip(groups, groups[1:]):
+        if current[0].while_turning and len(previous) == 1:
+            i, phi = previous[0], current[0].rod_rapidity_before
+            if (1.0 if i.end == "left" else -1.0) * (i.particle_rapidity_after - phi) > 0:
+                return True
+    return False
+
+
+def near_simultaneity_threshold(history: History) -> bool:
+    """Two impacts at the two ends about SIMULTANEITY_TOLERANCE L apart in the rod's time: rounding decides whether
+    they are one simultaneous collision, so it may decide differently at L and k L."""
+    L = history.scenario.L
+    for p, q in zip(history.impacts, history.impacts[1:]):
+        if p.end != q.end:  # apart in the rod's rest frame before p (q's own line of simultaneity runs through p)
+            c, s = math.cosh(p.rod_rapidity_before), math.sinh(p.rod_rapidity_before)
+            apart = abs(c * (q.event.t - p.event.t) - s * (q.event.x - p.event.x))
+            if 1e-12 * L < apart < 1e-8 * L:
+                return True
+    return False
+
+
+def pivot_particle_grazes(history: History) -> bool:
+    """The engine bug of test_turn_stopped_at_its_start_strikes_the_pivot_particle_again: a turn stopped within
+    ~1e-8 of its start leaves the pivot's particle moving with the stopped rapidity, at the far end of the new
+    turn; the new turn strikes it at once, but in _hit_while_turning cosh(1e-8) - 1 rounds to 0 and it is missed."""
+    groups = collisions(history)
+    for previous, current in zip(groups, groups[1:]):
+        if current[0].while_turning and len(previous) == 1:
+            if abs(previous[0].particle_rapidity_after - current[0].rod_rapidity_before) < 1e-7:
+                return True
+    return False
+
+
+def check_frames(history: History, u: float) -> None:
+    """The same event has the same coordinates whichever way it is computed (simulated in S then boosted, or read off)."""
+    L, eta = history.scenario.L, math.atanh(u)
+    frame_view = view(history, Frame("u", u))
+    assert len(frame_view.events) == len(history.impacts)
+    for e, i in zip(frame_view.events, history.impacts):
+        x, t = boost(i.event.x, i.event.t, u)
+        tol = 1e-12 * scale_of(L, x, t, i.event.x, i.event.t)
+        assert e.impact == i
+        assert (e.x, e.t) == pytest.approx((x, t), abs=tol)
+        b = i.event.boosted(eta)
+        assert (b.x, b.t) == pytest.approx((x, t), abs=tol)
+        for seen, rapidity in ((e.particle_velocity_before, i.particle_rapidity_before),
+                               (e.particle_velocity_after, i.particle_rapidity_after),
+                               (e.rod_velocity_before, i.rod_rapidity_before),
+                               (e.rod_velocity_after, i.rod_rapidity_after)):
+            assert seen == pytest.approx(add_velocities(math.tanh(rapidity), u), abs=1e-12)
+    in_s, in_u = tracks(history), tracks(history, eta)
+    lo, hi = time_window(history, 0.0)
+    for name, w in history.worldlines:
+        boosted = w.boosted(eta)
+        for t in sample_times(lo, hi, 12, [in_s[name]]):
+            x = in_s[name].x(t)
+            xb, tb = boost(x, t, u)
+            tol = 1e-9 * scale_of(L, xb, tb, x, t)
+            assert w.event_at_time(t).x == pytest.approx(x, abs=tol)  # the engine's read-off in S
+            assert boosted.event_at_time(tb).x == pytest.approx(xb, abs=tol)  # the engine's read-off in frame u
+            assert in_u[name].x(tb) == pytest.approx(xb, abs=tol)  # the exact boosted segments
+    # there and back is the identity; two boosts are one boost by the sum of their rapidities
+    for name, w in history.worldlines:
+        back = Track(w.boosted(eta).boosted(-eta))
+        twice, once = Track(w.boosted(eta).boosted(0.4)), Track(w.boosted(eta + 0.4))
+        for t in sample_times(lo, hi, 6, [in_s[name]]):
+            assert back.x(t) == pytest.approx(in_s[name].x(t), abs=1e-9 * scale_of(L, t))
+            t2 = boost(in_s[name].x(t), t, math.tanh(eta + 0.4))[1]
+            assert twice.x(t2) == pytest.approx(once.x(t2), abs=1e-9 * scale_of(L, t2, once.x(t2)))
+    # the view's exact pieces are the boosted world-lines, clipped to its time window
+    t_lo, t_hi = frame_view.t_range
+    assert t_lo < min(e.t for e in frame_view.events) <= max(e.t for e in frame_view.events) < t_hi
+    for name, pieces in frame_view.segments:
+        assert pieces[0].start.t == pytest.approx(t_lo, abs=1e-12 * scale_of(t_lo))
+        assert pieces[-1].end.t == pytest.approx(t_hi, abs=1e-12 * scale_of(t_hi))
+        for piece in pieces:
+            for f in (0.0, 0.3, 1.0):
+                tb = piece.start.t + f * (piece.end.t - piece.start.t)
+                single = Track(WorldLine(piece.start, 0.0, (piece,), 0.0))
+                expected = in_u[name].x(tb)
+                assert single.x(tb) == pytest.approx(expected, abs=1e-9 * scale_of(L, expected, tb))
+
+
+def check_scaling(history: History, k: float) -> None:
+    """The diagram in units of L does not depend on L: run again at k L and compare everything divided by L.
+
+    To 1e-12 relative, times the history's condition number: an impact at closing
+    speed w is placed by dividing by w, so rounding differences grow by 1/w.
+    """
+    s, L = history.scenario, history.scenario.L
+    condition = max(1.0, *(1.0 / abs(math.tanh(i.particle_rapidity_before - i.rod_rapidity_before))
+                           for i in history.impacts))
+    rel = 1e-12 * condition
+    other = run(replace(s, L=k * L))
+    kL = other.scenario.L
+
+    def in_order(h: History):
+        # which of a simultaneous pair is listed first is decided by rounding; the pair is one collision
+        return [i for group in collisions(h) for i in sorted(group, key=lambda i: i.end)]
+
+    mine_impacts, their_impacts = in_order(history), in_order(other)
+    assert [(i.label, i.end, i.simultaneous_with, i.while_turning) for i in mine_impacts] == \
+           [(i.label, i.end, i.simultaneous_with, i.while_turning) for i in their_impacts]
+    for a, b in zip(mine_impacts, their_impacts):
+        assert (b.event.x / kL, b.event.t / kL) == pytest.approx((a.event.x / L, a.event.t / L),
+                                                                 rel=rel, abs=rel)
+        for field in ("particle_rapidity_before", "particle_rapidity_after", "rod_rapidity_before",
+                      "rod_rapidity_after"):
+            assert getattr(b, field) == pytest.approx(getattr(a, field), rel=rel, abs=rel)
+    mine, theirs = tracks(history), tracks(other)
+    assert mine.keys() == theirs.keys()
+    lo, hi = time_window(history, 0.0)
+    for name in mine:
+        assert [type(p) for p in history.worldline(name).segments] == [type(p) for p in other.worldline(name).segments]
+        for t in sample_times(lo / L, hi / L, 16, []):
+            assert theirs[name].x(t * kL) / kL == pytest.approx(mine[name].x(t * L) / L, rel=rel, abs=rel)
+    for (n1, e1), (n2, e2) in zip(history.starts, other.starts):
+        assert n1 == n2 and e2.x / kL == pytest.approx(e1.x / L, rel=rel, abs=rel)
+
+
+def polyline_distance(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
+    """Euclidean distance in the (x, t) plane of each point to the polyline."""
+    a, b = polyline[:-1], polyline[1:]
+    d = b - a
+    length2 = np.maximum((d * d).sum(axis=1), 1e-300)
+    rel = points[:, None, :] - a[None, :, :]
+    f = np.clip((rel * d[None]).sum(axis=2) / length2[None], 0.0, 1.0)
+    nearest = a[None] + f[..., None] * d[None]
+    return np.sqrt(((points[:, None, :] - nearest) ** 2).sum(axis=2)).min(axis=1)
+
+
+def check_arc_sampling(arc: HyperbolicArc, tolerance: float, eta: float = 0.0) -> None:
+    """`sample(tol)` of the arc boosted by eta stays within tol of the true curve, evaluated densely here."""
+    drawn = (arc.boosted(eta) if eta else arc).sample(tolerance)
+    u = math.tanh(eta)
+    phis = np.linspace(arc.phi_start, arc.phi_end, 3001)
+    true = np.array([boost(*arc_point(arc, phi), u) for phi in phis])
+    scale = scale_of(*true.ravel()[:2], *true.ravel()[-2:])
+    # ends exact, vertices on the curve and in time order
+    assert drawn[0] == pytest.approx(true[0], abs=1e-12 * scale)
+    assert drawn[-1] == pytest.approx(true[-1], abs=1e-12 * scale)
+    assert np.all(np.diff(drawn[:, 1]) > 0)
+    centre = np.array(boost(arc.centre.x, arc.centre.t, u))
+    rel = drawn - centre
+    assert np.abs(rel[:, 0] ** 2 - rel[:, 1] ** 2 - arc.radius ** 2) == pytest.approx(0.0, abs=1e-9 * scale ** 2)
+    assert np.all(arc.side * rel[:, 0] > 0)
+    # every point of the true curve is within tol of the polyline (dense check) ...
+    assert polyline_distance(true, drawn).max() <= tolerance * (1 + 1e-9) + 1e-12 * scale
+    # ... and every chord within tol of the curve: its farthest point from the curve faces the mid-angle point
+    phi_drawn = np.arcsinh((drawn[:, 1] - centre[1]) / (arc.side * arc.radius))
+    mid = 0.5 * (phi_drawn[:-1] + phi_drawn[1:])
+    mids = np.stack([centre[0] + arc.side * arc.radius * np.cosh(mid), centre[1] + arc.side * arc.radius * np.sinh(mid)], 1)
+    for m, a, b in zip(mids, drawn[:-1], drawn[1:]):
+        assert polyline_distance(m[None], np.array([a, b]))[0] <= tolerance * (1 + 1e-9) + 1e-12 * scale
+
+
+def check_drawn_worldlines(history: History, u: float) -> None:
+    """What a diagram draws, FrameView.worldline_points, is within the drawing tolerance of the exact world-lines."""
+    L, eta = history.scenario.L, math.atanh(u)
+    frame_view = view(history, Frame("u", u))
+    tolerance = 1e-3 * L
+    drawn = frame_view.worldline_points(tolerance)
+    in_u = tracks(history, eta)
+    t_lo, t_hi = frame_view.t_range
+    for name, points in drawn.items():
+        ts = np.linspace(t_lo, t_hi, 1501)
+        true = np.array([[in_u[name].x(t), t] for t in ts])
+        assert polyline_distance(true, points).max() <= tolerance * (1 + 1e-9) + 1e-12 * scale_of(*true.ravel())
+        # every kink inside the window is a drawn vertex
+        for j in in_u[name].junctions():
+            if t_lo < j.t < t_hi and abs(j.rapidity_in - j.rapidity_out) > 1e-9:
+                assert np.min(np.hypot(points[:, 0] - j.x, points[:, 1] - j.t)) <= 1e-9 * scale_of(L, j.x, j.t)
+
+
+# --- the tests: presets ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", PRESETS)
+def test_preset_holds_every_invariant(name):
+    history = run(load(name))
+    check_all(history)
+    v = history.scenario.v
+    for u in (-v, 0.8, -0.95):
+        check_frames(history, u)
+        check_drawn_worldlines(history, u)
+    for k in (0.1, 3.0, 7.3):
+        check_scaling(history, k)
+    for _, w in history.worldlines:
+        for arc in w.segments:
+            if isinstance(arc, HyperbolicArc):
+                for eta in (0.0, math.atanh(-v), 1.5):
+                    check_arc_sampling(arc, 1e-4 * history.scenario.L, eta)
+
+
+def test_presets_cover_the_cases():
+    """The presets between them have simultaneous impacts, unequal masses, a turn interrupted, and a single particle."""
+    histories = [run(load(name)) for name in PRESETS]
+    impacts = [i for h in histories for i in h.impacts]
+    assert any(i.simultaneous_with for i in impacts)
+    assert any(i.while_turning for i in impacts)
+    assert any(len({p.mass for p in h.scenario.particles}) > 1 for h in histories)
+    assert any(len(h.scenario.particles) == 1 for h in histories)
+
+
+@pytest.mark.parametrize("v", [0.1, 0.6, 0.99])
+@pytest.mark.parametrize("L", [0.1, 1.0, 10.0])
+def test_fig1_rod_keeps_its_velocity_in_every_frame(v, L):
+    """Fig. 1: equal and opposite simultaneous impacts; the rod stays at rest in S and keeps velocity v in S'."""
+    history = run(load("fig1").with_overrides(v=v, L=L))
+    check_symmetric(history, [0.0, -v, 0.5, -0.9])
+
+
+def check_symmetric(history: History, frames_: list[float]) -> None:
+    s = history.scenario
+    a, b = history.impacts
+    assert a.simultaneous_with == b.label and b.simultaneous_with == a.label
+    for name, sign in (("rod_left", -1.0), ("rod_right", 1.0)):
+        w = history.worldline(name)
+        assert w.segments == () and w.rapidity_before == 0.0 and w.rapidity_after == 0.0
+        assert Track(w).x(100.0 * s.L) == pytest.approx(sign * s.L / 2, rel=1e-15)
+    for i in history.impacts:
+        assert i.rod_rapidity_before == 0.0 and i.rod_rapidity_after == pytest.approx(0.0, abs=1e-15)
+        assert i.particle_rapidity_after == pytest.approx(-i.particle_rapidity_before, rel=1e-12)
+        assert i.event.t == pytest.approx(a.event.t, rel=1e-12)
+    for u in frames_:
+        for e in view(history, Frame("u", u)).events:
+            assert e.rod_velocity_before == pytest.approx(-u, abs=1e-12)
+            assert e.rod_velocity_after == pytest.approx(-u, abs=1e-12)
+            w = math.tanh(e.impact.particle_rapidity_before)
+            assert e.particle_velocity_before == pytest.approx(add_velocities(w, u), abs=1e-12)
+            assert e.particle_velocity_after == pytest.approx(add_velocities(-w, u), abs=1e-12)
+
+
+# --- the tests: generated scenarios ---------------------------------------------------------------
+
+extra_frames = st.floats(-0.99, 0.99)
+
+
+def test_rigidity():
+    """Invariant 1: on every rest-frame simultaneity line of the rod (in S and in S'), the ends are L apart."""
+    @SETTINGS
+    @given(scenarios)
+    @with_examples()
+    def prop(scenario):
+        history = history_of(scenario)
+        check_rigidity(history)
+        check_rigidity(history, -math.atanh(scenario.v))
+        check_impact_lines(history)
+    runs_enough(prop, 150)
+
+
+def test_worldlines_continuous_timelike_and_kinked_only_by_impacts():
+    """Invariant 2 in S and in another frame, and every kink is an impact with the impact's own rapidities."""
+    @SETTINGS
+    @given(scenarios, extra_frames)
+    @with_examples(0.3)
+    def prop(scenario, u):
+        history = history_of(scenario)
+        check_continuous_timelike(history)
+        check_continuous_timelike(history, math.atanh(u))
+        check_kinks_at_impacts(history)
+        check_initial_state(history)
+    runs_enough(prop, 150)
+
+
+def test_collisions_conserve_energy_and_momentum_in_every_frame():
+    """Invariant 3, and each collision is the documented one: velocities reverse in the centre-of-momentum frame."""
+    @SETTINGS
+    @given(scenarios, extra_frames)
+    @with_examples(0.3)
+    def prop(scenario, u):
+        check_conservation(history_of(scenario), u)
+    runs_enough(prop, 150)
+
+
+def test_same_event_same_coordinates_in_every_frame():
+    """Invariant 4: simulated in S then boosted == boosted then read off, for impacts and world-lines."""
+    @SETTINGS
+    @given(scenarios, extra_frames)
+    @with_examples(0.3)
+    def prop(scenario, u):
+        check_frames(history_of(scenario), u)
+    runs_enough(prop, 150)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-100, 100), st.floats(-100, 100), st.floats(-3, 3), st.floats(-3, 3))
+def test_boosts_go_there_and_back_and_compose(x, t, a, b):
+    """Invariant 4 for the boost itself: x' = g(x - u t), t' = g(t - u x); back is identity; rapidities add."""
+    e = Event(x, t)
+    scale = scale_of(x, t) * math.cosh(abs(a) + abs(b)) ** 2
+    expected = boost(x, t, math.tanh(a))
+    assert (e.boosted(a).x, e.boosted(a).t) == pytest.approx(expected, abs=1e-12 * scale)
+    back = e.boosted(a).boosted(-a)
+    assert (back.x, back.t) == pytest.approx((x, t), abs=1e-12 * scale)
+    twice, once = e.boosted(a).boosted(b), e.boosted(a + b)
+    assert (twice.x, twice.t) == pytest.approx((once.x, once.t), abs=1e-12 * scale)
+    # the paper's S' (velocity -v): x' = g(x + v t), t' = g(t + v x)
+    v = math.tanh(abs(a)) or 0.5
+    g = 1 / math.sqrt(1 - v * v)
+    primed = e.boosted(-math.atanh(v))
+    assert (primed.x, primed.t) == pytest.approx((g * (x + v * t), g * (t + v * x)), abs=1e-12 * scale)
+    # the interval is the same in every frame
+    assert twice.x ** 2 - twice.t ** 2 == pytest.approx(x * x - t * t, abs=1e-11 * scale * scale_of(x, t))
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.floats(-5, 5), st.floats(-5, 5), st.floats(0.1, 10), st.sampled_from([1, -1]), st.floats(-2.5, 2.5),
+       st.floats(0, 2.5), st.floats(-2, 2), st.floats(-2, 2))
+def test_boosted_arcs_are_the_boosted_curves(cx, ct, d, side, phi0, span, a, b):
+    """A boost moves the hyperbola's centre and shifts its angles: every point maps to the boosted point."""
+    arc = HyperbolicArc(Event(cx, ct), d, side, phi0, phi0 + side * span)
+    for phi in (arc.phi_start, 0.5 * (arc.phi_start + arc.phi_end), arc.phi_end):
+        x, t = arc_point(arc, phi)
+        for eta in (a, a + b):
+            bx, bt = boost(x, t, math.tanh(eta))
+            seen = arc.boosted(eta)
+            scale = scale_of(x, t, cx, ct, d) * math.cosh(abs(eta)) * math.cosh(abs(phi) + abs(eta))
+            assert arc_point(seen, phi - eta) == pytest.approx((bx, bt), abs=1e-12 * scale)
+            assert seen.event_at_time(bt).x == pytest.approx(bx, abs=1e-9 * scale)
+        composed, direct = arc.boosted(a).boosted(b), arc.boosted(a + b)
+        assert (composed.phi_start, composed.phi_end) == pytest.approx((direct.phi_start, direct.phi_end), abs=1e-12)
+        assert (composed.centre.x, composed.centre.t) == pytest.approx((direct.centre.x, direct.centre.t),
+                                                                       abs=1e-12 * scale_of(cx, ct) * math.cosh(3) ** 2)
+
+
+def test_diagrams_in_units_of_L_do_not_depend_on_L():
+    """Invariant 5: every event and world-line at L and at k L agree after dividing by L."""
+    @settings(SETTINGS, max_examples=400)
+    @given(scenarios, st.floats(0.1, 10.0))
+    @with_examples(4.5)
+    def prop(scenario, k):
+        history = history_of(scenario)
+        # in the two known bugs' regions a particle sits inside the rod, and whether the engine then notices it
+        # (a spurious impact at the same event) is decided by rounding, so differently at L and k L
+        assume(not pivot_particle_left_inside(history) and not pivot_particle_grazes(history))
+        assume(not near_simultaneity_threshold(history))
+        assume(not near_simultaneity_threshold(run(replace(scenario, L=k * scenario.L))))
+        RUNS["checked"] += 1
+        check_scaling(history, k)
+    runs_enough(prop, 300, "checked")
+
+
+def test_symmetric_simultaneous_impacts_leave_the_rod_alone():
+    """Invariant 6: equal masses, speeds and gaps (Fig. 1 at any v, L, mass, speed): the rod's velocity never changes."""
+    @SETTINGS
+    @given(velocities, speeds, masses, gaps, lengths, extra_frames)
+    def prop(v, speed, mass, gap, L, u):
+        s = Scenario("fig1-like", v, (Particle("A", mass, speed, gap), Particle("B", mass, speed, gap)), L)
+        check_symmetric(history_of(s), [0.0, -v, u])
+    runs_enough(prop, 150)
+
+
+def test_unequal_simultaneous_impacts_follow_the_documented_rule():
+    """Invariant 6: unequal simultaneous impacts are one 3-body collision; in its centre-of-momentum frame all reverse."""
+    @SETTINGS
+    @given(velocities, speeds, masses, masses, gaps, lengths)
+    @example(0.6, None, 2.0, 0.5, 0.5, 1.0)  # the unequal_masses preset
+    def prop(v, speed, m_a, m_b, gap, L):
+        s = Scenario("unequal", v, (Particle("A", m_a, speed, gap), Particle("B", m_b, speed, gap)), L)
+        history = history_of(s)
+        a, b = history.impacts[:2]
+        assert (a.particle, b.particle) in (("A", "B"), ("B", "A")) and a.simultaneous_with == b.label
+        check_reversal_in_centre_of_momentum([a, b], {"A": m_a, "B": m_b})
+        # closed form: rod at rest, particles at -+w, masses m_A, m_B, rod 1: u_cm = (m_A - m_B) g w / (1 + (m_A + m_B) g)
+        w = s.v if speed is None else speed
+        g = 1 / math.sqrt(1 - w * w)
+        u_cm = (m_a - m_b) * g * w / (1 + (m_a + m_b) * g)
+        rod_after = 2 * u_cm / (1 + u_cm * u_cm)  # reversing 0 in the frame u_cm: velocity -u_cm there, 2u/(1+u^2) in S
+        assert math.tanh(a.rod_rapidity_after) == pytest.approx(rod_after, abs=1e-12)
+        if m_a == m_b:
+            assert a.rod_rapidity_after == pytest.approx(0.0, abs=1e-15)
+        else:
+            assert (a.rod_rapidity_after > 0) == (m_a > m_b)
+        check_all(history, 0.5)
+    runs_enough(prop, 150)
+
+
+def test_impacts_in_the_rods_own_time_order():
+    """Invariant 7 (rule 4): each impact is no earlier than the previous one on the rod's own simultaneity lines."""
+    @SETTINGS
+    @given(scenarios)
+    @with_examples()
+    def prop(scenario):
+        check_ordering(history_of(scenario))
+    runs_enough(prop, 150)
+
+
+def test_particles_never_pass_through_the_rod():
+    """Invariant 7: A stays left of the left end and B right of the right end at every time in S.
+
+    The two cases the engine gets wrong are excluded here and pinned down by
+    test_interrupted_turn_keeps_pivot_particle_outside and
+    test_turn_stopped_at_its_start_strikes_the_pivot_particle_again; drop the `assume`s once those pass.
+    """
+    @SETTINGS
+    @given(scenarios)
+    @with_examples()
+    def prop(scenario):
+        history = history_of(scenario)
+        assume(not pivot_particle_left_inside(history))
+        assume(not pivot_particle_grazes(history))
+        RUNS["checked"] += 1
+        check_no_pass_through(history)
+    runs_enough(prop, 150, "checked")
+
+
+@pytest.mark.xfail(strict=True, reason="engine bug: a turn stopped by an impact at the far end (rule 6) gives the pivot "
+                                       "end the stopped rapidity, but a particle heavier than the rod that struck the "
+                                       "pivot moves on faster than that, through the rod, and is never seen again")
+@pytest.mark.parametrize("scenario", [
+    # B (2 M) strikes the right end at t = 5/6; A strikes the left end 0.05 L later in S, while the rod still turns
+    Scenario("heavy_B", 0.6, (Particle("B", 2.0, None, 0.5), Particle("A", 1.0, None, timed_with=Timing("B", "rest", 0.05)))),
+    # the mirror image: a heavy A struck first, B times against it
+    Scenario("heavy_A", 0.6, (Particle("A", 2.0, None, 0.5), Particle("B", 1.0, None, timed_with=Timing("A", "rest", 0.05)))),
+], ids=lambda s: s.name)
+def test_interrupted_turn_keeps_pivot_particle_outside(scenario):
+    history = run(scenario)
+    assert [i.label for i in history.impacts][:2] == [scenario.particles[0].name + "1", scenario.particles[1].name + "1"]
+    assert history.impacts[1].while_turning
+    check_no_pass_through(history)
+
+
+def test_boosted_worldline_can_be_read_at_every_time():
+    """Invariant 4 asks `worldline.boosted(eta).event_at_time(t)` for any t, also in the rounding gap (here 1.4e-14)
+    that boosting leaves between ZIGZAG's two left-end arcs in S' (it raised AssertionError before 300b53b)."""
+    history, eta = run(ZIGZAG), -math.atanh(ZIGZAG.v)
+    w = history.worldline("rod_left").boosted(eta)
+    a, b = w.segments[0], w.segments[1]
+    t = 0.5 * (a.end.t + b.start.t)  # 10.648522228038296, between 10.648522228038289 and ...303
+    assert w.event_at_time(t).x == pytest.approx(Track(w).x(t), abs=1e-9 * ZIGZAG.L)
+
+
+@pytest.mark.xfail(strict=True, reason="engine bug: when A strikes less than ~2e-8 L (but more than the 1e-10 L "
+                                       "simultaneity tolerance) after B, B stopped at the old pivot is exactly L from "
+                                       "A1 up to cosh(1e-9) - 1, which rounds to 0 in _hit_while_turning; B's second "
+                                       "impact is missed and the right end moves through B")
+@pytest.mark.parametrize("gap", [0.0, 0.5])
+@pytest.mark.parametrize("delay", [1e-9, 1e-8])
+def test_turn_stopped_at_its_start_strikes_the_pivot_particle_again(delay, gap):
+    """Equal masses: B1 stops B, A strikes `delay` L later in S (while the rod turns); the rod then moves right, so
+    its right end must strike B, at rest there, again (with delay >= 2e-8 the engine finds this B2)."""
+    s = Scenario("late_A", 0.5, (Particle("B", 1.0, None, gap), Particle("A", 1.0, None, timed_with=Timing("B", "rest", delay))))
+    history = run(s)
+    assert [i.label for i in history.impacts][:2] == ["B1", "A1"] and history.impacts[1].while_turning
+    assert history.impacts[1].rod_rapidity_after > 0  # the rod ends up moving right, towards B
+    check_no_pass_through(history)
+
+
+@pytest.mark.xfail(strict=True, reason="engine bug: _start_from_timing accepts a timing whose particle strikes first in "
+                                       "the rod's own time, because the other particle's impact moves only by the "
+                                       "square of the lead (here 5e-11 L for a lead of 1e-5 L), under its 1e-9 check")
+@pytest.mark.parametrize("u", [1e-6, 1e-5, 3e-5])
+def test_timed_particle_never_strikes_first(u):
+    """A timed against B, simultaneous in a frame moving at u > 0: A's impact comes u L earlier in S, so first in the
+    rod's time; the engine's own rule is to refuse that ("its impact would come first ... and move B's")."""
+    s = Scenario("early_A", 0.6, (Particle("B", 1.0, None, 0.5), Particle("A", 1.0, None, timed_with=Timing("B", u, 0.0))))
+    try:
+        history = run(s)
+    except ScenarioError:
+        return
+    # accepted: then the timing must hold and B must still strike first (or at once with A)
+    a1 = next(i for i in history.impacts if i.particle == "A")
+    b1 = next(i for i in history.impacts if i.particle == "B")
+    assert a1.event.t == pytest.approx(5 / 6 - u, abs=1e-12)  # what the timing asks: in frame u, t' equal
+    assert history.impacts[0] is b1 or b1.simultaneous_with == a1.label
+    assert not b1.while_turning
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.floats(-5, 5), st.floats(-5, 5), st.floats(0.1, 10), st.sampled_from([1, -1]), st.floats(-2.5, 2.5),
+       st.floats(1e-6, 2.5), st.floats(-2, 2), st.floats(-5, -1))
+def test_arc_sampling_within_tolerance(cx, ct, d, side, phi0, span, eta, log_tol):
+    """Invariant 8: HyperbolicArc.sample(tol) stays within tol of the true curve, boosted or not."""
+    arc = HyperbolicArc(Event(cx, ct), d, side, phi0, phi0 + side * span)
+    tolerance = d * 10 ** log_tol
+    check_arc_sampling(arc, tolerance)
+    check_arc_sampling(arc, tolerance, eta)
+
+
+def test_drawn_worldlines_within_tolerance():
+    """Invariant 8 for whole diagrams: the drawn polylines of every world-line, in any frame, and every kink drawn."""
+    @settings(SETTINGS, max_examples=60)
+    @given(scenarios, extra_frames)
+    @with_examples(0.3)
+    def prop(scenario, u):
+        check_drawn_worldlines(history_of(scenario), u)
+    runs_enough(prop, 45)
