@@ -583,7 +583,7 @@ class _Diagram:
     def _place(self, ax, p: _Panel, labels: list[_Label], obstacles: list[np.ndarray], guides: list[np.ndarray]) -> None:
         """Put each label near its anchor where its box crosses no line, marker or earlier label.
 
-        Candidates ring the anchor (16 directions, growing distances). The first
+        Candidates ring the anchor (24 directions, growing distances). The first
         free one wins: nearest ring first, then nearest the preferred direction.
         Crossing a guide (an extra's line) costs as much as three rings outwards,
         and such a label gets a white ground; crossing anything else is a last resort.
@@ -608,7 +608,7 @@ class _Diagram:
         taken = [self._marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
         pad, edge = 2.0 + self._widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
         radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
-        angles = np.arange(0.0, 360.0, 22.5)
+        angles = np.arange(0.0, 360.0, 15.0)
         never = 10 ** 9
         for label in labels:
             w, h = label.box_size or text_size(label.text, label.size, label.italic)[:2]
