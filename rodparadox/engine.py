@@ -117,7 +117,10 @@ def _start_from_timing(scenario: Scenario, p: Particle, starts: dict[str, Event]
     scale = scenario.L + abs(target.t) + abs(target.x)
     lands = first[p.name] is not None and _distance(first[p.name].event, target) <= 1e-9 * scale
     reference_kept = first[other.name] is not None and _distance(first[other.name].event, reference.event) <= 1e-9 * scale
-    if not (lands and reference_kept):
+    order = list(history.impacts)
+    not_first = lands and reference_kept and (order.index(first[p.name]) > order.index(first[other.name])
+                                              or first[p.name].simultaneous_with == first[other.name].label)
+    if not not_first:
         raise ScenarioError(
             f"{key}: {p.name} cannot strike the rod with delay {timing.delay:g} after {other.name}'s first impact, "
             f"because its impact would come first in the rod's own time and move {other.name}'s; "
@@ -181,7 +184,8 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
         if len(impacts) > MAX_IMPACTS:
             raise ScenarioError(f"the rod is struck more than {MAX_IMPACTS} times; this scenario does not settle.")
         arc = phase.turn
-        hit = _hit_while_turning(arc, L, particles) if arc is not None else None
+        far_start = None if arc is None else (phase.right0 if arc.side == 1 else phase.left0)
+        hit = _hit_while_turning(arc, far_start, L, particles) if arc is not None else None
         if hit is not None:
             name, phi, completed = hit
             far = "right" if arc.side == 1 else "left"
@@ -189,6 +193,10 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
             ends[far].append(stopped)
             event = stopped.end
             struck = [(name, far, event)]
+            again = _pivot_particle_closing(arc, phi, particles)
+            if again is not None:
+                struck.append((again, "left" if far == "right" else "right", arc.centre))
+                struck.sort(key=lambda item: item[1] != "left")
             rod_rapidity, while_turning = phi, not completed
             new_left, new_right = (arc.centre, event) if far == "right" else (event, arc.centre)
         else:
@@ -250,7 +258,8 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
 
 
 def _particle_worldline(state: _ParticleState) -> WorldLine:
-    kinks = state.kinks
+    # a particle struck twice at one event (rule 6 with a heavy particle) kinks once, to its last rapidity
+    kinks = [k for k, after in zip(state.kinks, state.kinks[1:] + [None]) if after is None or after[0] != k[0]]
     before = state.initial_rapidity
     if not kinks:
         return WorldLine(state.start, before)
@@ -258,35 +267,59 @@ def _particle_worldline(state: _ParticleState) -> WorldLine:
     return WorldLine(kinks[0][0], before, segments, kinks[-1][1])
 
 
-def _hit_while_turning(arc: HyperbolicArc, L: float, particles: dict) -> tuple[str, float, bool] | None:
+def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
+                       particles: dict) -> tuple[str, float, bool] | None:
     """The far end struck during the turn: (particle, rapidity phi of the fan line through it, on the last line?), or None.
 
-    In the particle's rest frame the arc is x = side*L*cosh(phi - psi) about the
-    pivot, the particle stands at its proper distance D from the pivot, so they
-    meet where cosh(phi - psi) = side*D/L; the closing root is phi = psi + side*acosh(.).
+    In the particle's rest frame (rapidity psi) the arc is x = side*L*cosh(phi - psi)
+    about the pivot and the particle stands at its proper distance D from the pivot,
+    so they meet where cosh(phi - psi) = side*D/L; the closing root is
+    phi = psi + side*acosh(side*D/L). A particle that sits at the arc's start
+    (struck there just before, rule 6) meets it again at the mirror angle
+    phi = 2*psi - phi_start exactly: acosh near 1 would lose that to rounding.
     """
     name = "B" if arc.side == 1 else "A"
     state = particles.get(name)
     if state is None:
         return None
-    here = state.since or state.start
-    psi = state.rapidity
-    dx, dt = here.x - arc.centre.x, here.t - arc.centre.t
-    distance = math.cosh(psi) * dx - math.sinh(psi) * dt
-    c = arc.side * distance / L
-    if not c > 1.0:
-        return None
-    phi = psi + arc.side * math.acosh(c)
-    s = arc.side
-    if not s * (phi - arc.phi_start) > 1e-13:
-        return None
+    s, psi = arc.side, state.rapidity
+    if state.since == far_start:
+        phi = 2.0 * psi - arc.phi_start
+        if not s * (phi - arc.phi_start) > 0:
+            return None
+    else:
+        here = state.since or state.start
+        dx, dt = here.x - arc.centre.x, here.t - arc.centre.t
+        c = s * (math.cosh(psi) * dx - math.sinh(psi) * dt) / L
+        if not c > 1.0:
+            return None
+        phi = psi + s * math.acosh(c)
+        if not s * (phi - arc.phi_start) > 1e-13:
+            return None
+        if state.since is not None and arc.point(phi).t < state.since.t - 1e-12 * L:
+            return None
     if s * (phi - arc.phi_end) > 1e-12:
         return None
     completed = s * (phi - arc.phi_end) >= -1e-12
     phi = arc.phi_end if completed else phi  # a hit on the turn's last line (Fig. 2's A1, B2) ends a complete turn
-    if state.since is not None and arc.point(phi).t < state.since.t - 1e-12 * L:
-        return None
     return name, phi, completed
+
+
+def _pivot_particle_closing(arc: HyperbolicArc, phi: float, particles: dict) -> str | None:
+    """The particle that struck the pivot, if it now runs into the rod.
+
+    Stopping the turn at phi (rule 6) gives the pivot rapidity phi instead of the
+    turn's final one; a particle heavier than the rod, which left the pivot slower
+    than that final rapidity, may be faster than phi. It then strikes the pivot
+    again at once, on the same simultaneity line as the far end's impact: both
+    impacts are one simultaneous impact (rule 5).
+    """
+    name = "A" if arc.side == 1 else "B"
+    state = particles.get(name)
+    if state is None or state.since != arc.centre:
+        return None
+    closing = state.rapidity > phi if name == "A" else state.rapidity < phi
+    return name if closing else None
 
 
 def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, bounded: bool,
@@ -317,5 +350,6 @@ def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, b
         return []
     candidates.sort(key=lambda c: c[0])
     first_time = candidates[0][0]
-    return [(name, "left" if name == "A" else "right", event)
-            for t, name, event in candidates if t - first_time <= tolerance]
+    # a simultaneous pair is listed left end first, whatever rounding says about their order
+    return sorted((name, "left" if name == "A" else "right", event)
+                  for t, name, event in candidates if t - first_time <= tolerance)

@@ -9,9 +9,10 @@ x' = g(x - u t), t' = g(t - u x), collisions are redone with velocities and the
 relativistic velocity-addition law. The engine's own `event_at_time`,
 `boosted` and `elastic` are what is being tested, never the reference.
 
-Engine bugs found here are pinned by strict xfail tests (search "engine bug"); the
-property tests set exactly those cases aside, by the named predicates
-`pivot_particle_left_inside` and `pivot_particle_grazes`.
+Three engine bugs first found here have their own regression tests: a heavy
+particle left inside the rod by a turn stopped under rule 6, a second impact
+missed when a turn is stopped right at its start, and a timing accepted though
+the timed particle strikes first.
 """
 
 from __future__ import annotations
@@ -410,18 +411,34 @@ def check_kinks_at_impacts(history: History) -> None:
                 tol = 1e-9 * scale_of(L, j.x, j.t)
                 assert any(abs(i.event.x - j.x) <= tol and abs(i.event.t - j.t) <= tol for i in own), (
                     f"{name} kinks {j.rapidity_in} -> {j.rapidity_out} at ({j.x}, {j.t}), where nothing strikes it")
-        for i in own:
+        for k, i in enumerate(own):
             j = junction_at(i.event)
             if name in ROD_ENDS:
-                # the struck end moves with the rod's rest frame just before the impact
+                # the struck end moves with the rod's rest frame just before the impact; struck again at the same
+                # event (rule 6 stopped the turn, so the heavy particle that struck the pivot runs into it at once),
+                # with the rod's rest frame just after the first impact, the end's rapidity leaving the event
+                if any(o.event == i.event for o in own[:k]):
+                    # struck again at the same event (rule 6 stopped the turn, so the heavy particle that struck
+                    # there runs into the end at once): one collision with the far end's impact, in one rod frame;
+                    # the end leaves the event tangent to its new turn (far end) or kinked to the new velocity (pivot)
+                    partner = next(o for o in history.impacts if o.label == i.simultaneous_with)
+                    assert i.rod_rapidity_before == partner.rod_rapidity_before
+                    assert j is not None and min(abs(j.rapidity_out - i.rod_rapidity_before),
+                                                 abs(j.rapidity_out - i.rod_rapidity_after)) <= 1e-9 * scale_of(j.rapidity_out)
+                    continue
                 r_in = j.rapidity_in if j else track.state(i.event.t)[1]
                 assert r_in == pytest.approx(i.rod_rapidity_before, abs=1e-9 * scale_of(r_in))
             else:
                 assert j is not None, f"{name} is struck at {i.event} but its world-line does not pass there"
                 # a Line's slope comes from its end points: rounding there divided by its duration
                 tol = 1e-12 * scale_of(j.rapidity_in, j.rapidity_out) + 1e-15 * scale_of(L, i.event.x, i.event.t) / j.shortest
-                assert j.rapidity_in == pytest.approx(i.particle_rapidity_before, abs=tol)
-                assert j.rapidity_out == pytest.approx(i.particle_rapidity_after, abs=tol)
+                # struck twice at one event (see above), the particle kinks once, from before the first to
+                # after the last, and the second impact starts where the first left it
+                same = [o for o in own if o.event == i.event]
+                assert j.rapidity_in == pytest.approx(same[0].particle_rapidity_before, abs=tol)
+                assert j.rapidity_out == pytest.approx(same[-1].particle_rapidity_after, abs=tol)
+                for first, second in zip(same, same[1:]):
+                    assert second.particle_rapidity_before == first.particle_rapidity_after
     # every impact lies on its particle's and its end's world-line
     for i in history.impacts:
         tol = 1e-9 * scale_of(L, i.event.x, i.event.t)
@@ -573,18 +590,6 @@ def check_all(history: History, extra_frame: float = 0.37) -> None:
     check_no_pass_through(history)
 
 
-def pivot_particle_left_inside(history: History) -> bool:
-    """The engine bug of test_interrupted_turn_keeps_pivot_particle_outside: a turn stopped at rapidity phi (rule 6)
-    gives the pivot end velocity phi, but the particle that struck the pivot may move on faster than that."""
-    groups = collisions(history)
-    for previous, current in zip(groups, groups[1:]):
-        if current[0].while_turning and len(previous) == 1:
-            i, phi = previous[0], current[0].rod_rapidity_before
-            if (1.0 if i.end == "left" else -1.0) * (i.particle_rapidity_after - phi) > 0:
-                return True
-    return False
-
-
 def near_simultaneity_threshold(history: History) -> bool:
     """Two impacts at the two ends about SIMULTANEITY_TOLERANCE L apart in the rod's time: rounding decides whether
     they are one simultaneous collision, so it may decide differently at L and k L."""
@@ -594,18 +599,6 @@ def near_simultaneity_threshold(history: History) -> bool:
             c, s = math.cosh(p.rod_rapidity_before), math.sinh(p.rod_rapidity_before)
             apart = abs(c * (q.event.t - p.event.t) - s * (q.event.x - p.event.x))
             if 1e-12 * L < apart < 1e-8 * L:
-                return True
-    return False
-
-
-def pivot_particle_grazes(history: History) -> bool:
-    """The engine bug of test_turn_stopped_at_its_start_strikes_the_pivot_particle_again: a turn stopped within
-    ~1e-8 of its start leaves the pivot's particle moving with the stopped rapidity, at the far end of the new
-    turn; the new turn strikes it at once, but in _hit_while_turning cosh(1e-8) - 1 rounds to 0 and it is missed."""
-    groups = collisions(history)
-    for previous, current in zip(groups, groups[1:]):
-        if current[0].while_turning and len(previous) == 1:
-            if abs(previous[0].particle_rapidity_after - current[0].rod_rapidity_before) < 1e-7:
                 return True
     return False
 
@@ -911,7 +904,6 @@ def test_diagrams_in_units_of_L_do_not_depend_on_L():
         history = history_of(scenario)
         # in the two known bugs' regions a particle sits inside the rod, and whether the engine then notices it
         # (a spurious impact at the same event) is decided by rounding, so differently at L and k L
-        assume(not pivot_particle_left_inside(history) and not pivot_particle_grazes(history))
         assume(not near_simultaneity_threshold(history))
         assume(not near_simultaneity_threshold(run(replace(scenario, L=k * scenario.L))))
         RUNS["checked"] += 1
@@ -967,25 +959,20 @@ def test_impacts_in_the_rods_own_time_order():
 def test_particles_never_pass_through_the_rod():
     """Invariant 7: A stays left of the left end and B right of the right end at every time in S.
 
-    The two cases the engine gets wrong are excluded here and pinned down by
+    Two cases the engine once got wrong have their own regression tests too:
     test_interrupted_turn_keeps_pivot_particle_outside and
-    test_turn_stopped_at_its_start_strikes_the_pivot_particle_again; drop the `assume`s once those pass.
+    test_turn_stopped_at_its_start_strikes_the_pivot_particle_again.
     """
     @SETTINGS
     @given(scenarios)
     @with_examples()
     def prop(scenario):
         history = history_of(scenario)
-        assume(not pivot_particle_left_inside(history))
-        assume(not pivot_particle_grazes(history))
         RUNS["checked"] += 1
         check_no_pass_through(history)
     runs_enough(prop, 150, "checked")
 
 
-@pytest.mark.xfail(strict=True, reason="engine bug: a turn stopped by an impact at the far end (rule 6) gives the pivot "
-                                       "end the stopped rapidity, but a particle heavier than the rod that struck the "
-                                       "pivot moves on faster than that, through the rod, and is never seen again")
 @pytest.mark.parametrize("scenario", [
     # B (2 M) strikes the right end at t = 5/6; A strikes the left end 0.05 L later in S, while the rod still turns
     Scenario("heavy_B", 0.6, (Particle("B", 2.0, None, 0.5), Particle("A", 1.0, None, timed_with=Timing("B", "rest", 0.05)))),
@@ -993,9 +980,15 @@ def test_particles_never_pass_through_the_rod():
     Scenario("heavy_A", 0.6, (Particle("A", 2.0, None, 0.5), Particle("B", 1.0, None, timed_with=Timing("A", "rest", 0.05)))),
 ], ids=lambda s: s.name)
 def test_interrupted_turn_keeps_pivot_particle_outside(scenario):
+    """Rule 6 with a particle heavier than the rod: stopping the turn slows the pivot below the speed at which the
+    heavy particle left it, so the engine has it strike the pivot again at once, simultaneously with the far end's
+    impact (rule 5), instead of passing through the rod."""
     history = run(scenario)
-    assert [i.label for i in history.impacts][:2] == [scenario.particles[0].name + "1", scenario.particles[1].name + "1"]
-    assert history.impacts[1].while_turning
+    first, second = scenario.particles[0].name, scenario.particles[1].name
+    labels = [i.label for i in history.impacts]
+    assert labels[0] == first + "1" and {second + "1", first + "2"} <= set(labels[1:3])
+    struck_again = next(i for i in history.impacts if i.label == first + "2")
+    assert struck_again.event == history.impacts[0].event and struck_again.simultaneous_with == second + "1"
     check_no_pass_through(history)
 
 
@@ -1009,15 +1002,11 @@ def test_boosted_worldline_can_be_read_at_every_time():
     assert w.event_at_time(t).x == pytest.approx(Track(w).x(t), abs=1e-9 * ZIGZAG.L)
 
 
-@pytest.mark.xfail(strict=True, reason="engine bug: when A strikes less than ~2e-8 L (but more than the 1e-10 L "
-                                       "simultaneity tolerance) after B, B stopped at the old pivot is exactly L from "
-                                       "A1 up to cosh(1e-9) - 1, which rounds to 0 in _hit_while_turning; B's second "
-                                       "impact is missed and the right end moves through B")
 @pytest.mark.parametrize("gap", [0.0, 0.5])
 @pytest.mark.parametrize("delay", [1e-9, 1e-8])
 def test_turn_stopped_at_its_start_strikes_the_pivot_particle_again(delay, gap):
     """Equal masses: B1 stops B, A strikes `delay` L later in S (while the rod turns); the rod then moves right, so
-    its right end must strike B, at rest there, again (with delay >= 2e-8 the engine finds this B2)."""
+    its right end must strike B, at rest there, again (once missed for delay < 2e-8: cosh(1e-9) - 1 rounds to 0)."""
     s = Scenario("late_A", 0.5, (Particle("B", 1.0, None, gap), Particle("A", 1.0, None, timed_with=Timing("B", "rest", delay))))
     history = run(s)
     assert [i.label for i in history.impacts][:2] == ["B1", "A1"] and history.impacts[1].while_turning
@@ -1025,9 +1014,6 @@ def test_turn_stopped_at_its_start_strikes_the_pivot_particle_again(delay, gap):
     check_no_pass_through(history)
 
 
-@pytest.mark.xfail(strict=True, reason="engine bug: _start_from_timing accepts a timing whose particle strikes first in "
-                                       "the rod's own time, because the other particle's impact moves only by the "
-                                       "square of the lead (here 5e-11 L for a lead of 1e-5 L), under its 1e-9 check")
 @pytest.mark.parametrize("u", [1e-6, 1e-5, 3e-5])
 def test_timed_particle_never_strikes_first(u):
     """A timed against B, simultaneous in a frame moving at u > 0: A's impact comes u L earlier in S, so first in the
