@@ -28,6 +28,7 @@ import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
+from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon
 from matplotlib.textpath import text_to_path
@@ -206,9 +207,9 @@ _TEXT_SIZES: dict[tuple, tuple[float, float, float]] = {}
 def text_size(text: str, size: float, italic: bool = False) -> tuple[float, float, float]:
     """(width, height, descent) in points of a text as the SVG and PDF backends lay it out (current rcParams).
 
-    Parsing mathtext costs milliseconds, and the renderer parses each string
-    again, so this is used only for the labels placed among the lines, where
-    an exact box matters; the layout uses `approximate_size`.
+    Drawing calls it for plain text only: parsing mathtext costs milliseconds
+    and the renderer parses each string again, so mathtext is sized from its
+    glyphs instead (`approximate_size`, `impact_text_size`).
     """
     rc = matplotlib.rcParams
     key = (text, size, italic, rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
@@ -349,7 +350,7 @@ class _Diagram:
         legend = figure.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, (legend_h - 2) / fig_h),
                                ncol=legend_cols, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
-                               handler_map=self._handler_map)
+                               handler_map={tuple: HandlerTuple(ndivide=1)})  # the rod: strip and line in one
         legend.set_gid("legend")
         return figure
 
@@ -368,7 +369,8 @@ class _Diagram:
 
     @staticmethod
     def _tick_text(value: float, step: float) -> str:
-        decimals = max(0, -math.floor(math.log10(step) + 1e-9)) + (1 if round(step / 10 ** math.floor(math.log10(step) + 1e-9), 6) == 2.5 else 0)
+        """A tick label with as many decimals as the step has (0.25 -> 2), a real minus sign, no -0."""
+        decimals = next(d for d in range(12) if abs(round(step, d) - step) <= 1e-9 * step)
         text = f"{value:.{decimals}f}"
         if float(text) == 0:
             text = "0" if decimals == 0 else f"{0:.{decimals}f}"
@@ -408,11 +410,7 @@ class _Diagram:
             entries.append((self._line_handle(st.light_cone), "light cone of an impact"))
         if o.hyperbolae:
             entries.append((self._line_handle(st.hyperbola), "calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}"))
-        handles = [h for h, _ in entries]
-        labels = [label for _, label in entries]
-        from matplotlib.legend_handler import HandlerTuple  # noqa: PLC0415  (only the legend needs it)
-        self._handler_map = {tuple: HandlerTuple(ndivide=1)}
-        return handles, labels
+        return [h for h, _ in entries], [label for _, label in entries]
 
     def _legend_shape(self, labels: list[str], width: float) -> tuple[int, int]:
         """(rows, columns) of the widest legend that fits; columns filled as matplotlib does (array_split)."""
