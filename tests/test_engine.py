@@ -85,23 +85,17 @@ def test_unequal_simultaneous_impacts_follow_the_centre_of_momentum_rule():
 
 
 def test_impact_while_turning_stops_the_turn_on_the_fan_line():
-    """PHYSICS.md rule 6, derived by hand for scenario while_turning (v = 0.6, L = 1, A 0.2 L early in S')."""
+    """PHYSICS.md rule 6, derived by hand for scenario while_turning (v = 0.6, L = 1, A 0.3 L after B in S)."""
     v, L = 0.6, 1.0
     h = run(load("while_turning"))
     b1, a1, b2 = h.impacts
     tb = L / (2 * v)
     assert (b1.event.x, b1.event.t) == (pytest.approx(L / 2), pytest.approx(tb))
-    # A1 lies on the left end's hyperbola about B1, at t' = t'_B1 - 0.2 L; solve for it by bisection in t
-    tp_target = g(v) * (tb + v * L / 2) - 0.2 * L
 
-    def left_end(t):
+    def left_end(t):  # on the hyperbola about B1 until tb + g v L = tb + 0.75
         return L / 2 - math.sqrt(L * L + (t - tb) ** 2)
 
-    lo, hi = tb, tb + g(v) * v * L
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if g(v) * (mid + v * left_end(mid)) < tp_target else (lo, mid)
-    ta = 0.5 * (lo + hi)
+    ta = tb + 0.3 * L
     assert (a1.event.x, a1.event.t) == (pytest.approx(left_end(ta), rel=1e-12), pytest.approx(ta, rel=1e-12))
     assert a1.while_turning
     # the rod's rest frame at A1: the fan line from B1 through A1; its slope dt/dx is that frame's velocity

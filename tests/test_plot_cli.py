@@ -173,8 +173,10 @@ def test_one_file_for_several_outputs():
 def test_bad_scenario_and_bad_override_write_nothing_even_for_the_good_ones():
     assert error_of("fig2", "nosuch").startswith("there is no built-in scenario 'nosuch'")
     assert error_of("fig2", "--v", "1.2") == "option --v: v must be a number with 0 < v < 1 (units of c), got 1.2."
-    message = error_of("fig1", "while_turning", "--v", "0.1")
-    assert message.startswith("while_turning: particles.A.timed_with: A cannot strike the rod")
+    Path("early.yaml").write_text("v: 0.5\nparticles:\n  A: {timed_with: {particle: B, frame: rest, delay: -0.3}}\n"
+                                  "  B: {gap: 0.1}\n")
+    message = error_of("fig1", "early.yaml")
+    assert message.startswith("early.yaml: particles.A.timed_with: A cannot strike the rod")
 
 
 def test_a_failed_write_leaves_no_partial_file(in_tmp, monkeypatch):
