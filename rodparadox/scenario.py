@@ -19,6 +19,9 @@ import yaml
 from .errors import ScenarioError
 
 PARTICLE_NAMES = ("A", "B")
+#: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far
+#: in the future that t has no digits left for the rod's zig-zag; faster, g exceeds 2000
+SLOWEST, FASTEST = 1e-6, 0.9999999
 FRAME_NAMES = ("rest", "moving")
 
 
@@ -80,6 +83,7 @@ class Particle:
             _check_number(self.speed, f"{key}.speed", low=0, high=1,
                           allowed="a number with 0 < speed < 1 (towards the rod, units of c)",
                           hint="; a particle that is at rest or moves away never reaches the rod" if _finite_at_most_zero(self.speed) else "")
+            _check_computable(self.speed, f"{key}.speed")
         if (self.gap is None) == (self.timed_with is None):
             raise ScenarioError(f"{key} needs exactly one of gap (its distance from the rod at t = 0) "
                                 f"or timed_with (its impact timed against the other particle's).", key)
@@ -113,6 +117,7 @@ class Scenario:
 
     def __post_init__(self) -> None:
         _check_number(self.v, "v", low=0, high=1, allowed="a number with 0 < v < 1 (units of c)")
+        _check_computable(self.v, "v")
         _check_number(self.L, "L", low=0, allowed="a positive length (the rod's proper length)")
         names = [p.name for p in self.particles]
         if not names:
@@ -152,6 +157,12 @@ class Scenario:
         except ScenarioError as e:
             bad = e.key if e.key in changes else None
             raise e.located(f"option --{bad}", None) if bad else e
+
+
+def _check_computable(speed: float, key: str) -> None:
+    if not SLOWEST <= speed <= FASTEST:
+        raise ScenarioError(f"{key} must be between {SLOWEST:g} and {FASTEST!r} for double precision to place the "
+                            f"impacts, got {speed!r}.", key)
 
 
 def _finite_at_most_zero(value: Any) -> bool:

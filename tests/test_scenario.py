@@ -76,6 +76,9 @@ def test_overrides_replace_v_and_L_and_keep_the_rest():
     ("v", 0.0, "option --v: v must be a number with 0 < v < 1 (units of c), got 0."),
     ("v", -0.5, "option --v: v must be a number with 0 < v < 1 (units of c), got -0.5."),
     ("v", math.nan, "option --v: v must be a number with 0 < v < 1 (units of c), got nan."),
+    ("v", 1e-9, "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the impacts, got 1e-09."),
+    ("v", 0.99999999, "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the impacts, "
+                      "got 0.99999999."),
     ("L", 0.0, "option --L: L must be a positive length (the rod's proper length), got 0."),
     ("L", math.inf, "option --L: L must be a positive length (the rod's proper length), got inf."),
 ])
@@ -122,6 +125,9 @@ def test_bad_overrides_name_the_option(option, value, message):
     ("v: 0.5\nparticles:\n  A: {gap: -0.2}\n",
      "s.yaml, line 3: particles.A.gap must be a number >= 0 (distance from its end of the rod at t = 0, units of L), "
      "got -0.2; a negative gap puts the particle inside the rod."),
+    ("v: 0.5\nparticles:\n  A: {gap: 0.5, speed: 0.0000001}\n",
+     "s.yaml, line 3: particles.A.speed must be between 1e-06 and 0.9999999 for double precision to place the "
+     "impacts, got 1e-07."),
     ("v: 0.5\nparticles:\n  A: {gap: 0.5, mass: 0}\n",
      "s.yaml, line 3: particles.A.mass must be a positive number (units of the rod's mass M), got 0."),
     ("v: 0.5\nparticles:\n  A: {speed: 0.5}\n",
