@@ -18,7 +18,7 @@ begins about the new impact, with the old pivot as its far end.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from .collision import elastic
 from .errors import ScenarioError
@@ -104,10 +104,10 @@ def _start_from_timing(scenario: Scenario, p: Particle, starts: dict[str, Event]
     key = f"particles.{p.name}.timed_with"
     other = scenario.particle(timing.particle)
     without = Scenario(scenario.name, scenario.v, (other,), scenario.L)
-    reference = next(i for i in _simulate(without, {other.name: starts[other.name]}).impacts if i.particle == other.name)
+    alone = _simulate(without, {other.name: starts[other.name]})
+    reference = next(i for i in alone.impacts if i.particle == other.name)
     eta = math.atanh(scenario.frame_velocity(timing.frame))
-    end_name = "rod_left" if p.end == "left" else "rod_right"
-    end_line = _simulate(without, {other.name: starts[other.name]}).worldline(end_name).boosted(eta)
+    end_line = alone.worldline(f"rod_{p.end}").boosted(eta)
     target_time = reference.event.boosted(eta).t + timing.delay * scenario.L
     target = end_line.event_at_time(target_time).boosted(-eta)
     start = Event(target.x - math.tanh(_particle_rapidity(scenario, p)) * target.t, 0.0)
@@ -142,7 +142,7 @@ class _ParticleState:
     start: Event
     initial_rapidity: float
     since: Event | None = None  # last impact
-    kinks: list = None  # [(event, rapidity after)]
+    kinks: list = field(default_factory=list)  # [(event, rapidity after)]
     impacts: int = 0
 
 
@@ -172,7 +172,7 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
     tolerance = SIMULTANEITY_TOLERANCE * L
     particles = {
         p.name: _ParticleState(p.name, p.mass, _particle_rapidity(scenario, p), starts[p.name],
-                                _particle_rapidity(scenario, p), kinks=[])
+                                _particle_rapidity(scenario, p))
         for p in scenario.particles if p.name in starts
     }
     ends: dict[str, list[Segment]] = {"left": [], "right": []}
@@ -287,20 +287,26 @@ def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
         phi = 2.0 * psi - arc.phi_start
         if not s * (phi - arc.phi_start) > 0:
             return None
+        rounding = 1e-12
     else:
         here = state.since or state.start
         dx, dt = here.x - arc.centre.x, here.t - arc.centre.t
-        c = s * (math.cosh(psi) * dx - math.sinh(psi) * dt) / L
+        terms = (math.cosh(psi) * dx, math.sinh(psi) * dt)
+        c = s * (terms[0] - terms[1]) / L
         if not c > 1.0:
             return None
-        phi = psi + s * math.acosh(c)
-        if not s * (phi - arc.phi_start) > 1e-13:
+        a = math.acosh(c)
+        phi = psi + s * a
+        # c comes from a difference of terms that may be far larger than L (high speeds, late impacts):
+        # its rounding, divided by dc/dphi = sinh(a), bounds phi's
+        rounding = max(1e-12, 1e3 * 2.2e-16 * (abs(terms[0]) + abs(terms[1])) / L / max(math.sinh(a), 1e-300))
+        if not s * (phi - arc.phi_start) > min(1e-13, rounding):
             return None
         if state.since is not None and arc.point(phi).t < state.since.t - 1e-12 * L:
             return None
-    if s * (phi - arc.phi_end) > 1e-12:
+    if s * (phi - arc.phi_end) > rounding:
         return None
-    completed = s * (phi - arc.phi_end) >= -1e-12
+    completed = s * (phi - arc.phi_end) >= -rounding
     phi = arc.phi_end if completed else phi  # a hit on the turn's last line (Fig. 2's A1, B2) ends a complete turn
     return name, phi, completed
 
@@ -329,7 +335,7 @@ def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, b
     Computed in the rod's rest frame, where the ends stand still: the earliest
     on the rod's own time axis, both ends if within `tolerance` (rule 5).
     """
-    start_time = left.proper_time_in(theta)
+    start_time = left.time_in(theta)
     candidates = []
     for name, end_event, sign in (("A", left, 1.0), ("B", right, -1.0)):
         state = particles.get(name)

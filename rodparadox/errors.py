@@ -28,3 +28,7 @@ class ScenarioError(ValueError, RodParadoxError):
 
 class OutputError(OSError, RodParadoxError):
     """A file that cannot be written; says which and why."""
+
+
+class FrameError(ValueError, RodParadoxError):
+    """A frame velocity outside -1 < u < 1."""

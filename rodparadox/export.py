@@ -88,21 +88,27 @@ def to_csv(history: History, frames: tuple[Frame, ...]) -> str:
     return out.getvalue()
 
 
+def _velocity(u: float) -> str:
+    """+0.600000; with more digits where six would round a speed below 1 up to 1; never -0."""
+    digits = 6 if abs(u) < 0.9999995 else 10
+    return f"{u + 0.0:+.{digits}f}"
+
+
 def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     """A readable table of the impacts in each frame, for `sears-paradox events`."""
     s = history.scenario
-    lines = [f"{s.name}: v = {s.v:g}, L = {s.L:g}   (c = 1; x and t in the units of L)"]
-    header = f"  {'impact':<7}{'end':<7}{'x':>11}{'t':>11}   {'particle velocity':<23}   {'rod velocity':<23}"
+    lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}   (c = 1; x and t in the unit of L)"]
+    header = f"  {'impact':<7}{'end':<7}{'x':>11}{'t':>11}   {'particle velocity':<23}   {'rod velocity'}"
     for f in frames:
         fv = view(history, f)
         title = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name, "")
         lines += ["", f"frame {f.name}" + (f" ({title})" if title else "") +
-                  f": velocity {f.velocity + 0.0:+.6g} relative to S; the rod first moves at {f.rod_velocity() + 0.0:+.6g}",
+                  f": velocity {f.velocity + 0.0:+.10g} relative to S; the rod first moves at {f.rod_velocity() + 0.0:+.10g}",
                   header]
         for e in fv.events:
             note = f"  simultaneous with {e.impact.simultaneous_with}" if e.impact.simultaneous_with else ""
             note += "  (rod still turning)" if e.impact.while_turning else ""
-            lines.append(f"  {e.impact.label:<7}{e.impact.end:<7}{e.x:>+11.6f}{e.t:>+11.6f}   "
-                         f"{e.particle_velocity_before:+.6f} -> {e.particle_velocity_after:+.6f}   "
-                         f"{e.rod_velocity_before:+.6f} -> {e.rod_velocity_after:+.6f}{note}")
+            lines.append(f"  {e.impact.label:<7}{e.impact.end:<7}{e.x + 0.0:>+11.6f}{e.t + 0.0:>+11.6f}   "
+                         f"{_velocity(e.particle_velocity_before)} -> {_velocity(e.particle_velocity_after)}   "
+                         f"{_velocity(e.rod_velocity_before)} -> {_velocity(e.rod_velocity_after)}{note}")
     return "\n".join(lines) + "\n"

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .engine import WORLDLINE_NAMES, History, Impact
+from .errors import FrameError
 from .kinematics import SAMPLING_TOLERANCE, Event, Segment
 
 
@@ -24,7 +25,7 @@ class Frame:
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.velocity) and -1.0 < self.velocity < 1.0):
-            raise ValueError(f"a frame's velocity must be between -1 and 1, got {self.velocity}")
+            raise FrameError(f"frame velocity must be a number u with -1 < u < 1 (units of c), got {self.velocity!r}.")
 
     @property
     def rapidity(self) -> float:
@@ -62,7 +63,6 @@ class FrameView:
     events: tuple[EventView, ...]
     t_range: tuple[float, float]
     segments: tuple[tuple[str, tuple[Segment, ...]], ...]  # exact pieces within t_range, per world-line
-    starts: tuple[tuple[str, Event], ...]  # each particle at t = 0 in S, in this frame's coordinates
 
     def worldline_points(self, tolerance: float) -> dict[str, np.ndarray]:
         """Each world-line as an (n, 2) array of [x, t], every kink included, arcs within `tolerance`."""
@@ -100,8 +100,7 @@ def view(history: History, frame: Frame) -> FrameView:
                                 math.tanh(i.rod_rapidity_after - eta)))
     segments = tuple((name, history.worldline(name).boosted(eta).pieces(t_lo, t_hi))
                      for name in WORLDLINE_NAMES if history.worldline(name) is not None)
-    starts = tuple((name, e.boosted(eta)) for name, e in history.starts)
-    return FrameView(frame, tuple(events), (t_lo, t_hi), segments, starts)
+    return FrameView(frame, tuple(events), (t_lo, t_hi), segments)
 
 
 def sampling_tolerance(history: History) -> float:

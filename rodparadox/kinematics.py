@@ -17,19 +17,6 @@ import numpy as np
 SAMPLING_TOLERANCE = 1e-4
 
 
-def gamma(velocity: float) -> float:
-    """Lorentz factor g = 1/sqrt(1 - v^2)."""
-    return 1.0 / math.sqrt((1.0 - velocity) * (1.0 + velocity))
-
-
-def rapidity(velocity: float) -> float:
-    return math.atanh(velocity)
-
-
-def velocity(rapidity_: float) -> float:
-    return math.tanh(rapidity_)
-
-
 @dataclass(frozen=True)
 class Event:
     """A point of spacetime, (x, t), in the coordinates of the frame it was read in."""
@@ -50,7 +37,7 @@ class Event:
         """The event at proper distance `distance` along the simultaneity line of rapidity `rapidity_`."""
         return Event(self.x + distance * math.cosh(rapidity_), self.t + distance * math.sinh(rapidity_))
 
-    def proper_time_in(self, frame_rapidity: float) -> float:
+    def time_in(self, frame_rapidity: float) -> float:
         """This event's time coordinate in the frame of rapidity `frame_rapidity`."""
         return math.cosh(frame_rapidity) * self.t - math.sinh(frame_rapidity) * self.x
 

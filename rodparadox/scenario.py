@@ -8,6 +8,7 @@ documented in the README ("Scenario files").
 from __future__ import annotations
 
 import difflib
+import re
 import importlib.util
 import math
 from dataclasses import dataclass, field, replace
@@ -22,6 +23,10 @@ PARTICLE_NAMES = ("A", "B")
 #: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far
 #: in the future that t has no digits left for the rod's zig-zag; faster, g exceeds 2000
 SLOWEST, FASTEST = 1e-6, 0.9999999
+#: the largest gap or timing delay, in units of L
+MAX_SPAN = 1e6
+#: the largest scenario file read
+MAX_FILE_BYTES = 1_000_000
 FRAME_NAMES = ("rest", "moving")
 
 
@@ -29,9 +34,11 @@ def _check_number(value: Any, key: str, *, low: float | None = None, high: float
                   low_open: bool = True, high_open: bool = True, allowed: str, hint: str = "") -> float:
     """Return `value` as a float, or raise a ScenarioError naming `key` and what is allowed."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        shown = ("yes/true" if value else "no/false") + " (a boolean)" if isinstance(value, bool) else repr(value)
-        raise ScenarioError(f"{key} must be {allowed}, got {shown}.", key)
-    value = float(value)
+        raise ScenarioError(f"{key} must be {allowed}, got {_shown(value)}.", key)
+    try:
+        value = float(value)
+    except OverflowError:
+        raise ScenarioError(f"{key} must be {allowed}, got an integer of {len(str(value))} digits.", key) from None
     bad = not math.isfinite(value)
     if low is not None:
         bad = bad or (value <= low if low_open else value < low)
@@ -63,7 +70,8 @@ class Timing:
         else:
             _check_number(self.frame, f"{self.key}.frame", low=-1, high=1,
                           allowed="rest, moving or a velocity u with -1 < u < 1")
-        _check_number(self.delay, f"{self.key}.delay", allowed="a finite number (units of L)")
+        _check_number(self.delay, f"{self.key}.delay", low=-MAX_SPAN, high=MAX_SPAN, low_open=False, high_open=False,
+                      allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
 
 
 @dataclass(frozen=True)
@@ -79,6 +87,8 @@ class Particle:
     def __post_init__(self) -> None:
         key = f"particles.{self.name}"
         _check_number(self.mass, f"{key}.mass", low=0, allowed="a positive number (units of the rod's mass M)")
+        _check_number(self.mass, f"{key}.mass", low=1e-9, high=1e9, low_open=False, high_open=False,
+                      allowed="between 1e-09 and 1e+09 (units of the rod's mass M)")
         if self.speed is not None:
             _check_number(self.speed, f"{key}.speed", low=0, high=1,
                           allowed="a number with 0 < speed < 1 (towards the rod, units of c)",
@@ -91,6 +101,8 @@ class Particle:
             _check_number(self.gap, f"{key}.gap", low=0, low_open=False,
                           allowed="a number >= 0 (distance from its end of the rod at t = 0, units of L)",
                           hint="; a negative gap puts the particle inside the rod")
+            _check_number(self.gap, f"{key}.gap", high=MAX_SPAN, high_open=False,
+                          allowed=f"at most {MAX_SPAN:g} (units of L), so that the rod stays visible beside it")
         if self.timed_with is not None and self.timed_with.particle == self.name:
             raise ScenarioError(f"{key}.timed_with.particle must name the other particle, not {self.name} itself.",
                                 f"{key}.timed_with.particle")
@@ -119,6 +131,8 @@ class Scenario:
         _check_number(self.v, "v", low=0, high=1, allowed="a number with 0 < v < 1 (units of c)")
         _check_computable(self.v, "v")
         _check_number(self.L, "L", low=0, allowed="a positive length (the rod's proper length)")
+        _check_number(self.L, "L", low=1e-100, high=1e100, low_open=False, high_open=False,
+                      allowed="between 1e-100 and 1e+100 (choose the unit of length to suit)")
         names = [p.name for p in self.particles]
         if not names:
             raise ScenarioError("particles must name at least one of A and B.", "particles")
@@ -159,6 +173,19 @@ class Scenario:
             raise e.located(f"option --{bad}", None) if bad else e
 
 
+def _shown(value: Any) -> str:
+    """A YAML value as the user wrote it, for an error message."""
+    if isinstance(value, bool):
+        return ("yes/true" if value else "no/false") + " (a boolean)"
+    if value is None:
+        return "nothing (an empty value)"
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, (list, dict)):
+        return "a list" if isinstance(value, list) else "a mapping"
+    return f"{value} (a {type(value).__name__})"
+
+
 def _check_computable(speed: float, key: str) -> None:
     if not SLOWEST <= speed <= FASTEST:
         raise ScenarioError(f"{key} must be between {SLOWEST:g} and {FASTEST!r} for double precision to place the "
@@ -183,19 +210,30 @@ _SCHEMA = {
 }
 
 
+class _Loader(yaml.SafeLoader):
+    """PyYAML's safe loader, also reading exponent floats without a dot (1e-6, 2E9) as numbers, as YAML 1.2 does."""
+
+
+_Loader.yaml_implicit_resolvers = {k: list(v) for k, v in yaml.SafeLoader.yaml_implicit_resolvers.items()}
+_Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+$"),
+    list("-+0123456789."))
+
+
 class _Document:
     """A YAML document read into plain values, with the line of every key path."""
 
     def __init__(self, text: str):
         self.lines: dict[str, int] = {}
-        loader = yaml.SafeLoader(text)
+        loader = _Loader(text)
         try:
             node = loader.get_single_node()
             self.data = None if node is None else self._value(loader, node, "", _SCHEMA)
         finally:
             loader.dispose()
 
-    def _value(self, loader: yaml.SafeLoader, node: yaml.Node, path: str, schema: Any) -> Any:
+    def _value(self, loader: _Loader, node: yaml.Node, path: str, schema: Any) -> Any:
         self.lines[path] = node.start_mark.line + 1
         if isinstance(node, yaml.MappingNode) and isinstance(schema, dict):
             loader.flatten_mapping(node)
@@ -301,7 +339,12 @@ def load(name_or_path: str) -> Scenario:
                                 f"built-in: {', '.join(builtin_names())} (see 'sears-paradox list').")
     if path.is_dir():
         raise ScenarioError(f"scenario file {name_or_path!r} is a folder; give a .yaml file.")
+    if path.exists() and not path.is_file():
+        raise ScenarioError(f"scenario file {name_or_path!r} is not a regular file; give a .yaml file.")
     try:
+        if path.stat().st_size > MAX_FILE_BYTES:
+            raise ScenarioError(f"scenario file {name_or_path!r} is larger than {MAX_FILE_BYTES:,} bytes; "
+                                f"a scenario is a few lines of YAML.")
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise ScenarioError(f"scenario file {name_or_path!r} does not exist; check the path, "
@@ -315,5 +358,8 @@ def load(name_or_path: str) -> Scenario:
 
 def describe(name: str) -> str:
     """One line about a built-in scenario, for `sears-paradox list`."""
-    scenario = load(name)
-    return scenario.description.strip().splitlines()[0] if scenario.description.strip() else ""
+    try:
+        description = load(name).description.strip()
+    except ScenarioError as e:
+        return f"(cannot be read: {e})"
+    return description.splitlines()[0] if description else ""
