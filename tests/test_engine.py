@@ -128,7 +128,7 @@ def test_fig1_timing_off_by_a_little_makes_the_rod_recoil():
     assert all(i.rod_rapidity_after == 0 for i in exact.impacts)
 
 
-def test_particles_struck_more_than_once_and_a_single_particle_a():
+def test_a_single_particle_a_and_fig2s_b_struck_twice():
     s = Scenario("a_only", 0.5, (Particle("A", gap=0.25),), L=2.0)
     h = run(s)
     (a1,) = h.impacts
@@ -144,3 +144,42 @@ def test_timing_in_an_arbitrary_frame_lands_on_time():
     eta = math.atanh(0.3)
     dt = first["A"].event.boosted(eta).t - first["B"].event.boosted(eta).t
     assert dt == pytest.approx(0.7 * 1.5, rel=1e-12)
+
+
+def totals(history):
+    """The system's energy and momentum (rod mass 1) before the first impact and after the last, in S."""
+    s = history.scenario
+    masses = {p.name: p.mass for p in s.particles}
+    before = {p.name: math.atanh(s.speed(p)) * (1 if p.name == "A" else -1) for p in s.particles}
+    after = dict(before)
+    for i in history.impacts:
+        after[i.particle] = i.particle_rapidity_after
+    rod = history.impacts[-1].rod_rapidity_after
+
+    def energy_momentum(rod_rapidity, particles):
+        u = [(1.0, math.tanh(rod_rapidity))] + [(masses[n], math.tanh(r)) for n, r in particles.items()]
+        return sum(m * g(w) for m, w in u), sum(m * g(w) * w for m, w in u)
+
+    return energy_momentum(0.0, before), energy_momentum(rod, after)
+
+
+@pytest.mark.parametrize("name", ["fig1", "fig2", "single", "unequal_masses"])
+def test_the_system_conserves_energy_and_momentum_when_no_turn_is_stopped(name):
+    before, after = totals(run(load(name)))
+    assert after == pytest.approx(before, rel=1e-12, abs=1e-12)
+
+
+@pytest.mark.parametrize("delay", [0.25, 0.1])
+def test_a_stopped_turn_does_not_conserve_the_systems_energy(delay):
+    """Rule 6 puts the rod in the fan's frame at the impact with no impulse: documented in the README's model.
+
+    off_timing with equal masses, A `delay` L after B in S: A1 is on the left end's hyperbola about B1,
+    delay after it, where the fan's velocity is -delay/sqrt(L^2 + delay^2); A leaves with it, and by
+    symmetry B leaves B2 with +delay/sqrt(L^2 + delay^2); the rod ends at rest. Energy after:
+    1 + 2 sqrt(1 + delay^2), against 1 + 2 g(v) before; momentum stays 0.
+    """
+    s = Scenario("off_timing", 0.6, (Particle("B", gap=0.5), Particle("A", timed_with=Timing("B", "rest", delay))))
+    (e0, p0), (e1, p1) = totals(run(s))
+    assert e0 == pytest.approx(1 + 2 * g(0.6), rel=1e-14)
+    assert e1 == pytest.approx(1 + 2 * math.sqrt(1 + delay * delay), rel=1e-12)
+    assert p0 == pytest.approx(0.0, abs=1e-12) and p1 == pytest.approx(0.0, abs=1e-12)
