@@ -6,53 +6,15 @@ and never loads numpy or matplotlib.
 
 from __future__ import annotations
 
-import math
 import sys
 
 import click
 
 from rodparadox import __version__
 
-
-class BadInput(click.ClickException):
-    """A scenario, option or path the user must fix: one sentence, exit status 2."""
-
-    exit_code = 2
-
-
-def _scenario(name: str, v: float | None, L: float | None):
-    from rodparadox.errors import ScenarioError
-    from rodparadox.scenario import load
-
-    try:
-        return load(name).with_overrides(v=v, L=L)
-    except ScenarioError as e:
-        raise BadInput(str(e)) from None
-
-
-def _history(scenario, source: str):
-    """Run a scenario; `source` is the name or path the user gave, to start any error sentence."""
-    from rodparadox.engine import run
-    from rodparadox.errors import ScenarioError
-
-    try:
-        return run(scenario)
-    except ScenarioError as e:
-        raise BadInput(f"{source}: {e}") from None
-
-
-def _frame_velocity(u: float | None) -> float | None:
-    if u is not None and not (math.isfinite(u) and -1.0 < u < 1.0):
-        raise BadInput(f"option --frame-velocity must be a velocity u with -1 < u < 1 (units of c), got {u:g}.")
-    return u
-
-
-scenario_argument = click.argument("scenario", metavar="SCENARIO")
-v_option = click.option("--v", "v", type=float, metavar="V",
-                        help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
-L_option = click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
-frame_option = click.option("--frame-velocity", "frame_velocity", type=float, metavar="U",
-                            help="Also show the frame of velocity U relative to S, -1 < U < 1.")
+from .common import (L_option, checked_frame_velocity, frame_velocity_option, load_scenario, reports_errors,
+                     run_scenario, scenario_argument, v_option)
+from .plot import plot  # the drawing command; it imports matplotlib only when it runs
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -67,6 +29,7 @@ def main() -> None:
 
 
 @main.command("list")
+@reports_errors
 def list_scenarios() -> None:
     """Name the built-in scenarios, each with one line about it.
 
@@ -84,7 +47,8 @@ def list_scenarios() -> None:
 @scenario_argument
 @v_option
 @L_option
-@frame_option
+@frame_velocity_option
+@reports_errors
 def events(scenario: str, v: float | None, L: float | None, frame_velocity: float | None) -> None:
     """Print the impacts in the rest frame S and the moving frame S' (and U if given).
 
@@ -93,43 +57,38 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
     from rodparadox.export import to_table
     from rodparadox.frames import paper_frames
 
-    s = _scenario(scenario, v, L)
-    frames = paper_frames(s.v, _frame_velocity(frame_velocity))
-    click.echo(to_table(_history(s, scenario), frames), nl=False)
+    s = load_scenario(scenario, v, L)
+    frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
+    click.echo(to_table(run_scenario(s, scenario), frames), nl=False)
 
 
 @main.command()
 @scenario_argument
 @v_option
 @L_option
-@frame_option
+@frame_velocity_option
 @click.option("--format", "fmt", type=click.Choice(["json", "csv"]), default="json", show_default=True,
               help="json: the documented contract (README); csv: one row per event and world-line point.")
 @click.option("-o", "--output", "output", metavar="PATH", default="-", show_default=True,
               help="File to write ('-' for standard output); written atomically, left untouched if unchanged.")
+@reports_errors
 def export(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str, output: str) -> None:
     """Write the world-lines and impacts of both frames as JSON or CSV.
 
-    Example: sears-paradox export fig2 --v 0.6 -o outputs/fig2.json
+    Example: sears-paradox export fig2 --v 0.6 -o fig2.json
     """
-    from rodparadox.errors import OutputError
     from rodparadox.export import to_csv, to_json
     from rodparadox.frames import paper_frames
     from rodparadox.output import write_atomic
 
-    s = _scenario(scenario, v, L)
-    frames = paper_frames(s.v, _frame_velocity(frame_velocity))
-    text = (to_json if fmt == "json" else to_csv)(_history(s, scenario), frames)
+    s = load_scenario(scenario, v, L)
+    frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
+    text = (to_json if fmt == "json" else to_csv)(run_scenario(s, scenario), frames)
     if output == "-":
         sys.stdout.write(text)
         return
-    try:
-        write_atomic(output, text.encode("utf-8"))
-    except OutputError as e:
-        raise BadInput(str(e)) from None
+    write_atomic(output, text.encode("utf-8"))
     click.echo(output)
 
-
-from .plot import plot  # noqa: E402  (the drawing command; it imports matplotlib only when it runs)
 
 main.add_command(plot)

@@ -10,26 +10,35 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
+from typing import NamedTuple
 
 import click
 
 from rodparadox.styles import FORMATS, STYLE_NAMES
 
+from .common import BadInput, L_option, load_scenario, reports_errors, run_scenario, v_option
+
 #: where figures go when -o is not given; the only output folder `plot` creates itself
 DEFAULT_FOLDER = "outputs"
+#: panels side by side in one figure, (a) to (h): rodparadox.render.PANEL_LETTERS (not imported: matplotlib)
+MAX_PANELS = 8
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"))
 
 
 def _number(value: float) -> str:
-    return f"{value:.15g}"
+    """A number in a file name: every digit the float holds (repr), no trailing .0, no -0: 0.8, 2, 0.9999999999999999."""
+    text = repr(value + 0.0)
+    return text[:-2] if text.endswith(".0") else text
 
 
 def parse_frames(spec: str, v: float):
-    """--frame: rest, moving, both or a velocity U relative to S, or a comma-separated list of these."""
-    from rodparadox.frames import Frame
+    """--frame: rest, moving, both or a velocity U relative to S, or a comma-separated list of these.
 
-    from .main import BadInput
+    The panels, left to right, each frame once, where it first appears: `both,rest` is `both`, and
+    `rest,moving` is `both` too. At most MAX_PANELS of them.
+    """
+    from rodparadox.frames import Frame
 
     frames: list = []
     for item in (part.strip() for part in spec.split(",")):
@@ -40,49 +49,55 @@ def parse_frames(spec: str, v: float):
         if item in ("rest", "moving", "both"):
             continue
         try:
-            u = float(item)
+            u = float(item) + 0.0  # -0 is 0
         except ValueError:
             u = math.nan
         if not (math.isfinite(u) and -1.0 < u < 1.0):
             raise BadInput(f"option --frame must be rest, moving, both or a velocity U with -1 < U < 1 "
                            f"(or a comma-separated list of these), got {item!r}.")
-        frames.append(Frame(f"u={u:g}", u))
-    unique = []
-    for f in frames:
-        if f not in unique:
-            unique.append(f)
-    return tuple(unique)
+        frames.append(Frame(f"u={_number(u)}", u))
+    unique = tuple(dict.fromkeys(frames))
+    if len(unique) > MAX_PANELS:
+        raise BadInput(f"option --frame asks for {len(unique)} panels; at most {MAX_PANELS} fit in one figure.")
+    return unique
 
 
-def _frame_suffix(spec: str) -> str:
-    """The --frame part of a file name: empty for `both`, else e.g. `_rest` or `_rest_u0.3`."""
-    items = [part.strip() for part in spec.split(",")]
-    if items == ["both"]:
-        return ""
-    return "".join("_" + (item if item in ("rest", "moving", "both") else "u" + _number(float(item))) for item in items)
+def frame_suffix(frames) -> str:
+    """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`."""
+    words = [f.name if f.name in ("rest", "moving") else "u" + _number(f.velocity) for f in frames]
+    name = "_".join(words).replace("rest_moving", "both")  # each frame appears once, so at most one `both`
+    return "" if name == "both" else f"_{name}"
 
 
-def output_name(stem: str, scenario, v: float | None, L: float | None, frame: str, style: str, extras: dict) -> str:
+def output_name(stem: str, scenario, v: float | None, L: float | None, frames, style: str, extras: dict) -> str:
     """The file name (without extension) of a figure: the scenario's name, then every non-default choice.
 
     `fig2` for the defaults; `fig2_v0.8`, `fig2_v0.8_L2`, `fig2_rest`, `fig2_print`, `fig2_grid`, ...
-    otherwise, so a figure with other options never overwrites the default one.
+    otherwise, so a figure with other options never overwrites the default one, and the same figure
+    asked for in other words (`--frame rest,moving`, `--v` equal to the scenario's) gets the same name.
     """
     name = stem
     if v is not None and v != scenario.v:
         name += f"_v{_number(v)}"
     if L is not None and L != scenario.L:
         name += f"_L{_number(L)}"
-    name += _frame_suffix(frame)
+    name += frame_suffix(frames)
     if style != "default":
         name += f"_{style}"
     name += "".join(f"_{short}" for key, short in _EXTRAS if extras[key])
     return name
 
 
-def _formats(spec: str) -> list[str]:
-    from .main import BadInput
+class _Job(NamedTuple):
+    """One scenario to draw: the name the user gave, the scenario with --v and --L, its panels and files."""
 
+    name: str
+    scenario: object
+    frames: tuple
+    paths: dict  # format -> path
+
+
+def _formats(spec: str) -> list[str]:
     formats = [part.strip().lower() for part in spec.split(",") if part.strip()]
     bad = [f for f in formats if f not in FORMATS]
     if bad or not formats:
@@ -93,9 +108,8 @@ def _formats(spec: str) -> list[str]:
 
 @click.command()
 @click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
-@click.option("--v", "v", type=float, metavar="V",
-              help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
-@click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
+@v_option
+@L_option
 @click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
               help="Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
                    "a comma-separated list gives several (e.g. both,0.3).")
@@ -111,6 +125,7 @@ def _formats(spec: str) -> list[str]:
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
 @click.option("--grid", is_flag=True, help="Draw a grid at the ticks.")
 @click.option("--verbose", is_flag=True, help="Also name the files left untouched because they had not changed.")
+@reports_errors
 def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, fmt: str | None,
          output: str | None, style: str, other_axes: bool, light_cones: bool, hyperbolae: bool, grid: bool,
          verbose: bool) -> None:
@@ -122,12 +137,8 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     Example: sears-paradox plot fig2 --v 0.6
     """
-    from rodparadox.errors import OutputError, ScenarioError
-
-    from .main import BadInput, _history, _scenario
-
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid}
-    folder, file = _destination(output, len(scenarios))
+    folder, file = _destination(output, len(set(scenarios)))
     if file is not None and fmt is None:
         fmt = file.suffix.lstrip(".").lower()
         if fmt not in FORMATS:
@@ -141,32 +152,29 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
         if file.suffix.lstrip(".").lower() != formats[0]:
             raise BadInput(f"option -o names {str(file)!r} but --format is {formats[0]}; make them agree.")
 
-    jobs = []  # (history, frames, {format: path})
+    jobs: list[_Job] = []
     for name in scenarios:
-        base = _scenario(name, None, None)
-        try:
-            s = base.with_overrides(v=v, L=L)
-        except ScenarioError as e:
-            raise BadInput(str(e)) from None
+        base = load_scenario(name, None, None)
+        s = base.with_overrides(v=v, L=L)
         frames = parse_frames(frame, s.v)
         stem = output_name(Path(name).stem if name.endswith((".yaml", ".yml")) else Path(name).name,
-                           base, v, L, frame, style, extras)
-        paths = {f: file if file is not None else folder / f"{stem}.{f}" for f in formats}
-        jobs.append((s, frames, paths))
-    seen: dict[Path, str] = {}
-    for (s, _, paths), name in zip(jobs, scenarios):
-        for path in paths.values():
-            if path in seen and seen[path] != name:
-                raise BadInput(f"{seen[path]} and {name} would both be written to {path}; rename one of the files.")
-            seen[path] = name
-    histories = [_history(s, name) for (s, _, _), name in zip(jobs, scenarios)]
+                           base, v, L, frames, style, extras)
+        job = _Job(name, s, frames, {f: file if file is not None else folder / f"{stem}.{f}" for f in formats})
+        if any(job[1:] == other[1:] for other in jobs):  # the same figure to the same files (`plot fig2 fig2`): once
+            continue
+        for other in jobs:
+            clash = next((path for path in job.paths.values() if path in other.paths.values()), None)
+            if clash is not None:
+                raise BadInput(f"{other.name} and {name} would both be written to {clash}; rename one of the files.")
+        jobs.append(job)
+    histories = [run_scenario(job.scenario, job.name) for job in jobs]
 
     if folder is not None and output is None:
         try:
             os.makedirs(folder, exist_ok=True)
         except OSError as e:
             raise BadInput(f"cannot create the output folder {folder}: {(e.strerror or str(e)).lower()}.") from None
-    first = next(iter(jobs[0][2].values()))
+    first = next(iter(jobs[0].paths.values()))
     if not os.access(first.parent, os.W_OK | os.X_OK):  # before drawing anything (root passes; the write then tells)
         raise BadInput(f"cannot write {first}: permission denied in the folder {first.parent}.")
 
@@ -174,18 +182,11 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from rodparadox.output import write_atomic
 
     options = render.Options(**extras)
-    written = set()
-    for history, (_, frames, paths) in zip(histories, jobs):
-        figure = render.draw(history, frames, style, options)
-        for f, path in paths.items():
-            if path in written:
-                continue
-            try:
-                changed = write_atomic(path, render.figure_bytes(figure, f, style))
-            except OutputError as e:
-                raise BadInput(str(e)) from None
-            written.add(path)
-            if changed:
+    # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
+    figures = [render.draw(history, job.frames, style, options) for history, job in zip(histories, jobs)]
+    for figure, job in zip(figures, jobs):
+        for f, path in job.paths.items():
+            if write_atomic(path, render.figure_bytes(figure, f, style)):
                 click.echo(str(path))
             elif verbose:
                 click.echo(f"{path} (unchanged)")
@@ -193,8 +194,6 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
 def _destination(output: str | None, count: int) -> tuple[Path | None, Path | None]:
     """(folder, None) or (None, file) for -o; a file only for one scenario. Says what is wrong in one sentence."""
-    from .main import BadInput
-
     if output is None:
         return Path(DEFAULT_FOLDER), None
     path = Path(output)

@@ -22,10 +22,12 @@ import io
 import math
 import re
 from contextlib import contextmanager
+from functools import lru_cache
 from typing import Iterator, NamedTuple, Sequence
 
 import matplotlib
 import numpy as np
+from matplotlib.cbook import is_math_text
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.legend_handler import HandlerTuple
@@ -39,6 +41,7 @@ from .frames import Frame, FrameView, sampling_tolerance, view
 from .kinematics import Event, HyperbolicArc
 from .styles import FORMATS, STYLES, Ink, Style
 
+#: one panel per frame, lettered (a), (b), ...: at most eight side by side
 PANEL_LETTERS = "abcdefgh"
 
 #: smallest and largest width/height of a panel's data box; a box outside is padded with empty space
@@ -75,8 +78,8 @@ def style_context(style: Style | str) -> Iterator[Style]:
 
 def draw(history: History, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Figure:
     """The figure of a scenario's history: one panel per frame, side by side, in the given order."""
-    if not frames:
-        raise ValueError("draw needs at least one frame")
+    if not 1 <= len(frames) <= len(PANEL_LETTERS):
+        raise ValueError(f"draw takes 1 to {len(PANEL_LETTERS)} frames (panels (a) to (h)), got {len(frames)}")
     with style_context(style) as st:
         return _Diagram(history, tuple(frames), st, options).figure
 
@@ -135,7 +138,12 @@ def relative_velocity(u: float, w: float) -> float:
 
 
 def _number(value: float) -> str:
-    text = f"{value + 0.0:.3g}"
+    """Up to 10 significant digits (more if fewer would round a speed |u| < 1 to 1), a real minus sign, no -0."""
+    value += 0.0  # -0.0 -> 0.0
+    for digits in range(10, 18):  # 17 digits give back the float itself
+        text = f"{value:.{digits}g}"
+        if abs(float(text)) < 1.0 or abs(value) >= 1.0:
+            break
     return text.replace("-", "\N{MINUS SIGN}")
 
 
@@ -201,36 +209,48 @@ def _boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
     return np.count_nonzero(ok & (lo <= hi), axis=1)
 
 
-_TEXT_SIZES: dict[tuple, tuple[float, float, float]] = {}
-
-
-def text_size(text: str, size: float, italic: bool = False) -> tuple[float, float, float]:
+def text_size(text: str, size: float, italic: bool = False, ismath: bool | None = None) -> tuple[float, float, float]:
     """(width, height, descent) in points of a text as the SVG and PDF backends lay it out (current rcParams).
 
+    `ismath` None reads the text as a Text artist does: mathtext if it holds an
+    even number of unescaped $ (matplotlib.cbook.is_math_text), else plain.
     Drawing calls it for plain text only: parsing mathtext costs milliseconds
     and the renderer parses each string again, so mathtext is sized from its
     glyphs instead (`approximate_size`, `impact_text_size`).
     """
     rc = matplotlib.rcParams
-    key = (text, size, italic, rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
-           tuple(rc["font.serif"]))
-    if key not in _TEXT_SIZES:
-        prop = FontProperties(size=size, style="italic" if italic else "normal")
-        w, h, d = text_to_path.get_text_width_height_descent(text, prop, ismath="$" in text)
-        _TEXT_SIZES[key] = (float(w), float(h), float(d))
-    return _TEXT_SIZES[key]
+    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath),
+                     rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
+                     tuple(rc["font.serif"]))
 
 
-_PLAIN = {"$": "", "{": "", "}": "", "'": "\N{PRIME}", "\\pm": "\N{PLUS-MINUS SIGN}", "^2": "\N{SUPERSCRIPT TWO}",
-          "\\$": "$"}
+@lru_cache(maxsize=2048)  # a figure measures a few hundred texts; bounded, as a long-lived process draws many
+def _measured(text: str, size: float, italic: bool, ismath: bool, *fonts) -> tuple[float, float, float]:
+    """`text_size` for the current rcParams, whose font settings are `fonts` (part of the cache key only)."""
+    prop = FontProperties(size=size, style="italic" if italic else "normal")
+    w, h, d = text_to_path.get_text_width_height_descent(text, prop, ismath=ismath)
+    return float(w), float(h), float(d)
+
+
+# mathtext -> the plain characters it draws, roughly: the braces of groups vanish, \$ is a dollar sign
+_MATH_AS_PLAIN = {"\\$": "$", "\\pm": "\N{PLUS-MINUS SIGN}", "^2": "\N{SUPERSCRIPT TWO}", "{": "", "}": "",
+                  "'": "\N{PRIME}"}
 
 
 def approximate_size(text: str, size: float) -> tuple[float, float, float]:
-    """A slight over-estimate of `text_size` without parsing mathtext: the text as plain characters, plus 4 %."""
-    if "$" not in text:
-        return text_size(text, size)
-    plain = re.sub(r"\\\$|\\pm|\^2|[${}']", lambda m: _PLAIN[m.group(0)], text)
-    w, h, d = text_size(plain, size)
+    """A slight over-estimate of what a Text artist draws for `text`, without parsing mathtext.
+
+    Plain text (no pair of unescaped $) is measured as it is. Mathtext is
+    measured as plain characters, each $...$ part by the characters it draws,
+    each \\$ outside them as a dollar sign, plus 4 %.
+    """
+    if not is_math_text(text):
+        return text_size(text, size, ismath=False)
+    parts = re.split(r"(?<!\\)\$", text)  # even: plain text between the math parts; odd: math
+    plain = "".join(part.replace("\\$", "$") if i % 2 == 0 else
+                    re.sub(r"\\\$|\\pm|\^2|[{}']", lambda m: _MATH_AS_PLAIN[m.group(0)], part)
+                    for i, part in enumerate(parts))
+    w, h, d = text_size(plain, size, ismath=False)
     return w * 1.04 + 2.0, max(h, size * 1.1), max(d, size * 0.25)
 
 

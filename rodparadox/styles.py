@@ -9,7 +9,8 @@ black and grey only, and every element keeps a line style of its own.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from types import MappingProxyType
+from typing import Any, Mapping, NamedTuple
 
 #: formats `plot` writes, in the order it writes them
 FORMATS = ("svg", "pdf", "png")
@@ -46,7 +47,7 @@ class Style(NamedTuple):
     png_dpi: int
     rod: Ink
     sheet: str  # fill of the rod's world-sheet
-    particles: dict[str, Ink]
+    particles: Mapping[str, Ink]
     impact_colour: str
     impact_size: float  # marker diameter, points
     rest_simultaneity: Ink  # lines t = const of S
@@ -55,7 +56,11 @@ class Style(NamedTuple):
     light_cone: Ink
     hyperbola: Ink
     grid: Ink
-    rc: dict[str, Any]  # rcParams set while drawing and saving
+    rc: Mapping[str, Any]  # rcParams set while drawing and saving
+
+
+def _frozen(mapping: dict) -> Mapping:
+    return MappingProxyType(dict(mapping))
 
 
 _COMMON_RC = {
@@ -73,56 +78,59 @@ _COMMON_RC = {
     "legend.frameon": False,
 }
 
-_SANS = {"font.family": ["DejaVu Sans"], "mathtext.fontset": "dejavusans"}
-_SERIF = {"font.family": ["STIXGeneral", "DejaVu Serif"], "mathtext.fontset": "stix"}  # DejaVu: the glyphs STIX lacks (italic prime)
+_SANS = {"font.family": ("DejaVu Sans",), "mathtext.fontset": "dejavusans"}
+_SERIF = {"font.family": ("STIXGeneral", "DejaVu Serif"), "mathtext.fontset": "stix"}  # DejaVu: the glyphs STIX lacks (italic prime)
 
-STYLES: dict[str, Style] = {
-    "default": Style(
-        name="default",
-        about="colour (Okabe-Ito, colour-blind safe), sans-serif, 7 in wide: for the screen and colour print",
-        font_size=9.0, panel_height=3.4, max_width=7.0, png_dpi=200,
-        rod=Ink(_BLUE, 1.7), sheet="#d4e6f3",
-        particles={"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, PARTICLE_DASH)},
-        impact_colour="#000000", impact_size=5.0,
-        rest_simultaneity=Ink(_ORANGE, 1.3, REST_DOTS),
-        moving_simultaneity=Ink(_PURPLE, 1.1, MOVING_DASHDOT),
-        other_axes=Ink(_GREY, 0.9, AXES_DASHDOTDOT),
-        light_cone=Ink(_SKY, 0.9, CONE_SHORT_DASH),
-        hyperbola=Ink("#9a9a9a", 0.6),
-        grid=Ink("#e3e3e3", 0.5),
-        rc={**_COMMON_RC, **_SANS},
-    ),
-    "print": Style(
-        name="print",
-        about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
-        font_size=8.5, panel_height=3.2, max_width=7.0, png_dpi=600,
-        rod=Ink("#000000", 1.5), sheet="#e4e4e4",
-        particles={"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PARTICLE_DASH)},
-        impact_colour="#000000", impact_size=4.5,
-        rest_simultaneity=Ink("#000000", 0.9, REST_DOTS),
-        moving_simultaneity=Ink("#000000", 0.7, MOVING_DASHDOT),
-        other_axes=Ink("#555555", 0.7, AXES_DASHDOTDOT),
-        light_cone=Ink("#555555", 0.6, CONE_SHORT_DASH),
-        hyperbola=Ink("#8c8c8c", 0.45),
-        grid=Ink("#e6e6e6", 0.4),
-        rc={**_COMMON_RC, **_SERIF},
-    ),
-    "slides": Style(
-        name="slides",
-        about="colour, large type and thick lines on a 13.3 in (16:9) canvas: for projecting",
-        font_size=17.0, panel_height=4.7, max_width=13.33, png_dpi=150,
-        rod=Ink(_BLUE, 3.2), sheet="#d4e6f3",
-        particles={"A": Ink(_VERMILLION, 2.6, PARTICLE_DASH), "B": Ink(_GREEN, 2.6, PARTICLE_DASH)},
-        impact_colour="#000000", impact_size=10.0,
-        rest_simultaneity=Ink(_ORANGE, 2.4, REST_DOTS),
-        moving_simultaneity=Ink(_PURPLE, 2.0, MOVING_DASHDOT),
-        other_axes=Ink(_GREY, 1.6, AXES_DASHDOTDOT),
-        light_cone=Ink(_SKY, 1.6, CONE_SHORT_DASH),
-        hyperbola=Ink("#9a9a9a", 1.1),
-        grid=Ink("#e3e3e3", 0.9),
-        rc={**_COMMON_RC, **_SANS, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
-            "xtick.major.size": 6.0, "ytick.major.size": 6.0},
-    ),
-}
+_DEFAULT = Style(
+    name="default",
+    about="colour (Okabe-Ito, colour-blind safe), sans-serif, 7 in wide: for the screen and colour print",
+    font_size=9.0, panel_height=3.4, max_width=7.0, png_dpi=200,
+    rod=Ink(_BLUE, 1.7), sheet="#d4e6f3",
+    particles=_frozen({"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, PARTICLE_DASH)}),
+    impact_colour="#000000", impact_size=5.0,
+    rest_simultaneity=Ink(_ORANGE, 1.3, REST_DOTS),
+    moving_simultaneity=Ink(_PURPLE, 1.1, MOVING_DASHDOT),
+    other_axes=Ink(_GREY, 0.9, AXES_DASHDOTDOT),
+    light_cone=Ink(_SKY, 0.9, CONE_SHORT_DASH),
+    hyperbola=Ink("#9a9a9a", 0.6),
+    grid=Ink("#e3e3e3", 0.5),
+    rc=_frozen({**_COMMON_RC, **_SANS}),
+)
+_PRINT = Style(
+    name="print",
+    about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
+    font_size=8.5, panel_height=3.2, max_width=7.0, png_dpi=600,
+    rod=Ink("#000000", 1.5), sheet="#e4e4e4",
+    particles=_frozen({"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PARTICLE_DASH)}),
+    impact_colour="#000000", impact_size=4.5,
+    rest_simultaneity=Ink("#000000", 0.9, REST_DOTS),
+    moving_simultaneity=Ink("#000000", 0.7, MOVING_DASHDOT),
+    other_axes=Ink("#555555", 0.7, AXES_DASHDOTDOT),
+    light_cone=Ink("#555555", 0.6, CONE_SHORT_DASH),
+    hyperbola=Ink("#8c8c8c", 0.45),
+    grid=Ink("#e6e6e6", 0.4),
+    rc=_frozen({**_COMMON_RC, **_SERIF}),
+)
+
+# slides: the default's colours and dashes, with large type, thick lines and a 16:9 canvas
+_SLIDES = _DEFAULT._replace(
+    name="slides",
+    about="colour, large type and thick lines on a 13.3 in (16:9) canvas: for projecting",
+    font_size=17.0, panel_height=4.7, max_width=13.33, png_dpi=150,
+    rod=_DEFAULT.rod._replace(width=3.2),
+    particles=_frozen({name: ink._replace(width=2.6) for name, ink in _DEFAULT.particles.items()}),
+    impact_size=10.0,
+    rest_simultaneity=_DEFAULT.rest_simultaneity._replace(width=2.4),
+    moving_simultaneity=_DEFAULT.moving_simultaneity._replace(width=2.0),
+    other_axes=_DEFAULT.other_axes._replace(width=1.6),
+    light_cone=_DEFAULT.light_cone._replace(width=1.6),
+    hyperbola=_DEFAULT.hyperbola._replace(width=1.1),
+    grid=_DEFAULT.grid._replace(width=0.9),
+    rc=_frozen({**_DEFAULT.rc, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
+                "xtick.major.size": 6.0, "ytick.major.size": 6.0}),
+)
+
+#: read-only, like every mapping inside a Style: a caller cannot restyle another caller's figures
+STYLES: Mapping[str, Style] = MappingProxyType({s.name: s for s in (_DEFAULT, _PRINT, _SLIDES)})
 
 STYLE_NAMES = tuple(STYLES)

@@ -7,6 +7,7 @@ draw with the Agg renderer to measure the texts as a reader would see them.
 
 from __future__ import annotations
 
+import io
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -14,6 +15,7 @@ from functools import lru_cache
 from pathlib import Path
 
 import matplotlib
+import matplotlib.image
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -70,6 +72,11 @@ def panels(fig):
 
 @pytest.mark.parametrize("name", ["fig1", "fig2"])
 def test_worldlines_are_the_frames_sampled_points_in_units_of_L(name):
+    """A wiring test: the drawn lines are `FrameView.worldline_points` divided by L, point for point.
+
+    It checks that render draws what `frames` computes, not that the world-lines are right:
+    test_paper and test_engine check those against hand derivations.
+    """
     L = 2.0
     h = history(name, 0.6, L)
     fig = figure(name, 0.6, L=L)
@@ -109,6 +116,7 @@ def test_rod_solid_particles_dashed_sheet_between_the_ends(style):
 
 @pytest.mark.parametrize("name, labels", [("fig1", ["A1", "B1"]), ("fig2", ["A1", "B1", "B2"]), ("single", ["B1"])])
 def test_every_impact_has_a_marker_and_the_same_label_in_both_panels(name, labels):
+    """Partly a wiring test: each marker sits at the event `frames.view` gives (the labels are checked against constants)."""
     h = history(name, 0.6)
     fig = figure(name, 0.6)
     for letter, frame in zip("ab", paper_frames(0.6)):
@@ -153,6 +161,7 @@ def _simultaneity_lines(fig, letter: str, family: str) -> dict[str, np.ndarray]:
 @pytest.mark.parametrize("name", ["fig1", "fig2", "off_timing", "while_turning"])
 @pytest.mark.parametrize("v", SPEEDS)
 def test_through_every_impact_a_line_of_S_and_of_S_prime_with_the_right_slopes(name, v):
+    """The slopes are computed here from v; the impacts they pass through come from `frames.view` (wiring)."""
     try:
         h = history(name, v)
     except ScenarioError:
@@ -235,6 +244,7 @@ def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_
 
 
 def test_a_frame_of_any_velocity_gets_its_own_panel():
+    """Title and slopes against constants; the marker's place against `frames.view` (wiring)."""
     h = history("fig2", 0.6)
     fig = render.draw(h, (Frame("rest", 0.0), Frame("u=0.3", 0.3)))
     c = panels(fig)["b"]
@@ -247,6 +257,77 @@ def test_a_frame_of_any_velocity_gets_its_own_panel():
     assert (rest[1, 1] - rest[0, 1]) / (rest[1, 0] - rest[0, 0]) == pytest.approx(-0.3)
     moving = xy(artist(fig, "b-simultaneity-moving-B2"))
     assert (moving[1, 1] - moving[0, 1]) / (moving[1, 0] - moving[0, 0]) == pytest.approx((-0.6 - 0.3) / (1 + 0.18))
+
+
+def test_a_frame_of_speed_close_to_1_and_v_close_to_1_are_never_rounded_to_1_and_0_has_no_sign():
+    v = 0.9999999  # the fastest v a scenario takes
+    h = history("fig2", v)
+    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=-0", -0.0), Frame("u=-0.9999999", -0.9999999)))
+    assert artist(fig, "title").get_text().startswith("fig2, $v = 0.9999999$")
+    assert panels(fig)["b"].get_title() == "(b) frame u = 0: rod at rest before and after"
+    assert panels(fig)["c"].get_title() == "(c) frame u = \N{MINUS SIGN}0.9999999: rod at +0.9999999 before and after"
+    texts = [t.get_text() for t in fig.findobj(matplotlib.text.Text)]
+    texts += [fmt(tick, None) for ax in fig.axes for axis in (ax.xaxis, ax.yaxis)
+              for fmt in [axis.get_major_formatter()] for tick in axis.get_majorticklocs()]
+    assert not [t for t in texts if re.search(r"(?<![\d.])[-\N{MINUS SIGN}]0(?![\d.])", t)]
+
+
+@pytest.mark.parametrize("u, shown", [
+    (0.6, "0.6"), (-0.3, "\N{MINUS SIGN}0.3"), (-0.0, "0"), (0.6000000000000001, "0.6"), (1 / 3, "0.3333333333"),
+    (-0.9999999, "\N{MINUS SIGN}0.9999999"), (0.99999999999, "0.99999999999"),
+    (0.9999999999999999, "0.9999999999999999"), (-0.9999999999999999, "\N{MINUS SIGN}0.9999999999999999"),
+])
+def test_a_frames_velocity_has_enough_digits_to_stay_below_1(u, shown):
+    assert render.frame_symbol(Frame("other", u)) == f"u = {shown}"
+
+
+def test_more_frames_than_panel_letters_are_refused_not_dropped():
+    h = history("fig2", 0.6)
+    frames = [Frame(f"u={k / 10}", k / 10) for k in range(len(render.PANEL_LETTERS) + 1)]
+    with pytest.raises(ValueError, match="1 to 8 frames"):
+        render.draw(h, frames)
+    with pytest.raises(ValueError, match="1 to 8 frames"):
+        render.draw(h, [])
+    fig = render.draw(h, frames[:-1])
+    assert sorted(panels(fig)) == list(render.PANEL_LETTERS)
+
+
+def _dollar_scenario(tmp_path):
+    path = tmp_path / "a$b.yaml"
+    path.write_text('v: 0.6\ndescription: "costs $5 or \\\\$6; more"\nparticles: {B: {gap: 0.5}}\n')
+    return run(load(str(path)))
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_a_dollar_in_a_scenarios_name_or_description_is_drawn_as_a_dollar(tmp_path, style):
+    """The title is mathtext (for v): the user's $ are escaped there, and measured as plain dollar signs."""
+    h = _dollar_scenario(tmp_path)
+    assert (h.scenario.name, h.scenario.description) == ("a$b", "costs $5 or \\$6; more")
+    fig = render.draw(h, paper_frames(0.6), style)
+    title = artist(fig, "title").get_text()
+    assert title == r"a\$b, $v = 0.6$: costs \$5 or \\$6"
+    _renderer(fig, style)  # matplotlib parses the title as mathtext: it must parse
+    with render.style_context(style):
+        size = STYLES[style].font_size * 1.25
+        drawn = render.text_size(title, size)  # mathtext, parsed
+        plain = render.text_size("a$b, v = 0.6: costs $5 or \\$6", size, ismath=False)
+        estimate = render.approximate_size(title, size)
+    assert drawn[0] == pytest.approx(plain[0], rel=0.1)  # it draws the dollars, not mathtext of what lies between
+    assert drawn[0] <= estimate[0] <= 1.15 * drawn[0] and drawn[1] <= estimate[1]
+
+
+@pytest.mark.parametrize("text", ["a$b", "$", "50% of $3", "x\\$", "a\\$b, $v$"])
+def test_text_with_a_lone_or_escaped_dollar_is_measured_as_a_text_artist_draws_it(text):
+    with render.style_context("default"):
+        ismath = matplotlib.cbook.is_math_text(text)
+        w, h, _ = render.approximate_size(text, 10.0)
+        real_w, real_h, _ = render.text_size(text, 10.0)
+    assert (ismath, real_w <= w, real_h <= h) == (text.endswith("$v$"), True, True)
+
+
+def test_the_text_size_cache_is_bounded():
+    info = render._measured.cache_info()
+    assert info.maxsize is not None and info.maxsize <= 10_000
 
 
 # --- limits, clipping, overlaps -------------------------------------------------------------------------
@@ -317,6 +398,7 @@ def test_limits_frame_every_worldline_with_a_margin(v):
 
 
 def test_hyperbolic_arcs_are_drawn_within_1e_4_L_everywhere():
+    """The drawn polylines against the exact arcs of `frames.view`: checks the sampling, not the arcs themselves."""
     h = history("fig2", 0.8)
     fig = figure("fig2", 0.8)
     L = h.scenario.L
@@ -407,6 +489,28 @@ def test_drawing_and_saving_restore_every_rc_param():
     assert dict(matplotlib.rcParams) == before
 
 
+def test_styles_are_read_only():
+    """A caller cannot restyle another caller's figures: no style, and no mapping inside one, can be changed."""
+    st = STYLES["default"]
+    for mapping, key, value in ((STYLES, "mine", st), (st.rc, "font.size", 30.0), (st.particles, "A", st.rod)):
+        with pytest.raises(TypeError):
+            mapping[key] = value
+    with pytest.raises(AttributeError):
+        st.font_size = 30.0
+    assert all(isinstance(value, (str, int, float, bool, tuple)) for s_ in STYLES.values() for value in s_.rc.values())
+
+
+def test_slides_is_the_default_with_large_type_and_thick_lines():
+    default, slides = STYLES["default"], STYLES["slides"]
+    for field in ("rod", "rest_simultaneity", "moving_simultaneity", "other_axes", "light_cone", "hyperbola", "grid"):
+        one, other = getattr(default, field), getattr(slides, field)
+        assert (other.colour, other.dashes) == (one.colour, one.dashes) and other.width >= 1.5 * one.width, field
+    for name, ink in default.particles.items():
+        assert slides.particles[name]._replace(width=ink.width) == ink
+    assert {k: v for k, v in slides.rc.items() if k in default.rc} == dict(default.rc)
+    assert slides.font_size >= 1.8 * default.font_size
+
+
 def test_styles_differ_in_type_size_and_colour():
     default, printed, slides = (figure("fig2", 0.6, s) for s in ("default", "print", "slides"))
     size = {name: artist(f, "a-impact-label-B1").get_fontsize() for name, f in
@@ -419,15 +523,44 @@ def test_styles_differ_in_type_size_and_colour():
 
 # --- output bytes -------------------------------------------------------------------------------------
 
+SVG = "{http://www.w3.org/2000/svg}"
+
+
 @pytest.mark.parametrize("style", STYLE_NAMES)
-def test_every_preset_renders_in_every_format_and_style(style):
-    magic = {"svg": b"<?xml", "pdf": b"%PDF-", "png": b"\x89PNG"}
+def test_every_preset_renders_to_svg_in_every_style_with_every_worldline_and_impact(style):
+    """The SVG (what `plot` writes by default) holds, in both panels, every world-line, impact and label by its id."""
     for name in builtin_names():
         h = history(name)
-        fig = render.draw(h, paper_frames(h.scenario.v), style)
-        for fmt in FORMATS:
-            data = render.figure_bytes(fig, fmt, style)
-            assert data.startswith(magic[fmt]) and len(data) > 5000, (name, fmt)
+        svg = render.figure_bytes(render.draw(h, paper_frames(h.scenario.v), style), "svg", style)
+        ids = {g.get("id") for g in ET.fromstring(svg).iter(f"{SVG}g")}
+        particles = [p for p in ("A", "B") if h.worldline(p) is not None]
+        assert particles, name
+        for letter in "ab":
+            expected = {f"{letter}-{wl}" for wl in ("axes", "sheet", "rod_left", "rod_right", *particles)}
+            expected |= {f"{letter}-particle-label-{p}" for p in particles}
+            expected |= {f"{letter}-impact{kind}-{i.label}" for i in h.impacts for kind in ("", "-label")}
+            assert expected <= ids, (name, sorted(expected - ids))
+        assert {"title", "legend"} <= ids
+
+
+@pytest.mark.parametrize("fmt, style", [("pdf", "print"), ("png", "default")])
+def test_pdf_and_png_have_the_figures_size_and_are_deterministic(fmt, style):
+    """PDF and PNG for one preset (they are slow): the page or image has the figure's size; twice the same bytes."""
+    fig = figure("fig1", 0.6, style)
+    width, height = fig.get_size_inches()
+    data = render.figure_bytes(fig, fmt, style)
+    assert data == render.figure_bytes(fig, fmt, style)
+    if fmt == "pdf":
+        assert data.startswith(b"%PDF-") and data.rstrip().endswith(b"%%EOF")
+        box = [float(n) for n in re.search(rb"/MediaBox \[ *([\d. ]+)\]", data).group(1).split()]
+        assert box == pytest.approx([0, 0, width * 72, height * 72], abs=0.01)
+        assert b"/FontFile2" in data and b"/Type3" not in data  # TrueType fonts embedded, as journals ask
+    else:
+        image = matplotlib.image.imread(io.BytesIO(data), format="png")
+        dpi = STYLES[style].png_dpi
+        assert image.shape[:2] == pytest.approx((height * dpi, width * dpi), abs=1)  # whole pixels
+        rod = np.all(np.abs(image[..., :3] - to_rgb(STYLES[style].rod.colour)) < 0.02, axis=-1)
+        assert rod.sum() > 1000  # the rod's ends are drawn, in their colour
 
 
 @pytest.mark.parametrize("fmt", FORMATS)
