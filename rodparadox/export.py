@@ -98,7 +98,7 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     """A readable table of the impacts in each frame, for `sears-paradox events`."""
     s = history.scenario
     lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}   (c = 1; x and t in the unit of L)"]
-    header = f"  {'impact':<7}{'end':<7}{'x':>11}{'t':>11}   {'particle velocity':<23}   {'rod velocity'}"
+    header = f"  {'impact':<7}{'end':<7}{'x':>11} {'t':>11}   {'particle velocity':<23}   {'rod velocity'}"
     for f in frames:
         fv = view(history, f)
         title = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name, "")
@@ -108,7 +108,7 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
         for e in fv.events:
             note = f"  simultaneous with {e.impact.simultaneous_with}" if e.impact.simultaneous_with else ""
             note += "  (rod still turning)" if e.impact.while_turning else ""
-            lines.append(f"  {e.impact.label:<7}{e.impact.end:<7}{e.x + 0.0:>+11.6f}{e.t + 0.0:>+11.6f}   "
+            lines.append(f"  {e.impact.label:<7}{e.impact.end:<7}{e.x + 0.0:>+11.6f} {e.t + 0.0:>+11.6f}   "
                          f"{_velocity(e.particle_velocity_before)} -> {_velocity(e.particle_velocity_after)}   "
                          f"{_velocity(e.rod_velocity_before)} -> {_velocity(e.rod_velocity_after)}{note}")
     return "\n".join(lines) + "\n"

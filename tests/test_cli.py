@@ -93,12 +93,12 @@ def test_list_names_every_builtin_with_a_line():
 def test_events_table_fig2_rest_and_moving():
     out = run("events", "fig2", "--v", "0.6").output
     # Fig. 2 in S: B1 at (L/2, L/2v); A1 at (L/2 - gL, L/2v + gvL); B2 at (L/2, L/2v + 2gvL); g = 1.25
-    assert "  B1     right    +0.500000  +0.833333   -0.600000 -> +0.000000   +0.000000 -> -0.600000" in out
-    assert "  A1     left     -0.750000  +1.583333   +0.600000 -> -0.600000   -0.600000 -> +0.600000" in out
-    assert "  B2     right    +0.500000  +2.333333   +0.000000 -> +0.600000   +0.600000 -> +0.000000" in out
+    assert "  B1     right    +0.500000   +0.833333   -0.600000 -> +0.000000   +0.000000 -> -0.600000" in out
+    assert "  A1     left     -0.750000   +1.583333   +0.600000 -> -0.600000   -0.600000 -> +0.600000" in out
+    assert "  B2     right    +0.500000   +2.333333   +0.000000 -> +0.600000   +0.600000 -> +0.000000" in out
     # in S' B1 and A1 share t' = (gL/2v)(1 + v^2) = 17/12; A arrives at 2v/(1+v^2) = 15/17
-    assert "  B1     right    +1.250000  +1.416667" in out
-    assert "  A1     left     +0.250000  +1.416667   +0.882353 -> +0.000000" in out
+    assert "  B1     right    +1.250000   +1.416667" in out
+    assert "  A1     left     +0.250000   +1.416667   +0.882353 -> +0.000000" in out
     assert out.count("frame ") == 2
 
 
