@@ -137,10 +137,13 @@ def relative_velocity(u: float, w: float) -> float:
     return (u - w) / (1.0 - u * w)
 
 
-def _number(value: float) -> str:
-    """Up to 10 significant digits (more if fewer would round a speed |u| < 1 to 1), a real minus sign, no -0."""
+def _number(value: float, significant: int = 10) -> str:
+    """Up to `significant` digits (more if fewer would round a speed |u| < 1 to 1), a real minus sign, no -0.
+
+    10 for what the user typed (v, a frame's velocity), 4 for velocities the engine computed.
+    """
     value += 0.0  # -0.0 -> 0.0
-    for digits in range(10, 18):  # 17 digits give back the float itself
+    for digits in range(significant, 18):  # 17 digits give back the float itself
         text = f"{value:.{digits}g}"
         if abs(float(text)) < 1.0 or abs(value) >= 1.0:
             break
@@ -148,7 +151,7 @@ def _number(value: float) -> str:
 
 
 def _signed(value: float) -> str:
-    return ("+" if value > 0 else "") + _number(value)
+    return ("+" if value > 0 else "") + _number(value, 4)
 
 
 def _velocity_phrase(before: float, after: float) -> str:
