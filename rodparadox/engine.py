@@ -23,7 +23,7 @@ from dataclasses import dataclass, field, replace
 from .collision import elastic
 from .errors import ScenarioError
 from .kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
-from .scenario import Particle, Scenario
+from .model import Particle, Scenario
 
 #: impacts at the two ends closer than this on the rod's own time axis (units of L) are one simultaneous impact (rule 5)
 SIMULTANEITY_TOLERANCE = 1e-10
@@ -211,8 +211,7 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
             if not found:
                 break
             rod_rapidity, while_turning = theta, False
-            struck = found
-            first_name, first_end, first_event = found[0]
+            _, first_end, first_event = found[0]
             if first_end == "left":
                 new_left, new_right = first_event, first_event.displaced(L, theta)
             else:
@@ -226,12 +225,10 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
         relative = tuple(particles[n].rapidity - rod_rapidity for n, _, _ in struck)
         rod_change, particle_after = elastic(tuple(particles[n].mass for n, _, _ in struck), relative)
         new_theta = rod_rapidity + rod_change
-        labels = []
         for (name, end, event), after in zip(struck, particle_after):
             state = particles[name]
             state.impacts += 1
-            labels.append(f"{name}{state.impacts}")
-            impacts.append(Impact(labels[-1], name, end, event, state.rapidity, rod_rapidity + after,
+            impacts.append(Impact(f"{name}{state.impacts}", name, end, event, state.rapidity, rod_rapidity + after,
                                   rod_rapidity, new_theta, while_turning=while_turning))
             state.rapidity = rod_rapidity + after
             state.since = event

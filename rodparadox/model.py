@@ -1,0 +1,188 @@
+"""The scenario as frozen, validated data: a rod, one or two particles, the speed v. Pure, no YAML.
+
+Lengths and times are in units of the rod's proper length L, masses in units
+of the rod's mass M, speeds in units of c. `scenario` reads these from YAML;
+`engine` runs them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from .errors import ScenarioError
+
+PARTICLE_NAMES = ("A", "B")
+#: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far
+#: in the future that t has no digits left for the rod's zig-zag; faster, g exceeds 2000
+SLOWEST, FASTEST = 1e-6, 0.9999999
+#: the largest gap or timing delay, in units of L
+MAX_SPAN = 1e6
+FRAME_NAMES = ("rest", "moving")
+
+
+def _check_number(value: Any, key: str, *, low: float | None = None, high: float | None = None,
+                  low_open: bool = True, high_open: bool = True, allowed: str, hint: str = "") -> float:
+    """Return `value` as a float, or raise a ScenarioError naming `key` and what is allowed."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ScenarioError(f"{key} must be {allowed}, got {_shown(value)}.", key)
+    try:
+        value = float(value)
+    except OverflowError:
+        raise ScenarioError(f"{key} must be {allowed}, got an integer of {len(str(value))} digits.", key) from None
+    bad = not math.isfinite(value)
+    if low is not None:
+        bad = bad or (value <= low if low_open else value < low)
+    if high is not None:
+        bad = bad or (value >= high if high_open else value > high)
+    if bad:
+        raise ScenarioError(f"{key} must be {allowed}, got {value:g}{hint}.", key)
+    return value
+
+
+@dataclass(frozen=True)
+class Timing:
+    """Place a particle so that its first impact comes `delay` (units of L) after
+    the other particle's first impact, in the time of frame `frame`."""
+
+    particle: str
+    frame: str | float = "moving"
+    delay: float = 0.0
+    key: str = field(default="timed_with", compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.particle not in PARTICLE_NAMES:
+            raise ScenarioError(f"{self.key}.particle must be A or B, got {self.particle!r}.", f"{self.key}.particle")
+        if isinstance(self.frame, str):
+            if self.frame not in FRAME_NAMES:
+                raise ScenarioError(
+                    f"{self.key}.frame must be rest, moving or a velocity u with -1 < u < 1, got {self.frame!r}.",
+                    f"{self.key}.frame")
+        else:
+            _check_number(self.frame, f"{self.key}.frame", low=-1, high=1,
+                          allowed="rest, moving or a velocity u with -1 < u < 1")
+        _check_number(self.delay, f"{self.key}.delay", low=-MAX_SPAN, high=MAX_SPAN, low_open=False, high_open=False,
+                      allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
+
+
+@dataclass(frozen=True)
+class Particle:
+    """A point particle: A starts left of the rod and moves right, B starts right and moves left."""
+
+    name: str
+    mass: float = 1.0
+    speed: float | None = None
+    gap: float | None = None
+    timed_with: Timing | None = None
+
+    def __post_init__(self) -> None:
+        key = f"particles.{self.name}"
+        _check_number(self.mass, f"{key}.mass", low=0, allowed="a positive number (units of the rod's mass M)")
+        _check_number(self.mass, f"{key}.mass", low=1e-9, high=1e9, low_open=False, high_open=False,
+                      allowed="between 1e-09 and 1e+09 (units of the rod's mass M)")
+        if self.speed is not None:
+            _check_number(self.speed, f"{key}.speed", low=0, high=1,
+                          allowed="a number with 0 < speed < 1 (towards the rod, units of c)",
+                          hint="; a particle that is at rest or moves away never reaches the rod" if _finite_at_most_zero(self.speed) else "")
+            _check_computable(self.speed, f"{key}.speed")
+        if (self.gap is None) == (self.timed_with is None):
+            raise ScenarioError(f"{key} needs exactly one of gap (its distance from the rod at t = 0) "
+                                f"or timed_with (its impact timed against the other particle's).", key)
+        if self.gap is not None:
+            _check_number(self.gap, f"{key}.gap", low=0, low_open=False,
+                          allowed="a number >= 0 (distance from its end of the rod at t = 0, units of L)",
+                          hint="; a negative gap puts the particle inside the rod")
+            _check_number(self.gap, f"{key}.gap", high=MAX_SPAN, high_open=False,
+                          allowed=f"at most {MAX_SPAN:g} (units of L), so that the rod stays visible beside it")
+        if self.timed_with is not None and self.timed_with.particle == self.name:
+            raise ScenarioError(f"{key}.timed_with.particle must name the other particle, not {self.name} itself.",
+                                f"{key}.timed_with.particle")
+
+    @property
+    def end(self) -> str:
+        """The end of the rod this particle strikes."""
+        return "left" if self.name == "A" else "right"
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """A rod of proper length L at rest in S, centre at x = 0, and one or two particles.
+
+    `v` is the speed of the paper's frame S' (the rod moves at +v there) and
+    the particles' speed wherever a particle does not give its own.
+    """
+
+    name: str
+    v: float
+    particles: tuple[Particle, ...]
+    L: float = 1.0
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _check_number(self.v, "v", low=0, high=1, allowed="a number with 0 < v < 1 (units of c)")
+        _check_computable(self.v, "v")
+        _check_number(self.L, "L", low=0, allowed="a positive length (the rod's proper length)")
+        _check_number(self.L, "L", low=1e-100, high=1e100, low_open=False, high_open=False,
+                      allowed="between 1e-100 and 1e+100 (choose the unit of length to suit)")
+        names = [p.name for p in self.particles]
+        if not names:
+            raise ScenarioError("particles must name at least one of A and B.", "particles")
+        if len(set(names)) != len(names):
+            raise ScenarioError("particles names a particle twice.", "particles")
+        for p in self.particles:
+            if p.timed_with is not None:
+                other = self.particle(p.timed_with.particle)
+                key = f"particles.{p.name}.timed_with.particle"
+                if other is None:
+                    raise ScenarioError(f"{key} is {p.timed_with.particle}, but the scenario has no particle "
+                                        f"{p.timed_with.particle}.", key)
+                if other.gap is None:
+                    raise ScenarioError(f"{key}: {p.name} and {other.name} cannot both be timed against each "
+                                        f"other; give {other.name} a gap.", key)
+
+    def particle(self, name: str) -> Particle | None:
+        return next((p for p in self.particles if p.name == name), None)
+
+    def speed(self, particle: Particle) -> float:
+        return self.v if particle.speed is None else particle.speed
+
+    def frame_velocity(self, frame: str | float) -> float:
+        """Velocity relative to S of a named frame: rest = S, moving = S' (velocity -v)."""
+        if frame == "rest":
+            return 0.0
+        if frame == "moving":
+            return -self.v
+        return float(frame)
+
+    def with_overrides(self, *, v: float | None = None, L: float | None = None) -> "Scenario":
+        """The same scenario with command-line values; a bad value names its option."""
+        changes = {k: val for k, val in (("v", v), ("L", L)) if val is not None}
+        try:
+            return replace(self, **changes)
+        except ScenarioError as e:
+            bad = e.key if e.key in changes else None
+            raise e.located(f"option --{bad}", None) if bad else e
+
+
+def _shown(value: Any) -> str:
+    """A YAML value as the user wrote it, for an error message."""
+    if isinstance(value, bool):
+        return ("yes/true" if value else "no/false") + " (a boolean)"
+    if value is None:
+        return "nothing (an empty value)"
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, (list, dict)):
+        return "a list" if isinstance(value, list) else "a mapping"
+    return f"{value} (a {type(value).__name__})"
+
+
+def _check_computable(speed: float, key: str) -> None:
+    if not SLOWEST <= speed <= FASTEST:
+        raise ScenarioError(f"{key} must be between {SLOWEST:g} and {FASTEST!r} for double precision to place the "
+                            f"impacts, got {speed!r}.", key)
+
+
+def _finite_at_most_zero(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) and value <= 0
