@@ -47,7 +47,7 @@ import pytest
 
 from rodparadox import engine, scenario
 from rodparadox.frames import Frame, view
-from rodparadox.kinematics import Event, HyperbolicArc
+from rodparadox.kinematics import HyperbolicArc
 
 VS = (0.1, 0.3, 0.6, 0.8, 0.95, 0.99)
 LS = (0.5, 1.0, 3.7)
