@@ -1,9 +1,16 @@
-"""Fixtures shared by the CLI test files."""
+"""Fixtures shared by the test files, and hypothesis's profile."""
 
 import os
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
+
+# CI (CI=true) runs the same generated examples every time, so a landing never hangs on a lucky draw;
+# a developer's run draws new ones and finds what CI would not
+settings.register_profile("ci", derandomize=True, database=None)
+if os.environ.get("CI"):
+    settings.load_profile("ci")
 
 
 @pytest.fixture
