@@ -1,18 +1,22 @@
-"""Runs a scenario: impacts, the rod's rigid response, the order of impacts (PHYSICS.md rules 1-6). Pure.
+"""Runs a scenario: impacts, the rod's rigid response, the order of impacts (README, "The model"). Pure.
 
 Everything is computed in S, the rod's rest frame before any impact, as exact
 segments; `History` is the result, and `kinematics` boosts it to any frame.
 
-The rod's motion is a chain of *turns*. An impact at event E on one end
-changes the rod's rapidity from theta to theta'; the struck end (the pivot)
-kinks at E, and the rod's lines of simultaneity turn about E from rapidity
-theta to theta' (rule 3). The far end, a proper distance L from E, moves on the
-hyperbola E + side*L*(cosh phi, sinh phi), phi from theta to theta', then on at
-theta'. The rod's own time orders the impacts (rule 4): while the lines of
-simultaneity still fan out from E, only the far end can be struck, and such
-an impact stops the turn at the fan's line through it (rule 6): the rod's rest
-frame there is phi, the pivot's kink becomes theta -> phi, and a new turn
-begins about the new impact, with the old pivot as its far end.
+The rod's motion is a chain of *turns*. A collision fixes the rod's
+energy-momentum at once: its *dynamical* rapidity theta' (rule 2). Its shape
+follows only as the turn proceeds: the rod's lines of simultaneity turn
+about the pivot P, from the line they had (rapidity phi) to theta' (rule 3).
+The pivot is the end on the side the rod is pushed from (a gain to the right
+turns about the left end, else the far end would move before the impact),
+which is the struck end of a single impact. The far end, a proper distance L
+from P, moves on the hyperbola P + side*L*(cosh psi, sinh psi), psi from phi
+to theta', then on at theta'. The rod's own time orders the impacts (rule 4):
+while the lines still fan out from P, only the far end can be struck; such an
+impact on the fan line at psi is a collision with the rod of dynamical
+rapidity theta' (revised rule 6), the turn stops on that line, and the next
+turn starts there, from psi. Every collision conserves energy and momentum,
+so the whole history does.
 """
 
 from __future__ import annotations
@@ -37,10 +41,15 @@ WORLDLINE_NAMES = ("A", "B", "rod_left", "rod_right")
 class Impact:
     """One particle striking one end of the rod, at `event` (coordinates in S).
 
-    Rapidities are in S; the rod's are of its rest frame just before and the
-    new rest frame just after the impact. `simultaneous_with` names the impact
-    at the other end on the same line of the rod's simultaneity (rule 5);
-    `while_turning` says the rod had not finished its previous turn (rule 6).
+    Rapidities are in S. The rod's `rod_rapidity_before`/`after` are its
+    dynamical rapidity (that of its energy-momentum M(cosh, sinh)) just before
+    and just after the collision; `line_rapidity` is that of the rod's line of
+    simultaneity through the impact, the rest frame of its shape there (the
+    same as `rod_rapidity_before` unless the rod is still turning, rule 6).
+    `collision` numbers the collisions from 0: impacts sharing it are one
+    collision (rule 5). `simultaneous_with` names the impact at the other end
+    on the same line of the rod's simultaneity; `while_turning` says the rod
+    had not finished its previous turn.
     """
 
     label: str
@@ -53,16 +62,58 @@ class Impact:
     rod_rapidity_after: float
     simultaneous_with: str | None = None
     while_turning: bool = False
+    line_rapidity: float = 0.0
+    collision: int = 0
+
+
+@dataclass(frozen=True)
+class Turn:
+    """The rod's lines of simultaneity turning about `pivot` (rule 3), from `rapidity_from` towards `rapidity_to`.
+
+    `rapidity_to` is the rod's dynamical rapidity during the turn; the turn
+    ends on the line `rapidity_stop`, which is `rapidity_to` unless the impact
+    `stopped_by` struck the far end first (rule 6). The material point at
+    proper distance d from the pivot moves on the hyperbola of radius d
+    centred on it (`arc(d)`).
+    """
+
+    pivot: Event
+    pivot_end: str
+    rapidity_from: float
+    rapidity_to: float
+    rapidity_stop: float
+    stopped_by: str | None
+    L: float
+
+    @property
+    def side(self) -> int:
+        """+1 when the pivot is the left end (the rod lies at +x from it on its own lines), else -1."""
+        return 1 if self.pivot_end == "left" else -1
+
+    @property
+    def completed(self) -> bool:
+        return self.stopped_by is None
+
+    def arc(self, d: float) -> HyperbolicArc:
+        """The path of the material point at proper distance d from the pivot during this turn."""
+        return HyperbolicArc(self.pivot, d, self.side, self.rapidity_from, self.rapidity_stop)
+
+    def distance(self, sigma: float) -> float:
+        """Proper distance from the pivot of the material point sigma (its distance from the left end)."""
+        return sigma if self.pivot_end == "left" else self.L - sigma
 
 
 @dataclass(frozen=True)
 class History:
-    """The exact world-lines of a scenario in S, its impacts in the rod's own order, and each particle's event at t = 0."""
+    """The exact world-lines of a scenario in S, its impacts and turns in the rod's own order, each particle's event
+    at t = 0, and the rod's rapidity after the last impact."""
 
     scenario: Scenario
     impacts: tuple[Impact, ...]
     worldlines: tuple[tuple[str, WorldLine], ...]
     starts: tuple[tuple[str, Event], ...]
+    turns: tuple[Turn, ...] = ()
+    final_rapidity: float = 0.0
 
     def worldline(self, name: str) -> WorldLine | None:
         """The world-line of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
@@ -177,8 +228,10 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
     }
     ends: dict[str, list[Segment]] = {"left": [], "right": []}
     impacts: list[Impact] = []
+    turns: list[Turn] = []
     phase = _Phase(0.0, Event(-L / 2, 0.0), Event(L / 2, 0.0), None, 0.0, L, bounded=False)
     first_line = None
+    collisions = 0
 
     while True:
         if len(impacts) > MAX_IMPACTS:
@@ -193,24 +246,23 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
             ends[far].append(stopped)
             event = stopped.end
             struck = [(name, far, event)]
-            again = _pivot_particle_closing(arc, phi, particles)
-            if again is not None:
-                struck.append((again, "left" if far == "right" else "right", arc.centre))
-                struck.sort(key=lambda item: item[1] != "left")
-            rod_rapidity, while_turning = phi, not completed
+            line_rapidity, while_turning = phi, not completed
             new_left, new_right = (arc.centre, event) if far == "right" else (event, arc.centre)
+            stopped_by = None if completed else f"{name}{particles[name].impacts + 1}"
+            turns.append(_turn_of(phase, phi, stopped_by))
         else:
             if arc is not None:
                 far = "right" if arc.side == 1 else "left"
                 ends[far].append(arc)
                 left1, right1 = (arc.centre, arc.end) if far == "right" else (arc.end, arc.centre)
+                turns.append(_turn_of(phase, phase.theta1, None))
             else:
                 left1, right1 = phase.left0, phase.right0
             theta = phase.theta1
             found = _hits_after_turn(theta, left1, right1, particles, phase.bounded, tolerance)
             if not found:
                 break
-            rod_rapidity, while_turning = theta, False
+            line_rapidity, while_turning = theta, False
             _, first_end, first_event = found[0]
             if first_end == "left":
                 new_left, new_right = first_event, first_event.displaced(L, theta)
@@ -222,25 +274,32 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
                     if _distance(a, b) > 1e-12 * L:
                         ends[end].append(Line(a, b))
 
-        relative = tuple(particles[n].rapidity - rod_rapidity for n, _, _ in struck)
-        rod_change, particle_after = elastic(tuple(particles[n].mass for n, _, _ in struck), relative)
-        new_theta = rod_rapidity + rod_change
-        for (name, end, event), after in zip(struck, particle_after):
-            state = particles[name]
-            state.impacts += 1
-            impacts.append(Impact(f"{name}{state.impacts}", name, end, event, state.rapidity, rod_rapidity + after,
-                                  rod_rapidity, new_theta, while_turning=while_turning))
-            state.rapidity = rod_rapidity + after
-            state.since = event
-            state.kinks.append((event, state.rapidity))
-        if len(struck) == 2:
-            a, b = impacts[-2], impacts[-1]
-            impacts[-2:] = [replace(a, simultaneous_with=b.label), replace(b, simultaneous_with=a.label)]
-            pivot = None if rod_change == 0 else ("left" if rod_change > 0 else "right")
-        else:
-            pivot = struck[0][1] if rod_change != 0 else None
+        # every collision on this rod line, with the rod's dynamical rapidity (rule 6): first the impact(s)
+        # found, then any particle at an end of the line that the new motion of that end would run into
+        rod_rapidity = phase.theta1
+        on_line = len(impacts)
+        while struck:
+            relative = tuple(particles[n].rapidity - rod_rapidity for n, _, _ in struck)
+            rod_change, particle_after = elastic(tuple(particles[n].mass for n, _, _ in struck), relative)
+            new_theta = rod_rapidity + rod_change
+            for (name, end, event), after in zip(struck, particle_after):
+                state = particles[name]
+                state.impacts += 1
+                impacts.append(Impact(f"{name}{state.impacts}", name, end, event, state.rapidity, rod_rapidity + after,
+                                      rod_rapidity, new_theta, while_turning=while_turning,
+                                      line_rapidity=line_rapidity, collision=collisions))
+                state.rapidity = rod_rapidity + after
+                state.since = event
+                state.kinks.append((event, state.rapidity))
+            collisions += 1
+            rod_rapidity = new_theta
+            struck = _running_into_the_rod(particles, new_left, new_right, line_rapidity, rod_rapidity)
+            if len(impacts) > MAX_IMPACTS:
+                break
+        _link_simultaneous(impacts, on_line)
+        pivot = None if rod_rapidity == line_rapidity else ("left" if rod_rapidity > line_rapidity else "right")
         first_line = first_line or (new_left, new_right)
-        phase = _Phase(rod_rapidity, new_left, new_right, pivot, new_theta, L)
+        phase = _Phase(line_rapidity, new_left, new_right, pivot, rod_rapidity, L)
 
     worldlines = [(name, _particle_worldline(state)) for name, state in particles.items()]
     # each end's world-line starts at the rod's simultaneity line through the first impact, so that
@@ -251,7 +310,47 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
     order = {n: i for i, n in enumerate(WORLDLINE_NAMES)}
     worldlines.sort(key=lambda item: order[item[0]])
     return History(scenario, tuple(impacts), tuple(worldlines),
-                   tuple((name, state.start) for name, state in sorted(particles.items())))
+                   tuple((name, state.start) for name, state in sorted(particles.items())),
+                   tuple(turns), phase.theta1)
+
+
+def _turn_of(phase: _Phase, stop: float, stopped_by: str | None) -> Turn:
+    pivot = phase.left0 if phase.pivot == "left" else phase.right0
+    return Turn(pivot, phase.pivot, phase.theta0, phase.theta1, stop, stopped_by, phase.L)
+
+
+def _running_into_the_rod(particles: dict, left: Event, right: Event, line_rapidity: float,
+                          rod_rapidity: float) -> list[tuple[str, str, Event]]:
+    """Particles at an end of the rod line (left, right) that the end's motion just after it would run into.
+
+    After a collision the rod turns from the line's rapidity towards its new
+    dynamical one about the end it is pushed from; that end leaves the line at
+    the new rapidity, the other at the line's. A particle sitting at an end (it
+    struck there, or struck the pivot of a turn stopped on this line) and
+    moving into the rod at that end's speed strikes it again at once: the
+    re-strike of a particle heavier than the rod at the old pivot (rule 6).
+    Such a particle also closes on the rod's dynamical rapidity, so the
+    collision is an ordinary one; the repeated collisions end, as three bodies
+    on a line collide only finitely often.
+    """
+    left_rapidity = rod_rapidity if rod_rapidity > line_rapidity else line_rapidity
+    right_rapidity = rod_rapidity if rod_rapidity < line_rapidity else line_rapidity
+    out = []
+    a, b = particles.get("A"), particles.get("B")
+    if a is not None and a.since == left and a.rapidity > left_rapidity:
+        out.append(("A", "left", left))
+    if b is not None and b.since == right and b.rapidity < right_rapidity:
+        out.append(("B", "right", right))
+    return out
+
+
+def _link_simultaneous(impacts: list[Impact], first: int) -> None:
+    """Impacts at the two ends on one rod line (from index `first` on) name each other: the first at the other end."""
+    on_line = impacts[first:]
+    for k, i in enumerate(on_line):
+        other = next((o for o in on_line if o.end != i.end), None)
+        if other is not None:
+            impacts[first + k] = replace(i, simultaneous_with=other.label)
 
 
 def _particle_worldline(state: _ParticleState) -> WorldLine:
@@ -306,23 +405,6 @@ def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
     completed = s * (phi - arc.phi_end) >= -rounding
     phi = arc.phi_end if completed else phi  # a hit on the turn's last line (Fig. 2's A1, B2) ends a complete turn
     return name, phi, completed
-
-
-def _pivot_particle_closing(arc: HyperbolicArc, phi: float, particles: dict) -> str | None:
-    """The particle that struck the pivot, if it now runs into the rod.
-
-    Stopping the turn at phi (rule 6) gives the pivot rapidity phi instead of the
-    turn's final one; a particle heavier than the rod, which left the pivot slower
-    than that final rapidity, may be faster than phi. It then strikes the pivot
-    again at once, on the same simultaneity line as the far end's impact: both
-    impacts are one simultaneous impact (rule 5).
-    """
-    name = "A" if arc.side == 1 else "B"
-    state = particles.get(name)
-    if state is None or state.since != arc.centre:
-        return None
-    closing = state.rapidity > phi if name == "A" else state.rapidity < phi
-    return name if closing else None
 
 
 def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, bounded: bool,
