@@ -214,6 +214,29 @@ class WorldLine:
         # the first segment that ends at or after t holds t, or t falls in the gap just before it
         return next(s for s in self.segments if t <= s.end.t).event_at_time(t)
 
+    def piece_at_time(self, t: float, after: bool = False) -> Segment | float:
+        """The segment holding time t, or the rapidity of the straight end (before or after the segments) that does.
+
+        At a kink, the piece before it; with `after`, the piece after it.
+        """
+        first, last = self.first, self.last
+        if t < first.t or (t == first.t and not after):
+            return self.rapidity_before
+        if t > last.t or (t == last.t and after) or not self.segments:
+            return self.rapidity_after
+        if after:
+            return next((s for s in self.segments if t < s.end.t), self.segments[-1])
+        return next(s for s in self.segments if t <= s.end.t)
+
+    def rapidity_at_time(self, t: float, after: bool = False) -> float:
+        """The world-line's rapidity at time t (at a kink: the one before it, or after it with `after`)."""
+        piece = self.piece_at_time(t, after)
+        if isinstance(piece, float):
+            return piece
+        if isinstance(piece, Line):
+            return piece.rapidity_at_start
+        return piece.phi_at_time(t)
+
     def sample(self, t_lo: float, t_hi: float, tolerance: float) -> np.ndarray:
         """(n, 2) array of [x, t] points from t_lo to t_hi, every kink included."""
         parts = [p.sample(tolerance) for p in self.pieces(t_lo, t_hi)]

@@ -1,0 +1,201 @@
+"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (README, "The ledger").
+
+Pure. Units: energy in M c^2, momentum in M c (c = 1). A particle of mass m
+and rapidity a has m (cosh a, sinh a). The rod's *kinetic* (E, p) on the slice
+t = tau of a frame is (M/L) times the integral over its material points sigma
+of (cosh psi, sinh psi), psi the point's rapidity where it crosses the slice
+(rest mass flows along material lines). The *hidden* part is the system's
+total before the first impact minus the kinetic total on the slice: what the
+rod's stress carries (Sears's "hidden momentum").
+
+The integral is exact, in closed form: the slice crosses the boundaries of
+the turns' fans at points found in closed form, which split [0, L] into
+pieces where every point is either straight (one rapidity) or on the
+hyperbolae of one turn, where sinh psi = a/d (d the distance from the pivot)
+and the integrals of cosh psi and sinh psi over d are elementary.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .engine import History, Impact
+from .kinematics import HyperbolicArc, Line
+from .rod import material_worldline, turn_interval
+
+
+@dataclass(frozen=True)
+class EnergyMomentum:
+    """(E, p) in one frame: E in M c^2, p in M c."""
+
+    E: float
+    p: float
+
+    def __add__(self, other: "EnergyMomentum") -> "EnergyMomentum":
+        return EnergyMomentum(self.E + other.E, self.p + other.p)
+
+    def __sub__(self, other: "EnergyMomentum") -> "EnergyMomentum":
+        return EnergyMomentum(self.E - other.E, self.p - other.p)
+
+    @staticmethod
+    def of(mass: float, rapidity: float) -> "EnergyMomentum":
+        return EnergyMomentum(mass * math.cosh(rapidity), mass * math.sinh(rapidity))
+
+
+ZERO = EnergyMomentum(0.0, 0.0)
+#: two times closer than this (relative to L + |t|) are one instant: the rounding of boosting an event twice
+SAME_INSTANT = 1e-12
+
+
+@dataclass(frozen=True)
+class Slice:
+    """The ledger on the slice t of a frame: each body's kinetic (E, p), their total, and the hidden part."""
+
+    t: float
+    bodies: tuple[tuple[str, EnergyMomentum], ...]  # A, B (those present), rod
+    kinetic: EnergyMomentum
+    hidden: EnergyMomentum
+
+
+@dataclass(frozen=True)
+class ImpactEntry:
+    """One impact in a frame: the particle's (E, p) just before and after, the impulse it delivers to the rod, the
+    rod's kinetic (E, p) on the slice through the impact (continuous there: the impact is one point of the rod),
+    the rod's dynamical (E, p) before and after, and the system's kinetic and hidden totals just before and after."""
+
+    impact: Impact
+    t: float
+    particle_before: EnergyMomentum
+    particle_after: EnergyMomentum
+    impulse: EnergyMomentum
+    rod_kinetic: EnergyMomentum
+    rod_dynamical_before: EnergyMomentum
+    rod_dynamical_after: EnergyMomentum
+    kinetic_before: EnergyMomentum
+    kinetic_after: EnergyMomentum
+    hidden_before: EnergyMomentum
+    hidden_after: EnergyMomentum
+
+
+def initial_total(history: History, frame_rapidity: float) -> EnergyMomentum:
+    """All bodies before the first impact: the rod at rest in S, each particle at its speed towards the rod."""
+    s = history.scenario
+    total = EnergyMomentum.of(1.0, -frame_rapidity)
+    for p in s.particles:
+        r = (1.0 if p.name == "A" else -1.0) * math.atanh(s.speed(p))
+        total += EnergyMomentum.of(p.mass, r - frame_rapidity)
+    return total
+
+
+def particle_on_slice(history: History, name: str, frame_rapidity: float, t: float, after: bool = True) -> EnergyMomentum:
+    """A particle's (E, p) at time t of the frame; at one of its impacts, just after it (or just before, after=False).
+
+    An impact within rounding of t (SAME_INSTANT) counts as at t: boosting the
+    impact and the world-line separately may put them an ulp apart.
+    """
+    mass = history.scenario.particle(name).mass
+    tolerance = SAME_INSTANT * (history.scenario.L + abs(t))
+    here = [i for i in history.impacts if i.particle == name and abs(i.event.time_in(frame_rapidity) - t) <= tolerance]
+    if here:
+        rapidity = here[-1].particle_rapidity_after if after else here[0].particle_rapidity_before
+        return EnergyMomentum.of(mass, rapidity - frame_rapidity)
+    w = history.worldline(name).boosted(frame_rapidity)
+    return EnergyMomentum.of(mass, w.rapidity_at_time(t))
+
+
+def rod_on_slice(history: History, frame_rapidity: float, t: float) -> EnergyMomentum:
+    """The rod's kinetic (E, p) on the slice t of the frame, exactly (closed form on each piece of [0, L])."""
+    L = history.scenario.L
+    cuts = {0.0, L}
+    for turn in history.turns:
+        pivot = turn.pivot.boosted(frame_rapidity)
+        for rapidity in (turn.rapidity_from, turn.rapidity_stop):
+            sinh = math.sinh(rapidity - frame_rapidity)
+            if sinh == 0.0:
+                continue  # this fan line is a slice of the frame: it bounds nothing on another slice
+            d = (t - pivot.t) / (turn.side * sinh)
+            if 0.0 < d < L:
+                cuts.add(turn.distance(d))  # distance(.) maps d to sigma and back: it is its own inverse
+    cuts = sorted(cuts)
+    E = p = 0.0
+    for lo, hi in zip(cuts, cuts[1:]):
+        if hi - lo <= 0.0:
+            continue
+        w = material_worldline(history, 0.5 * (lo + hi)).boosted(frame_rapidity)
+        piece = w.piece_at_time(t)
+        if isinstance(piece, HyperbolicArc) and piece.radius > 0:
+            dE, dp = _across_arc(piece, t, lo, hi, L)
+        else:
+            psi = piece if isinstance(piece, float) else piece.rapidity_at_start if isinstance(piece, Line) else piece.phi_at_time(t)
+            dE, dp = (hi - lo) * math.cosh(psi), (hi - lo) * math.sinh(psi)
+        E, p = E + dE, p + dp
+    return EnergyMomentum(E / L, p / L)
+
+
+def _across_arc(arc: HyperbolicArc, t: float, sigma_lo: float, sigma_hi: float, L: float) -> tuple[float, float]:
+    """Integral over sigma in [sigma_lo, sigma_hi] of (cosh psi, sinh psi), every point on a hyperbola about one pivot.
+
+    The point at distance d from the pivot P crosses the slice where
+    t - t_P = side d sinh psi: sinh psi = a/d with a = side (t - t_P). Then
+    integral of sinh psi dd = a ln(d2/d1) and integral of cosh psi dd =
+    integral of sqrt(d^2 + a^2)/d dd = [sqrt(d^2 + a^2) - |a| asinh(|a|/d)].
+    """
+    # the pivot's distance from sigma: the arc's radius at the midpoint says which end the pivot is
+    mid = 0.5 * (sigma_lo + sigma_hi)
+    pivot_at_left = abs(arc.radius - mid) < abs(arc.radius - (L - mid))
+    d1, d2 = sorted((sigma_lo, sigma_hi) if pivot_at_left else (L - sigma_hi, L - sigma_lo))
+    a = arc.side * (t - arc.centre.t)
+    if a == 0.0:
+        return d2 - d1, 0.0
+    if d1 <= 0.0:
+        # only a slice through the pivot itself (a rounding-sized a) puts the pivot on the arcs: the piece is
+        # then rounding-sized too, and its midpoint's rapidity is as good as the exact integral
+        psi = math.asinh(a / (0.5 * d2))
+        return d2 * math.cosh(psi), d2 * math.sinh(psi)
+    b = abs(a)
+
+    def primitive(d: float) -> float:
+        return math.hypot(d, a) - b * math.asinh(b / d)
+
+    return primitive(d2) - primitive(d1), a * math.log(d2 / d1)
+
+
+def ledger_slice(history: History, frame_rapidity: float, t: float) -> Slice:
+    """Each body's kinetic (E, p) on the slice t of the frame (particles just after any impact at t), and the hidden part."""
+    bodies = [(p.name, particle_on_slice(history, p.name, frame_rapidity, t)) for p in sorted(history.scenario.particles,
+                                                                                               key=lambda p: p.name)]
+    bodies.append(("rod", rod_on_slice(history, frame_rapidity, t)))
+    kinetic = ZERO
+    for _, em in bodies:
+        kinetic += em
+    return Slice(t, tuple(bodies), kinetic, initial_total(history, frame_rapidity) - kinetic)
+
+
+def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry, ...]:
+    """Every impact in the frame, in the rod's own order, with the (E, p) of every body just before and after it."""
+    out = []
+    total = initial_total(history, frame_rapidity)
+    names = sorted(p.name for p in history.scenario.particles)
+    for i in history.impacts:
+        t = i.event.time_in(frame_rapidity)
+        rod = rod_on_slice(history, frame_rapidity, t)
+        before = {n: particle_on_slice(history, n, frame_rapidity, t, after=False) for n in names}
+        after = {n: particle_on_slice(history, n, frame_rapidity, t, after=True) for n in names}
+        mass = history.scenario.particle(i.particle).mass
+        p_before = EnergyMomentum.of(mass, i.particle_rapidity_before - frame_rapidity)
+        p_after = EnergyMomentum.of(mass, i.particle_rapidity_after - frame_rapidity)
+        kinetic_before, kinetic_after = rod, rod
+        for n in names:
+            kinetic_before += before[n]
+            kinetic_after += after[n]
+        out.append(ImpactEntry(i, t, p_before, p_after, p_before - p_after, rod,
+                               EnergyMomentum.of(1.0, i.rod_rapidity_before - frame_rapidity),
+                               EnergyMomentum.of(1.0, i.rod_rapidity_after - frame_rapidity),
+                               kinetic_before, kinetic_after, total - kinetic_before, total - kinetic_after))
+    return tuple(out)
+
+
+def turn_times(history: History, frame_rapidity: float) -> list[float]:
+    """Every instant of the frame's time where a turn starts or ends."""
+    return sorted({t for turn in history.turns for t in turn_interval(turn, frame_rapidity)})
