@@ -1,0 +1,161 @@
+"""The ledger as text, JSON and CSV, for `sears-paradox ledger` (README, "The ledger"). Pure.
+
+JSON numbers are written with Python's shortest round-trip repr and keys in a
+fixed order, so the same command gives the same bytes; text tables print
+seven significant digits and never -0.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from typing import Any, Sequence
+
+from .engine import History
+from .frames import Frame, time_window
+from .rod import turn_interval
+from .ledger import EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice, turn_times
+
+FORMAT = "sears-paradox-ledger/1"
+#: slices drawn between the ends of a frame's time window when no --at times are given (plus every turn's start and
+#: end and every impact): enough for a smooth curve at print size
+DENSE_SLICES = 240
+
+
+def slice_times(history: History, frame: Frame, at: Sequence[float] | None = None) -> tuple[float, ...]:
+    """The --at times as given, or a dense sampling of the frame's time window with every turn's start and end and
+    every impact's instant."""
+    if at is not None:
+        return tuple(at)
+    lo, hi = time_window(history, frame)
+    eta = frame.rapidity
+    times = {lo + (hi - lo) * k / (DENSE_SLICES - 1) for k in range(DENSE_SLICES)}
+    times.update(t for t in turn_times(history, eta) if lo <= t <= hi)
+    times.update(i.event.time_in(eta) for i in history.impacts)
+    return tuple(sorted(times))
+
+
+def _em(em: EnergyMomentum) -> dict[str, float]:
+    return {"E": em.E + 0.0, "p": em.p + 0.0}
+
+
+def _impact(entry: ImpactEntry) -> dict[str, Any]:
+    i = entry.impact
+    return {"label": i.label, "particle": i.particle, "end": i.end, "t": entry.t + 0.0,
+            "particle_before": _em(entry.particle_before), "particle_after": _em(entry.particle_after),
+            "impulse": _em(entry.impulse), "rod_kinetic": _em(entry.rod_kinetic),
+            "rod_dynamical_before": _em(entry.rod_dynamical_before),
+            "rod_dynamical_after": _em(entry.rod_dynamical_after),
+            "kinetic_before": _em(entry.kinetic_before), "kinetic_after": _em(entry.kinetic_after),
+            "hidden_before": _em(entry.hidden_before), "hidden_after": _em(entry.hidden_after)}
+
+
+def _slice(s: Slice) -> dict[str, Any]:
+    return {"t": s.t + 0.0, "bodies": {name: _em(em) for name, em in s.bodies}, "kinetic": _em(s.kinetic),
+            "hidden": _em(s.hidden)}
+
+
+def document(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> dict[str, Any]:
+    s = history.scenario
+    out_frames = {}
+    for f in frames:
+        eta = f.rapidity
+        out_frames[f.name] = {
+            "velocity": f.velocity + 0.0,
+            "total": _em(initial_total(history, eta)),
+            "turns": [{"pivot": turn.pivot_end, "start": lo + 0.0, "end": hi + 0.0}
+                      for turn in history.turns for lo, hi in [turn_interval(turn, eta)]],
+            "impacts": [_impact(e) for e in impact_entries(history, eta)],
+            "slices": [_slice(ledger_slice(history, eta, t)) for t in slice_times(history, f, at)],
+        }
+    return {"format": FORMAT,
+            "scenario": {"name": s.name, "v": s.v, "L": s.L,
+                         "masses": {"rod": 1.0, **{p.name: p.mass for p in s.particles}}},
+            "units": {"E": "M c^2", "p": "M c", "t": "the unit L is given in"},
+            "frames": out_frames}
+
+
+def to_json(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+    return json.dumps(document(history, frames, at), indent=1, allow_nan=False) + "\n"
+
+
+CSV_COLUMNS = ("frame", "kind", "label", "t", "body", "E", "p")
+
+
+def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+    """Rows frame,kind,label,t,body,E,p: kind is `before`/`after` (an impact's instant), `impulse` or `slice`."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(CSV_COLUMNS)
+    for f in frames:
+        eta = f.rapidity
+        names = sorted(p.name for p in history.scenario.particles)
+        for e in impact_entries(history, eta):
+            t, label = repr(e.t + 0.0), e.impact.label
+            for kind, particle, kinetic, hidden, rod in (
+                    ("before", e.particle_before, e.kinetic_before, e.hidden_before, e.rod_dynamical_before),
+                    ("after", e.particle_after, e.kinetic_after, e.hidden_after, e.rod_dynamical_after)):
+                rows = [(e.impact.particle, particle), ("rod", e.rod_kinetic), ("rod_dynamical", rod),
+                        ("kinetic", kinetic), ("hidden", hidden)]
+                for body, em in rows:
+                    writer.writerow([f.name, kind, label, t, body, repr(em.E + 0.0), repr(em.p + 0.0)])
+            writer.writerow([f.name, "impulse", label, t, e.impact.particle, repr(e.impulse.E + 0.0),
+                             repr(e.impulse.p + 0.0)])
+        for t in slice_times(history, f, at):
+            s = ledger_slice(history, eta, t)
+            for body, em in (*s.bodies, ("kinetic", s.kinetic), ("hidden", s.hidden)):
+                if body in names or body in ("rod", "kinetic", "hidden"):
+                    writer.writerow([f.name, "slice", "", repr(t + 0.0), body, repr(em.E + 0.0), repr(em.p + 0.0)])
+    return out.getvalue()
+
+
+def _num(x: float) -> str:
+    """Seven significant digits, no -0, no exponent for ordinary magnitudes."""
+    x = x + 0.0
+    if abs(x) < 5e-13:  # rounding of a difference of totals of order 1: zero
+        return "0"
+    text = f"{x:.7g}"
+    return "0" if float(text) == 0 else text
+
+
+def _frame_title(f: Frame) -> str:
+    symbol = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name)
+    return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {_num(f.velocity)} relative to S"
+
+
+def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+    """For each frame: every impact with each body's (E, p) just before and after, the impulse, and the totals;
+    then each --at slice."""
+    s = history.scenario
+    names = sorted(p.name for p in s.particles)
+    lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}; E in M c^2, p in M c (M the rod's mass, c = 1), "
+             f"t in the unit L is given in"]
+    row = "  {:<16}{:>12}{:>12}   {:>12}{:>12}"
+    for f in frames:
+        eta = f.rapidity
+        total = initial_total(history, eta)
+        lines += ["", _frame_title(f),
+                  f"  all bodies before the first impact: E = {_num(total.E)}, p = {_num(total.p)}"]
+        for e in impact_entries(history, eta):
+            i = e.impact
+            together = f", with {i.simultaneous_with}" if i.simultaneous_with else ""
+            turning = ", rod still turning" if i.while_turning else ""
+            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {_num(e.t)}",
+                      row.format("", "E before", "p before", "E after", "p after")]
+            for label, b, a in ((i.particle, e.particle_before, e.particle_after),
+                                ("rod, kinetic", e.rod_kinetic, e.rod_kinetic),
+                                ("rod, dynamical", e.rod_dynamical_before, e.rod_dynamical_after),
+                                ("kinetic total", e.kinetic_before, e.kinetic_after),
+                                ("hidden", e.hidden_before, e.hidden_after)):
+                lines.append(row.format(label, _num(b.E), _num(b.p), _num(a.E), _num(a.p)))
+            lines.append(f"  impulse to the rod: E {_num(e.impulse.E)}, p {_num(e.impulse.p)}")
+        if at:
+            head = "  {:>12}".format("t") + "".join(f"{name + ' E':>12}{name + ' p':>12}" for name in names + ["rod"])
+            head += f"{'kinetic E':>12}{'kinetic p':>12}{'hidden E':>12}{'hidden p':>12}"
+            lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", head]
+            for t in at:
+                sl = ledger_slice(history, eta, t)
+                values = [em for _, em in sl.bodies] + [sl.kinetic, sl.hidden]
+                lines.append("  {:>12}".format(_num(t)) + "".join(f"{_num(em.E):>12}{_num(em.p):>12}" for em in values))
+    return "\n".join(lines) + "\n"
