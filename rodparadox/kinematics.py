@@ -1,4 +1,4 @@
-"""Frames, boosts and exact world-line segments (PHYSICS.md, "Units, frames, coordinates").
+"""Frames, boosts and exact world-line segments (README, "The model": frames and coordinates).
 
 Pure: plain floats in, plain floats out; numpy only to return sampled points.
 Every velocity is also carried as a rapidity (velocity = tanh(rapidity)),
@@ -74,7 +74,7 @@ class Line:
 
 @dataclass(frozen=True)
 class HyperbolicArc:
-    """Part of the hyperbola (x - x_E)^2 - (t - t_E)^2 = d^2 centred on the event E (PHYSICS.md rule 3).
+    """Part of the hyperbola (x - x_E)^2 - (t - t_E)^2 = d^2 centred on the event E (README, "The model", rule 3).
 
     Its points are E + side * d * (cosh phi, sinh phi); the world-line there has
     rapidity phi, and the straight line from E through it is the rod's line of

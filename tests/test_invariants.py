@@ -1,4 +1,4 @@
-"""Property tests of every invariant in PHYSICS.md ("What must hold, always"), on the presets and on generated
+"""Property tests of every invariant of the model (README, "The model", and what it says holds), on the presets and on generated
 scenarios (one particle, two, equal and unequal masses, simultaneous impacts, timings in any frame, impacts while
 the rod still turns).
 
@@ -98,7 +98,7 @@ class Junction(NamedTuple):
 
 
 def arc_point(arc: HyperbolicArc, phi: float) -> tuple[float, float]:
-    """E + side*d*(cosh phi, sinh phi) (PHYSICS.md rule 3), as (x, t)."""
+    """E + side*d*(cosh phi, sinh phi) (the model's rule 3), as (x, t)."""
     return (arc.centre.x + arc.side * arc.radius * math.cosh(phi),
             arc.centre.t + arc.side * arc.radius * math.sinh(phi))
 
@@ -1088,7 +1088,7 @@ def system_totals(history: History, eta: float) -> tuple[np.ndarray, np.ndarray]
 
 
 def test_every_history_conserves_energy_and_momentum_in_every_frame():
-    """PHYSICS.md: the total of all bodies after the last impact equals the total before the first, exactly (1e-12
+    """The model (rule 6): the total of all bodies after the last impact equals the total before the first, exactly (1e-12
     relative), in S, S' and any frame, for every scenario: stopped turns, unequal simultaneous impacts and
     re-strikes at the old pivot among the generated ones (counted, so the property cannot pass without them)."""
     cases: Counter = Counter()

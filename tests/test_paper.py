@@ -1,7 +1,7 @@
 """The paper's Appendix (Figs. 1a, 1b, 2a, 2b) derived by hand, checked against the engine; and each printed misprint.
 
 Every expected number here comes from the closed forms below, derived from
-PHYSICS.md's rules, never from the code under test. c = 1, g = 1/sqrt(1 - v^2),
+the model's rules (README, "The model"), never from the code under test. c = 1, g = 1/sqrt(1 - v^2),
 w = 2v/(1 + v^2) (the velocity v' of A in S'). S' moves at -v relative to S:
 x' = g(x + v t), t' = g(t + v x).
 
