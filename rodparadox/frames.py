@@ -74,15 +74,25 @@ class FrameView:
 
 
 def time_window(history: History, frame: Frame) -> tuple[float, float]:
-    """The frame's times to show: from the scenario's start (or before the first impact) to as long after the last.
+    """The frame's times to show: every body's whole history that changes, with a lead before and after.
 
-    Before the first impact it shows back to the earliest of the particles' and
-    the rod ends' events at t = 0 in S, clamped to between L/2 and 2L of lead;
-    after the last impact it shows the same lead again.
+    The changes are every impact and the start and end of every exact segment
+    of every world-line (a kink, a turn's hyperbola, a particle between two
+    impacts), read in this frame's time: in a frame where the rod moves, the far
+    end can start its turn before the impact that causes it, and a turn can end
+    long after the last impact. The window runs from the first change to the
+    last, widened at both ends by a lead: the time from the scenario's start
+    (the particles and the rod's ends at t = 0 in S) to the first change,
+    clamped to between L/2 and 2L, so the bodies are seen moving freely before
+    anything happens and after everything has settled.
     """
     eta, L = frame.rapidity, history.scenario.L
-    times = [i.event.boosted(eta).t for i in history.impacts]
-    first, last = min(times), max(times)
+    changes = [i.event.boosted(eta).t for i in history.impacts]
+    for name in WORLDLINE_NAMES:
+        worldline = history.worldline(name)
+        if worldline is not None:
+            changes += [t for s in worldline.boosted(eta).segments for t in (s.start.t, s.end.t)]
+    first, last = min(changes), max(changes)
     at_start = [e.boosted(eta).t for _, e in history.starts]
     at_start += [Event(sign * L / 2, 0.0).boosted(eta).t for sign in (-1, 1)]
     lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)
