@@ -11,10 +11,12 @@ import math
 from functools import lru_cache
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from rodparadox.engine import run
-from rodparadox.errors import ScenarioError
-from rodparadox.frames import Frame, view
+from rodparadox.errors import FrameError, ScenarioError
+from rodparadox.frames import MAX_PANELS, Frame, parse_frames, view
 from rodparadox.kinematics import Line
 from rodparadox.scenario import builtin_names, load
 
@@ -89,3 +91,54 @@ def test_every_worldline_is_shown_from_its_first_state_to_its_last(name, v, spec
             slope = (piece.end.x - piece.start.x) / (piece.end.t - piece.start.t)
             assert slope == pytest.approx(velocity, abs=1e-9), name_
             assert piece.end.t - piece.start.t >= 0.9 * LEAD * h.scenario.L, name_
+
+
+# --- parse_frames: the panels a --frame list asks for ------------------------------------------------
+
+@pytest.mark.parametrize("spec, v, expected", [
+    ("both", 0.6, (("rest", 0.0), ("moving", -0.6))),
+    ("rest,moving", 0.6, (("rest", 0.0), ("moving", -0.6))),
+    ("0,rest", 0.6, (("rest", 0.0),)),  # issue 6.5: one frame, by its name
+    ("rest,0", 0.6, (("rest", 0.0),)),
+    ("-0.6,moving", 0.6, (("moving", -0.6),)),
+    ("0.3,-0.8,0,both", 0.8, (("u=0.3", 0.3), ("moving", -0.8), ("rest", 0.0))),
+    ("-0", 0.6, (("u=0", 0.0),)),  # a number alone keeps its number
+    ("0.9999999999999999", 0.6, (("u=0.9999999999999999", 0.9999999999999999),)),
+    (" 0.30 , 0.3 ", 0.6, (("u=0.3", 0.3),)),
+])
+def test_each_frame_once_by_velocity_and_a_name_wins_over_a_number(spec, v, expected):
+    assert parse_frames(spec, v) == tuple(Frame(name, u) for name, u in expected)
+
+
+@pytest.mark.parametrize("spec", ["sideways", "rest,", "", "1", "-1", "nan", "inf", "0.1,1.5"])
+def test_a_frame_that_is_no_frame_is_refused_with_a_frame_error(spec):
+    with pytest.raises(FrameError, match=r"a frame must be rest, moving, both or a velocity U"):
+        parse_frames(spec, 0.6)
+
+
+def test_more_frames_than_panels_are_refused():
+    nine = ",".join(str(k / 10) for k in range(1, 10))
+    with pytest.raises(FrameError, match=f"9 different frames asked for; at most {MAX_PANELS} panels"):
+        parse_frames(nine, 0.6)
+    # repeats and a velocity that is S' count once: eight panels
+    assert len(parse_frames("0.1,0.2,0.3,0.4,0.5,0.6,both,0.6,-0.95", 0.95)) == 8
+
+
+@given(items=st.lists(st.one_of(st.sampled_from(["rest", "moving", "both"]),
+                                st.sampled_from([0.0, -0.0, 0.3, -0.6, 0.6, -0.5]).map(repr)), min_size=1, max_size=12))
+def test_every_velocity_asked_for_is_one_panel(items):
+    v = 0.6
+    frames = parse_frames(",".join(items), v)
+    velocities = [f.velocity for f in frames]
+    assert len(set(velocities)) == len(velocities)
+    asked = set()
+    for item in items:
+        named = {"rest": {0.0}, "moving": {-v}, "both": {0.0, -v}}
+        asked |= named[item] if item in named else {float(item)}
+    assert set(velocities) == asked
+    names = {0.0: ("rest", "both"), -v: ("moving", "both")}
+    for f in frames:  # by its name wherever a name asked for its velocity, else by its number
+        if any(item in names.get(f.velocity, ()) for item in items):
+            assert f.name == {0.0: "rest", -v: "moving"}[f.velocity]
+        else:
+            assert f.name.startswith("u=") and float(f.name[2:]) == f.velocity
