@@ -25,12 +25,14 @@ def exact(value: float) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
-def shown(value: float, significant: int = 10) -> str:
+def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
     """A number as a figure draws it: up to `significant` digits, a real minus sign, no -0, 1×10⁻⁶ for tiny ones.
 
     More digits than `significant` where fewer would round a speed |u| < 1 up to 1
-    (0.99999999999 stays below 1). Plain text, no mathtext: it reads the same in
-    a title, a tick label or a legend.
+    (0.99999999999 stays below 1). Plain text by default (Unicode minus, ×,
+    superscripts), which reads the same in a title, a tick label or a legend;
+    `math_text` spells the same number for inside $...$ (1\\times10^{-6}), as
+    mathtext's fonts lack the superscript digits and set a `-` as a minus itself.
     """
     value += 0.0  # -0.0 -> 0.0
     if value != 0.0 and math.isfinite(value) and not SCIENTIFIC_BELOW <= abs(value) < SCIENTIFIC_ABOVE:
@@ -39,10 +41,11 @@ def shown(value: float, significant: int = 10) -> str:
             if abs(value) >= 1.0 or abs(float(f"{mantissa}e{exponent}")) < 1.0:
                 break
         mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
-        text = f"{mantissa}{TIMES}10{str(int(exponent)).translate(_SUPERSCRIPT)}"
-        return text.replace("-", MINUS, 1) if text.startswith("-") else text
+        if math_text:
+            return f"{mantissa}{{\\times}}10^{{{int(exponent)}}}"
+        return f"{mantissa.replace('-', MINUS)}{TIMES}10{str(int(exponent)).translate(_SUPERSCRIPT)}"
     for digits in range(significant, 18):  # 17 digits give back the float itself
         text = f"{value:.{digits}g}"
         if abs(float(text)) < 1.0 or abs(value) >= 1.0:
             break
-    return text.replace("-", MINUS)
+    return text if math_text else text.replace("-", MINUS)
