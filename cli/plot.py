@@ -7,7 +7,6 @@ print the paths written. matplotlib is imported inside the command, so
 
 from __future__ import annotations
 
-import math
 import os
 from pathlib import Path
 from typing import NamedTuple
@@ -20,46 +19,26 @@ from .common import BadInput, L_option, load_scenario, reports_errors, run_scena
 
 #: where figures go when -o is not given; the only output folder `plot` creates itself
 DEFAULT_FOLDER = "outputs"
-#: panels side by side in one figure, (a) to (h): rodparadox.render.PANEL_LETTERS (not imported: matplotlib)
-MAX_PANELS = 8
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"))
 
 
 def _number(value: float) -> str:
-    """A number in a file name: every digit the float holds (repr), no trailing .0, no -0: 0.8, 2, 0.9999999999999999."""
-    text = repr(value + 0.0)
-    return text[:-2] if text.endswith(".0") else text
+    """A number in a file name: every digit the float holds, as in a frame's name (rodparadox.numbers.exact)."""
+    from rodparadox.numbers import exact
+
+    return exact(value)
 
 
 def parse_frames(spec: str, v: float):
-    """--frame: rest, moving, both or a velocity U relative to S, or a comma-separated list of these.
+    """--frame: `rodparadox.frames.parse_frames`, its error named as the option's."""
+    from rodparadox.errors import FrameError
+    from rodparadox.frames import parse_frames as frames_of
 
-    The panels, left to right, each frame once, where it first appears: `both,rest` is `both`, and
-    `rest,moving` is `both` too. At most MAX_PANELS of them.
-    """
-    from rodparadox.frames import Frame
-
-    frames: list = []
-    for item in (part.strip() for part in spec.split(",")):
-        if item in ("rest", "both"):
-            frames.append(Frame("rest", 0.0))
-        if item in ("moving", "both"):
-            frames.append(Frame("moving", -v))
-        if item in ("rest", "moving", "both"):
-            continue
-        try:
-            u = float(item) + 0.0  # -0 is 0
-        except ValueError:
-            u = math.nan
-        if not (math.isfinite(u) and -1.0 < u < 1.0):
-            raise BadInput(f"option --frame must be rest, moving, both or a velocity U with -1 < U < 1 "
-                           f"(or a comma-separated list of these), got {item!r}.")
-        frames.append(Frame(f"u={_number(u)}", u))
-    unique = tuple(dict.fromkeys(frames))
-    if len(unique) > MAX_PANELS:
-        raise BadInput(f"option --frame asks for {len(unique)} panels; at most {MAX_PANELS} fit in one figure.")
-    return unique
+    try:
+        return frames_of(spec, v)
+    except FrameError as e:
+        raise BadInput(f"option --frame: {e}") from None
 
 
 def frame_suffix(frames) -> str:

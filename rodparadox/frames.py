@@ -14,6 +14,10 @@ import numpy as np
 from .engine import WORLDLINE_NAMES, History, Impact
 from .errors import FrameError
 from .kinematics import SAMPLING_TOLERANCE, Event, Segment
+from .numbers import exact
+
+#: panels in one figure, lettered (a) to (h): the most frames one figure shows
+MAX_PANELS = 8
 
 
 @dataclass(frozen=True)
@@ -41,6 +45,40 @@ def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, 
     frames = [Frame("rest", 0.0), Frame("moving", -v)]
     if extra_velocity is not None:
         frames.append(Frame(f"u={extra_velocity:g}", extra_velocity))
+    return tuple(frames)
+
+
+def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
+    """Frames from `rest`, `moving`, `both` or a velocity U relative to S, or a comma-separated list of these.
+
+    In the order given, each frame once: frames are told apart by their velocity,
+    where a frame first appears, and a named frame wins over the same velocity
+    given as a number (`0,rest` is S, once; `-0.6,moving` at v = 0.6 is S'); a
+    velocity alone keeps its number (`0` is `u=0`). `both` is `rest,moving`.
+    At most MAX_PANELS frames.
+    """
+    frames: list[Frame] = []
+    for item in (part.strip() for part in spec.split(",")):
+        named = {"rest": ("rest",), "moving": ("moving",), "both": ("rest", "moving")}.get(item)
+        if named is not None:
+            asked = [Frame(name, 0.0 if name == "rest" else -v) for name in named]
+        else:
+            try:
+                u = float(item) + 0.0  # -0 is 0
+            except ValueError:
+                u = math.nan
+            if not (math.isfinite(u) and -1.0 < u < 1.0):
+                raise FrameError(f"a frame must be rest, moving, both or a velocity U with -1 < U < 1 "
+                                 f"(or a comma-separated list of these), got {item!r}.")
+            asked = [Frame(f"u={exact(u)}", u)]
+        for frame in asked:
+            same = next((k for k, f in enumerate(frames) if f.velocity == frame.velocity), None)
+            if same is None:
+                frames.append(frame)
+            elif named is not None and frames[same].name.startswith("u="):
+                frames[same] = frame  # the name says more than the number: S, not u = 0
+    if len(frames) > MAX_PANELS:
+        raise FrameError(f"{len(frames)} different frames asked for; at most {MAX_PANELS} panels fit in one figure.")
     return tuple(frames)
 
 
@@ -74,15 +112,25 @@ class FrameView:
 
 
 def time_window(history: History, frame: Frame) -> tuple[float, float]:
-    """The frame's times to show: from the scenario's start (or before the first impact) to as long after the last.
+    """The frame's times to show: every body's whole history that changes, with a lead before and after.
 
-    Before the first impact it shows back to the earliest of the particles' and
-    the rod ends' events at t = 0 in S, clamped to between L/2 and 2L of lead;
-    after the last impact it shows the same lead again.
+    The changes are every impact and the start and end of every exact segment
+    of every world-line (a kink, a turn's hyperbola, a particle between two
+    impacts), read in this frame's time: in a frame where the rod moves, the far
+    end can start its turn before the impact that causes it, and a turn can end
+    long after the last impact. The window runs from the first change to the
+    last, widened at both ends by a lead: the time from the scenario's start
+    (the particles and the rod's ends at t = 0 in S) to the first change,
+    clamped to between L/2 and 2L, so the bodies are seen moving freely before
+    anything happens and after everything has settled.
     """
     eta, L = frame.rapidity, history.scenario.L
-    times = [i.event.boosted(eta).t for i in history.impacts]
-    first, last = min(times), max(times)
+    changes = [i.event.boosted(eta).t for i in history.impacts]
+    for name in WORLDLINE_NAMES:
+        worldline = history.worldline(name)
+        if worldline is not None:
+            changes += [t for s in worldline.boosted(eta).segments for t in (s.start.t, s.end.t)]
+    first, last = min(changes), max(changes)
     at_start = [e.boosted(eta).t for _, e in history.starts]
     at_start += [Event(sign * L / 2, 0.0).boosted(eta).t for sign in (-1, 1)]
     lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)

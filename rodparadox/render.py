@@ -39,6 +39,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 from .engine import History
 from .frames import Frame, FrameView, sampling_tolerance, view
 from .kinematics import Event, HyperbolicArc
+from .numbers import MINUS, shown
 from .styles import FORMATS, STYLES, Ink, Style
 
 #: one panel per frame, lettered (a), (b), ...: at most eight side by side
@@ -98,7 +99,7 @@ def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
 
 def frame_symbol(frame: Frame) -> str:
     """The frame's name as the paper writes it: S, S′, or u = ... for any other frame."""
-    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {_number(frame.velocity)}")
+    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
 
 
 def coordinate_names(frame: Frame) -> tuple[str, str]:
@@ -137,21 +138,8 @@ def relative_velocity(u: float, w: float) -> float:
     return (u - w) / (1.0 - u * w)
 
 
-def _number(value: float, significant: int = 10) -> str:
-    """Up to `significant` digits (more if fewer would round a speed |u| < 1 to 1), a real minus sign, no -0.
-
-    10 for what the user typed (v, a frame's velocity), 4 for velocities the engine computed.
-    """
-    value += 0.0  # -0.0 -> 0.0
-    for digits in range(significant, 18):  # 17 digits give back the float itself
-        text = f"{value:.{digits}g}"
-        if abs(float(text)) < 1.0 or abs(value) >= 1.0:
-            break
-    return text.replace("-", "\N{MINUS SIGN}")
-
-
 def _signed(value: float) -> str:
-    return ("+" if value > 0 else "") + _number(value, 4)
+    return ("+" if value > 0 else "") + shown(value, 4)
 
 
 def _velocity_phrase(before: float, after: float) -> str:
@@ -236,8 +224,8 @@ def _measured(text: str, size: float, italic: bool, ismath: bool, *fonts) -> tup
 
 
 # mathtext -> the plain characters it draws, roughly: the braces of groups vanish, \$ is a dollar sign
-_MATH_AS_PLAIN = {"\\$": "$", "\\pm": "\N{PLUS-MINUS SIGN}", "^2": "\N{SUPERSCRIPT TWO}", "{": "", "}": "",
-                  "'": "\N{PRIME}"}
+_MATH_AS_PLAIN = {"\\$": "$", "\\pm": "\N{PLUS-MINUS SIGN}", "\\times": "\N{MULTIPLICATION SIGN}",
+                  "^2": "\N{SUPERSCRIPT TWO}", "{": "", "}": "", "'": "\N{PRIME}"}
 
 
 def approximate_size(text: str, size: float) -> tuple[float, float, float]:
@@ -251,7 +239,7 @@ def approximate_size(text: str, size: float) -> tuple[float, float, float]:
         return text_size(text, size, ismath=False)
     parts = re.split(r"(?<!\\)\$", text)  # even: plain text between the math parts; odd: math
     plain = "".join(part.replace("\\$", "$") if i % 2 == 0 else
-                    re.sub(r"\\\$|\\pm|\^2|[{}']", lambda m: _MATH_AS_PLAIN[m.group(0)], part)
+                    re.sub(r"\\\$|\\pm|\\times|\^2|[{}']", lambda m: _MATH_AS_PLAIN[m.group(0)], part)
                     for i, part in enumerate(parts))
     w, h, d = text_size(plain, size, ismath=False)
     return w * 1.04 + 2.0, max(h, size * 1.1), max(d, size * 0.25)
@@ -397,17 +385,30 @@ class _Diagram:
         text = f"{value:.{decimals}f}"
         if float(text) == 0:
             text = "0" if decimals == 0 else f"{0:.{decimals}f}"
-        return text.replace("-", "\N{MINUS SIGN}")
+        return text.replace("-", MINUS)
 
     def _suptitle(self, width: float) -> str:
+        """The scenario's name and v, with its description's first clause if that fits; a long name is cut with an ellipsis."""
         s = self.history.scenario
-        head = f"{_mathtext_safe(s.name)}, $v = {_number(s.v)}$"
+        room = width - 10
+
+        def fits(text: str) -> bool:
+            return approximate_size(text, self.fs["suptitle"])[0] <= room
+
+        tail = f", $v = {shown(s.v, math_text=True)}$"
+        head = f"{_mathtext_safe(s.name)}{tail}"
+        if not fits(head):  # the longest start of the name that fits, then an ellipsis: visibly cut, never off the page
+            lo, hi = 0, len(s.name)
+            while lo < hi:
+                mid = (lo + hi + 1) // 2
+                lo, hi = (mid, hi) if fits(f"{_mathtext_safe(s.name[:mid].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}") else (lo, mid - 1)
+            return f"{_mathtext_safe(s.name[:lo].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}"
         # the description's first clause: up to a semicolon or the end of its first sentence
         clause = re.split(r";|\.(?=\s+[A-Z]|\s*$)", " ".join(s.description.split()))[0].strip()
         if clause:
             clause = re.sub(r"\b([SxXtT])'", "\\1\N{PRIME}", clause)  # S' as in the panels: S′
             full = f"{head}: {_mathtext_safe(clause)}"
-            if approximate_size(full, self.fs["suptitle"])[0] <= width - 10:
+            if fits(full):
                 return full
         return head
 

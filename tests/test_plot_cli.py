@@ -90,6 +90,13 @@ def test_an_unchanged_figure_is_not_rewritten_and_nothing_is_printed(in_tmp):
     (["--frame", "both,rest,0.3,moving,0.30"], "fig2_both_u0.3"),
     (["--frame", "moving,rest"], "fig2_moving_rest"),
     (["--frame", "rest,0.3,moving"], "fig2_rest_u0.3_moving"),
+    # a velocity that is S's or S''s is that frame, once, by its name
+    (["--frame", "0,rest"], "fig2_rest"),
+    (["--frame", "-0.6,moving"], "fig2_moving"),
+    (["--frame", "0,-0.6,both"], "fig2"),
+    (["--frame", "0.3,moving,-0.6,0.30,rest,-0"], "fig2_u0.3_moving_rest"),
+    (["--frame", "moving", "--v", "0.8"], "fig2_v0.8_moving"),
+    (["--frame", "-0.8,moving", "--v", "0.8"], "fig2_v0.8_moving"),
     # every digit the number has, no -0
     (["--frame", "-0"], "fig2_u0"),
     (["--frame", "0,-0.0"], "fig2_u0"),
@@ -180,22 +187,23 @@ def test_unwritable_output_folder(in_tmp, unwritable_folder):
 
 def test_bad_frame():
     assert error_of("fig2", "--frame", "sideways") == (
-        "option --frame must be rest, moving, both or a velocity U with -1 < U < 1 "
+        "option --frame: a frame must be rest, moving, both or a velocity U with -1 < U < 1 "
         "(or a comma-separated list of these), got 'sideways'.")
     assert error_of("fig2", "--frame", "rest,1.5").endswith("got '1.5'.")
 
 
 def test_more_panels_than_a_figure_holds():
     nine = ",".join(str(k / 10) for k in range(1, 10))
-    assert error_of("fig2", "--frame", nine) == "option --frame asks for 9 panels; at most 8 fit in one figure."
+    assert error_of("fig2", "--frame", nine) == (
+        "option --frame: 9 different frames asked for; at most 8 panels fit in one figure.")
     assert error_of("fig2", "--frame", "both,0.1,0.2,0.3,0.4,0.5,0.6,0.7") == (
-        "option --frame asks for 9 panels; at most 8 fit in one figure.")
+        "option --frame: 9 different frames asked for; at most 8 panels fit in one figure.")
     assert run("fig2", "--frame", "both,both,both,both,both,both,both,both,both").output == "outputs/fig2.svg\n"
 
 
 def test_the_panel_limit_is_the_number_of_panel_letters():
     from rodparadox import render
-    from sears_paradox_cli.plot import MAX_PANELS
+    from rodparadox.frames import MAX_PANELS
 
     assert MAX_PANELS == len(render.PANEL_LETTERS)
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import io
 import math
 import re
+import warnings
 import xml.etree.ElementTree as ET
 from functools import lru_cache
 from pathlib import Path
@@ -314,6 +315,50 @@ def test_a_dollar_in_a_scenarios_name_or_description_is_drawn_as_a_dollar(tmp_pa
         estimate = render.approximate_size(title, size)
     assert drawn[0] == pytest.approx(plain[0], rel=0.1)  # it draws the dollars, not mathtext of what lies between
     assert drawn[0] <= estimate[0] <= 1.15 * drawn[0] and drawn[1] <= estimate[1]
+
+
+def _scenario_file(tmp_path, name: str, v: float):
+    path = tmp_path / "s.yaml"
+    path.write_text(f"name: {name!r}\nv: {v!r}\ndescription: A long clause follows the name.\n"
+                    f"particles: {{A: {{gap: 0.5}}, B: {{gap: 0.5}}}}\n")
+    return run(load(str(path)))
+
+
+def _drawn_texts(fig) -> list[str]:
+    texts = [t.get_text() for t in fig.findobj(matplotlib.text.Text) if t.get_text()]
+    return texts + [fmt(tick, None) for ax in fig.axes for axis in (ax.xaxis, ax.yaxis)
+                    for fmt in [axis.get_major_formatter()] for tick in axis.get_majorticklocs()]
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+def test_tiny_speeds_are_drawn_as_powers_of_ten_never_as_e_notation(tmp_path, style):
+    """Issue 6.15: the title of v = 1.0e-6 read "v = 1e − 06"."""
+    h = _scenario_file(tmp_path, "tiny", 1.0e-6)
+    fig = render.draw(h, paper_frames(h.scenario.v), style)
+    assert artist(fig, "title").get_text().startswith("tiny, $v = 1{\\times}10^{-6}$")
+    assert panels(fig)["b"].get_title() == "(b) frame S\N{PRIME}: rod at +1\N{MULTIPLICATION SIGN}10⁻⁶ before and after"
+    assert not [t for t in _drawn_texts(fig) if re.search(r"\de[-+\N{MINUS SIGN}]?\d", t)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a glyph the fonts lack would warn
+        render.figure_bytes(fig, "png", style)
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("frames", [("rest",), ("rest", "moving"), ("rest", "moving", 0.3, 0.9)])
+def test_a_long_name_is_cut_with_an_ellipsis_and_nothing_leaves_the_figure(tmp_path, style, frames):
+    """Issue 6.13: a 500-character name ran off both sides of the title."""
+    name = "".join(f"word{k} " for k in range(100)).strip()[:500]
+    h = _scenario_file(tmp_path, name, 0.6)
+    fig = render.draw(h, [{"rest": Frame("rest", 0.0), "moving": Frame("moving", -0.6)}.get(f) or Frame(f"u={f}", f)
+                          for f in frames], style)
+    title = artist(fig, "title")
+    head, _, rest = title.get_text().partition("\N{HORIZONTAL ELLIPSIS}")
+    assert rest == ", $v = 0.6$" and len(head) > 20 and name.startswith(head)
+    renderer = _renderer(fig, style)
+    with render.style_context(style):
+        box = title.get_window_extent(renderer)
+    assert 0 <= box.x0 and box.x1 <= fig.bbox.x1
+    assert [p for p in _collisions(fig, style) if "outside" in p[1]] == []
 
 
 @pytest.mark.parametrize("text", ["a$b", "$", "50% of $3", "x\\$", "a\\$b, $v$"])

@@ -1,0 +1,144 @@
+"""A history seen from one frame (`rodparadox.frames`): the time window every panel and export covers.
+
+Expected values come from the engine's raw world-line segments and impacts,
+boosted here with x' = g(x - u t), t' = g(t - u x) written out, never from
+`time_window` itself.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from rodparadox.engine import run
+from rodparadox.errors import FrameError, ScenarioError
+from rodparadox.frames import MAX_PANELS, Frame, parse_frames, view
+from rodparadox.kinematics import Line
+from rodparadox.scenario import builtin_names, load
+
+SPEEDS = (0.3, 0.6, 0.9, 0.95, 0.99)
+#: the frames of the checks: S, S', and frames on either side of both, up to u = 0.9
+FRAME_VELOCITIES = ("rest", "moving", 0.3, -0.5, 0.9)
+#: the least lead the window keeps before the first change and after the last, in units of L
+LEAD = 0.5
+
+
+@lru_cache(maxsize=None)
+def history(name: str, v: float):
+    return run(load(name).with_overrides(v=v))
+
+
+def frame_of(spec, v: float) -> Frame:
+    return {"rest": Frame("rest", 0.0), "moving": Frame("moving", -v)}.get(spec) or Frame(f"u={spec}", spec)
+
+
+def time_in(x: float, t: float, u: float) -> float:
+    return (t - u * x) / math.sqrt(1.0 - u * u)
+
+
+def changes(h, u: float) -> list[float]:
+    """Every impact and every segment's start and end of every world-line, in the time of the frame of velocity u."""
+    times = [time_in(i.event.x, i.event.t, u) for i in h.impacts]
+    for _, worldline in h.worldlines:
+        for segment in worldline.segments:
+            times += [time_in(e.x, e.t, u) for e in (segment.start, segment.end)]
+    return times
+
+
+@pytest.mark.parametrize("spec", FRAME_VELOCITIES)
+@pytest.mark.parametrize("v", SPEEDS)
+@pytest.mark.parametrize("name", builtin_names())
+def test_the_time_window_holds_every_change_of_every_worldline_with_a_lead(name, v, spec):
+    """Issue 6.1: `single` at v = 0.95 stopped in the middle of the far end's turn (t = 1.05 of 3.57)."""
+    try:
+        h = history(name, v)
+    except ScenarioError:
+        pytest.skip(f"{name} is refused at v = {v}")
+    frame = frame_of(spec, v)
+    t_lo, t_hi = view(h, frame).t_range
+    times = changes(h, frame.velocity)
+    L = h.scenario.L
+    scale = 1e-12 * (abs(t_lo) + abs(t_hi) + L)
+    assert t_lo <= min(times) - LEAD * L + scale
+    assert max(times) + LEAD * L - scale <= t_hi
+
+
+@pytest.mark.parametrize("spec", FRAME_VELOCITIES)
+@pytest.mark.parametrize("v", (0.6, 0.95, 0.99))
+@pytest.mark.parametrize("name", builtin_names())
+def test_every_worldline_is_shown_from_its_first_state_to_its_last(name, v, spec):
+    """Each world-line's view starts and ends with a straight piece at its velocity before anything and after everything.
+
+    So a panel titled "rod first at rest, finally at -0.95" shows the rod at rest, then at -0.95.
+    """
+    try:
+        h = history(name, v)
+    except ScenarioError:
+        pytest.skip(f"{name} is refused at v = {v}")
+    frame = frame_of(spec, v)
+    fv = view(h, frame)
+    for name_, pieces in fv.segments:
+        worldline = h.worldline(name_)
+        first, last = pieces[0], pieces[-1]
+        assert isinstance(first, Line) and isinstance(last, Line), name_
+        before = math.tanh(worldline.rapidity_before - frame.rapidity)
+        after = math.tanh(worldline.rapidity_after - frame.rapidity)
+        for piece, velocity in ((first, before), (last, after)):
+            slope = (piece.end.x - piece.start.x) / (piece.end.t - piece.start.t)
+            assert slope == pytest.approx(velocity, abs=1e-9), name_
+            assert piece.end.t - piece.start.t >= 0.9 * LEAD * h.scenario.L, name_
+
+
+# --- parse_frames: the panels a --frame list asks for ------------------------------------------------
+
+@pytest.mark.parametrize("spec, v, expected", [
+    ("both", 0.6, (("rest", 0.0), ("moving", -0.6))),
+    ("rest,moving", 0.6, (("rest", 0.0), ("moving", -0.6))),
+    ("0,rest", 0.6, (("rest", 0.0),)),  # issue 6.5: one frame, by its name
+    ("rest,0", 0.6, (("rest", 0.0),)),
+    ("-0.6,moving", 0.6, (("moving", -0.6),)),
+    ("0.3,-0.8,0,both", 0.8, (("u=0.3", 0.3), ("moving", -0.8), ("rest", 0.0))),
+    ("-0", 0.6, (("u=0", 0.0),)),  # a number alone keeps its number
+    ("0.9999999999999999", 0.6, (("u=0.9999999999999999", 0.9999999999999999),)),
+    (" 0.30 , 0.3 ", 0.6, (("u=0.3", 0.3),)),
+])
+def test_each_frame_once_by_velocity_and_a_name_wins_over_a_number(spec, v, expected):
+    assert parse_frames(spec, v) == tuple(Frame(name, u) for name, u in expected)
+
+
+@pytest.mark.parametrize("spec", ["sideways", "rest,", "", "1", "-1", "nan", "inf", "0.1,1.5"])
+def test_a_frame_that_is_no_frame_is_refused_with_a_frame_error(spec):
+    with pytest.raises(FrameError, match=r"a frame must be rest, moving, both or a velocity U"):
+        parse_frames(spec, 0.6)
+
+
+def test_more_frames_than_panels_are_refused():
+    nine = ",".join(str(k / 10) for k in range(1, 10))
+    with pytest.raises(FrameError, match=f"9 different frames asked for; at most {MAX_PANELS} panels"):
+        parse_frames(nine, 0.6)
+    # repeats and a velocity that is S' count once: eight panels
+    assert len(parse_frames("0.1,0.2,0.3,0.4,0.5,0.6,both,0.6,-0.95", 0.95)) == 8
+
+
+@given(items=st.lists(st.one_of(st.sampled_from(["rest", "moving", "both"]),
+                                st.sampled_from([0.0, -0.0, 0.3, -0.6, 0.6, -0.5]).map(repr)), min_size=1, max_size=12))
+def test_every_velocity_asked_for_is_one_panel(items):
+    v = 0.6
+    frames = parse_frames(",".join(items), v)
+    velocities = [f.velocity for f in frames]
+    assert len(set(velocities)) == len(velocities)
+    asked = set()
+    for item in items:
+        named = {"rest": {0.0}, "moving": {-v}, "both": {0.0, -v}}
+        asked |= named[item] if item in named else {float(item)}
+    assert set(velocities) == asked
+    names = {0.0: ("rest", "both"), -v: ("moving", "both")}
+    for f in frames:  # by its name wherever a name asked for its velocity, else by its number
+        if any(item in names.get(f.velocity, ()) for item in items):
+            assert f.name == {0.0: "rest", -v: "moving"}[f.velocity]
+        else:
+            assert f.name.startswith("u=") and float(f.name[2:]) == f.velocity
