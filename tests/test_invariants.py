@@ -1003,15 +1003,37 @@ def test_particles_never_pass_through_the_rod():
     Scenario("heavy_A", 0.6, (Particle("A", 2.0, None, 0.5), Particle("B", 1.0, None, timed_with=Timing("A", "rest", 0.05)))),
 ], ids=lambda s: s.name)
 def test_interrupted_turn_keeps_pivot_particle_outside(scenario):
-    """Rule 6 with a particle heavier than the rod: stopping the turn slows the pivot below the speed at which the
-    heavy particle left it, so the engine has it strike the pivot again at once, simultaneously with the far end's
-    impact (rule 5), instead of passing through the rod."""
+    """Rule 6 with a particle heavier than the rod (rule 7): the heavy particle left the pivot slower than the rod's
+    target, so the turn stopped on the far end's impact line leaves the pivot slower than the particle, which
+    strikes it again at once, as a collision of its own on that line, instead of passing through the rod.
+
+    By hand for heavy_A (v = 0.6, m_A = 2, m_B = 1), in velocities, each collision reversing the velocities in its
+    centre-of-momentum frame (u_cm = sum m g u / sum m g): A1, A (0.6) on the rod at rest: rod 2u/(1+u^2) with
+    u = 1.5/3.5, A 0.6 seen from u reversed; B1 on the right end while it turns, with the rod's momentum (that
+    velocity), B (-0.6, mass 1) exchanges with it; then A, at the left end, faster than the turn's line, strikes
+    with the rod's new velocity -0.6. heavy_B is its mirror image."""
     history = run(scenario)
     first, second = scenario.particles[0].name, scenario.particles[1].name
+    sign = 1.0 if first == "A" else -1.0
+
+    def collide(m, u, rod):
+        g, h = 1 / math.sqrt(1 - u * u), 1 / math.sqrt(1 - rod * rod)
+        u_cm = (m * g * u + h * rod) / (m * g + h)
+        return add_velocities(-add_velocities(u, u_cm), -u_cm), add_velocities(-add_velocities(rod, u_cm), -u_cm)
+
+    a1_particle, rod1 = collide(2.0, sign * 0.6, 0.0)
+    b1_particle, rod2 = rod1, -sign * 0.6  # equal masses exchange velocities
+    a2_particle, rod3 = collide(2.0, a1_particle, rod2)
     labels = [i.label for i in history.impacts]
-    assert labels[0] == first + "1" and {second + "1", first + "2"} <= set(labels[1:3])
-    struck_again = next(i for i in history.impacts if i.label == first + "2")
-    assert struck_again.event == history.impacts[0].event and struck_again.simultaneous_with == second + "1"
+    assert labels == [first + "1", second + "1", first + "2"]
+    i1, i2, i3 = history.impacts
+    assert [i.collision for i in history.impacts] == [0, 1, 2] and i2.while_turning and i3.while_turning
+    assert i3.event == i1.event and (i2.simultaneous_with, i3.simultaneous_with) == (i3.label, i2.label)
+    for impact, particle, rod in ((i1, a1_particle, rod1), (i2, b1_particle, rod2), (i3, a2_particle, rod3)):
+        assert math.tanh(impact.particle_rapidity_after) == pytest.approx(particle, abs=1e-12)
+        assert math.tanh(impact.rod_rapidity_after) == pytest.approx(rod, abs=1e-12)
+    assert sign * a1_particle > sign * math.tanh(i2.line_rapidity)  # A was faster than the stopped turn's line
+    assert history.final_rapidity == i3.rod_rapidity_after
     check_no_pass_through(history)
 
 
