@@ -8,7 +8,6 @@ must not load numpy or matplotlib.
 from __future__ import annotations
 
 import functools
-import math
 
 import click
 
@@ -21,15 +20,71 @@ class BadInput(click.ClickException):
     exit_code = 2
 
 
+class EnvironmentFailure(click.ClickException):
+    """A failure of the system, not of the input (a full disk): one sentence, exit status 1."""
+
+    exit_code = 1
+
+
+#: the exit status of a process killed by SIGPIPE (128 + 13), as `yes | head -1` leaves `yes`
+BROKEN_PIPE_STATUS = 141
+
+
 def reports_errors(command):
-    """The CLI edge: any library error (`RodParadoxError`) becomes its one sentence and exit status 2, no traceback."""
+    """The CLI edge: any library error (`RodParadoxError`) becomes its one sentence and exit status 2 (a failed
+    write: 1), no traceback; a reader that closed standard output ends the command quietly."""
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
+        from rodparadox.errors import WriteFailed
+
         try:
             return command(*args, **kwargs)
+        except WriteFailed as e:
+            raise EnvironmentFailure(str(e)) from None
         except RodParadoxError as e:
             raise BadInput(str(e)) from None
+        except BrokenPipeError:
+            _quiet_exit()
+        except RecursionError:  # a safety net: the YAML reader bounds nesting (scenario.MAX_DEPTH) before this
+            raise BadInput("the input is nested too deeply to read; write it flat.") from None
     return wrapper
+
+
+def emit(text: str, nl: bool = True) -> None:
+    """Print to standard output: a failed write (a full disk) is one sentence and exit status 1, a closed pipe
+    (`| head -1`) a quiet exit."""
+    try:
+        click.echo(text, nl=nl)
+    except BrokenPipeError:
+        _quiet_exit()
+    except OSError as e:
+        stdout_to_devnull()
+        raise EnvironmentFailure(f"cannot write to standard output: {(e.strerror or str(e)).lower()}.") from None
+
+
+def _quiet_exit():
+    stdout_to_devnull()
+    raise click.exceptions.Exit(BROKEN_PIPE_STATUS)
+
+
+def stdout_to_devnull() -> None:
+    """Point standard output at /dev/null, so that Python's last flush at exit neither fails nor prints."""
+    import os
+    import sys
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):  # no file descriptor (a test's captured output): nothing is left to flush
+        pass
+
+
+def checked_output(output: str | None) -> str | None:
+    """-o: an empty name is refused here, as every empty value is (it would mean the current folder)."""
+    if output is not None and not output.strip():
+        raise BadInput(f"option -o must name a file or folder, got {output!r}.")
+    return output
 
 
 def load_scenario(name: str, v: float | None, L: float | None):
@@ -51,10 +106,14 @@ def run_scenario(scenario, source: str):
 
 
 def checked_frame_velocity(u: float | None) -> float | None:
-    """--frame-velocity, checked here so the message names the option."""
-    if u is not None and not (math.isfinite(u) and -1.0 < u < 1.0):
-        raise BadInput(f"option --frame-velocity must be a velocity u with -1 < u < 1 (units of c), got {u:g}.")
-    return u
+    """--frame-velocity, checked by the library's one rule (`frames.check_velocity`); the message names the option."""
+    from rodparadox.errors import FrameError
+    from rodparadox.frames import check_velocity
+
+    try:
+        return None if u is None else check_velocity(u)
+    except FrameError as e:
+        raise BadInput(f"option --frame-velocity: {e}") from None
 
 
 scenario_argument = click.argument("scenario", metavar="SCENARIO")
@@ -62,4 +121,6 @@ v_option = click.option("--v", "v", type=float, metavar="V",
                         help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
 L_option = click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
 frame_velocity_option = click.option("--frame-velocity", "frame_velocity", type=float, metavar="U",
-                                     help="Also show the frame of velocity U relative to S, -1 < U < 1.")
+                                     help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
+quiet_option = click.option("-q", "--quiet", is_flag=True,
+                            help="Print nothing on success (the paths written are printed otherwise).")

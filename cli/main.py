@@ -6,23 +6,46 @@ and never loads numpy or matplotlib.
 
 from __future__ import annotations
 
+import errno
 import sys
+from pathlib import Path
 
 import click
 
 from rodparadox import __version__
 
-from .common import (L_option, checked_frame_velocity, frame_velocity_option, load_scenario, reports_errors,
-                     run_scenario, scenario_argument, v_option)
+from . import common
+from .common import (BadInput, L_option, checked_frame_velocity, checked_output, emit, frame_velocity_option,
+                     load_scenario, quiet_option, reports_errors, run_scenario, scenario_argument, v_option)
 from .plot import plot  # the drawing command; it imports matplotlib only when it runs
 
+#: what `export` writes, each named by its file extension
+EXPORT_FORMATS = ("json", "csv")
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+
+class _Main(click.Group):
+    """The group, with one more edge: help and version text that cannot be written (a full disk) is one
+    sentence and exit status 1; the commands' own output goes through `common.emit`."""
+
+    def main(self, *args, **kwargs):
+        try:
+            return super().main(*args, **kwargs)
+        except OSError as e:
+            # only help and version text are written outside the commands' edge (reports_errors, emit)
+            if e.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EFBIG):
+                raise
+            common.stdout_to_devnull()
+            click.echo(f"Error: cannot write to standard output: {(e.strerror or str(e)).lower()}.", err=True)
+            sys.exit(1)
+
+
+@click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="sears-paradox")
 def main() -> None:
     """Minkowski diagrams of a rigid rod struck by particles, in two frames at once.
 
-    SCENARIO is a built-in name (see `sears-paradox list`) or a YAML file.
+    SCENARIO is a built-in name (see `sears-paradox list`) or a YAML file; a file
+    that exists wins over a built-in name of the same name.
 
     Example: sears-paradox events fig2 --v 0.6
     """
@@ -40,7 +63,7 @@ def list_scenarios() -> None:
     names = builtin_names()
     width = max(map(len, names), default=0)
     for name in names:
-        click.echo(f"{name:<{width}}  {describe(name)}")
+        emit(f"{name:<{width}}  {describe(name)}")
 
 
 @main.command()
@@ -59,7 +82,7 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    click.echo(to_table(run_scenario(s, scenario), frames), nl=False)
+    emit(to_table(run_scenario(s, scenario), frames), nl=False)
 
 
 @main.command()
@@ -67,28 +90,52 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 @v_option
 @L_option
 @frame_velocity_option
-@click.option("--format", "fmt", type=click.Choice(["json", "csv"]), default="json", show_default=True,
-              help="json: the documented contract (README); csv: one row per event and world-line point.")
+@click.option("--format", "fmt", type=click.Choice(EXPORT_FORMATS), default=None,
+              help="json: the documented contract (README); csv: one row per event and world-line point. "
+                   "[default: the extension of -o FILE, else json]")
 @click.option("-o", "--output", "output", metavar="PATH", default="-", show_default=True,
               help="File to write ('-' for standard output); written atomically, left untouched if unchanged.")
+@quiet_option
 @reports_errors
-def export(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str, output: str) -> None:
+def export(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str | None,
+           output: str, quiet: bool) -> None:
     """Write the world-lines and impacts of both frames as JSON or CSV.
+
+    With -o it prints the path written, or `PATH (unchanged)` when the file already held these bytes.
 
     Example: sears-paradox export fig2 --v 0.6 -o fig2.json
     """
     from rodparadox.export import to_csv, to_json
     from rodparadox.frames import paper_frames
-    from rodparadox.output import write_atomic
+    from rodparadox.output import check_target, write_atomic
 
+    fmt = export_format(checked_output(output), fmt)
+    if output != "-":
+        check_target(output)  # before the work: a missing folder is said at once
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
     text = (to_json if fmt == "json" else to_csv)(run_scenario(s, scenario), frames)
     if output == "-":
-        sys.stdout.write(text)
+        emit(text, nl=False)
         return
-    write_atomic(output, text.encode("utf-8"))
-    click.echo(output)
+    written = write_atomic(output, text.encode("utf-8"))
+    if not quiet:
+        emit(output if written else f"{output} (unchanged)")
+
+
+def export_format(output: str, fmt: str | None) -> str:
+    """The format: --format, else the extension of -o FILE (.json, .csv, any case), else json for standard output."""
+    if output == "-":
+        return fmt or "json"
+    suffix = Path(output).suffix.lstrip(".").lower()
+    if fmt is None:
+        if suffix not in EXPORT_FORMATS:
+            raise BadInput(f"option -o: cannot tell the format of {output!r} from its extension; "
+                           f"name it .{', .'.join(EXPORT_FORMATS)} or give --format.")
+        return suffix
+    if suffix in EXPORT_FORMATS and suffix != fmt:
+        raise BadInput(f"option -o names {output!r} but --format is {fmt}; make them agree.")
+    return fmt
 
 
 main.add_command(plot)

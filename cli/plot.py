@@ -15,7 +15,8 @@ import click
 
 from rodparadox.styles import FORMATS, STYLE_NAMES
 
-from .common import BadInput, L_option, load_scenario, reports_errors, run_scenario, v_option
+from .common import (BadInput, L_option, checked_output, emit, load_scenario, quiet_option, reports_errors,
+                     run_scenario, v_option)
 
 #: where figures go when -o is not given; the only output folder `plot` creates itself
 DEFAULT_FOLDER = "outputs"
@@ -77,9 +78,10 @@ class _Job(NamedTuple):
 
 
 def _formats(spec: str) -> list[str]:
-    formats = [part.strip().lower() for part in spec.split(",") if part.strip()]
+    """--format: one or more formats, comma-separated; an empty item (`svg,`, ``) is refused, as --frame's are."""
+    formats = [part.strip().lower() for part in spec.split(",")]
     bad = [f for f in formats if f not in FORMATS]
-    if bad or not formats:
+    if bad:
         raise BadInput(f"option --format must be one or more of {', '.join(FORMATS)}, comma-separated, "
                        f"got {spec!r}.")
     return list(dict.fromkeys(formats))
@@ -103,27 +105,33 @@ def _formats(spec: str) -> list[str]:
 @click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
 @click.option("--grid", is_flag=True, help="Draw a grid at the ticks.")
-@click.option("--verbose", is_flag=True, help="Also name the files left untouched because they had not changed.")
+@quiet_option
+@click.option("--verbose", is_flag=True, hidden=True, help="Accepted and ignored: every path is printed anyway.")
 @reports_errors
 def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, fmt: str | None,
          output: str | None, style: str, other_axes: bool, light_cones: bool, hyperbolae: bool, grid: bool,
-         verbose: bool) -> None:
+         quiet: bool, verbose: bool) -> None:
     """Draw Minkowski diagrams of each SCENARIO: both frames side by side (the paper's Figs. 1 and 2).
 
     Writes OUTPUT/NAME.FORMAT, NAME being the scenario's name followed by every
     non-default option (fig2.svg, fig2_v0.8.svg, fig2_rest_print.pdf, ...), and
-    prints the paths it wrote; a file whose bytes would not change is left alone.
+    prints the path of each file, `PATH (unchanged)` for one whose bytes would
+    not change and which is left alone. SCENARIO is a file if one of that name
+    exists, else a built-in name.
 
     Example: sears-paradox plot fig2 --v 0.6
     """
+    from rodparadox.output import check_target
+    from rodparadox.scenario import stem_of
+
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid}
-    folder, file = _destination(output, len(set(scenarios)))
+    folder, file = _destination(checked_output(output), len(set(scenarios)))
     if file is not None and fmt is None:
         fmt = file.suffix.lstrip(".").lower()
         if fmt not in FORMATS:
             raise BadInput(f"option -o: cannot tell the format of {str(file)!r} from its extension; "
                            f"name it .{', .'.join(FORMATS)} or give --format.")
-    formats = _formats(fmt or "svg")
+    formats = _formats("svg" if fmt is None else fmt)
     if file is not None:
         if len(formats) > 1:
             raise BadInput(f"option -o names one file, {str(file)!r}, but --format asks for {len(formats)} formats; "
@@ -136,8 +144,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
         base = load_scenario(name, None, None)
         s = base.with_overrides(v=v, L=L)
         frames = parse_frames(frame, s.v)
-        stem = output_name(Path(name).stem if name.endswith((".yaml", ".yml")) else Path(name).name,
-                           base, v, L, frames, style, extras)
+        stem = output_name(stem_of(name), base, v, L, frames, style, extras)
         job = _Job(name, s, frames, {f: file if file is not None else folder / f"{stem}.{f}" for f in formats})
         if any(job[1:] == other[1:] for other in jobs):  # the same figure to the same files (`plot fig2 fig2`): once
             continue
@@ -153,9 +160,9 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
             os.makedirs(folder, exist_ok=True)
         except OSError as e:
             raise BadInput(f"cannot create the output folder {folder}: {(e.strerror or str(e)).lower()}.") from None
-    first = next(iter(jobs[0].paths.values()))
-    if not os.access(first.parent, os.W_OK | os.X_OK):  # before drawing anything (root passes; the write then tells)
-        raise BadInput(f"cannot write {first}: permission denied in the folder {first.parent}.")
+    for job in jobs:  # before drawing anything: a missing folder, a dangling link, a locked folder (root passes)
+        for path in job.paths.values():
+            check_target(path)
 
     from rodparadox import render  # matplotlib: only now, after every input has been checked
     from rodparadox.output import write_atomic
@@ -165,10 +172,9 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     figures = [render.draw(history, job.frames, style, options) for history, job in zip(histories, jobs)]
     for figure, job in zip(figures, jobs):
         for f, path in job.paths.items():
-            if write_atomic(path, render.figure_bytes(figure, f, style)):
-                click.echo(str(path))
-            elif verbose:
-                click.echo(f"{path} (unchanged)")
+            written = write_atomic(path, render.figure_bytes(figure, f, style))
+            if not quiet:
+                emit(str(path) if written else f"{path} (unchanged)")
 
 
 def _destination(output: str | None, count: int) -> tuple[Path | None, Path | None]:
@@ -183,12 +189,13 @@ def _destination(output: str | None, count: int) -> tuple[Path | None, Path | No
         if path.exists():
             raise BadInput(f"option -o: {output} is a file, not a folder; give a folder or a name ending in "
                            f".{', .'.join(FORMATS)}.")
+        if path.is_symlink():
+            raise BadInput(f"the output folder {output} is a symbolic link to {os.readlink(path)}, which does not "
+                           f"exist; create it first.")
         raise BadInput(f"the output folder {output} does not exist; create it first.")
     if count > 1:
         raise BadInput(f"option -o names one file, {output!r}, but {count} scenarios were given; give a folder instead.")
-    parent = path.parent
-    if parent.exists() and not parent.is_dir():
-        raise BadInput(f"cannot write {output}: {parent} is a file, not a folder.")
-    if not parent.is_dir():
-        raise BadInput(f"cannot write {output}: the folder {parent} does not exist; create it first.")
+    from rodparadox.output import check_target
+
+    check_target(path)  # the folder exists and is one, a symbolic link leads somewhere
     return None, path

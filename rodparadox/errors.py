@@ -30,5 +30,10 @@ class OutputError(OSError, RodParadoxError):
     """A file that cannot be written; says which and why."""
 
 
+class WriteFailed(OutputError):
+    """Bytes the system refused part-way (a full disk, a failing device): the environment, not the input, so
+    the command line exits 1 rather than 2."""
+
+
 class FrameError(ValueError, RodParadoxError):
-    """A frame velocity outside -1 < u < 1."""
+    """A frame velocity outside the bounds double precision can place events in (frames.check_velocity)."""

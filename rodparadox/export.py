@@ -1,8 +1,8 @@
 """Machine-readable world-lines and events: the JSON contract and the CSV table (README, "JSON contract"). Pure.
 
 Numbers are written with Python's shortest round-trip repr, so parsing them
-back gives the same floats; keys come in a fixed order, so the same scenario
-gives the same bytes.
+back gives the same floats (never -0: a zero is 0.0); keys come in a fixed
+order, so the same scenario gives the same bytes.
 """
 
 from __future__ import annotations
@@ -10,10 +10,13 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 from typing import Any
 
-from .frames import Frame, FrameView, sampling_tolerance, view
 from .engine import History
+from .errors import FrameError
+from .frames import Frame, FrameView, sampling_tolerance, view
+from .numbers import exact
 from .kinematics import HyperbolicArc, Line, Segment
 
 FORMAT = "sears-paradox/1"
@@ -32,6 +35,7 @@ def _segment(s: Segment) -> dict[str, Any]:
 
 
 def frame_document(fv: FrameView, tolerance: float) -> dict[str, Any]:
+    check_below_c(fv)
     return {
         "velocity": fv.frame.velocity,
         "rod_velocity_before": fv.frame.rod_velocity(),
@@ -66,7 +70,18 @@ def document(history: History, frames: tuple[Frame, ...]) -> dict[str, Any]:
 
 
 def to_json(history: History, frames: tuple[Frame, ...]) -> str:
-    return json.dumps(document(history, frames), indent=1, allow_nan=False) + "\n"
+    return json.dumps(_without_negative_zeros(document(history, frames)), indent=1, allow_nan=False) + "\n"
+
+
+def _without_negative_zeros(value: Any) -> Any:
+    """The same document with every -0.0 written as 0.0 (x + 0.0 is x, except that -0.0 + 0.0 is 0.0)."""
+    if isinstance(value, float):
+        return value + 0.0
+    if isinstance(value, dict):
+        return {k: _without_negative_zeros(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_without_negative_zeros(v) for v in value]
+    return value
 
 
 CSV_COLUMNS = ("frame", "kind", "name", "particle", "end", "index", "x", "t")
@@ -81,34 +96,119 @@ def to_csv(history: History, frames: tuple[Frame, ...]) -> str:
     for f in frames:
         fv = view(history, f)
         for k, e in enumerate(fv.events):
-            writer.writerow([f.name, "event", e.impact.label, e.impact.particle, e.impact.end, k, repr(e.x), repr(e.t)])
+            writer.writerow([f.name, "event", e.impact.label, e.impact.particle, e.impact.end, k,
+                             repr(e.x + 0.0), repr(e.t + 0.0)])  # + 0.0: never -0.0
         for name, points in fv.worldline_points(tolerance).items():
             for k, (x, t) in enumerate(points.tolist()):
-                writer.writerow([f.name, "worldline", name, "", "", k, repr(x), repr(t)])
+                writer.writerow([f.name, "worldline", name, "", "", k, repr(x + 0.0), repr(t + 0.0)])
     return out.getvalue()
 
 
-def _velocity(u: float) -> str:
-    """+0.600000; with more digits where six would round a speed below 1 up to 1; never -0."""
-    digits = 6 if abs(u) < 0.9999995 else 10
-    return f"{u + 0.0:+.{digits}f}"
+def check_below_c(fv: FrameView) -> None:
+    """Refuse a frame in which a body's velocity rounds to c: written as 1.0 it would be a lie (a body at c).
+
+    A particle far heavier than the rod can throw it to a rapidity whose tanh, in a fast frame, is 1 in
+    double precision though the speed is below c (mass 1e9, v = 0.9999999, frame u = 0.9999999).
+    """
+    eta = fv.frame.rapidity
+    for e in fv.events:
+        i = e.impact
+        for body, phi, when in ((f"particle {i.particle}", i.particle_rapidity_before, "before"),
+                                (f"particle {i.particle}", i.particle_rapidity_after, "after"),
+                                ("rod", i.rod_rapidity_before, "before"), ("rod", i.rod_rapidity_after, "after")):
+            if abs(math.tanh(phi - eta)) == 1.0:
+                gap = 2.0 / (math.exp(min(2.0 * abs(phi - eta), 700.0)) + 1.0)  # 1 - |tanh|, without cancelling
+                raise FrameError(f"in frame {fv.frame.name} the {body}'s velocity {when} {i.label} is within "
+                                 f"{gap:.1e} of c, closer than double precision can write; choose a slower frame, "
+                                 f"a slower v or a lighter particle.")
+
+
+# --- the events table ---------------------------------------------------------------------------------
+
+#: significant digits of a coordinate, and of the largest velocity, in the events table
+TABLE_DIGITS = 7
+#: a coordinate smaller than this fraction of the table's largest is rounding, not position: double precision
+#: carries 16 digits, and the engine's events are exact to about 1e-9 relative at its bounds (README)
+ROUNDING = 1e-12
+
+
+def _plain_zero(text: str) -> str:
+    """A number's text without the sign of a zero: -0.000 is +0.000 (a value that rounds to zero has no sign)."""
+    mantissa = text.split("e")[0]
+    return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
+
+
+def _coordinate_format(values: list[float]):
+    """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
+    kept so that the digits say the precision; rounding-sized values (ROUNDING) are 0."""
+    largest = max((abs(x) for x in values), default=0.0)
+
+    def text(x: float) -> str:
+        if abs(x) <= ROUNDING * largest:
+            return "+0"
+        return _plain_zero(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+    return text
+
+
+def _velocity_format(velocities: list[float]):
+    """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
+    the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
+    as many more decimals as keep it from rounding to 1 (check_below_c: none is 1)."""
+    largest = max((abs(u) for u in velocities), default=0.0)
+    decimals = TABLE_DIGITS - 1
+    if 0 < largest < 0.1:
+        decimals = TABLE_DIGITS - 2 - math.floor(math.log10(largest))
+
+    def text(u: float) -> str:
+        near_c = math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
+        return _plain_zero(f"{u + 0.0:+.{max(decimals, near_c)}f}")
+    return text
 
 
 def to_table(history: History, frames: tuple[Frame, ...]) -> str:
-    """A readable table of the impacts in each frame, for `sears-paradox events`."""
+    """A readable table of the impacts in each frame, for `sears-paradox events`.
+
+    x and t are in the unit L is given in (with L = 2 the right end is at x = 1), with the digits their
+    magnitude needs; columns are as wide as their widest number.
+    """
     s = history.scenario
-    lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}   (c = 1; x and t in the unit of L)"]
-    header = f"  {'impact':<7}{'end':<7}{'x':>11} {'t':>11}   {'particle velocity':<23}   {'rod velocity'}"
-    for f in frames:
-        fv = view(history, f)
+    views = [view(history, f) for f in frames]
+    for fv in views:
+        check_below_c(fv)
+    events = [e for fv in views for e in fv.events]
+    coordinate = _coordinate_format([c for e in events for c in (e.x, e.t)])
+    velocity = _velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
+                                                               e.rod_velocity_before, e.rod_velocity_after)])
+    speeds = [[velocity(u) for u in (e.particle_velocity_before, e.particle_velocity_after, e.rod_velocity_before,
+                                      e.rod_velocity_after)] for e in events]
+    wide = max((len(u) for us in speeds for u in us), default=0)  # left-aligned: the decimal points line up
+    rows = [(e.impact.label, e.impact.end, coordinate(e.x), coordinate(e.t),
+             f"{us[0]:<{wide}} -> {us[1]:<{wide}}", f"{us[2]:<{wide}} -> {us[3]:<{wide}}")
+            for e, us in zip(events, speeds)]
+    heads = ("impact", "end", "x", "t", "particle velocity", "rod velocity")
+    widths = [max([len(h)] + [len(r[k]) for r in rows]) for k, h in enumerate(heads)]
+    widths[0], widths[1] = max(widths[0], 6), max(widths[1], 5)
+
+    def line(cells) -> str:
+        label, end, x, t, particle, rod = cells
+        return (f"  {label:<{widths[0]}} {end:<{widths[1]}}  {x:>{widths[2]}} {t:>{widths[3]}}   "
+                f"{particle:<{widths[4]}}   {rod}").rstrip()
+
+    lines = [f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)}   (c = 1; x and t in the unit L is given in)"]
+    row = iter(rows)
+    for f, fv in zip(frames, views):
         title = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name, "")
         lines += ["", f"frame {f.name}" + (f" ({title})" if title else "") +
-                  f": velocity {f.velocity + 0.0:+.10g} relative to S; the rod first moves at {f.rod_velocity() + 0.0:+.10g}",
-                  header]
+                  f": velocity {_signed(f.velocity)} relative to S; the rod first moves at {_signed(f.rod_velocity())}",
+                  line(heads)]
         for e in fv.events:
             note = f"  simultaneous with {e.impact.simultaneous_with}" if e.impact.simultaneous_with else ""
             note += "  (rod still turning)" if e.impact.while_turning else ""
-            lines.append(f"  {e.impact.label:<7}{e.impact.end:<7}{e.x + 0.0:>+11.6f} {e.t + 0.0:>+11.6f}   "
-                         f"{_velocity(e.particle_velocity_before)} -> {_velocity(e.particle_velocity_after)}   "
-                         f"{_velocity(e.rod_velocity_before)} -> {_velocity(e.rod_velocity_after)}{note}")
+            lines.append(line(next(row)) + note)
     return "\n".join(lines) + "\n"
+
+
+def _signed(u: float) -> str:
+    """A velocity the user gave (or its negative), every digit, signed: +0.6, -0.9999999, +0."""
+    text = exact(u)
+    return text if text.startswith("-") else "+" + text

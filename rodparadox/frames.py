@@ -14,15 +14,37 @@ import numpy as np
 from .engine import WORLDLINE_NAMES, History, Impact
 from .errors import FrameError
 from .kinematics import SAMPLING_TOLERANCE, Event, Segment
+from .model import FASTEST
 from .numbers import exact
 
 #: panels in one figure, lettered (a) to (h): the most frames one figure shows
 MAX_PANELS = 8
+#: the fastest frame shown, as fast as the fastest v (model.FASTEST): faster, g exceeds 2000 and a
+#: particle's velocity in the frame, 1 - 1e-14 or closer, no longer has the digits to tell it from c
+FASTEST_FRAME = FASTEST
+
+
+def check_velocity(u: float) -> float:
+    """A frame velocity relative to S, -FASTEST_FRAME <= u <= FASTEST_FRAME (0 is S itself); -0 becomes 0."""
+    if isinstance(u, bool) or not isinstance(u, (int, float)) or not (math.isfinite(u) and abs(u) <= FASTEST_FRAME):
+        raise FrameError(f"a frame velocity must be a number U with {-FASTEST_FRAME!r} <= U <= {FASTEST_FRAME!r} "
+                         f"(units of c) for double precision to place the events, got {u!r}.")
+    return float(u) + 0.0
+
+
+def frame_of_velocity(u: float) -> "Frame":
+    """The frame of velocity u relative to S, named `u=` and every digit of u (`u=0.3`, `u=-0.9999999`)."""
+    u = check_velocity(u)
+    return Frame(f"u={exact(u)}", u)
 
 
 @dataclass(frozen=True)
 class Frame:
-    """An inertial frame by its velocity relative to S: `rest` is S, `moving` is S' (velocity -v)."""
+    """An inertial frame by its velocity relative to S: `rest` is S, `moving` is S' (velocity -v).
+
+    Any |velocity| < 1 is a frame; a velocity the user gives goes through `check_velocity` (or
+    `frame_of_velocity`), which bounds it where double precision still places the events.
+    """
 
     name: str
     velocity: float
@@ -36,15 +58,15 @@ class Frame:
         return math.atanh(self.velocity)
 
     def rod_velocity(self) -> float:
-        """The rod's velocity in this frame before any impact."""
-        return -self.velocity
+        """The rod's velocity in this frame before any impact (0, never -0, in S)."""
+        return 0.0 - self.velocity
 
 
 def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, ...]:
-    """S and S', and optionally one more frame of the given velocity relative to S."""
+    """S and S', and optionally one more frame of the given velocity relative to S (`frame_of_velocity`)."""
     frames = [Frame("rest", 0.0), Frame("moving", -v)]
     if extra_velocity is not None:
-        frames.append(Frame(f"u={extra_velocity:g}", extra_velocity))
+        frames.append(frame_of_velocity(extra_velocity))
     return tuple(frames)
 
 
@@ -66,11 +88,9 @@ def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
             try:
                 u = float(item) + 0.0  # -0 is 0
             except ValueError:
-                u = math.nan
-            if not (math.isfinite(u) and -1.0 < u < 1.0):
-                raise FrameError(f"a frame must be rest, moving, both or a velocity U with -1 < U < 1 "
-                                 f"(or a comma-separated list of these), got {item!r}.")
-            asked = [Frame(f"u={exact(u)}", u)]
+                raise FrameError(f"a frame must be rest, moving, both or a velocity U with {-FASTEST_FRAME!r} <= U <= "
+                                 f"{FASTEST_FRAME!r} (or a comma-separated list of these), got {item!r}.") from None
+            asked = [frame_of_velocity(u)]
         for frame in asked:
             same = next((k for k, f in enumerate(frames) if f.velocity == frame.velocity), None)
             if same is None:

@@ -8,6 +8,7 @@ of the rod's mass M, speeds in units of c. `scenario` reads these from YAML;
 from __future__ import annotations
 
 import math
+import unicodedata
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -20,13 +21,15 @@ SLOWEST, FASTEST = 1e-6, 0.9999999
 #: the largest gap or timing delay, in units of L
 MAX_SPAN = 1e6
 FRAME_NAMES = ("rest", "moving")
+#: the longest scenario name: it starts every figure title and file name
+MAX_NAME_LENGTH = 200
 
 
 def _check_number(value: Any, key: str, *, low: float | None = None, high: float | None = None,
                   low_open: bool = True, high_open: bool = True, allowed: str, hint: str = "") -> float:
     """Return `value` as a float, or raise a ScenarioError naming `key` and what is allowed."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ScenarioError(f"{key} must be {allowed}, got {_shown(value)}.", key)
+        raise ScenarioError(f"{key} must be {allowed}, got {shown(value)}.", key)
     try:
         value = float(value)
     except OverflowError:
@@ -53,7 +56,7 @@ class Timing:
 
     def __post_init__(self) -> None:
         if self.particle not in PARTICLE_NAMES:
-            raise ScenarioError(f"{self.key}.particle must be A or B, got {self.particle!r}.", f"{self.key}.particle")
+            raise ScenarioError(f"{self.key}.particle must be A or B, got {shown(self.particle)}.", f"{self.key}.particle")
         if isinstance(self.frame, str):
             if self.frame not in FRAME_NAMES:
                 raise ScenarioError(
@@ -120,6 +123,11 @@ class Scenario:
     description: str = ""
 
     def __post_init__(self) -> None:
+        _check_text(self.name, "name", newlines=False)
+        _check_text(self.description, "description", newlines=True)
+        if len(self.name) > MAX_NAME_LENGTH:
+            raise ScenarioError(f"name must be at most {MAX_NAME_LENGTH} characters, got {len(self.name)}; "
+                                f"say more in description.", "name")
         _check_number(self.v, "v", low=0, high=1, allowed="a number with 0 < v < 1 (units of c)")
         _check_computable(self.v, "v")
         _check_number(self.L, "L", low=0, allowed="a positive length (the rod's proper length)")
@@ -165,7 +173,7 @@ class Scenario:
             raise e.located(f"option --{bad}", None) if bad else e
 
 
-def _shown(value: Any) -> str:
+def shown(value: Any) -> str:
     """A YAML value as the user wrote it, for an error message."""
     if isinstance(value, bool):
         return ("yes/true" if value else "no/false") + " (a boolean)"
@@ -176,6 +184,17 @@ def _shown(value: Any) -> str:
     if isinstance(value, (list, dict)):
         return "a list" if isinstance(value, list) else "a mapping"
     return f"{value} (a {type(value).__name__})"
+
+
+def _check_text(value: Any, key: str, *, newlines: bool) -> None:
+    """Text that is drawn and printed: no control characters (tab, NUL, escape, ...), nor newlines in a name."""
+    if not isinstance(value, str):
+        raise ScenarioError(f"{key} must be text, got {shown(value)}.", key)
+    bad = next((c for c in value if unicodedata.category(c) == "Cc" and not (newlines and c == "\n")), None)
+    if bad is not None:
+        what = {"\t": "a tab", "\n": "a line break", "\r": "a carriage return", "\0": "a NUL"}.get(bad, "a control character")
+        allowed = "; only line breaks are allowed" if newlines else ""
+        raise ScenarioError(f"{key} must be printable text, but it contains {what} (U+{ord(bad):04X}){allowed}.", key)
 
 
 def _check_computable(speed: float, key: str) -> None:

@@ -15,25 +15,58 @@ import stat
 import tempfile
 from pathlib import Path
 
-from .errors import OutputError
+from .errors import OutputError, WriteFailed
+
+
+def _reason(e: OSError) -> str:
+    return (e.strerror or str(e)).lower()
+
+
+def check_target(path: str | os.PathLike) -> Path:
+    """Say in one sentence why `path` cannot be written, before anything is computed; return the file to write.
+
+    A symbolic link is followed: its target is the file written (a dangling link's target is created).
+    """
+    shown = Path(path)
+    real = Path(os.path.realpath(path))  # through symbolic links: replace the target, keep the link
+    folder = real.parent
+    if not folder.is_dir():
+        what = "is a file, not a folder" if folder.exists() else "does not exist"
+        if os.path.islink(shown) and real != shown.absolute():
+            raise OutputError(f"cannot write {shown}: it is a symbolic link to {os.readlink(shown)}, whose folder "
+                              f"{folder} {what}.")
+        if folder.exists():
+            raise OutputError(f"cannot write {shown}: {shown.parent} is a file, not a folder.")
+        raise OutputError(f"cannot write {shown}: the folder {shown.parent} does not exist; create it first.")
+    try:
+        old = real.stat()
+    except FileNotFoundError:
+        old = None
+    except OSError as e:
+        raise OutputError(f"cannot write {shown}: {_reason(e)}.") from None
+    if old is not None and stat.S_ISDIR(old.st_mode):
+        raise OutputError(f"cannot write {shown}: it is a folder.")
+    if (old is None or stat.S_ISREG(old.st_mode)) and not os.access(folder, os.W_OK | os.X_OK):
+        # a new file goes in beside the old one and is renamed: the folder must be writable (root passes)
+        raise OutputError(f"cannot write {shown}: permission denied in the folder {shown.parent}.")
+    return real
 
 
 def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
-    """Write `data` to `path`; return False if the file already held exactly these bytes."""
+    """Write `data` to `path`; return False if the file already held exactly these bytes.
+
+    Refuses an impossible target with `OutputError` (`check_target`); a write the system fails part-way
+    (a full disk) raises `WriteFailed` and leaves the old file, if any, as it was.
+    """
     shown = Path(path)
-    path = Path(os.path.realpath(path))  # through symbolic links: replace the target, keep the link
+    path = check_target(path)
     folder = path.parent
-    if not folder.is_dir():
-        what = "is not a folder" if folder.exists() else "does not exist; create it first"
-        raise OutputError(f"cannot write {shown}: the folder {shown.parent} {what}.")
     try:
         old = path.stat()
     except FileNotFoundError:
         old = None
     except OSError as e:
-        raise OutputError(f"cannot write {shown}: {(e.strerror or str(e)).lower()}.") from None
-    if old is not None and stat.S_ISDIR(old.st_mode):
-        raise OutputError(f"cannot write {shown}: it is a folder.")
+        raise OutputError(f"cannot write {shown}: {_reason(e)}.") from None
     if old is not None and not stat.S_ISREG(old.st_mode):
         return _write_stream(shown, data)
     try:
@@ -44,7 +77,7 @@ def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
     try:
         fd, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=folder)
     except OSError as e:
-        raise OutputError(f"cannot write {shown}: {(e.strerror or str(e)).lower()} in the folder {shown.parent}.") from None
+        raise OutputError(f"cannot write {shown}: {_reason(e)} in the folder {shown.parent}.") from None
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
@@ -58,7 +91,7 @@ def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
         except OSError:
             pass
         if isinstance(e, OSError):
-            raise OutputError(f"cannot write {shown}: {(e.strerror or str(e)).lower()}.") from None
+            raise WriteFailed(f"cannot write {shown}: {_reason(e)}.") from None
         raise
     return True
 
@@ -66,10 +99,14 @@ def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
 def _write_stream(path: Path, data: bytes) -> bool:
     """A device or pipe (/dev/null, /dev/stdout, a FIFO): written in place, never replaced by a file."""
     try:
-        with open(path, "wb") as f:
+        f = open(path, "wb")
+    except OSError as e:
+        raise OutputError(f"cannot write {path}: {_reason(e)}.") from None
+    try:
+        with f:
             f.write(data)
     except OSError as e:
-        raise OutputError(f"cannot write {path}: {(e.strerror or str(e)).lower()}.") from None
+        raise WriteFailed(f"cannot write {path}: {_reason(e)}.") from None
     return True
 
 

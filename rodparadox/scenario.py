@@ -15,12 +15,20 @@ from typing import Any
 import yaml
 
 from .errors import ScenarioError
-from .model import PARTICLE_NAMES, Particle, Scenario, Timing
+from .model import PARTICLE_NAMES, Particle, Scenario, Timing, shown
 
-#: the largest scenario file read
-MAX_FILE_BYTES = 1_000_000
+#: the largest scenario file read: a scenario is a few hundred bytes, and PyYAML reads about 100 kB a second
+MAX_FILE_BYTES = 100_000
+#: the deepest nesting of lists and mappings read; a scenario needs 4 (particles.A.timed_with.frame)
+MAX_DEPTH = 16
+#: the most YAML nodes (keys and values) a document may stand for once every alias and merge key (<<) is
+#: expanded: the whole schema is about 40, so this leaves room for anchors and stays milliseconds of work
+MAX_EXPANDED_NODES = 1_000
+#: file name extensions read as YAML, whatever their case
+YAML_SUFFIXES = (".yaml", ".yml")
 
-__all__ = ["Particle", "Scenario", "Timing", "builtin_names", "configs_folder", "describe", "load", "parse"]
+__all__ = ["Particle", "Scenario", "Timing", "builtin_names", "configs_folder", "describe", "load", "parse",
+           "stem_of"]
 
 # --- YAML --------------------------------------------------------------------------------
 
@@ -37,7 +45,29 @@ _SCHEMA = {
 
 
 class _Loader(yaml.SafeLoader):
-    """PyYAML's safe loader, also reading exponent floats without a dot (1e-6, 2E9) as numbers, as YAML 1.2 does."""
+    """PyYAML's safe loader, also reading exponent floats without a dot (1e-6, 2E9) as numbers, as YAML 1.2 does.
+
+    It refuses nesting deeper than MAX_DEPTH while composing (PyYAML's composer recurses once per level,
+    so a file of 500 `[` would otherwise end in a RecursionError), and stops composing after
+    MAX_EXPANDED_NODES nodes, so a long file is refused after a few milliseconds, not read to its end.
+    """
+
+    _depth = 0
+    _composed = 0
+
+    def compose_node(self, parent, index):
+        line = self.peek_event().start_mark.line + 1
+        if self._depth >= MAX_DEPTH:
+            raise ScenarioError(f"the lists and mappings are nested more than {MAX_DEPTH} deep; "
+                                f"a scenario needs 4.", line=line)
+        self._composed += 1
+        if self._composed > MAX_EXPANDED_NODES:
+            raise _too_many(line)
+        self._depth += 1
+        try:
+            return super().compose_node(parent, index)
+        finally:
+            self._depth -= 1
 
 
 _Loader.yaml_implicit_resolvers = {k: list(v) for k, v in yaml.SafeLoader.yaml_implicit_resolvers.items()}
@@ -55,6 +85,8 @@ class _Document:
         loader = _Loader(text)
         try:
             node = loader.get_single_node()
+            if node is not None:
+                _check_expanded_size(node)
             self.data = None if node is None else self._value(loader, node, "", _SCHEMA)
         finally:
             loader.dispose()
@@ -65,6 +97,9 @@ class _Document:
             loader.flatten_mapping(node)
             out: dict[str, Any] = {}
             for key_node, value_node in node.value:
+                if not isinstance(key_node, yaml.ScalarNode):
+                    raise ScenarioError(f"a key in {path or 'the top level'} is {_shape(key_node)}; "
+                                        f"keys are words.", path or None, key_node.start_mark.line + 1)
                 key = loader.construct_object(key_node, deep=True)
                 where = f"{path}.{key}" if path else str(key)
                 line = key_node.start_mark.line + 1
@@ -83,11 +118,61 @@ class _Document:
                 out[key] = self._value(loader, value_node, where, schema[key])
             return out
         if isinstance(schema, dict):
-            shown = "a list" if isinstance(node, yaml.SequenceNode) else repr(loader.construct_object(node, deep=True))
+            shown = _shape(node) if not isinstance(node, yaml.ScalarNode) else repr(loader.construct_object(node))
             raise ScenarioError(f"{path or 'the scenario'} must be a mapping of keys ({', '.join(schema)}), "
                                 f"got {shown}.", path, node.start_mark.line + 1 if path else None)
-        value = loader.construct_object(node, deep=True)
-        return value
+        if not isinstance(node, yaml.ScalarNode):
+            # every leaf of the schema is one number or word: a list or mapping is refused unbuilt, as an empty
+            # one, so that the key's own check (model.py) words the sentence
+            return [] if isinstance(node, yaml.SequenceNode) else {}
+        return loader.construct_object(node)
+
+
+def _shape(node: yaml.Node) -> str:
+    return "a list" if isinstance(node, yaml.SequenceNode) else "a mapping" if isinstance(node, yaml.MappingNode) \
+        else "a value"
+
+
+def _too_many(line: int) -> ScenarioError:
+    return ScenarioError(f"the file stands for more than {MAX_EXPANDED_NODES:,} keys and values once its aliases "
+                         f"(*name) and merge keys (<<) are expanded; a scenario needs a few dozen.", line=line)
+
+
+def _check_expanded_size(root: yaml.Node) -> None:
+    """Refuse a document that stands for more than MAX_EXPANDED_NODES nodes, or nests deeper than MAX_DEPTH,
+    once its aliases and merge keys are expanded (a "billion laughs" in any value, list or mapping).
+
+    The composed graph is as large as the file; each node's expanded size and depth are counted once
+    (memoised) and capped, without recursion, so the check costs time in proportion to the file's size.
+    """
+    size: dict[int, int] = {}
+    depth: dict[int, int] = {}
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    on_path: set[int] = set()
+    while stack:
+        node, children_done = stack.pop()
+        if id(node) in size:
+            continue
+        children = ([n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode)
+                    else list(node.value) if isinstance(node, yaml.SequenceNode) else [])
+        if not children_done:
+            on_path.add(id(node))
+            stack.append((node, True))
+            for child in children:
+                if id(child) in on_path:
+                    raise ScenarioError("an alias refers to a list or mapping that contains it; "
+                                        "write the values out instead.", line=child.start_mark.line + 1)
+                if id(child) not in size:
+                    stack.append((child, False))
+            continue
+        on_path.discard(id(node))
+        size[id(node)] = min(1 + sum(size[id(c)] for c in children), MAX_EXPANDED_NODES + 1)
+        depth[id(node)] = 1 + max((depth[id(c)] for c in children), default=0)
+        if size[id(node)] > MAX_EXPANDED_NODES:
+            raise _too_many(node.start_mark.line + 1)
+        if depth[id(node)] > MAX_DEPTH:
+            raise ScenarioError(f"the lists and mappings are nested more than {MAX_DEPTH} deep once the "
+                                f"aliases (*name) are expanded; a scenario needs 4.", line=node.start_mark.line + 1)
 
 
 def parse(text: str, source: str, default_name: str) -> Scenario:
@@ -133,7 +218,8 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
         particles.append(Particle(name=name, **fields))
     for key in ("name", "description"):
         if key in data and not isinstance(data[key], str):
-            raise ScenarioError(f"{key} must be text, got {data[key]!r}.", key)
+            value = data[key]
+            raise ScenarioError(f"{key} must be text, got {shown(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
                     v=data["v"], L=data.get("L", 1.0), particles=tuple(particles))
 
@@ -152,17 +238,36 @@ def builtin_names() -> list[str]:
     return sorted(p.stem for p in configs_folder().glob("*.yaml"))
 
 
-def load(name_or_path: str) -> Scenario:
-    """A built-in scenario by name (`fig2`) or a scenario file by path (`configs/my.yaml`)."""
+def stem_of(name_or_path: str) -> str:
+    """The name of a scenario the user gave, for file names: `fig2` for `fig2`, `my` for `dir/my.YAML`.
+
+    A YAML extension (.yaml, .yml, in any case) is dropped; any other part of the file name is kept.
+    """
+    name = Path(name_or_path).name
+    return name[:-len(Path(name).suffix)] if Path(name).suffix.lower() in YAML_SUFFIXES else name
+
+
+def _is_path(name_or_path: str) -> bool:
+    """Whether SCENARIO names a file: it has a YAML extension or a folder part, or a file of that name exists.
+
+    A file in the current folder wins over a built-in scenario of the same name (README, "Commands"); a folder
+    does not (`outputs/fig2/` beside the figures is common).
+    """
     path = Path(name_or_path)
-    looks_like_path = path.suffix in (".yaml", ".yml") or len(path.parts) > 1
-    if not looks_like_path:
+    return path.suffix.lower() in YAML_SUFFIXES or len(path.parts) != 1 or (path.exists() and not path.is_dir())
+
+
+def load(name_or_path: str) -> Scenario:
+    """A scenario file by path (`configs/my.yaml`, or `fig2` if such a file exists) or a built-in by name (`fig2`)."""
+    if not name_or_path:
+        raise ScenarioError("SCENARIO is empty; give a built-in name (see 'sears-paradox list') or a YAML file.")
+    path = Path(name_or_path)
+    if not _is_path(name_or_path):
         builtin = configs_folder() / f"{name_or_path}.yaml"
-        if builtin.is_file():
-            return parse(builtin.read_text(encoding="utf-8"), name_or_path, name_or_path)
-        if not path.is_file():
+        if not builtin.is_file():
             raise ScenarioError(f"there is no built-in scenario {name_or_path!r} and no file of that name; "
                                 f"built-in: {', '.join(builtin_names())} (see 'sears-paradox list').")
+        return parse(builtin.read_text(encoding="utf-8"), name_or_path, name_or_path)
     if path.is_dir():
         raise ScenarioError(f"scenario file {name_or_path!r} is a folder; give a .yaml file.")
     if path.exists() and not path.is_file():
@@ -178,8 +283,8 @@ def load(name_or_path: str) -> Scenario:
     except UnicodeDecodeError:
         raise ScenarioError(f"scenario file {name_or_path!r} is not UTF-8 text.") from None
     except OSError as e:
-        raise ScenarioError(f"cannot read scenario file {name_or_path!r}: {e.strerror}.") from None
-    return parse(text, name_or_path, path.stem)
+        raise ScenarioError(f"cannot read scenario file {name_or_path!r}: {(e.strerror or str(e)).lower()}.") from None
+    return parse(text, name_or_path, stem_of(name_or_path))
 
 
 def describe(name: str) -> str:

@@ -92,14 +92,67 @@ def test_list_names_every_builtin_with_a_line():
 
 def test_events_table_fig2_rest_and_moving():
     out = run("events", "fig2", "--v", "0.6").output
+    assert out.splitlines()[0] == "fig2: v = 0.6, L = 1   (c = 1; x and t in the unit L is given in)"
     # Fig. 2 in S: B1 at (L/2, L/2v); A1 at (L/2 - gL, L/2v + gvL); B2 at (L/2, L/2v + 2gvL); g = 1.25
-    assert "  B1     right    +0.500000   +0.833333   -0.600000 -> +0.000000   +0.000000 -> -0.600000" in out
-    assert "  A1     left     -0.750000   +1.583333   +0.600000 -> -0.600000   -0.600000 -> +0.600000" in out
-    assert "  B2     right    +0.500000   +2.333333   +0.000000 -> +0.600000   +0.600000 -> +0.000000" in out
+    assert "  B1     right  +0.5000000 +0.8333333   -0.600000 -> +0.000000   +0.000000 -> -0.600000" in out
+    assert "  A1     left   -0.7500000  +1.583333   +0.600000 -> -0.600000   -0.600000 -> +0.600000" in out
+    assert "  B2     right  +0.5000000  +2.333333   +0.000000 -> +0.600000   +0.600000 -> +0.000000" in out
     # in S' B1 and A1 share t' = (gL/2v)(1 + v^2) = 17/12; A arrives at 2v/(1+v^2) = 15/17
-    assert "  B1     right    +1.250000   +1.416667" in out
-    assert "  A1     left     +0.250000   +1.416667   +0.882353 -> +0.000000" in out
+    assert "  B1     right   +1.250000  +1.416667" in out
+    assert "  A1     left   +0.2500000  +1.416667   +0.882353 -> +0.000000" in out
     assert out.count("frame ") == 2
+
+
+def _table_rows(out: str) -> list[str]:
+    return [line for line in out.splitlines() if re.match(r"  [AB]\d", line)]
+
+
+@pytest.mark.parametrize("args, rows", [
+    # L = 1e-5: the numbers are in the unit L is given in, with their significant digits
+    (("--L", "1e-5"), ["  B1     right  +5.000000e-06 +8.333333e-06   -0.600000 -> +0.000000   +0.000000 -> -0.600000",
+                       "  A1     left   -7.500000e-06 +1.583333e-05   +0.600000 -> -0.600000   -0.600000 -> +0.600000"]),
+    # L = 2: the right end is at x = 1 (not 0.5 "in the unit of L")
+    (("--L", "2"), ["  B1     right   +1.000000 +1.666667   -0.600000 -> +0.000000   +0.000000 -> -0.600000"]),
+    # v = 1e-6: the velocities keep their digits and no zero has a sign
+    (("--v", "1e-6"), ["  B1     right  +0.5000000 +500000.0   -0.00000100000 -> +0.00000000000   "
+                       "+0.00000000000 -> -0.00000100000"]),
+])
+def test_events_table_digits_fit_the_magnitudes(args, rows):
+    out = run("events", "fig2", *args).output
+    for row in rows:
+        assert row in _table_rows(out)
+
+
+def test_events_table_stays_aligned_for_huge_lengths_and_has_no_negative_zero(tmp_path):
+    big = tmp_path / "big.yaml"
+    big.write_text("v: 0.3\nL: 1.0e100\nparticles: {A: {gap: 0.25}, B: {gap: 0.5}}\n")
+    for out in (run("events", str(big)).output, run("events", "fig2", "--v", "1e-6").output,
+                run("events", "fig2", "--v", "0.9999999", "--frame-velocity", "-0.9999999").output):
+        blocks = out.split("\n\n")[1:]
+        for block in blocks:
+            lines = block.splitlines()[1:]  # the header, then the rows
+            ends = {len(line.split("->")[0]) for line in lines[1:]}  # the particle velocity's arrow, one column
+            assert len(ends) == 1, block
+            x_end = lines[0].index(" x") + 2
+            assert all(line[x_end - 1] != " " for line in lines[1:]), block  # x right-aligned under its head
+        assert not re.search(r"-0(\.0*)?(e[+-]\d+)?(?![\d.e])", out), out
+
+
+def test_events_table_velocities_never_round_to_c():
+    out = run("events", "fig2", "--v", "0.9999999", "--frame-velocity", "-0.9999999").output
+    speeds = [float(u) for line in _table_rows(out) for u in re.findall(r"[-+]0\.\d+", line.split("  ", 4)[-1])]
+    assert speeds and max(abs(u) for u in speeds) < 1
+    assert "+0.9999999999999950 -> +0.000000" in out  # A's speed in S', 5e-15 below c, keeps its digits
+    assert not re.search(r"[-+]1\.0+\b", out)
+
+
+def test_a_velocity_that_rounds_to_c_is_refused(tmp_path):
+    heavy = tmp_path / "heavy.yaml"
+    heavy.write_text("v: 0.9999999\nparticles: {B: {gap: 0.5, mass: 1e9}}\n")
+    message = ("in frame u=0.9999999 the rod's velocity after B1 is within 2.5e-22 of c, closer than double "
+               "precision can write; choose a slower frame, a slower v or a lighter particle.")
+    for command in ("events", "export"):
+        assert error_of(command, str(heavy), "--frame-velocity", "0.9999999") == message
 
 
 def test_events_with_an_extra_frame():
@@ -193,7 +246,8 @@ def test_export_is_byte_identical_twice():
     (("export", "fig1", "--L", "-2"), "option --L: L must be a positive length (the rod's proper length), got -2."),
     (("export", "fig1", "--v", "nan"), "option --v: v must be a number with 0 < v < 1 (units of c), got nan."),
     (("events", "fig1", "--frame-velocity", "1.5"),
-     "option --frame-velocity must be a velocity u with -1 < u < 1 (units of c), got 1.5."),
+     "option --frame-velocity: a frame velocity must be a number U with -0.9999999 <= U <= 0.9999999 (units of c) "
+     "for double precision to place the events, got 1.5."),
     (("events", "fig9"), "there is no built-in scenario 'fig9' and no file of that name; built-in: "),
     (("export", "nowhere/my.yaml"), "scenario file 'nowhere/my.yaml' does not exist; check the path"),
     (("events", "fig2", "--v", "fast"), "Invalid value for '--v': 'fast' is not a valid float."),
@@ -258,3 +312,133 @@ def test_non_drawing_paths_never_import_matplotlib(argv):
             "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
+
+
+# --- export: no negative zero, the format from the extension, output paths, empty values (items 10, 12, 15) ---
+
+def test_export_writes_no_negative_zero():
+    text = run("export", "fig2").output
+    assert "-0.0," not in text and "-0.0\n" not in text and "-0.0]" not in text
+    assert json.loads(text)["frames"]["rest"]["rod_velocity_before"] == 0.0
+    csv_text = run("export", "fig2", "--format", "csv", "--v", "0.3").output
+    assert not re.search(r",-0\.0(,|$)", csv_text, re.M)
+
+
+@pytest.mark.parametrize("name, kind", [("fig2.csv", "csv"), ("fig2.json", "json"), ("FIG2.CSV", "csv")])
+def test_export_takes_the_format_from_the_extension(tmp_path, name, kind):
+    target = tmp_path / name
+    assert run("export", "fig2", "-o", str(target)).output == f"{target}\n"
+    text = target.read_text()
+    assert text.startswith("frame,kind,name") if kind == "csv" else json.loads(text)["format"] == "sears-paradox/1"
+
+
+def test_export_prints_an_unchanged_file_as_unchanged_and_quiet_prints_nothing(tmp_path):
+    target = tmp_path / "fig2.json"
+    assert run("export", "fig2", "-o", str(target), "-q").output == ""
+    assert run("export", "fig2", "-o", str(target)).output == f"{target} (unchanged)\n"
+    assert run("export", "fig2", "-o", str(target), "--quiet").output == ""
+
+
+@pytest.mark.parametrize("args, message", [
+    (("--format", "csv", "-o", "x.json"), "option -o names 'x.json' but --format is csv; make them agree."),
+    (("-o", "x.JSON", "--format", "csv"), "option -o names 'x.JSON' but --format is csv; make them agree."),
+    (("-o", "x.txt"), "option -o: cannot tell the format of 'x.txt' from its extension; name it .json, .csv or "
+                      "give --format."),
+    (("-o", ""), "option -o must name a file or folder, got ''."),
+    (("-o", " "), "option -o must name a file or folder, got ' '."),
+    (("--format", ""), "Invalid value for '--format': '' is not one of 'json', 'csv'."),
+])
+def test_export_refuses_a_contradictory_unknown_or_empty_output(tmp_path, monkeypatch, args, message):
+    monkeypatch.chdir(tmp_path)
+    assert error_of("export", "fig2", *args) == message
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_export_with_a_format_writes_any_name(tmp_path):
+    target = tmp_path / "data.txt"
+    run("export", "fig2", "--format", "csv", "-o", str(target))
+    assert target.read_text().startswith("frame,kind,name")
+
+
+def test_export_to_a_dangling_link_says_where_it_leads(tmp_path):
+    link = tmp_path / "d.json"
+    link.symlink_to(tmp_path / "gone" / "x.json")
+    assert error_of("export", "fig2", "-o", str(link)) == (
+        f"cannot write {link}: it is a symbolic link to {tmp_path}/gone/x.json, whose folder {tmp_path}/gone "
+        f"does not exist.")
+    other = tmp_path / "e.json"  # a dangling link into an existing folder: the target is created, the link kept
+    other.symlink_to("target.json")
+    run("export", "fig2", "-o", str(other))
+    assert other.is_symlink() and json.loads((tmp_path / "target.json").read_text())["format"] == "sears-paradox/1"
+
+
+def test_empty_scenario_is_refused():
+    assert error_of("events", "") == "SCENARIO is empty; give a built-in name (see 'sears-paradox list') or a YAML file."
+
+
+# --- frame velocity: one bound, one name (item 9) -------------------------------------------------------------
+
+@pytest.mark.parametrize("u", ["0.9999999999999999", "0.99999999", "-0.99999995", "1", "inf", "nan"])
+def test_frame_velocity_beyond_the_bound_is_refused(u):
+    assert error_of("export", "fig2", "--frame-velocity", u) == (
+        "option --frame-velocity: a frame velocity must be a number U with -0.9999999 <= U <= 0.9999999 (units of c) "
+        f"for double precision to place the events, got {float(u)!r}.")
+
+
+@pytest.mark.parametrize("u, name", [("0.9999999", "u=0.9999999"), ("-0.9999999", "u=-0.9999999"), ("0", "u=0"),
+                                     ("-0", "u=0"), ("0.30000000000000004", "u=0.30000000000000004"),
+                                     ("1e-7", "u=1e-07"), ("0.123456789012", "u=0.123456789012")])
+def test_frame_velocity_names_keep_every_digit(u, name):
+    doc = json.loads(run("export", "fig2", "--frame-velocity", u).output)
+    assert list(doc["frames"]) == ["rest", "moving", name]
+    frame = doc["frames"][name]
+    assert frame["velocity"] == float(u) + 0.0
+    assert all(abs(e[k]) < 1 for e in frame["events"] for k in e if k.endswith("velocity_before") or
+               k.endswith("velocity_after"))
+
+
+def test_frames_library_names_and_bounds_frames():
+    from rodparadox.errors import FrameError
+    from rodparadox.frames import FASTEST_FRAME, check_velocity, frame_of_velocity
+    from rodparadox.model import FASTEST
+
+    assert FASTEST_FRAME == FASTEST
+    assert frame_of_velocity(-0.0).name == "u=0" and frame_of_velocity(0.5).name == "u=0.5"
+    assert frame_of_velocity(0.1 + 0.2).name != frame_of_velocity(0.3).name
+    assert check_velocity(FASTEST) == FASTEST and check_velocity(-FASTEST) == -FASTEST
+    for bad in (math.nextafter(FASTEST, 1), math.nan, True, "0.3"):
+        with pytest.raises(FrameError):
+            check_velocity(bad)
+
+
+# --- write errors: one sentence, exit 1; a closed pipe: quiet (item 8) --------------------------------------
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
+@pytest.mark.parametrize("args", [("events", "fig2"), ("export", "fig2"), ("export", "fig2", "--format", "csv"),
+                                  ("list",), ("--help",), ("plot", "--help"), ("--version",)])
+def test_a_full_standard_output_is_one_sentence_and_exit_1(args):
+    with open("/dev/full", "w") as full:
+        result = subprocess.run(_cli_prefix() + list(args), stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
+    assert (result.returncode, result.stderr) == (1, "Error: cannot write to standard output: no space left on device.\n")
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
+def test_a_full_device_as_output_file_is_one_sentence_and_exit_1(tmp_path):
+    result = subprocess.run(_cli_prefix() + ["export", "fig2", "--format", "json", "-o", "/dev/full"],
+                            capture_output=True, text=True, timeout=60)
+    assert (result.returncode, result.stderr) == (1, "Error: cannot write /dev/full: no space left on device.\n")
+
+
+def test_a_closed_pipe_ends_quietly():
+    for args in (["export", "fig2", "--format", "csv", "--v", "0.99"], ["events", "fig2"]):
+        process = subprocess.Popen(_cli_prefix() + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        process.stdout.readline()
+        process.stdout.close()  # as `| head -1` does
+        stderr = process.stderr.read().decode()
+        process.wait(timeout=60)
+        assert stderr == "" and process.returncode in (0, 141), (stderr, process.returncode)
+
+
+def _cli_prefix() -> list[str]:
+    script = Path(sys.executable).parent / "sears-paradox"
+    return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]

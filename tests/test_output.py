@@ -52,7 +52,7 @@ def test_a_pipe_stays_a_pipe(tmp_path):
 
 @pytest.mark.parametrize("make, message", [
     (lambda d: d / "missing" / "x.json", "the folder {d}/missing does not exist; create it first."),
-    (lambda d: (d / "file").write_bytes(b"") or d / "file" / "x.json", "the folder {d}/file is not a folder."),
+    (lambda d: (d / "file").write_bytes(b"") or d / "file" / "x.json", "{d}/file is a file, not a folder."),
     (lambda d: (d / "sub").mkdir() or d / "sub", "it is a folder."),
 ])
 def test_impossible_targets_are_one_sentence(tmp_path, make, message):

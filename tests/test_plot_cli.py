@@ -66,14 +66,22 @@ def test_default_writes_outputs_fig2_svg_and_prints_only_its_path(in_tmp):
     assert _files(in_tmp) == {"outputs/fig2.svg"}
 
 
-def test_an_unchanged_figure_is_not_rewritten_and_nothing_is_printed(in_tmp):
+def test_an_unchanged_figure_is_not_rewritten_and_its_path_is_printed_as_unchanged(in_tmp):
     run("fig2")
     path = in_tmp / "outputs" / "fig2.svg"
     old = time.time() - 1000
     os.utime(path, (old, old))
-    assert run("fig2").output == ""
+    assert run("fig2").output == "outputs/fig2.svg (unchanged)\n"
     assert path.stat().st_mtime == old
-    assert run("fig2", "--verbose").output == "outputs/fig2.svg (unchanged)\n"
+    assert run("fig2", "--verbose").output == "outputs/fig2.svg (unchanged)\n"  # accepted, changes nothing
+    assert run("fig2", "--format", "svg,pdf").output == "outputs/fig2.svg (unchanged)\noutputs/fig2.pdf\n"
+
+
+@pytest.mark.parametrize("flag", ["-q", "--quiet"])
+def test_quiet_prints_nothing_and_still_writes(in_tmp, flag):
+    assert run("fig2", flag).output == ""
+    assert _files(in_tmp) == {"outputs/fig2.svg"}
+    assert run("fig2", flag).output == ""
 
 
 @pytest.mark.parametrize("options, name", [
@@ -100,7 +108,7 @@ def test_an_unchanged_figure_is_not_rewritten_and_nothing_is_printed(in_tmp):
     # every digit the number has, no -0
     (["--frame", "-0"], "fig2_u0"),
     (["--frame", "0,-0.0"], "fig2_u0"),
-    (["--frame", "0.9999999999999999"], "fig2_u0.9999999999999999"),
+    (["--frame", "0.9999999"], "fig2_u0.9999999"),
     (["--frame", "-0.9999999"], "fig2_u-0.9999999"),
     (["--v", "0.9999999"], "fig2_v0.9999999"),
     (["--L", "2.000000000000001"], "fig2_L2.000000000000001"),
@@ -187,9 +195,11 @@ def test_unwritable_output_folder(in_tmp, unwritable_folder):
 
 def test_bad_frame():
     assert error_of("fig2", "--frame", "sideways") == (
-        "option --frame: a frame must be rest, moving, both or a velocity U with -1 < U < 1 "
+        "option --frame: a frame must be rest, moving, both or a velocity U with -0.9999999 <= U <= 0.9999999 "
         "(or a comma-separated list of these), got 'sideways'.")
-    assert error_of("fig2", "--frame", "rest,1.5").endswith("got '1.5'.")
+    assert error_of("fig2", "--frame", "rest,1.5") == (
+        "option --frame: a frame velocity must be a number U with -0.9999999 <= U <= 0.9999999 (units of c) "
+        "for double precision to place the events, got 1.5.")
 
 
 def test_more_panels_than_a_figure_holds():
@@ -238,7 +248,8 @@ def test_a_failed_write_leaves_no_partial_file(in_tmp, monkeypatch):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
     monkeypatch.setattr(rodparadox.output.os, "replace", full_disk)
-    assert error_of("fig2") == "cannot write outputs/fig2.svg: no space left on device."
+    result = run("fig2", expect=1)  # the system failed, not the input: exit status 1
+    assert result.output == "Error: cannot write outputs/fig2.svg: no space left on device.\n"
     assert _files(in_tmp) == set()
 
 
@@ -364,3 +375,32 @@ def _geometry(svg: bytes) -> dict[str, list[float]]:
             numbers = [round(float(n), 2) for p in group.iter(f"{ns}path") for n in re.findall(r"-?\d+\.?\d*", p.get("d", ""))]
             out[gid] = numbers
     return out
+
+
+# --- edges of the command line (issue 6: items 11, 12, 14) ------------------------------------------------------
+
+def test_a_dangling_link_as_output_says_where_it_leads(in_tmp):
+    Path("d.svg").symlink_to("gone/fig.svg")
+    assert error_of("fig2", "-o", "d.svg") == (
+        f"cannot write d.svg: it is a symbolic link to gone/fig.svg, whose folder {in_tmp}/gone does not exist.")
+    Path("figs").symlink_to("nowhere")
+    assert error_of("fig2", "-o", "figs") == (
+        "the output folder figs is a symbolic link to nowhere, which does not exist; create it first.")
+
+
+@pytest.mark.parametrize("args, message", [
+    (("--format", ""), "option --format must be one or more of svg, pdf, png, comma-separated, got ''."),
+    (("--format", "svg,"), "option --format must be one or more of svg, pdf, png, comma-separated, got 'svg,'."),
+    (("--format", ",pdf"), "option --format must be one or more of svg, pdf, png, comma-separated, got ',pdf'."),
+    (("-o", ""), "option -o must name a file or folder, got ''."),
+])
+def test_empty_values_are_refused(args, message):
+    assert error_of("fig2", *args) == message
+
+
+def test_a_local_file_wins_over_the_builtin_and_yaml_extensions_in_any_case(in_tmp):
+    Path("fig2").write_text("name: mine\nv: 0.3\nparticles: {B: {gap: 0.5}}\n")
+    Path("X.YAML").write_text("v: 0.6\nparticles: {B: {gap: 0.5}}\n")
+    Path("y.Yml").write_text("v: 0.6\nparticles: {A: {gap: 0.5}}\n")
+    assert run("fig2", "X.YAML", "y.Yml", "-o", ".").output == "fig2.svg\nX.svg\ny.svg\n"
+    assert b"mine" in Path("fig2.svg").read_bytes()

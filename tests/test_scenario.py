@@ -181,3 +181,147 @@ def test_frozen():
     s = Scenario("x", 0.5, (Particle("A", gap=0.1),))
     with pytest.raises(AttributeError):
         s.v = 0.7
+
+
+# --- the work of reading a file is bounded by its size, whatever its shape (issue 6, items 6, 7) ------------
+
+def _laughs(levels: int = 10, width: int = 9) -> str:
+    """Nested anchors, each a list of `width` aliases to the one before: width**levels strings from ~600 bytes."""
+    lists = ["&a0 [" + ", ".join(['"xxxxxxxxxx"'] * width) + "]"]
+    lists += [f"&a{k} [" + ", ".join([f"*a{k - 1}"] * width) + "]" for k in range(1, levels)]
+    return "[" + ", ".join(lists) + "]"
+
+
+def _merges(levels: int = 10, width: int = 9) -> str:
+    """Nested merge keys: each mapping merges the one before `width` times."""
+    maps = ["m0: &m0 {" + ", ".join(f"k{i}: {i}" for i in range(width)) + "}"]
+    maps += [f"m{k}: &m{k} {{<<: [" + ", ".join([f"*m{k - 1}"] * width) + "]}" for k in range(1, levels)]
+    return "{" + ", ".join(maps) + "}"
+
+
+TOO_MANY = ("the file stands for more than 1,000 keys and values once its aliases (*name) and merge keys (<<) "
+            "are expanded; a scenario needs a few dozen.")
+TOO_DEEP = "the lists and mappings are nested more than 16 deep; a scenario needs 4."
+
+
+@pytest.mark.parametrize("text, message", [
+    (f"name: {_laughs()}\nv: 0.6\nparticles: {{B: {{gap: 0.5}}}}\n", "s.yaml, line 1: " + TOO_MANY),
+    (f"v: 0.6\nparticles: {{B: {{gap: 0.5}}}}\ndescription: {_laughs()}\n", "s.yaml, line 3: " + TOO_MANY),
+    (f"v: 0.6\nparticles: {{B: {{gap: 0.5}}}}\ndescription: {_merges()}\n", "s.yaml, line 3: " + TOO_MANY),
+    (f"v: 0.6\nparticles: {{B: {{gap: 0.5, mass: {_laughs()}}}}}\n", "s.yaml, line 2: " + TOO_MANY),
+    (f"v: 0.6\n? {_laughs()}\n: 1\n", "s.yaml, line 2: " + TOO_MANY),  # a key
+    (f"v: 0.6\nparticles: {{B: {{gap: 0.5}}}}\n<<: {_merges()}\n", "s.yaml, line 3: " + TOO_MANY),
+    ("v: 0.6\nparticles: {B: {gap: 0.5}}\ndescription: [" + ", ".join(["1"] * 2000) + "]\n",
+     "s.yaml, line 3: " + TOO_MANY),  # no alias at all: plainly too long
+    ("name: " + "[" * 600 + "]" * 600 + "\nv: 0.6\n", "s.yaml, line 1: " + TOO_DEEP),
+    ("v: 0.6\ndescription: " + "{a: " * 2000 + "1" + "}" * 2000 + "\n", "s.yaml, line 2: " + TOO_DEEP),
+    ("v: 0.6\ndescription:\n" + "".join("  " * k + "- \n" for k in range(1, 40)), "s.yaml, line 18: " + TOO_DEEP),
+    # deeper only once expanded: each list holds an alias to the one before
+    ("x: [&d0 [1]" + "".join(f", &d{k} [*d{k - 1}]" for k in range(1, 20)) + "]\n",
+     "s.yaml, line 1: the lists and mappings are nested more than 16 deep once the aliases (*name) are expanded; "
+     "a scenario needs 4."),
+    ("name: &a [*a]\nv: 0.6\n", "s.yaml, line 1: an alias refers to a list or mapping that contains it; "
+                                "write the values out instead."),
+])
+def test_oversized_or_deep_yaml_is_refused_quickly_whatever_its_shape(text, message):
+    import time
+
+    start = time.perf_counter()
+    assert refused(text) == message
+    assert time.perf_counter() - start < 1.0
+
+
+@pytest.mark.parametrize("key, text, shown", [
+    ("name", "[a, b]", "a list"),
+    ("name", "{a: b}", "a mapping"),
+    ("description", "[a]", "a list"),
+])
+def test_a_list_or_mapping_where_text_is_wanted_is_refused_unbuilt(key, text, shown, monkeypatch):
+    import yaml
+
+    def never(*args, **kwargs):
+        raise AssertionError("a list or mapping was built")
+
+    monkeypatch.setattr(yaml.constructor.SafeConstructor, "construct_sequence", never)
+    monkeypatch.setattr(yaml.constructor.SafeConstructor, "construct_mapping", never)
+    assert refused(f"v: 0.6\nparticles: {{B: {{gap: 0.5}}}}\n{key}: {text}\n") == (
+        f"s.yaml, line 3: {key} must be text, got {shown}.")
+
+
+def test_anchors_and_merge_keys_within_bounds_are_read():
+    s = parse("v: 0.6\nparticles:\n  A: &p {gap: 0.5, mass: 2}\n  B: {<<: *p, speed: 0.3}\n", "s.yaml", "s")
+    assert s.particle("A") == Particle("A", mass=2.0, gap=0.5)
+    assert s.particle("B") == Particle("B", mass=2.0, speed=0.3, gap=0.5)
+
+
+def test_a_file_larger_than_the_limit_is_refused_before_it_is_read(tmp_path):
+    from rodparadox.scenario import MAX_FILE_BYTES
+
+    big = tmp_path / "big.yaml"
+    big.write_text("v: 0.6\nparticles: {B: {gap: 0.5}}\n#" + "x" * MAX_FILE_BYTES + "\n")
+    with pytest.raises(ScenarioError) as info:
+        load(str(big))
+    assert str(info.value) == f"scenario file '{big}' is larger than 100,000 bytes; a scenario is a few lines of YAML."
+
+
+# --- names and descriptions: printable text (item 13) --------------------------------------------------------
+
+@pytest.mark.parametrize("line, message", [
+    ('name: "tab\\there"', "name must be printable text, but it contains a tab (U+0009)."),
+    ('name: "two\\nlines"', "name must be printable text, but it contains a line break (U+000A)."),
+    ('name: "nul\\0"', "name must be printable text, but it contains a NUL (U+0000)."),
+    ('name: "bell\\a"', "name must be printable text, but it contains a control character (U+0007)."),
+    ('description: "a\\tb"',
+     "description must be printable text, but it contains a tab (U+0009); only line breaks are allowed."),
+    ('description: "esc\\e[31m"',
+     "description must be printable text, but it contains a control character (U+001B); only line breaks are allowed."),
+    ("name: " + "n" * 201, "name must be at most 200 characters, got 201; say more in description."),
+])
+def test_control_characters_and_overlong_names_are_refused_with_key_and_line(line, message):
+    assert refused(f"v: 0.6\nparticles: {{B: {{gap: 0.5}}}}\n{line}\n") == f"s.yaml, line 3: {message}"
+
+
+def test_a_description_may_run_over_several_lines():
+    s = parse("v: 0.6\nparticles: {B: {gap: 0.5}}\nname: " + "n" * 200 + "\ndescription: |\n  one\n  two\n",
+              "s.yaml", "s")
+    assert s.description == "one\ntwo\n" and len(s.name) == 200
+
+
+def test_a_file_name_with_a_control_character_is_refused(tmp_path):
+    bad = tmp_path / "tab\there.yaml"
+    bad.write_text("v: 0.6\nparticles: {B: {gap: 0.5}}\n")
+    with pytest.raises(ScenarioError) as info:
+        load(str(bad))
+    assert str(info.value) == f"{bad}: name must be printable text, but it contains a tab (U+0009)."
+
+
+# --- which file a SCENARIO names (item 14) ----------------------------------------------------------------
+
+def test_an_existing_file_wins_over_a_builtin_name(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "fig2").write_text("name: mine\nv: 0.3\nparticles: {B: {gap: 0.5}}\n")
+    assert (load("fig2").name, load("fig2").v) == ("mine", 0.3)
+    (tmp_path / "fig1").mkdir()  # a folder does not shadow the built-in
+    assert load("fig1") == load(str(__import__("rodparadox.scenario").scenario.configs_folder() / "fig1.yaml"))
+
+
+@pytest.mark.parametrize("given, stem", [
+    ("fig2", "fig2"), ("my.yaml", "my"), ("dir/My.YAML", "My"), ("x.yml", "x"), ("x.YML", "x"),
+    ("dir/scene.v2", "scene.v2"), ("a.b.yaml", "a.b"),
+])
+def test_stem_of_drops_any_yaml_extension_in_any_case(given, stem):
+    from rodparadox.scenario import stem_of
+
+    assert stem_of(given) == stem
+
+
+def test_upper_case_extensions_are_yaml_files(tmp_path):
+    upper = tmp_path / "X.YAML"
+    upper.write_text("v: 0.6\nparticles: {B: {gap: 0.5}}\n")
+    assert load(str(upper)).name == "X"
+
+
+def test_an_empty_scenario_name_is_refused():
+    with pytest.raises(ScenarioError) as info:
+        load("")
+    assert str(info.value) == "SCENARIO is empty; give a built-in name (see 'sears-paradox list') or a YAML file."
