@@ -37,3 +37,7 @@ class WriteFailed(OutputError):
 
 class FrameError(ValueError, RodParadoxError):
     """A frame velocity outside the bounds double precision can place events in (frames.check_velocity)."""
+
+
+class OptionError(ValueError, RodParadoxError):
+    """A command-line option that cannot be used as given (a format, an output path, a frame list): says which."""

@@ -1,0 +1,152 @@
+"""Which files a drawing command writes, and under what names (README, "Drawing the figures": file names). Pure.
+
+Shared by `plot`, `ledger` and every later drawing command, so their names
+follow one rule: OUTPUT/NAME.FORMAT, NAME the scenario's name, then the kind
+of figure (`_ledger`; none for `plot`), then every option that is not the
+default, in a fixed order: `_v0.8`, `_L2`, the frames (`_rest`, `_u0.3`, ...),
+the style, the extras. No matplotlib here: the CLI plans and checks every
+job before anything is drawn.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import NamedTuple, Sequence
+
+from .errors import FrameError, OptionError
+from .frames import Frame, parse_frames
+from .model import Scenario
+from .numbers import exact
+from .output import check_target
+from .scenario import load, stem_of
+
+#: where figures go when -o is not given; the only output folder a command creates itself
+DEFAULT_FOLDER = "outputs"
+
+
+def frame_suffix(frames: Sequence[Frame]) -> str:
+    """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`."""
+    words = [f.name if f.name in ("rest", "moving") else "u" + exact(f.velocity) for f in frames]
+    name = "_".join(words).replace("rest_moving", "both")  # each frame appears once, so at most one `both`
+    return "" if name == "both" else f"_{name}"
+
+
+def output_name(stem: str, scenario: Scenario, v: float | None, L: float | None, frames: Sequence[Frame],
+                style: str, extras: Sequence[str] = (), kind: str = "") -> str:
+    """The file name (without extension) of a figure: the scenario's name, its kind, then every non-default choice.
+
+    `fig2` for the defaults; `fig2_v0.8`, `fig2_v0.8_L2`, `fig2_rest`, `fig2_print`, `fig2_grid`,
+    `fig2_ledger_v0.8` ... otherwise, so a figure with other options never overwrites the default one, and
+    the same figure asked for in other words (`--frame rest,moving`, `--v` equal to the scenario's) gets the
+    same name. `extras` are the short names of the options that are on, in the command's own order.
+    """
+    name = stem + (f"_{kind}" if kind else "")
+    if v is not None and v != scenario.v:
+        name += f"_v{exact(v)}"
+    if L is not None and L != scenario.L:
+        name += f"_L{exact(L)}"
+    name += frame_suffix(frames)
+    if style != "default":
+        name += f"_{style}"
+    return name + "".join(f"_{short}" for short in extras)
+
+
+def formats_of(spec: str | None, file: Path | None, allowed: Sequence[str], default: str) -> list[str]:
+    """--format: one or more of `allowed`, comma-separated (an empty item is refused), or the extension of -o FILE."""
+    if file is not None and spec is None:
+        spec = file.suffix.lstrip(".").lower()
+        if spec not in allowed:
+            raise OptionError(f"option -o: cannot tell the format of {str(file)!r} from its extension; "
+                              f"name it .{', .'.join(allowed)} or give --format.")
+    spec = default if spec is None else spec
+    formats = [part.strip().lower() for part in spec.split(",")]
+    if any(f not in allowed for f in formats):
+        raise OptionError(f"option --format must be one or more of {', '.join(allowed)}, comma-separated, "
+                          f"got {spec!r}.")
+    formats = list(dict.fromkeys(formats))
+    if file is not None:
+        if len(formats) > 1:
+            raise OptionError(f"option -o names one file, {str(file)!r}, but --format asks for {len(formats)} "
+                              f"formats; give a folder instead.")
+        if file.suffix.lstrip(".").lower() != formats[0]:
+            raise OptionError(f"option -o names {str(file)!r} but --format is {formats[0]}; make them agree.")
+    return formats
+
+
+def destination(output: str | None, count: int, allowed: Sequence[str]) -> tuple[Path | None, Path | None]:
+    """(folder, None) or (None, file) for -o; a file only for one scenario. Says what is wrong in one sentence."""
+    if output is None:
+        return Path(DEFAULT_FOLDER), None
+    if not output.strip():
+        raise OptionError(f"option -o must name a file or folder, got {output!r}.")
+    path = Path(output)
+    if path.is_dir():
+        return path, None
+    looks_like_file = path.suffix.lstrip(".").lower() in allowed and not output.endswith(("/", os.sep))
+    if not looks_like_file:
+        if path.exists():
+            raise OptionError(f"option -o: {output} is a file, not a folder; give a folder or a name ending in "
+                              f".{', .'.join(allowed)}.")
+        if path.is_symlink():
+            raise OptionError(f"the output folder {output} is a symbolic link to {os.readlink(path)}, which does "
+                              f"not exist; create it first.")
+        raise OptionError(f"the output folder {output} does not exist; create it first.")
+    if count > 1:
+        raise OptionError(f"option -o names one file, {output!r}, but {count} scenarios were given; give a folder "
+                          f"instead.")
+    check_target(path)  # the folder exists and is one, a symbolic link leads somewhere
+    return None, path
+
+
+class Job(NamedTuple):
+    """One figure to draw: the name the user gave, the scenario with --v and --L, its frames and its files."""
+
+    name: str
+    scenario: Scenario
+    frames: tuple[Frame, ...]
+    paths: dict  # format -> Path
+
+
+def plan(names: Sequence[str], *, v: float | None, L: float | None, frame: str, fmt: str | None,
+         output: str | None, style: str, extras: Sequence[str] = (), kind: str = "",
+         allowed: Sequence[str], default_format: str) -> list[Job]:
+    """Every figure a command will write, its files named, every input checked, nothing drawn or written yet.
+
+    The same figure asked for twice (`plot fig2 fig2`) is drawn once; two scenarios that would write one
+    file are refused.
+    """
+    folder, file = destination(output, len(set(names)), allowed)
+    formats = formats_of(fmt, file, allowed, default_format)
+    jobs: list[Job] = []
+    for name in names:
+        base = load(name)
+        s = base.with_overrides(v=v, L=L)
+        try:
+            frames = parse_frames(frame, s.v)
+        except FrameError as e:
+            raise OptionError(f"option --frame: {e}") from None
+        stem = output_name(stem_of(name), base, v, L, frames, style, extras, kind)
+        job = Job(name, s, frames, {f: file if file is not None else folder / f"{stem}.{f}" for f in formats})
+        if any(job[1:] == other[1:] for other in jobs):
+            continue
+        for other in jobs:
+            clash = next((path for path in job.paths.values() if path in other.paths.values()), None)
+            if clash is not None:
+                raise OptionError(f"{other.name} and {name} would both be written to {clash}; rename one of the "
+                                  f"files.")
+        jobs.append(job)
+    return jobs
+
+
+def prepare(jobs: Sequence[Job], output: str | None) -> None:
+    """Before anything is drawn: create the default folder (only it), and check every file can be written."""
+    if output is None:
+        try:
+            os.makedirs(DEFAULT_FOLDER, exist_ok=True)
+        except OSError as e:
+            raise OptionError(f"cannot create the output folder {DEFAULT_FOLDER}: "
+                              f"{(e.strerror or str(e)).lower()}.") from None
+    for job in jobs:  # a missing folder, a dangling link, a locked folder (root passes)
+        for path in job.paths.values():
+            check_target(path)
