@@ -3,7 +3,7 @@
 #   make figures                       outputs/NAME.svg and outputs/NAME.pdf for each configs/NAME.yaml
 #   make -j2 figures FORMATS=svg,png   other formats; OUTPUTS=dir another folder
 #   make figures PLOT_OPTIONS="--style print"   any other `sears-paradox plot` options
-#   make readme-figures                the two figures the README shows (outputs/readme/), and the
+#   make readme-figures                the figures the README shows (outputs/readme/), and the
 #                                      matplotlib they were made with (give PYTHON= of the same environment)
 #
 # Each figure is remade when its scenario file or any source file of the package changed.
@@ -35,4 +35,5 @@ $(OUTPUTS)/.stamps:
 readme-figures:
 	@mkdir -p outputs/readme
 	$(SEARS_PARADOX) plot fig1 fig2 -o outputs/readme
+	$(SEARS_PARADOX) ledger fig2 -o outputs/readme/fig2_ledger.svg
 	@$(PYTHON) -c 'import matplotlib; print("matplotlib", matplotlib.__version__)' > outputs/readme/made-with.txt
