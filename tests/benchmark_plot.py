@@ -9,6 +9,8 @@
    engine, no layout. Also against a barer script with the lines and markers only.
 2. Twenty figures (fig2 at twenty speeds, as YAML files): one `plot` call
    against twenty separate `plot` processes.
+3. The ledger figure: `sears-paradox ledger fig2 --format svg` as a whole
+   process against `sears-paradox plot fig2` (target <= 1.2), interleaved.
 It prints the ratios of median wall-clock times (the targets), of the best
 (minimum) wall-clock times and of median CPU times (user + system, which other
 jobs on the machine disturb least), and the size of fig2.svg.
@@ -145,12 +147,16 @@ def main() -> None:
         timed(plot + ["fig2", "-o", "out"], work)
         timed(bare + ["full"], work)
 
-        single = {"tool": [], "bare": [], "bare_lines": []}
-        for _ in range(args.repeat):  # interleaved, so drifts in machine load hit all three alike
+        ledger = command() + ["ledger", "fig2", "--format", "svg", "-o", "out"]
+        timed(ledger, work)
+        single = {"tool": [], "bare": [], "bare_lines": [], "ledger": []}
+        for _ in range(args.repeat):  # interleaved, so drifts in machine load hit all alike
             (work / "out" / "fig2.svg").unlink(missing_ok=True)
+            (work / "out" / "fig2_ledger.svg").unlink(missing_ok=True)
             single["tool"].append(timed(plot + ["fig2", "-o", "out"], work))
             single["bare"].append(timed(bare + ["full"], work))
             single["bare_lines"].append(timed(bare + ["lines"], work))
+            single["ledger"].append(timed(ledger, work))
         size = (work / "out" / "fig2.svg").stat().st_size
 
         configs = []
@@ -187,6 +193,8 @@ def main() -> None:
     print("    " + line("tool", "bare_lines"))
     print("twenty figures, one plot call against twenty plot processes (target <= 0.25):")
     print("    " + line("one_call", "twenty_processes"))
+    print("the ledger figure, sears-paradox ledger fig2 --format svg against sears-paradox plot fig2 (target <= 1.2):")
+    print("    " + line("ledger", "tool"))
     print(f"fig2.svg     : {size} bytes ({size / 1024:.0f} KiB)")
     print(f"(medians of {args.repeat} and {args.batch_repeat} runs; Python {sys.version.split()[0]}, "
           f"{os.cpu_count()} CPUs)")
