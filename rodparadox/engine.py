@@ -33,6 +33,12 @@ from .model import Particle, Scenario
 SIMULTANEITY_TOLERANCE = 1e-10
 #: a scenario with more impacts than this is refused rather than run forever
 MAX_IMPACTS = 1000
+#: two events closer than this (units of L) are one: the rounding of a boost or a displacement, not a segment
+SAME_EVENT = 1e-12
+#: an impact within this (in rapidity) of a turn's last line completes the turn: Fig. 2's A1 and B2 lie exactly on it
+TURN_LINE_ROUNDING = 1e-12
+#: how far rounding moves a difference of terms, relative to the terms: a thousand ulps of double precision
+ROUNDING = 1e3 * 2.2e-16
 
 WORLDLINE_NAMES = ("A", "B", "rod_left", "rod_right")
 
@@ -271,7 +277,7 @@ def _simulate(scenario: Scenario, starts: dict[str, Event]) -> History:
             struck = [(n, e, new_left if e == "left" else new_right) for n, e, _ in found]
             if phase.bounded:
                 for end, a, b in (("left", left1, new_left), ("right", right1, new_right)):
-                    if _distance(a, b) > 1e-12 * L:
+                    if _distance(a, b) > SAME_EVENT * L:
                         ends[end].append(Line(a, b))
 
         # every collision on this rod line, with the rod's dynamical rapidity (rule 6): first the impact(s)
@@ -383,7 +389,7 @@ def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
         phi = 2.0 * psi - arc.phi_start
         if not s * (phi - arc.phi_start) > 0:
             return None
-        rounding = 1e-12
+        rounding = TURN_LINE_ROUNDING
     else:
         here = state.since or state.start
         dx, dt = here.x - arc.centre.x, here.t - arc.centre.t
@@ -395,10 +401,10 @@ def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
         phi = psi + s * a
         # c comes from a difference of terms that may be far larger than L (high speeds, late impacts):
         # its rounding, divided by dc/dphi = sinh(a), bounds phi's
-        rounding = max(1e-12, 1e3 * 2.2e-16 * (abs(terms[0]) + abs(terms[1])) / L / max(math.sinh(a), 1e-300))
-        if not s * (phi - arc.phi_start) > min(1e-13, rounding):
+        rounding = max(TURN_LINE_ROUNDING, ROUNDING * (abs(terms[0]) + abs(terms[1])) / L / max(math.sinh(a), 1e-300))
+        if not s * (phi - arc.phi_start) > min(0.1 * TURN_LINE_ROUNDING, rounding):
             return None
-        if state.since is not None and arc.point(phi).t < state.since.t - 1e-12 * L:
+        if state.since is not None and arc.point(phi).t < state.since.t - SAME_EVENT * L:
             return None
     if s * (phi - arc.phi_end) > rounding:
         return None

@@ -15,11 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .engine import History, Turn
-from .kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
-
-#: two events closer than this (units of L) are one: the rounding of a boost or a displacement, not a segment
-SAME_EVENT = 1e-12
+from .engine import SAME_EVENT, History, Turn
+from .kinematics import Event, Line, Segment, WorldLine
 
 
 def material_worldline(history: History, sigma: float) -> WorldLine:

@@ -37,9 +37,9 @@ from rodparadox.frames import Frame, view
 from rodparadox.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_on_slice,
                                turn_times)
 from rodparadox.rod import material_worldline, now_lines, rod_on_slice as rod_points, turn_interval
-from rodparadox.scenario import Particle, Scenario, Timing, builtin_names, load
+from rodparadox.scenario import builtin_names, load
 
-from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, UNEQUAL_SIMULTANEOUS, history_of, runs_enough, scenarios
+from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
 
 PRESETS = builtin_names()
 
