@@ -247,6 +247,55 @@ class WorldLine:
         return np.concatenate(points)
 
 
+def proper_time_events(worldline: WorldLine, step: float, t_lo: float, t_hi: float) -> list[tuple[float, Event]]:
+    """The events between times t_lo and t_hi where the world-line's proper time is a multiple of `step`.
+
+    Proper time is counted from the world-line's event at t = 0 of its own
+    coordinates: along a straight piece of rapidity r it runs dt / cosh r,
+    along a hyperbolic arc of radius d it is d times the change of rapidity.
+    Returns (proper time, event) pairs in time order; a clock every `step`.
+    """
+    if not (step > 0 and t_hi > t_lo):
+        return []
+    pieces = worldline.pieces(min(t_lo, 0.0), max(t_hi, 0.0))
+    # proper time at the start of each piece, then shift so that tau = 0 at t = 0
+    starts, tau = [], 0.0
+    for piece in pieces:
+        starts.append(tau)
+        tau += _proper_duration(piece)
+    zero = next(start + _proper_duration_to(piece, 0.0) for start, piece in zip(starts, pieces)
+                if piece.start.t <= 0.0 <= piece.end.t)
+    out = []
+    for start, piece in zip(starts, pieces):
+        lo, hi = start - zero, start - zero + _proper_duration(piece)
+        for k in range(math.ceil(lo / step - 1e-12), math.floor(hi / step + 1e-12) + 1):
+            event = _at_proper_time(piece, k * step - lo)
+            if t_lo <= event.t <= t_hi and not (out and out[-1][0] == k * step):
+                out.append((k * step, event))
+    return out
+
+
+def _proper_duration(piece: Segment) -> float:
+    if isinstance(piece, Line):
+        return (piece.end.t - piece.start.t) / math.cosh(piece.rapidity_at_start)
+    return abs(piece.phi_end - piece.phi_start) * piece.radius
+
+
+def _proper_duration_to(piece: Segment, t: float) -> float:
+    """Proper time from the piece's start to its event at time t."""
+    if isinstance(piece, Line):
+        return (t - piece.start.t) / math.cosh(piece.rapidity_at_start)
+    return abs(piece.phi_at_time(t) - piece.phi_start) * piece.radius
+
+
+def _at_proper_time(piece: Segment, tau: float) -> Event:
+    """The event a proper time tau after the piece's start."""
+    if isinstance(piece, Line):
+        r = piece.rapidity_at_start
+        return _along(piece.start, r, tau * math.cosh(r))
+    return piece.point(piece.phi_start + piece.side * tau / piece.radius)
+
+
 def _along(event: Event, rapidity_: float, dt: float) -> Event:
     """The event a time dt after `event` on the straight world-line of the given rapidity."""
     return Event(event.x + math.tanh(rapidity_) * dt, event.t + dt)

@@ -341,3 +341,28 @@ def test_slices_include_every_turns_start_and_end():
         for turn in h.turns:
             lo, hi = turn_interval(turn, eta)
             assert lo in times and hi in times
+
+
+# --- proper time along a world-line (the clocks of --proper-time) -----------------------------------
+
+@pytest.mark.parametrize("v, L", [(0.6, 1.0), (0.9, 2.0)])
+def test_proper_time_marks_on_singles_left_end_by_hand(v, L):
+    """The left end of `single`: at rest (tau = t) until B1 at t_B = L/2v; then on the hyperbola of radius L about B1
+    (tau = t_B + L |phi|, at B1 - L (cosh phi, sinh phi)) to phi = -atanh v; then straight at -v (tau grows by dt/g)."""
+    from rodparadox.kinematics import proper_time_events
+
+    h = run(load("single").with_overrides(v=v, L=L))
+    t_b, a, g = L / (2 * v), math.atanh(v), g_of(v)
+    step = 0.25 * L
+    marks = proper_time_events(h.worldline("rod_left"), step, -L, t_b + 6 * L)
+    assert [tau for tau, _ in marks] == pytest.approx([k * step for k in range(-4, len(marks) - 4)])
+    for tau, e in marks:
+        if tau <= t_b:
+            expected = (-L / 2, tau)
+        elif tau <= t_b + L * a:
+            phi = -(tau - t_b) / L
+            expected = (L / 2 - L * math.cosh(phi), t_b - L * math.sinh(phi))
+        else:
+            dt = (tau - t_b - L * a) * g
+            expected = (L / 2 - L * g - v * dt, t_b + L * g * v + dt)
+        assert (e.x, e.t) == (pytest.approx(expected[0], abs=1e-12 * L), pytest.approx(expected[1], abs=1e-12 * L))
