@@ -39,7 +39,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 from .engine import History
 from .frames import Frame, FrameView, sampling_tolerance, view
 from .kinematics import Event, HyperbolicArc
-from .numbers import MINUS, shown
+from .numbers import MINUS, SCIENTIFIC_ABOVE, shown
 from .styles import FORMATS, STYLES, Ink, Style
 
 #: one panel per frame, lettered (a), (b), ...: at most eight side by side
@@ -49,6 +49,12 @@ PANEL_LETTERS = "abcdefgh"
 ASPECT_RANGE = (0.62, 1.6)
 #: empty margin around the world-lines, as a fraction of the larger side of the data box
 MARGIN = 0.09
+#: of the arrangements of panels into rows, the one with the most to a row whose panels are at least this
+#: fraction of the tallest any arrangement allows, and at least READABLE_PANEL tick labels tall
+ROW_PREFERENCE = 0.55
+READABLE_PANEL = 12.0
+#: a panel's title wraps onto at most this many lines
+TITLE_LINES = 3
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16
 
@@ -260,6 +266,84 @@ class _Label(NamedTuple):
     box_size: tuple[float, float] | None = None  # (width, height) in points, if not measured from `text`
 
 
+def _next_step(step: float) -> float:
+    """The next nice tick step above `step`: 1, 2, 2.5, 5, 10 times a power of ten."""
+    magnitude = 10.0 ** math.floor(math.log10(step) + 1e-9)
+    return next(k * magnitude for k in (2, 2.5, 5, 10, 20) if k * magnitude > step * (1 + 1e-9))
+
+
+class _Metrics:
+    """The sizes, in points, of everything around the panels in a style: bands for titles, ticks, labels, legend."""
+
+    def __init__(self, style: Style, fs: dict[str, float]):
+        self.fs = fs
+        self.tick_len = 6.0 if style.name == "slides" else 3.5
+        self.tick_pad, self.label_pad, self.gap, self.right, self.row_gap = 3.5, 4.0, 6.0, 10.0, 6.0
+        self.label_h = approximate_size("$x_u/L$", fs["label"])[1]  # the tallest axis label
+        self.tick_h = approximate_size("0123456789", fs["tick"])[1]
+        self.tick_gap = 0.6 * fs["tick"]  # the least room between two tick labels
+        self.bottom_axis = self.tick_len + self.tick_pad + self.tick_h + self.label_pad + self.label_h + 6
+        self.title_line = 1.2 * fs["title"]  # matplotlib's line spacing
+        self.title_pad = style.rc["axes.titlepad"] + 8
+        self.least_panel = 6 * fs["tick"]  # below this a panel has no room for its ticks: shrink no further
+        self.gutters: dict[str, float] = {}  # each panel's room on the left
+        self.rights: dict[str, float] = {}  # the room right of each panel, were it last in its row
+
+    def gutter(self, p: _Panel, steps: tuple[float, float], diagram: "_Diagram") -> float:
+        """Room left of a panel for its t tick labels and t axis label, and for half its first x tick label."""
+        x_step, t_step = steps
+        widest = max((approximate_size(diagram._tick_text(value, t_step), self.fs["tick"])[0]
+                      for value in diagram._ticks_at(p.data_box[2], p.data_box[3], t_step)), default=0.0)
+        return max(widest + self.tick_len + self.tick_pad + self.label_pad + self.label_h + 4,
+                   self.overhang(p, x_step, diagram))
+
+    def overhang(self, p: _Panel, x_step: float, diagram: "_Diagram") -> float:
+        """How far an x tick label at the panel's edge can reach beyond it: half the widest, and a little."""
+        return max((approximate_size(diagram._tick_text(value, x_step), self.fs["tick"])[0] / 2 + 2
+                    for value in diagram._ticks_at(p.data_box[0], p.data_box[1], x_step)), default=0.0)
+
+    def row_width(self, row: list[_Panel]) -> float:
+        return self.rights[row[-1].letter] + sum(self.gutters[p.letter] + p.width for p in row) + self.gap * (len(row) - 1)
+
+    def title_band(self, row: list[_Panel]) -> float:
+        return max(len(p.title_lines) for p in row) * self.title_line + self.title_pad
+
+    def top(self, suptitle: str) -> float:
+        return approximate_size(suptitle, self.fs["suptitle"])[1] + 14
+
+    def legend_height(self, rows: int) -> float:
+        return rows * self.fs["legend"] * 1.75 + 6
+
+    def _fits(self, text: str, width: float) -> bool:
+        return approximate_size(text, self.fs["title"])[0] + 6 <= width
+
+    def wrap(self, title: str, width: float) -> list[str]:
+        """A panel's title in lines no wider than `width`: one line, else broken after its colon, then word by word."""
+        if self._fits(title, width):
+            return [title]
+        head, colon, tail = title.partition(": ")
+        if colon and self._fits(head + ":", width):  # the frame on one line, the rod's velocity after it
+            return [head + ":"] + self.wrap(tail, width)
+        lines: list[str] = []
+        for word in title.split(" "):
+            if lines and self._fits(f"{lines[-1]} {word}", width):
+                lines[-1] += f" {word}"
+            else:
+                lines.append(word)
+        return lines
+
+    def narrowest_title(self, title: str) -> float:
+        """The least width in which the title wraps onto at most TITLE_LINES lines."""
+        lo = max(approximate_size(word, self.fs["title"])[0] for word in title.split(" ")) + 6
+        hi = approximate_size(title, self.fs["title"])[0] + 6
+        if len(self.wrap(title, lo)) <= TITLE_LINES:
+            return lo
+        for _ in range(30):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if len(self.wrap(title, mid)) <= TITLE_LINES else (mid, hi)
+        return hi
+
+
 # --- the diagram ---------------------------------------------------------------------------------
 
 class _Panel:
@@ -267,8 +351,10 @@ class _Panel:
 
     def __init__(self, letter: str, view_: FrameView, worldlines: dict[str, np.ndarray], box: list[float], title: str):
         self.letter, self.view, self.worldlines, self.title = letter, view_, worldlines, title
-        self.box = box  # x0, x1, t0, t1: the axes limits, units of L
+        self.data_box = tuple(box)  # x0, x1, t0, t1: the world-lines with their margin, units of L
+        self.box = list(box)  # the axes limits: the data box, widened where the title needs room
         self.width = self.height = 0.0  # points
+        self.title_lines: list[str] = [title]
 
 
 class _Diagram:
@@ -313,50 +399,46 @@ class _Diagram:
 
     # layout ------------------------------------------------------------------------------------------
     def _build(self) -> Figure:
-        """Lay the figure out in points: suptitle, then per panel its title, axes and tick labels, then the legend."""
-        st, fs = self.style, self.fs
-        tick_len = 6.0 if st.name == "slides" else 3.5
-        tick_pad, label_pad, gap, right = 3.5, 4.0, 6.0, 10.0
-        label_h = approximate_size("$x_u/L$", fs["label"])  # the tallest axis label
-        tick_h = approximate_size("0123456789", fs["tick"])[1]
-        bottom_axis = tick_len + tick_pad + tick_h + label_pad + label_h[1] + 6
-        title_h = max(approximate_size(p.title, fs["title"])[1] for p in self.panels) + st.rc["axes.titlepad"] + 8
+        """Lay the figure out in points: suptitle; rows of panels, each with its title, axes and tick labels; legend.
 
-        # one height for all panels, each width from its aspect, each at least as wide as its title
-        steps = [self._tick_step(p.box) for p in self.panels]
-        gutters = []
-        for p, step in zip(self.panels, steps):
-            widest = max(approximate_size(self._tick_text(value, step), fs["tick"])[0]
-                         for value in self._ticks_at(p.box[2], p.box[3], step))
-            gutters.append(widest + tick_len + tick_pad + label_pad + label_h[1] + 4)
-        aspects = [(p.box[1] - p.box[0]) / (p.box[3] - p.box[2]) for p in self.panels]
-        fixed = sum(gutters) + right + gap * (len(self.panels) - 1)
-        height = min(st.panel_height * 72, (st.max_width * 72 - fixed) / sum(aspects))
-        for p, aspect in zip(self.panels, aspects):
-            p.height, p.width = height, height * aspect
-            title_w = approximate_size(p.title, fs["title"])[0] + 6
-            if title_w > p.width:  # pad the box with empty space on both sides, to make room for the title
-                extra = (title_w / height - aspect) * (p.box[3] - p.box[2]) / 2
-                p.box[0] -= extra
-                p.box[1] += extra
-                p.width = title_w
-        width = fixed + sum(p.width for p in self.panels)
+        The panels share one height (equal scales within a panel; one size for
+        all), and fill rows no wider than the style's page. Of the arrangements
+        into rows that fit the page's width and height, the one with the most
+        panels to a row is taken whose panels are at least ROW_PREFERENCE of the
+        tallest any arrangement allows: two panels side by side, eight in three
+        rows. Tick steps are then widened until no two tick labels touch, and
+        the layout redone with them.
+        """
+        st, fs = self.style, self.fs
+        m = _Metrics(st, fs)
+        steps = [(self._tick_step(p.data_box),) * 2 for p in self.panels]  # (x step, t step) of each panel
+        for _ in range(6):  # steps only grow, and each growth is a nice step: this settles in two or three rounds
+            rows, height, width, (legend_rows, legend_cols) = self._arrange(m, steps)
+            readable = [self._readable_steps(p, step, m) for p, step in zip(self.panels, steps)]
+            if readable == steps:
+                break
+            steps = readable
 
         handles, labels = self._legend_entries()
-        legend_rows, legend_cols = self._legend_shape(labels, width)
-        legend_h = legend_rows * fs["legend"] * 1.75 + 6
+        legend_h = m.legend_height(legend_rows)
         suptitle = self._suptitle(width)
-        top = approximate_size(suptitle, fs["suptitle"])[1] + 14
-        fig_h = top + title_h + height + bottom_axis + legend_h
+        top = m.top(suptitle)
+        blocks = [m.title_band(row) + height + m.bottom_axis for row in rows]
+        fig_h = top + sum(blocks) + m.row_gap * (len(rows) - 1) + legend_h
 
         figure = Figure(figsize=(width / 72, fig_h / 72), dpi=72)
-        x = 0.0
-        for p, gutter, step in zip(self.panels, gutters, steps):
-            x += gutter
-            ax = figure.add_axes((x / width, (bottom_axis + legend_h) / fig_h, p.width / width, p.height / fig_h))
-            x += p.width + gap
-            ax.set_gid(f"{p.letter}-axes")
-            self._axes(ax, p, step, tick_len, tick_pad, label_pad)
+        y = fig_h - top
+        for row, block in zip(rows, blocks):
+            y -= block
+            x = (width - m.row_width(row)) / 2
+            for p in row:
+                step = steps[self.panels.index(p)]
+                x += m.gutter(p, step, self)
+                ax = figure.add_axes((x / width, (y + m.bottom_axis) / fig_h, p.width / width, p.height / fig_h))
+                x += p.width + m.gap
+                ax.set_gid(f"{p.letter}-axes")
+                self._axes(ax, p, step, m.tick_len, m.tick_pad, m.label_pad)
+            y -= m.row_gap
         figure.text(0.5, 1 - 7 / fig_h, suptitle, ha="center", va="top", fontsize=fs["suptitle"], gid="title")
         legend = figure.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, (legend_h - 2) / fig_h),
                                ncol=legend_cols, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
@@ -364,6 +446,104 @@ class _Diagram:
                                handler_map={tuple: HandlerTuple(ndivide=1)})  # the rod: strip and line in one
         legend.set_gid("legend")
         return figure
+
+    def _arrange(self, m: "_Metrics", steps: list) -> tuple[list[list[_Panel]], float, float, tuple[int, int]]:
+        """(rows of panels, the panels' height, the figure's width, the legend's rows and columns).
+
+        Every panel's width, box and title lines are set.
+        """
+        st = self.style
+        page_w, page_h = st.max_width * 72, st.max_height * 72
+        panels = self.panels
+        gutters = {p.letter: m.gutter(p, step, self) for p, step in zip(panels, steps)}
+        # right of a row's last panel: its last x tick label's overhang, and a margin
+        rights = {p.letter: max(m.right, m.overhang(p, step[0], self)) for p, step in zip(panels, steps)}
+        aspects = {p.letter: (p.data_box[1] - p.data_box[0]) / (p.data_box[3] - p.data_box[2]) for p in panels}
+        narrowest = {p.letter: m.narrowest_title(p.title) for p in panels}
+
+        def widths(row: list[_Panel], h: float) -> list[float]:
+            return [max(h * aspects[p.letter], narrowest[p.letter]) for p in row]
+
+        def row_width(row: list[_Panel], h: float) -> float:
+            return rights[row[-1].letter] + sum(gutters[p.letter] for p in row) + m.gap * (len(row) - 1) + sum(widths(row, h))
+
+        labels = self._legend_entries()[1]
+        cap = st.panel_height * 72
+
+        def legend(rows: list[list[_Panel]], wide: bool) -> tuple[int, int, float]:
+            """The legend's (rows, columns, width) for an arrangement: as wide as the page, or as its rows at the
+            tallest panels. Fixed before the panels' height is sought, so a lower panel never makes a taller legend."""
+            return self._legend_shape(labels, page_w if wide else min(page_w, max(row_width(row, cap) for row in rows)))
+
+        def figure_width(rows: list[list[_Panel]], wide: bool, h: float) -> float:
+            return min(page_w, max(legend(rows, wide)[2], *(row_width(row, h) for row in rows)))
+
+        def figure_height(rows: list[list[_Panel]], wide: bool, h: float) -> float:
+            width = figure_width(rows, wide, h)
+            bands = sum(max(len(m.wrap(p.title, w)) for p, w in zip(row, widths(row, h))) for row in rows)
+            return (m.top(self._suptitle(width)) + bands * m.title_line + len(rows) * (m.title_pad + h + m.bottom_axis)
+                    + m.row_gap * (len(rows) - 1) + m.legend_height(legend(rows, wide)[0]))
+
+        def tallest(rows: list[list[_Panel]], wide: bool, page_h: float) -> float:
+            """The tallest panels (points) with which every row fits the page's width and the figure its height; 0 if none."""
+            fits = lambda h: all(row_width(row, h) <= page_w for row in rows) and figure_height(rows, wide, h) <= page_h
+            if fits(cap):
+                return cap
+            if not fits(m.least_panel):
+                return 0.0
+            lo, hi = m.least_panel, cap
+            for _ in range(40):  # bisection to a small fraction of a point
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+            return lo
+
+        n = len(panels)
+        # most panels to a row first; for each, a legend as wide as the panels, then one as wide as the page
+        arrangements = [([panels[k:k + columns] for k in range(0, n, columns)], wide)
+                        for columns in range(n, 0, -1) for wide in (False, True)]
+        options = [(rows, wide, tallest(rows, wide, page_h)) for rows, wide in arrangements]
+        best = max(h for *_, h in options)
+        if best > 0.0:
+            enough = max(ROW_PREFERENCE * best, min(best, READABLE_PANEL * self.fs["tick"]))
+            rows, wide, height = next(option for option in options if option[2] >= enough)
+            # the same rows with the narrower legend, if that loses nothing
+            rows, wide, height = max((o for o in options if o[0] == rows), key=lambda o: (o[2], not o[1]))
+        else:  # too many panels for the page's height at this type size (slides): the least tall figure of the page's width
+            options = [(rows, wide, tallest(rows, wide, math.inf)) for rows, wide in arrangements]
+            options = [o for o in options if o[2] > 0.0] or [(arrangements[-1][0], True, m.least_panel)]
+            rows, wide, height = min(options, key=lambda option: figure_height(*option))
+        for row in rows:
+            for p, w in zip(row, widths(row, height)):
+                p.height, p.width = height, w
+                p.box = list(p.data_box)
+                extra = (w / height - aspects[p.letter]) * (p.box[3] - p.box[2]) / 2
+                if extra > 0:  # pad the box with empty space on both sides, to make room for the title
+                    p.box[0] -= extra
+                    p.box[1] += extra
+                p.title_lines = m.wrap(p.title, w)
+        m.gutters, m.rights = gutters, rights
+        return rows, height, figure_width(rows, wide, height), legend(rows, wide)[:2]
+
+    def _readable_steps(self, p: _Panel, steps: tuple[float, float], m: "_Metrics") -> tuple[float, float]:
+        """The least nice steps, from `steps` up, at which no two tick labels of the panel touch: (x step, t step).
+
+        The t labels stand one above the other, so their height sets the t step;
+        the x labels stand side by side, so their width sets the x step, which
+        may be larger (long labels such as \N{MINUS SIGN}40000). Each axis keeps at least two ticks.
+        """
+        scale = p.height / (p.box[3] - p.box[2])  # points per unit of L, both axes
+
+        def grown(step: float, lo: float, hi: float, room) -> float:
+            while step * scale < room(step) and len(self._ticks_at(lo, hi, _next_step(step))) >= 2:
+                step = _next_step(step)
+            return step
+
+        x_step, t_step = steps
+        t_step = grown(t_step, p.box[2], p.box[3], lambda step: m.tick_h + m.tick_gap / 2)
+        x_step = grown(max(x_step, t_step), p.box[0], p.box[1], lambda step: m.tick_gap + max(
+            (approximate_size(self._tick_text(x, step), self.fs["tick"])[0] for x in self._ticks_at(p.box[0], p.box[1], step)),
+            default=0.0))
+        return x_step, t_step
 
     @staticmethod
     def _tick_step(box: list[float]) -> float:
@@ -380,7 +560,9 @@ class _Diagram:
 
     @staticmethod
     def _tick_text(value: float, step: float) -> str:
-        """A tick label with as many decimals as the step has (0.25 -> 2), a real minus sign, no -0."""
+        """A tick label with as many decimals as the step has (0.25 -> 2), a real minus sign, no -0; 2×10⁶ for steps of 10⁵ on."""
+        if step >= SCIENTIFIC_ABOVE / 10:
+            return shown(value, 3)
         decimals = next(d for d in range(12) if abs(round(step, d) - step) <= 1e-9 * step)
         text = f"{value:.{decimals}f}"
         if float(text) == 0:
@@ -436,36 +618,39 @@ class _Diagram:
             entries.append((self._line_handle(st.hyperbola), "calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}"))
         return [h for h, _ in entries], [label for _, label in entries]
 
-    def _legend_shape(self, labels: list[str], width: float) -> tuple[int, int]:
-        """(rows, columns) of the widest legend that fits; columns filled as matplotlib does (array_split)."""
+    def _legend_entry_widths(self, labels: list[str]) -> np.ndarray:
         fs = self.fs["legend"]
         # handle 3.2 em, gap 0.6 em, and 8 % for the renderers' own text widths (hinting)
-        entry = np.array([approximate_size(label, fs)[0] * 1.08 + (3.2 + 0.6) * fs for label in labels])
+        return np.array([approximate_size(label, fs)[0] * 1.08 + (3.2 + 0.6) * fs for label in labels])
+
+    def _legend_shape(self, labels: list[str], width: float) -> tuple[int, int, float]:
+        """(rows, columns, width needed) of the widest legend that fits; columns filled as matplotlib does (array_split)."""
+        entry = self._legend_entry_widths(labels)
         for cols in range(len(labels), 0, -1):
             columns = [c for c in np.array_split(entry, cols) if len(c)]
-            if sum(c.max() for c in columns) + 1.6 * fs * (len(columns) - 1) <= width - 16:
-                return math.ceil(len(labels) / cols), cols
-        return len(labels), 1
+            needed = sum(c.max() for c in columns) + 1.6 * self.fs["legend"] * (len(columns) - 1) + 16
+            if needed <= width or cols == 1:
+                return math.ceil(len(labels) / cols), cols, needed
 
     # one panel -------------------------------------------------------------------------------------
-    def _axes(self, ax, p: _Panel, step: float, tick_len: float, tick_pad: float, label_pad: float) -> None:
+    def _axes(self, ax, p: _Panel, steps: tuple[float, float], tick_len: float, tick_pad: float, label_pad: float) -> None:
         st, fs, o = self.style, self.fs, self.options
         x0, x1, t0, t1 = p.box
-        xt, tt = self._ticks_at(x0, x1, step), self._ticks_at(t0, t1, step)
+        x_step, step = steps  # the t step is the finer: the grid of the hyperbolae
+        xt, tt = self._ticks_at(x0, x1, x_step), self._ticks_at(t0, t1, step)
         xname, tname = coordinate_names(p.view.frame)
         ax.set_xlim(x0, x1)
         ax.set_ylim(t0, t1)
         ax.set_aspect("equal", adjustable="box")
         ax.xaxis.set_major_locator(FixedLocator(xt))
         ax.yaxis.set_major_locator(FixedLocator(tt))
-        formatter = FuncFormatter(lambda value, _pos: self._tick_text(value, step))
-        ax.xaxis.set_major_formatter(formatter)
-        ax.yaxis.set_major_formatter(formatter)
+        ax.xaxis.set_major_formatter(FuncFormatter(lambda value, _pos: self._tick_text(value, x_step)))
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda value, _pos: self._tick_text(value, step)))
         ax.tick_params(labelsize=fs["tick"], length=tick_len, pad=tick_pad)
         italic = "normal" if "$" in xname else "italic"
         ax.set_xlabel(axis_label(xname), fontsize=fs["label"], fontstyle=italic, labelpad=label_pad)
         ax.set_ylabel(axis_label(tname), fontsize=fs["label"], fontstyle=italic, labelpad=label_pad)
-        ax.set_title(p.title, fontsize=fs["title"], y=1.0)  # y given: no search for tick labels above the axes
+        ax.set_title("\n".join(p.title_lines), fontsize=fs["title"], y=1.0)  # y given: no search for tick labels above the axes
         if o.grid:
             ax.grid(True, color=st.grid.colour, linewidth=st.grid.width, linestyle=st.grid.dashes, zorder=0)
             ax.set_axisbelow(True)

@@ -43,7 +43,8 @@ class Style(NamedTuple):
     about: str
     font_size: float  # points: tick labels and legend; labels and titles are scaled from it
     panel_height: float  # inches, the largest a panel is drawn
-    max_width: float  # inches, the widest a figure is drawn
+    max_width: float  # inches, the widest a figure is drawn: the page's (or slide's) text width
+    max_height: float  # inches, the tallest a figure is drawn: the page's (or slide's) text height
     png_dpi: int
     rod: Ink
     sheet: str  # fill of the rod's world-sheet
@@ -84,7 +85,7 @@ _SERIF = {"font.family": ("STIXGeneral", "DejaVu Serif"), "mathtext.fontset": "s
 _DEFAULT = Style(
     name="default",
     about="colour (Okabe-Ito, colour-blind safe), sans-serif, 7 in wide: for the screen and colour print",
-    font_size=9.0, panel_height=3.4, max_width=7.0, png_dpi=200,
+    font_size=9.0, panel_height=3.4, max_width=7.0, max_height=9.0, png_dpi=200,
     rod=Ink(_BLUE, 1.7), sheet="#d4e6f3",
     particles=_frozen({"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, PARTICLE_DASH)}),
     impact_colour="#000000", impact_size=5.0,
@@ -99,7 +100,7 @@ _DEFAULT = Style(
 _PRINT = Style(
     name="print",
     about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
-    font_size=8.5, panel_height=3.2, max_width=7.0, png_dpi=600,
+    font_size=8.5, panel_height=3.2, max_width=7.0, max_height=9.0, png_dpi=600,
     rod=Ink("#000000", 1.5), sheet="#e4e4e4",
     particles=_frozen({"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PARTICLE_DASH)}),
     impact_colour="#000000", impact_size=4.5,
@@ -116,7 +117,7 @@ _PRINT = Style(
 _SLIDES = _DEFAULT._replace(
     name="slides",
     about="colour, large type and thick lines on a 13.3 in (16:9) canvas: for projecting",
-    font_size=17.0, panel_height=4.7, max_width=13.33, png_dpi=150,
+    font_size=17.0, panel_height=4.7, max_width=13.33, max_height=7.5, png_dpi=150,
     rod=_DEFAULT.rod._replace(width=3.2),
     particles=_frozen({name: ink._replace(width=2.6) for name, ink in _DEFAULT.particles.items()}),
     impact_size=10.0,

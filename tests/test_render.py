@@ -69,6 +69,11 @@ def panels(fig):
     return {ax.get_gid()[0]: ax for ax in fig.axes}
 
 
+def title_of(ax) -> str:
+    """A panel's title as read: the lines it wraps onto joined by spaces."""
+    return ax.get_title().replace("\n", " ")
+
+
 # --- what is drawn ------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("name", ["fig1", "fig2"])
@@ -238,8 +243,8 @@ def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_
         assert unit_x[0, 0] == pytest.approx(unit_t[0, 1], rel=1e-9) and unit_x[0, 1] == unit_t[0, 0] == 0
     assert (a.get_xlabel(), a.get_ylabel()) == ("x/L", "t/L")
     assert (b.get_xlabel(), b.get_ylabel()) == ("x\N{PRIME}/L", "t\N{PRIME}/L")
-    assert a.get_title() == "(a) frame S: rod at rest before and after"
-    assert b.get_title() == "(b) frame S\N{PRIME}: rod at +0.6 before and after"
+    assert title_of(a) == "(a) frame S: rod at rest before and after"
+    assert title_of(b) == "(b) frame S\N{PRIME}: rod at +0.6 before and after"
     title = artist(fig, "title").get_text()
     assert title.startswith("fig2, $v = 0.6$")
 
@@ -249,7 +254,7 @@ def test_a_frame_of_any_velocity_gets_its_own_panel():
     h = history("fig2", 0.6)
     fig = render.draw(h, (Frame("rest", 0.0), Frame("u=0.3", 0.3)))
     c = panels(fig)["b"]
-    assert c.get_title() == "(b) frame u = 0.3: rod at \N{MINUS SIGN}0.3 before and after"
+    assert title_of(c) == "(b) frame u = 0.3: rod at \N{MINUS SIGN}0.3 before and after"
     assert c.get_xlabel() == "$x_u/L$"
     events = {e.impact.label: e for e in view(h, Frame("u=0.3", 0.3)).events}
     np.testing.assert_allclose(xy(artist(fig, "b-impact-B2")), [[events["B2"].x, events["B2"].t]])
@@ -265,8 +270,8 @@ def test_a_frame_of_speed_close_to_1_and_v_close_to_1_are_never_rounded_to_1_and
     h = history("fig2", v)
     fig = render.draw(h, (Frame("rest", 0.0), Frame("u=-0", -0.0), Frame("u=-0.9999999", -0.9999999)))
     assert artist(fig, "title").get_text().startswith("fig2, $v = 0.9999999$")
-    assert panels(fig)["b"].get_title() == "(b) frame u = 0: rod at rest before and after"
-    assert panels(fig)["c"].get_title() == "(c) frame u = \N{MINUS SIGN}0.9999999: rod at +0.9999999 before and after"
+    assert title_of(panels(fig)["b"]) == "(b) frame u = 0: rod at rest before and after"
+    assert title_of(panels(fig)["c"]) == "(c) frame u = \N{MINUS SIGN}0.9999999: rod at +0.9999999 before and after"
     texts = [t.get_text() for t in fig.findobj(matplotlib.text.Text)]
     texts += [fmt(tick, None) for ax in fig.axes for axis in (ax.xaxis, ax.yaxis)
               for fmt in [axis.get_major_formatter()] for tick in axis.get_majorticklocs()]
@@ -336,7 +341,7 @@ def test_tiny_speeds_are_drawn_as_powers_of_ten_never_as_e_notation(tmp_path, st
     h = _scenario_file(tmp_path, "tiny", 1.0e-6)
     fig = render.draw(h, paper_frames(h.scenario.v), style)
     assert artist(fig, "title").get_text().startswith("tiny, $v = 1{\\times}10^{-6}$")
-    assert panels(fig)["b"].get_title() == "(b) frame S\N{PRIME}: rod at +1\N{MULTIPLICATION SIGN}10⁻⁶ before and after"
+    assert title_of(panels(fig)["b"]) == "(b) frame S\N{PRIME}: rod at +1\N{MULTIPLICATION SIGN}10⁻⁶ before and after"
     assert not [t for t in _drawn_texts(fig) if re.search(r"\de[-+\N{MINUS SIGN}]?\d", t)]
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a glyph the fonts lack would warn
@@ -424,6 +429,70 @@ def test_labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_f
     except ScenarioError:
         pytest.skip(f"{name} is refused at v = {v}")
     assert _collisions(figure(name, v, style), style) == []
+
+
+#: frames for 1 to 8 panels: S, S', then frames on either side of both
+LAYOUT_FRAMES = ("rest", "moving", 0.3, 0.9, -0.5, 0.6, -0.9, 0.99)
+
+
+def frames_of(specs, v: float) -> list[Frame]:
+    named = {"rest": Frame("rest", 0.0), "moving": Frame("moving", -v)}
+    return [named[f] if f in named else Frame(f"u={f}", f) for f in specs]
+
+
+def _outer_texts(fig, renderer) -> list[tuple[str, object]]:
+    """Every drawn text outside the panels' insides, with its box: tick labels, axis labels, titles, legend."""
+    out = []
+    for ax in fig.axes:
+        letter = ax.get_gid()[0]
+        for axis, name in ((ax.xaxis, "x"), (ax.yaxis, "t")):
+            for k, tick in enumerate(axis.get_major_ticks()):
+                if tick.label1.get_visible() and tick.label1.get_text():
+                    out.append((f"{letter}-{name}tick{k}:{tick.label1.get_text()}", tick.label1.get_window_extent(renderer)))
+            out.append((f"{letter}-{name}label", axis.label.get_window_extent(renderer)))
+        out.append((f"{letter}-title", ax.title.get_window_extent(renderer)))
+    for text in fig.texts:
+        out.append((text.get_gid() or text.get_text(), text.get_window_extent(renderer)))
+    for legend in fig.legends:
+        out += [(f"legend:{t.get_text()}", t.get_window_extent(renderer)) for t in legend.get_texts()]
+    return out
+
+
+def _layout_problems(fig, style) -> list:
+    """Outer texts that overlap each other or another panel, or leave the figure; panels that overlap."""
+    renderer = _renderer(fig, style)
+    problems = []
+    with render.style_context(style):
+        texts = _outer_texts(fig, renderer)
+        axes = [(ax.get_gid()[0], ax.get_window_extent(renderer)) for ax in fig.axes]
+        for i, (one, box) in enumerate(texts):
+            problems += [(one, other) for other, box2 in texts[i + 1:] if box.overlaps(box2)]
+            problems += [(one, f"panel {letter}") for letter, abox in axes if letter != one[0] and box.overlaps(abox)]
+            if box.x0 < -0.5 or box.y0 < -0.5 or box.x1 > fig.bbox.x1 + 0.5 or box.y1 > fig.bbox.y1 + 0.5:
+                problems.append((one, "outside the figure"))
+        for i, (one, box) in enumerate(axes):
+            problems += [(one, other) for other, box2 in axes[i + 1:] if box.overlaps(box2)]
+    return problems
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("count", range(1, 9))
+@pytest.mark.parametrize("name, v", [("fig2", 0.6), ("single", 0.95), ("fig2", 0.9999999)])
+def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v, count, style):
+    """Issue 6.2: --frame both,0.3,0.9 was 14.5 in wide, 8 panels 30 in; x' ticks ran together at v = 0.9999999."""
+    h = history(name, v)
+    fig = render.draw(h, frames_of(LAYOUT_FRAMES[:count], v), style)
+    width, height = fig.get_size_inches()
+    page = STYLES[style]
+    assert width <= page.max_width + 1e-9
+    if style != "slides" or count <= 3:  # at 17 pt, four panels or more may make a slide taller than 16:9
+        assert height <= page.max_height + 1e-9
+    assert _layout_problems(fig, style) == []
+    for ax in fig.axes:  # every panel keeps at least two ticks on each axis, at equal scales
+        assert len(ax.get_xticks()) >= 2 and len(ax.get_yticks()) >= 2
+        box = ax.get_window_extent(_renderer(fig, style))
+        (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
+        assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-3)
 
 
 @pytest.mark.parametrize("v", SPEEDS)
