@@ -13,7 +13,8 @@ from rodparadox.styles import FORMATS, STYLE_NAMES
 
 from .common import L_option, emit, quiet_option, reports_errors, run_scenario, v_option
 
-_EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"))
+_EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
+           ("rod_now", "now"), ("proper_time", "clocks"))
 
 
 @click.command()
@@ -34,12 +35,19 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
 @click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
 @click.option("--grid", is_flag=True, help="Draw a grid at the ticks.")
+@click.option("--rod-lines", "rod_lines", type=click.IntRange(0, 50), default=0, metavar="N",
+              help="Draw N material world-lines inside the rod (0 to 50), so the rigid response is seen flowing "
+                   "through it.")
+@click.option("--rod-now", is_flag=True, help="Draw the rod's own lines of simultaneity: each turn's fan through "
+                                               "its pivot, and lines between turns.")
+@click.option("--proper-time", is_flag=True, help="Draw clock ticks of equal proper time along every particle and "
+                                                   "rod end.")
 @quiet_option
 @click.option("--verbose", is_flag=True, hidden=True, help="Accepted and ignored: every path is printed anyway.")
 @reports_errors
 def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, fmt: str | None,
          output: str | None, style: str, other_axes: bool, light_cones: bool, hyperbolae: bool, grid: bool,
-         quiet: bool, verbose: bool) -> None:
+         rod_lines: int, rod_now: bool, proper_time: bool, quiet: bool, verbose: bool) -> None:
     """Draw Minkowski diagrams of each SCENARIO: both frames side by side (the paper's Figs. 1 and 2).
 
     Writes OUTPUT/NAME.FORMAT, NAME being the scenario's name followed by every
@@ -52,9 +60,11 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     """
     from rodparadox import jobs as planned
 
-    extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid}
+    extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
+              "rod_now": rod_now, "proper_time": proper_time}
     jobs = planned.plan(scenarios, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
-                        extras=[short for key, short in _EXTRAS if extras[key]], allowed=FORMATS,
+                        extras=[short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else []),
+                        allowed=FORMATS,
                         default_format="svg")
     histories = [run_scenario(job.scenario, job.name) for job in jobs]
     planned.prepare(jobs, output)
@@ -62,7 +72,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from rodparadox import render  # matplotlib: only now, after every input has been checked
     from rodparadox.output import write_atomic
 
-    options = render.Options(**extras)
+    options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
     figures = [render.draw(history, job.frames, style, options) for history, job in zip(histories, jobs)]
     for figure, job in zip(figures, jobs):

@@ -36,6 +36,7 @@ from matplotlib.patches import Patch, Polygon
 from matplotlib.textpath import text_to_path
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
+from . import kinematics, rod
 from .engine import History
 from .frames import Frame, FrameView, sampling_tolerance, view
 from .kinematics import Event, HyperbolicArc
@@ -73,6 +74,9 @@ class Options(NamedTuple):
     light_cones: bool = False  # the light cone of every impact
     hyperbolae: bool = False  # calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin
     grid: bool = False
+    rod_lines: int = 0  # this many interior material world-lines of the rod
+    rod_now: bool = False  # the rod's own lines of simultaneity: each turn's fan, and lines between turns
+    proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end
 
 
 @contextmanager
@@ -368,6 +372,7 @@ class _Diagram:
         self._widest_line = max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
                                                       style.moving_simultaneity, style.other_axes, style.light_cone,
                                                       style.hyperbola))
+        self.clock_step = rod.clock_step(history)
         self.panels = [self._panel(letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
         self.figure = self._build()
 
@@ -614,6 +619,14 @@ class _Diagram:
             entries.append((self._line_handle(st.other_axes), "axes of the other frame"))
         if o.light_cones:
             entries.append((self._line_handle(st.light_cone), "light cone of an impact"))
+        if o.rod_lines:
+            entries.append((self._line_handle(st.rod_interior), "material points inside the rod"))
+        if o.rod_now:
+            entries.append((self._line_handle(st.rod_now), "the rod's own lines of simultaneity"))
+        if o.proper_time:
+            entries.append((Line2D([], [], linestyle="none", marker="o", markersize=st.clock_size,
+                                   markerfacecolor="white", markeredgecolor=st.rod.colour, markeredgewidth=0.8),
+                            f"proper time: a tick every {shown(self.clock_step / self.L, 4)} L"))
         if o.hyperbolae:
             entries.append((self._line_handle(st.hyperbola), "calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}"))
         return [h for h, _ in entries], [label for _, label in entries]
@@ -665,6 +678,7 @@ class _Diagram:
         # add_artist, not fill: the limits are fixed, and fill would walk every vertex to update them
         ax.add_artist(Polygon(np.concatenate([left, right[::-1]]), closed=True, facecolor=st.sheet, edgecolor="none",
                               zorder=1, gid=f"{letter}-sheet"))
+        guides += self._interior(ax, p)
         for name in ("rod_left", "rod_right"):
             points = p.worldlines[name]
             ax.plot(points[:, 0], points[:, 1], color=st.rod.colour, linewidth=st.rod.width,
@@ -760,6 +774,44 @@ class _Diagram:
                                      180.0 if name == "A" else 0.0, st.particles[name].colour, fs["particle"],
                                      italic=True))
         self._place(ax, p, labels, obstacles, guides)
+
+    def _interior(self, ax, p: _Panel) -> list[np.ndarray]:
+        """The inside of the rod (README, "Inside the rod"): material world-lines, the rod's own lines of
+        simultaneity, and clock ticks of proper time on every world-line, as the options ask. Returns the lines
+        drawn, which labels may cross."""
+        st, o, L = self.style, self.options, self.L
+        letter, eta = p.letter, p.view.frame.rapidity
+        t_lo, t_hi = p.view.t_range
+        drawn: list[np.ndarray] = []
+        if o.rod_lines:
+            tolerance = sampling_tolerance(self.history)
+            for k, (sigma, points) in enumerate(rod.material_lines(self.history, eta, o.rod_lines, t_lo, t_hi,
+                                                                    tolerance), start=1):
+                points = points / L
+                ax.plot(points[:, 0], points[:, 1], color=st.rod_interior.colour, linewidth=st.rod_interior.width,
+                        linestyle=st.rod_interior.dashes, zorder=3, gid=f"{letter}-rod-line-{k}")
+                drawn.append(points)
+        if o.rod_now:
+            lines = [(a.boosted(eta), b.boosted(eta)) for a, b in rod.now_lines(self.history)]
+            for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
+                segment = np.array([[a.x, a.t], [b.x, b.t]]) / L
+                ax.plot(segment[:, 0], segment[:, 1], color=st.rod_now.colour, linewidth=st.rod_now.width,
+                        linestyle=st.rod_now.dashes, zorder=3.5, gid=f"{letter}-rod-now-{k}")
+                drawn.append(segment)
+        if o.proper_time:
+            # the same events in every panel: counted in S (tau = 0 at t = 0 there), then boosted
+            x0, x1, t0, t1 = (value * L for value in p.box)
+            corners = [Event(x, t).boosted(-eta).t for x in (x0, x1) for t in (t0, t1)]
+            for name, worldline in self.history.worldlines:
+                ink = st.rod if name.startswith("rod_") else st.particles[name]
+                marks = [e.boosted(eta) for _, e in kinematics.proper_time_events(
+                    worldline, self.clock_step, min(corners), max(corners))]
+                # within the frame's time window, where the world-lines are drawn
+                marks = np.array([[e.x, e.t] for e in marks if t_lo <= e.t <= t_hi and x0 <= e.x <= x1]).reshape(-1, 2) / L
+                ax.plot(marks[:, 0], marks[:, 1], linestyle="none", marker="o", markersize=st.clock_size,
+                        markerfacecolor="white", markeredgecolor=ink.colour, markeredgewidth=0.8, zorder=6,
+                        gid=f"{letter}-clock-{name}")
+        return drawn
 
     def _hyperbolae(self, box: list[float], step: float) -> list[np.ndarray]:
         """t^2 - x^2 = +-k^2 about the shared origin, k a multiple of the tick step, sampled within 1e-4 L."""

@@ -118,6 +118,8 @@ def now_lines(history: History, per_turn: int = 4, between: int = 2) -> list[tup
             nxt = turns[k + 1]
             next_line = across(nxt.pivot, nxt.pivot_end, nxt.rapidity_from)
             gap = next_line[0].time_in(turn.rapidity_stop) - end_line[0].time_in(turn.rapidity_stop)
+            if gap <= SAME_EVENT * L:
+                continue  # the next turn starts on the line this one stopped on (a stopped turn, or Fig. 2's A1)
             for j in range(1, between + 1):
                 tau = j * gap / (between + 1)
                 lines.append((_later(end_line[0], turn.rapidity_stop, tau), _later(end_line[1], turn.rapidity_stop, tau)))
@@ -130,3 +132,25 @@ def now_lines(history: History, per_turn: int = 4, between: int = 2) -> list[tup
 def _later(event: Event, rapidity: float, proper_time: float) -> Event:
     """The event a proper time later on the straight world-line of the given rapidity through `event`."""
     return Event(event.x + proper_time * math.sinh(rapidity), event.t + proper_time * math.cosh(rapidity))
+
+
+def material_lines(history: History, frame_rapidity: float, count: int, t_lo: float, t_hi: float,
+                   tolerance: float) -> list[tuple[float, np.ndarray]]:
+    """`count` interior material points, evenly spaced (sigma = k L/(count + 1)), as (sigma, (n, 2) points of
+    [x, t]) in the frame's coordinates from t_lo to t_hi, every kink included, arcs within `tolerance`."""
+    L = history.scenario.L
+    out = []
+    for k in range(1, count + 1):
+        sigma = k * L / (count + 1)
+        out.append((sigma, material_worldline(history, sigma).boosted(frame_rapidity).sample(t_lo, t_hi, tolerance)))
+    return out
+
+
+def clock_step(history: History, ticks: int = 8) -> float:
+    """A round proper-time step (1, 2, 2.5 or 5 times a power of ten, in units of L) giving about `ticks` clock ticks
+    over the impacts' span in S: the same step in every panel, as proper time is the same in every frame."""
+    L = history.scenario.L
+    times = [i.event.t for i in history.impacts] + [0.0]
+    raw = max(max(times) - min(times), L) * 1.5 / ticks / L
+    magnitude = 10.0 ** math.floor(math.log10(raw))
+    return L * next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))

@@ -57,6 +57,9 @@ class Style(NamedTuple):
     light_cone: Ink
     hyperbola: Ink
     grid: Ink
+    rod_interior: Ink  # --rod-lines: material world-lines inside the rod
+    rod_now: Ink  # --rod-now: the rod's own lines of simultaneity, drawn across the rod only
+    clock_size: float  # --proper-time: diameter of a clock tick (a hollow circle in the world-line's colour), points
     rc: Mapping[str, Any]  # rcParams set while drawing and saving
 
 
@@ -95,6 +98,9 @@ _DEFAULT = Style(
     light_cone=Ink(_SKY, 0.9, CONE_SHORT_DASH),
     hyperbola=Ink("#9a9a9a", 0.6),
     grid=Ink("#e3e3e3", 0.5),
+    rod_interior=Ink(_BLUE, 0.55),
+    rod_now=Ink("#3d3d3d", 0.75),
+    clock_size=3.2,
     rc=_frozen({**_COMMON_RC, **_SANS}),
 )
 _PRINT = Style(
@@ -110,6 +116,9 @@ _PRINT = Style(
     light_cone=Ink("#555555", 0.6, CONE_SHORT_DASH),
     hyperbola=Ink("#8c8c8c", 0.45),
     grid=Ink("#e6e6e6", 0.4),
+    rod_interior=Ink("#9a9a9a", 0.4),  # grey, behind: the rod's own lines of simultaneity are the black ones
+    rod_now=Ink("#000000", 0.55),
+    clock_size=3.0,
     rc=_frozen({**_COMMON_RC, **_SERIF}),
 )
 
@@ -127,6 +136,9 @@ _SLIDES = _DEFAULT._replace(
     light_cone=_DEFAULT.light_cone._replace(width=1.6),
     hyperbola=_DEFAULT.hyperbola._replace(width=1.1),
     grid=_DEFAULT.grid._replace(width=0.9),
+    rod_interior=_DEFAULT.rod_interior._replace(width=1.1),
+    rod_now=_DEFAULT.rod_now._replace(width=1.4),
+    clock_size=6.0,
     rc=_frozen({**_DEFAULT.rc, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
                 "xtick.major.size": 6.0, "ytick.major.size": 6.0}),
 )
