@@ -54,6 +54,8 @@ MARGIN = 0.09
 #: fraction of the tallest any arrangement allows, and at least READABLE_PANEL tick labels tall
 ROW_PREFERENCE = 0.55
 READABLE_PANEL = 12.0
+#: an impact's label sits within this many points of its marker's edge, or a thin leader line ties it to the marker
+LABEL_REACH = 12.0
 #: a panel's title wraps onto at most this many lines
 TITLE_LINES = 3
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
@@ -920,6 +922,23 @@ class _Diagram:
                     fontsize=label.size, fontstyle="italic" if label.italic else "normal", color=label.colour,
                     zorder=8, gid=label.gid,
                     bbox=dict(boxstyle="square,pad=0.1", facecolor="white", edgecolor="none") if ground else None)
+            if label.avoid_radius and cost[k] != never:
+                leader = self._leader(anchors[0], (bx[k], by[k], bx[k] + w, by[k] + h), label.avoid_radius - 1.0)
+                if leader is not None:  # a label that could not sit close is tied to its marker
+                    ax.plot(x0 + leader[:, 0] / sx, t0 + leader[:, 1] / st_, color=label.colour,
+                            linewidth=0.6 * label.size / self.fs["impact"] * self.style.font_size / 9.0,
+                            linestyle="solid", zorder=6.5, gid=label.gid.replace("-label-", "-leader-"))
+                    hard = np.concatenate([hard, leader.reshape(1, 4)])
+
+    @staticmethod
+    def _leader(centre: np.ndarray, text_box: tuple[float, float, float, float], radius: float) -> np.ndarray | None:
+        """A leader (points, 2 x 2) from the marker's edge to the nearest point of the label's box, if farther than LABEL_REACH."""
+        nearest = np.array([min(max(centre[0], text_box[0]), text_box[2]), min(max(centre[1], text_box[1]), text_box[3])])
+        distance = float(np.hypot(*(nearest - centre)))
+        if distance - radius <= LABEL_REACH:
+            return None
+        start = centre + (nearest - centre) * (radius / distance)
+        return np.array([start, nearest])
 
     @staticmethod
     def _marker_box(centre, radius: float):

@@ -401,6 +401,8 @@ def _collisions(fig, style) -> list[tuple[str, str]]:
             for text in ax.texts:
                 box = text.get_window_extent(renderer)
                 for line in ax.lines:
+                    if line.get_gid() == (text.get_gid() or "").replace("-label-", "-leader-"):
+                        continue  # a label's own leader line ends at it
                     if line.get_linestyle() == "None":
                         centre = line.get_transform().transform(xy(line))[0]
                         if box.contains(*centre):
@@ -493,6 +495,50 @@ def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v,
         box = ax.get_window_extent(_renderer(fig, style))
         (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
         assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-3)
+
+
+def _far_labels(fig, style) -> list:
+    """Impact labels farther than LABEL_REACH (+1 pt for glyph metrics) from their marker's edge without a leader
+    from that marker's edge to the label's box; leaders that do not."""
+    renderer = _renderer(fig, style)
+    radius = STYLES[style].impact_size / 2
+    problems = []
+    with render.style_context(style):
+        for ax in fig.axes:
+            lines = {line.get_gid(): line for line in ax.lines}
+            for text in ax.texts:
+                gid = text.get_gid()
+                if "-impact-label-" not in gid:
+                    continue
+                centre = ax.transData.transform(xy(lines[gid.replace("-label-", "-")]))[0]
+                box = text.get_window_extent(renderer)
+                nearest = np.clip(centre, [box.x0, box.y0], [box.x1, box.y1])
+                gap = float(np.hypot(*(nearest - centre))) - radius
+                leader = lines.get(gid.replace("-label-", "-leader-"))
+                if leader is None:
+                    if gap > render.LABEL_REACH + 1.0:
+                        problems.append((gid, round(gap, 1)))
+                    continue
+                ends = ax.transData.transform(xy(leader))
+                at_marker = abs(np.hypot(*(ends[0] - centre)) - radius) <= 1.5
+                at_label = np.hypot(*(ends[1] - np.clip(ends[1], [box.x0, box.y0], [box.x1, box.y1]))) <= 2.0
+                if not (at_marker and at_label):
+                    problems.append((gid, "leader", at_marker, at_label))
+    return problems
+
+
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("v", (*SPEEDS, 0.9999999))
+@pytest.mark.parametrize("name", builtin_names())
+def test_every_impact_label_sits_by_its_marker_or_is_tied_to_it(name, v, style):
+    """Issue 6.3: with --frame both,0.3,0.9 panel (c)'s B1 sat 1.2 L from its dot; at v = 0.95 Fig. 2(b)'s B2 45 pt away."""
+    try:
+        h = history(name, v)
+    except ScenarioError:
+        pytest.skip(f"{name} is refused at v = {v}")
+    for specs in (("rest", "moving"), ("rest", "moving", 0.3, 0.9)):
+        fig = render.draw(h, frames_of(specs, v), style)
+        assert _far_labels(fig, style) == [], specs
 
 
 @pytest.mark.parametrize("v", SPEEDS)
