@@ -475,11 +475,15 @@ class _Diagram:
 
         labels = self._legend_entries()[1]
         cap = st.panel_height * 72
+        shapes: dict = {}  # legend shapes by arrangement, each sought once
 
         def legend(rows: list[list[_Panel]], wide: bool) -> tuple[int, int, float]:
             """The legend's (rows, columns, width) for an arrangement: as wide as the page, or as its rows at the
             tallest panels. Fixed before the panels' height is sought, so a lower panel never makes a taller legend."""
-            return self._legend_shape(labels, page_w if wide else min(page_w, max(row_width(row, cap) for row in rows)))
+            key = (tuple(len(row) for row in rows), wide)  # panels to each row: the arrangement
+            if key not in shapes:
+                shapes[key] = self._legend_shape(labels, page_w if wide else min(page_w, max(row_width(row, cap) for row in rows)))
+            return shapes[key]
 
         def figure_width(rows: list[list[_Panel]], wide: bool, h: float) -> float:
             return min(page_w, max(legend(rows, wide)[2], *(row_width(row, h) for row in rows)))
@@ -498,7 +502,7 @@ class _Diagram:
             if not fits(m.least_panel):
                 return 0.0
             lo, hi = m.least_panel, cap
-            for _ in range(40):  # bisection to a small fraction of a point
+            for _ in range(24):  # bisection to a small fraction of a point
                 mid = 0.5 * (lo + hi)
                 lo, hi = (mid, hi) if fits(mid) else (lo, mid)
             return lo
