@@ -320,8 +320,12 @@ class _Metrics:
     def legend_height(self, rows: int) -> float:
         return rows * self.fs["legend"] * 1.75 + 6
 
+    def one_line(self, title: str) -> float:
+        """The width a panel needs for its title on one line."""
+        return approximate_size(title, self.fs["title"])[0] + 6
+
     def _fits(self, text: str, width: float) -> bool:
-        return approximate_size(text, self.fs["title"])[0] + 6 <= width
+        return self.one_line(text) <= width
 
     def wrap(self, title: str, width: float) -> list[str]:
         """A panel's title in lines no wider than `width`: one line, else broken after its colon, then word by word."""
@@ -476,11 +480,15 @@ class _Diagram:
 
         labels = self._legend_entries()[1]
         cap = st.panel_height * 72
+        shapes: dict = {}  # legend shapes by arrangement, each sought once
 
         def legend(rows: list[list[_Panel]], wide: bool) -> tuple[int, int, float]:
             """The legend's (rows, columns, width) for an arrangement: as wide as the page, or as its rows at the
             tallest panels. Fixed before the panels' height is sought, so a lower panel never makes a taller legend."""
-            return self._legend_shape(labels, page_w if wide else min(page_w, max(row_width(row, cap) for row in rows)))
+            key = (tuple(len(row) for row in rows), wide)  # panels to each row: the arrangement
+            if key not in shapes:
+                shapes[key] = self._legend_shape(labels, page_w if wide else min(page_w, max(row_width(row, cap) for row in rows)))
+            return shapes[key]
 
         def figure_width(rows: list[list[_Panel]], wide: bool, h: float) -> float:
             return min(page_w, max(legend(rows, wide)[2], *(row_width(row, h) for row in rows)))
@@ -499,7 +507,7 @@ class _Diagram:
             if not fits(m.least_panel):
                 return 0.0
             lo, hi = m.least_panel, cap
-            for _ in range(40):  # bisection to a small fraction of a point
+            for _ in range(24):  # bisection to a small fraction of a point
                 mid = 0.5 * (lo + hi)
                 lo, hi = (mid, hi) if fits(mid) else (lo, mid)
             return lo
@@ -519,8 +527,15 @@ class _Diagram:
             options = [(rows, wide, tallest(rows, wide, math.inf)) for rows, wide in arrangements]
             options = [o for o in options if o[2] > 0.0] or [(arrangements[-1][0], True, m.least_panel)]
             rows, wide, height = min(options, key=lambda option: figure_height(*option))
+        width = figure_width(rows, wide, height)
         for row in rows:
+            spare = width - row_width(row, height)  # room the figure has anyway (a wide legend): titles may use it
+            row_widths = []
             for p, w in zip(row, widths(row, height)):
+                grow = min(max(0.0, m.one_line(p.title) - w), spare)
+                row_widths.append(w + grow)
+                spare -= grow
+            for p, w in zip(row, row_widths):
                 p.height, p.width = height, w
                 p.box = list(p.data_box)
                 extra = (w / height - aspects[p.letter]) * (p.box[3] - p.box[2]) / 2
@@ -529,7 +544,7 @@ class _Diagram:
                     p.box[1] += extra
                 p.title_lines = m.wrap(p.title, w)
         m.gutters, m.rights = gutters, rights
-        return rows, height, figure_width(rows, wide, height), legend(rows, wide)[:2]
+        return rows, height, width, legend(rows, wide)[:2]
 
     def _readable_steps(self, p: _Panel, steps: tuple[float, float], m: "_Metrics") -> tuple[float, float]:
         """The least nice steps, from `steps` up, at which no two tick labels of the panel touch: (x step, t step).
