@@ -317,7 +317,7 @@ def test_make_figures_builds_every_config_in_parallel_and_then_only_what_changed
     assert "Nothing to be done" in again
 
     stamp, svg = out / ".stamps" / "fig1", out / "fig1.svg"
-    old = time.time() - 1000
+    old = (ROOT / "configs" / "fig1.yaml").stat().st_mtime - 1000  # not now - 1000: older than the scenario whatever its age
     os.utime(stamp, (old, old))  # as if configs/fig1.yaml had changed since
     mtime = svg.stat().st_mtime
     third = subprocess.run(args + ["figures"], check=True, capture_output=True, text=True).stdout

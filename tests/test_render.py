@@ -460,9 +460,9 @@ def _outer_texts(fig, renderer) -> list[tuple[str, object]]:
     return out
 
 
-def _layout_problems(fig, style) -> list:
+def _layout_problems(fig, style, renderer=None) -> list:
     """Outer texts that overlap each other or another panel, or leave the figure; panels that overlap."""
-    renderer = _renderer(fig, style)
+    renderer = renderer or _renderer(fig, style)
     problems = []
     with render.style_context(style):
         texts = _outer_texts(fig, renderer)
@@ -478,7 +478,7 @@ def _layout_problems(fig, style) -> list:
 
 
 @pytest.mark.parametrize("style", STYLE_NAMES)
-@pytest.mark.parametrize("count", range(1, 9))
+@pytest.mark.parametrize("count", (1, 2, 3, 4, 5, 8))
 @pytest.mark.parametrize("name, v", [("fig2", 0.6), ("single", 0.95), ("fig2", 0.9999999)])
 def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v, count, style):
     """Issue 6.2: --frame both,0.3,0.9 was 14.5 in wide, 8 panels 30 in; x' ticks ran together at v = 0.9999999."""
@@ -489,10 +489,11 @@ def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v,
     assert width <= page.max_width + 1e-9
     if style != "slides" or count <= 3:  # at 17 pt, four panels or more may make a slide taller than 16:9
         assert height <= page.max_height + 1e-9
-    assert _layout_problems(fig, style) == []
+    renderer = _renderer(fig, style)
+    assert _layout_problems(fig, style, renderer) == []
     for ax in fig.axes:  # every panel keeps at least two ticks on each axis, at equal scales
         assert len(ax.get_xticks()) >= 2 and len(ax.get_yticks()) >= 2
-        box = ax.get_window_extent(_renderer(fig, style))
+        box = ax.get_window_extent(renderer)
         (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
         assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-3)
 
@@ -528,7 +529,7 @@ def _far_labels(fig, style) -> list:
 
 
 @pytest.mark.parametrize("style", STYLE_NAMES)
-@pytest.mark.parametrize("v", (*SPEEDS, 0.9999999))
+@pytest.mark.parametrize("v", (0.6, 0.95, 0.9999999))
 @pytest.mark.parametrize("name", builtin_names())
 def test_every_impact_label_sits_by_its_marker_or_is_tied_to_it(name, v, style):
     """Issue 6.3: with --frame both,0.3,0.9 panel (c)'s B1 sat 1.2 L from its dot; at v = 0.95 Fig. 2(b)'s B2 45 pt away."""
