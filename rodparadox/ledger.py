@@ -27,23 +27,34 @@ from .rod import material_worldline, turn_interval
 
 @dataclass(frozen=True)
 class EnergyMomentum:
-    """(E, p) in one frame: E in M c^2, p in M c."""
+    """(E, p) in one frame: E in M c^2, p in M c.
 
-    E: float
+    Carried as rest energy plus kinetic energy, E = rest + T, with T computed
+    without cancellation (2 m sinh^2(a/2), not m cosh a - m): a difference of
+    two totals (the hidden part, an impulse) then keeps its digits even where
+    every body moves slowly and E is 1 to within 1e-12.
+    """
+
+    rest: float
+    T: float
     p: float
 
+    @property
+    def E(self) -> float:
+        return self.rest + self.T
+
     def __add__(self, other: "EnergyMomentum") -> "EnergyMomentum":
-        return EnergyMomentum(self.E + other.E, self.p + other.p)
+        return EnergyMomentum(self.rest + other.rest, self.T + other.T, self.p + other.p)
 
     def __sub__(self, other: "EnergyMomentum") -> "EnergyMomentum":
-        return EnergyMomentum(self.E - other.E, self.p - other.p)
+        return EnergyMomentum(self.rest - other.rest, self.T - other.T, self.p - other.p)
 
     @staticmethod
     def of(mass: float, rapidity: float) -> "EnergyMomentum":
-        return EnergyMomentum(mass * math.cosh(rapidity), mass * math.sinh(rapidity))
+        return EnergyMomentum(mass, 2.0 * mass * math.sinh(0.5 * rapidity) ** 2, mass * math.sinh(rapidity))
 
 
-ZERO = EnergyMomentum(0.0, 0.0)
+ZERO = EnergyMomentum(0.0, 0.0, 0.0)
 #: two times closer than this (relative to L + |t|) are one instant: the rounding of boosting an event twice
 SAME_INSTANT = 1e-12
 
@@ -81,11 +92,11 @@ class ImpactEntry:
 def initial_total(history: History, frame_rapidity: float) -> EnergyMomentum:
     """All bodies before the first impact: the rod at rest in S, each particle at its speed towards the rod."""
     s = history.scenario
-    total = EnergyMomentum.of(1.0, -frame_rapidity)
-    for p in s.particles:
+    total = ZERO
+    for p in sorted(s.particles, key=lambda p: p.name):  # the order ledger_slice sums in: rest energies cancel exactly
         r = (1.0 if p.name == "A" else -1.0) * math.atanh(s.speed(p))
         total += EnergyMomentum.of(p.mass, r - frame_rapidity)
-    return total
+    return total + EnergyMomentum.of(1.0, -frame_rapidity)
 
 
 def particle_on_slice(history: History, name: str, frame_rapidity: float, t: float, after: bool = True) -> EnergyMomentum:
@@ -118,28 +129,29 @@ def rod_on_slice(history: History, frame_rapidity: float, t: float) -> EnergyMom
             if 0.0 < d < L:
                 cuts.add(turn.distance(d))  # distance(.) maps d to sigma and back: it is its own inverse
     cuts = sorted(cuts)
-    E = p = 0.0
+    T = p = 0.0
     for lo, hi in zip(cuts, cuts[1:]):
         if hi - lo <= 0.0:
             continue
         w = material_worldline(history, 0.5 * (lo + hi)).boosted(frame_rapidity)
         piece = w.piece_at_time(t)
         if isinstance(piece, HyperbolicArc) and piece.radius > 0:
-            dE, dp = _across_arc(piece, t, lo, hi, L)
+            dT, dp = _across_arc(piece, t, lo, hi, L)
         else:
             psi = piece if isinstance(piece, float) else piece.rapidity_at_start if isinstance(piece, Line) else piece.phi_at_time(t)
-            dE, dp = (hi - lo) * math.cosh(psi), (hi - lo) * math.sinh(psi)
-        E, p = E + dE, p + dp
-    return EnergyMomentum(E / L, p / L)
+            dT, dp = (hi - lo) * 2.0 * math.sinh(0.5 * psi) ** 2, (hi - lo) * math.sinh(psi)
+        T, p = T + dT, p + dp
+    return EnergyMomentum(1.0, T / L, p / L)
 
 
 def _across_arc(arc: HyperbolicArc, t: float, sigma_lo: float, sigma_hi: float, L: float) -> tuple[float, float]:
-    """Integral over sigma in [sigma_lo, sigma_hi] of (cosh psi, sinh psi), every point on a hyperbola about one pivot.
+    """Integral over sigma in [sigma_lo, sigma_hi] of (cosh psi - 1, sinh psi), every point on a hyperbola about one pivot.
 
     The point at distance d from the pivot P crosses the slice where
     t - t_P = side d sinh psi: sinh psi = a/d with a = side (t - t_P). Then
     integral of sinh psi dd = a ln(d2/d1) and integral of cosh psi dd =
-    integral of sqrt(d^2 + a^2)/d dd = [sqrt(d^2 + a^2) - |a| asinh(|a|/d)].
+    integral of sqrt(d^2 + a^2)/d dd = [sqrt(d^2 + a^2) - |a| asinh(|a|/d)];
+    less the rest energy d: [a^2/(sqrt(d^2 + a^2) + d) - |a| asinh(|a|/d)], which keeps its digits for small a.
     """
     # the pivot's distance from sigma: the arc's radius at the midpoint says which end the pivot is
     mid = 0.5 * (sigma_lo + sigma_hi)
@@ -147,16 +159,16 @@ def _across_arc(arc: HyperbolicArc, t: float, sigma_lo: float, sigma_hi: float, 
     d1, d2 = sorted((sigma_lo, sigma_hi) if pivot_at_left else (L - sigma_hi, L - sigma_lo))
     a = arc.side * (t - arc.centre.t)
     if a == 0.0:
-        return d2 - d1, 0.0
+        return 0.0, 0.0
     if d1 <= 0.0:
         # only a slice through the pivot itself (a rounding-sized a) puts the pivot on the arcs: the piece is
         # then rounding-sized too, and its midpoint's rapidity is as good as the exact integral
         psi = math.asinh(a / (0.5 * d2))
-        return d2 * math.cosh(psi), d2 * math.sinh(psi)
+        return d2 * 2.0 * math.sinh(0.5 * psi) ** 2, d2 * math.sinh(psi)
     b = abs(a)
 
     def primitive(d: float) -> float:
-        return math.hypot(d, a) - b * math.asinh(b / d)
+        return a * a / (math.hypot(d, a) + d) - b * math.asinh(b / d)
 
     return primitive(d2) - primitive(d1), a * math.log(d2 / d1)
 
@@ -173,7 +185,8 @@ def ledger_slice(history: History, frame_rapidity: float, t: float) -> Slice:
 
 
 def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry, ...]:
-    """Every impact in the frame, in the rod's own order, with the (E, p) of every body just before and after it."""
+    """Every impact in the order of the frame's time (the rod's own order for impacts at one instant), with the
+    (E, p) of every body just before and after it."""
     out = []
     total = initial_total(history, frame_rapidity)
     names = sorted(p.name for p in history.scenario.particles)
@@ -185,15 +198,16 @@ def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry
         mass = history.scenario.particle(i.particle).mass
         p_before = EnergyMomentum.of(mass, i.particle_rapidity_before - frame_rapidity)
         p_after = EnergyMomentum.of(mass, i.particle_rapidity_after - frame_rapidity)
-        kinetic_before, kinetic_after = rod, rod
-        for n in names:
+        kinetic_before, kinetic_after = ZERO, ZERO
+        for n in names:  # particles by name, then the rod: as initial_total sums, so rest energies cancel exactly
             kinetic_before += before[n]
             kinetic_after += after[n]
+        kinetic_before, kinetic_after = kinetic_before + rod, kinetic_after + rod
         out.append(ImpactEntry(i, t, p_before, p_after, p_before - p_after, rod,
                                EnergyMomentum.of(1.0, i.rod_rapidity_before - frame_rapidity),
                                EnergyMomentum.of(1.0, i.rod_rapidity_after - frame_rapidity),
                                kinetic_before, kinetic_after, total - kinetic_before, total - kinetic_after))
-    return tuple(out)
+    return tuple(sorted(out, key=lambda e: e.t))  # sorted is stable: the rod's order at one instant
 
 
 def turn_times(history: History, frame_rapidity: float) -> list[float]:

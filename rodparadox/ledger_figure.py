@@ -16,11 +16,13 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.ticker import FuncFormatter
 
 from .engine import History
 from .frames import Frame
-from .ledger import impact_entries, initial_total, ledger_slice
+from .ledger import ZERO, impact_entries, initial_total, ledger_slice
 from .ledger_report import slice_times
+from .numbers import shown
 from .render import PANEL_LETTERS, axis_label, coordinate_names, frame_symbol, style_context
 from .styles import Style
 
@@ -48,7 +50,7 @@ def _series(history: History, frame: Frame):
             before = dict(bodies)
             for e in here:  # each struck particle as it was just before (the others are unchanged at this instant)
                 before[e.impact.particle] = e.particle_before
-            kinetic_before = sum((before[n] for n in names), bodies["rod"])
+            kinetic_before = sum((before[n] for n in names), ZERO) + bodies["rod"]  # the order ledger sums in
             times.append(t)
             rows.append([before[n] for n in names] + [bodies["rod"], kinetic_before])
         times.append(t)
@@ -81,7 +83,7 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
     per_row = min(len(frames), 3 if st.max_width >= 10 else 2)
     rows = -(-len(frames) // per_row)
     gutter = fs * 1.05 * 1.4 + 3.4 * fs + 12  # y label, tick labels (up to "−0.75"), ticks and pads
-    suptitle_h, title_h, pair_gap = fs * 1.25 * 1.6, fs * 1.1 * 1.6, 6.0
+    suptitle_h, title_h, pair_gap = fs * 1.25 * 1.6, fs * 1.1 * 1.6 + fs * 1.5 + 4, 6.0
     x_axis_h = 3.5 + 3.5 + fs * 1.25 + fs * 1.05 * 1.35 + 4
     legend_h = 2 * fs * 1.8 + 8
     width = st.max_width * 72
@@ -91,7 +93,7 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
     height = suptitle_h + rows * row_h + legend_h
     figure = Figure(figsize=(width / 72, height / 72), dpi=72)
     s = history.scenario
-    figure.text(0.5, 1 - 4 / height, f"{s.name}: energy and momentum, v = {s.v:.10g}", ha="center", va="top",
+    figure.text(0.5, 1 - 4 / height, f"{s.name}: energy and momentum, v = {shown(s.v)}", ha="center", va="top",
                 fontsize=fs * 1.25, gid="title")
     L = s.L
     names = sorted(p.name for p in s.particles)
@@ -130,20 +132,26 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
             for e in entries:
                 ax.axvline(e.t / L, color="#9a9a9a", linewidth=0.6, zorder=0, gid=f"{letter}-{q}-impact-{e.impact.label}")
             ax.set_xlim(t[0], t[-1])
+            for axis in (ax.xaxis, ax.yaxis):  # numbers as every figure writes them: no offsets, no 1e-06
+                axis.set_major_formatter(FuncFormatter(lambda value, _pos: shown(value, 6)))
             ax.tick_params(labelsize=fs)
             ax.set_ylabel("p / M c" if q == "p" else "E / M c²", fontsize=fs * 1.05)
             if q == "p":
-                ax.set_title(f"({letter}) frame {frame_symbol(frame)}", fontsize=fs * 1.1)
+                ax.set_title(f"({letter}) frame {frame_symbol(frame)}", fontsize=fs * 1.1, pad=fs * 1.5 + 4)
                 ax.tick_params(labelbottom=False)
-                stacked: list[float] = []
+                instants: list[list] = []  # impacts at one instant of this frame, side by side above it
                 for e in entries:
-                    x = e.t / L
-                    stack = sum(abs(x - other) <= 1e-9 * (1 + abs(x)) for other in stacked)
-                    stacked.append(x)
-                    ax.annotate(_impact_plain(e.impact.label), (x, 1.0), xycoords=("data", "axes fraction"),
-                                xytext=(2, -2 - stack * fs * 1.25), textcoords="offset points", ha="left", va="top",
-                                fontsize=fs, gid=f"{letter}-label-{e.impact.label}", zorder=5, style="italic",
-                                bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.6})
+                    if instants and abs(e.t - instants[-1][0].t) <= _SAME_INSTANT * (L + abs(e.t)):
+                        instants[-1].append(e)
+                    else:
+                        instants.append([e])
+                for group in instants:
+                    for k, e in enumerate(group):
+                        # above the panel, over its frame line: no curve runs there
+                        ax.annotate(_impact_plain(e.impact.label), (e.t / L, 1.0), xycoords=("data", "axes fraction"),
+                                    xytext=((k - (len(group) - 1) / 2) * fs * 1.6, 2), textcoords="offset points",
+                                    ha="center", va="bottom", fontsize=fs, gid=f"{letter}-label-{e.impact.label}",
+                                    zorder=5, style="italic")
             else:
                 ax.set_xlabel(f"{axis_label(coordinate_names(frame)[1])}", fontsize=fs * 1.05)
     handles = [Line2D([], [], color=particle_inks[n].colour, linewidth=particle_inks[n].width,

@@ -110,10 +110,10 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
     return out.getvalue()
 
 
-def _num(x: float) -> str:
-    """Seven significant digits, no -0, no exponent for ordinary magnitudes."""
+def _num(x: float, zero_below: float = 0.0) -> str:
+    """Seven significant digits, no -0; a value below `zero_below` in size is rounding of a difference: 0."""
     x = x + 0.0
-    if abs(x) < 5e-13:  # rounding of a difference of totals of order 1: zero
+    if abs(x) < zero_below:
         return "0"
     text = f"{x:.7g}"
     return "0" if float(text) == 0 else text
@@ -124,6 +124,19 @@ def _frame_title(f: Frame) -> str:
     return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {_num(f.velocity)} relative to S"
 
 
+def _table(rows: list[list[str]], left: int = 1) -> list[str]:
+    """Rows of cells as aligned text: the first `left` columns flush left, the rest flush right, two spaces between;
+    each column as wide as its widest cell, and at least as wide as seven digits with a sign and a point, so the
+    tables of one frame line up."""
+    widths = [max(max(len(row[k]) for row in rows), 14 if k < left else 10) for k in range(len(rows[0]))]
+    return ["  " + "  ".join(cell.ljust(w) if k < left else cell.rjust(w) for k, (cell, w) in enumerate(zip(row, widths))).rstrip()
+            for row in rows]
+
+
+#: a difference of totals below this fraction of the frame's kinetic scale is rounding, printed as 0
+ROUNDING_ZERO = 1e-12
+
+
 def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """For each frame: every impact with each body's (E, p) just before and after, the impulse, and the totals;
     then each --at slice."""
@@ -131,31 +144,35 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
     names = sorted(p.name for p in s.particles)
     lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}; E in M c^2, p in M c (M the rod's mass, c = 1), "
              f"t in the unit L is given in"]
-    row = "  {:<16}{:>12}{:>12}   {:>12}{:>12}"
     for f in frames:
         eta = f.rapidity
         total = initial_total(history, eta)
+        # rest energies cancel exactly in a difference: its rounding is of the order of the kinetic energies and momenta
+        zero = ROUNDING_ZERO * max(total.T, abs(total.p), 1e-300)
+
+        def num(x: float) -> str:
+            return _num(x, zero)
+
         lines += ["", _frame_title(f),
-                  f"  all bodies before the first impact: E = {_num(total.E)}, p = {_num(total.p)}"]
+                  f"  all bodies before the first impact: E = {_num(total.E)}, p = {num(total.p)}"]
         for e in impact_entries(history, eta):
             i = e.impact
             together = f", with {i.simultaneous_with}" if i.simultaneous_with else ""
             turning = ", rod still turning" if i.while_turning else ""
-            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {_num(e.t)}",
-                      row.format("", "E before", "p before", "E after", "p after")]
+            rows = [["", "E before", "p before", "E after", "p after"]]
             for label, b, a in ((i.particle, e.particle_before, e.particle_after),
                                 ("rod, kinetic", e.rod_kinetic, e.rod_kinetic),
                                 ("rod, dynamical", e.rod_dynamical_before, e.rod_dynamical_after),
                                 ("kinetic total", e.kinetic_before, e.kinetic_after),
                                 ("hidden", e.hidden_before, e.hidden_after)):
-                lines.append(row.format(label, _num(b.E), _num(b.p), _num(a.E), _num(a.p)))
-            lines.append(f"  impulse to the rod: E {_num(e.impulse.E)}, p {_num(e.impulse.p)}")
+                rows.append([label, num(b.E), num(b.p), num(a.E), num(a.p)])
+            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {_num(e.t)}", *_table(rows),
+                      f"  impulse to the rod: E {num(e.impulse.E)}, p {num(e.impulse.p)}"]
         if at:
-            head = "  {:>12}".format("t") + "".join(f"{name + ' E':>12}{name + ' p':>12}" for name in names + ["rod"])
-            head += f"{'kinetic E':>12}{'kinetic p':>12}{'hidden E':>12}{'hidden p':>12}"
-            lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", head]
+            rows = [["t"] + [f"{name} {q}" for name in names + ["rod", "kinetic", "hidden"] for q in ("E", "p")]]
             for t in at:
                 sl = ledger_slice(history, eta, t)
                 values = [em for _, em in sl.bodies] + [sl.kinetic, sl.hidden]
-                lines.append("  {:>12}".format(_num(t)) + "".join(f"{_num(em.E):>12}{_num(em.p):>12}" for em in values))
+                rows.append([_num(t)] + [num(x) for em in values for x in (em.E, em.p)])
+            lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", *_table(rows, left=0)]
     return "\n".join(lines) + "\n"

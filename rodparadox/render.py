@@ -378,8 +378,8 @@ class _Diagram:
         self._widest_line = max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
                                                       style.moving_simultaneity, style.other_axes, style.light_cone,
                                                       style.hyperbola))
-        self.clock_step = rod.clock_step(history)
         self.panels = [self._panel(letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
+        self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
         self.figure = self._build()
 
     # data ------------------------------------------------------------------------------------------

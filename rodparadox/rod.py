@@ -146,11 +146,10 @@ def material_lines(history: History, frame_rapidity: float, count: int, t_lo: fl
     return out
 
 
-def clock_step(history: History, ticks: int = 8) -> float:
-    """A round proper-time step (1, 2, 2.5 or 5 times a power of ten, in units of L) giving about `ticks` clock ticks
-    over the impacts' span in S: the same step in every panel, as proper time is the same in every frame."""
-    L = history.scenario.L
-    times = [i.event.t for i in history.impacts] + [0.0]
-    raw = max(max(times) - min(times), L) * 1.5 / ticks / L
+def clock_step(span: float, ticks: int = 10) -> float:
+    """A round proper-time step (1, 2, 2.5 or 5 times a power of ten) giving about `ticks` clock ticks over a time
+    `span`: a figure passes its longest panel's span, so that a body at rest in that frame gets no more than about
+    `ticks` ticks, and uses the one step in every panel, as proper time is the same in every frame."""
+    raw = span / ticks
     magnitude = 10.0 ** math.floor(math.log10(raw))
-    return L * next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))
+    return next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))

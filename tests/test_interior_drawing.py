@@ -12,7 +12,7 @@ from click.testing import CliRunner
 
 from rodparadox import render
 from rodparadox.engine import run
-from rodparadox.frames import paper_frames
+from rodparadox.frames import paper_frames, time_window
 from rodparadox.kinematics import Event
 from rodparadox.rod import clock_step, material_worldline
 from rodparadox.scenario import load
@@ -77,11 +77,13 @@ def test_the_rods_own_lines_are_L_long_end_to_end_and_fan_out_from_each_pivot(na
 @pytest.mark.parametrize("name, v", [("fig2", 0.6), ("off_timing", 0.8)])
 def test_clock_ticks_are_the_same_events_in_every_panel_and_a_step_of_proper_time_apart(name, v):
     h, fig = drawn(name, v)
-    L, step = h.scenario.L, clock_step(h)
     frames = paper_frames(h.scenario.v)
+    L = h.scenario.L
+    step = clock_step(max(w - u for u, w in (time_window(h, f) for f in frames)))
     in_s = lines_of(fig, r"a-clock-.*")
     in_moving = lines_of(fig, r"b-clock-.*")
     assert sorted(in_s) == sorted(f"a-clock-{n}" for n, _ in h.worldlines)
+    shared = 0
     for name_, points in in_moving.items():
         body = name_[len("b-clock-"):]
         back = [Event(x * L, t * L).boosted(-frames[1].rapidity) for x, t in points]  # to S
@@ -89,14 +91,20 @@ def test_clock_ticks_are_the_same_events_in_every_panel_and_a_step_of_proper_tim
         ticks_s = {(round(x, 6), round(t, 6)) for x, t in window[1]}
         lo, hi = window[1][:, 1].min(), window[1][:, 1].max()
         common = [(round(e.x / L, 6), round(e.t / L, 6)) for e in back if lo <= e.t / L <= hi]
-        assert common and set(common) <= ticks_s, body
-        # consecutive ticks are one step of proper time apart along the world-line; the straight chord between
-        # them has the longest proper time of any path (the twin paradox), so it is never shorter than the step,
-        # and equal to it where the world-line is straight
-        events = sorted(back, key=lambda e: e.t)
-        chords = [math.sqrt((b.t - a.t) ** 2 - (b.x - a.x) ** 2) for a, b in zip(events, events[1:])]
-        assert min(chords) >= step * (1 - 1e-9)
-        assert sum(abs(c - step) <= 1e-9 * step for c in chords) >= len(chords) // 2
+        assert set(common) <= ticks_s, body
+        shared += len(common)
+    assert shared >= 3  # ticks seen in both panels, at the same events
+    # consecutive ticks are one step of proper time apart along the world-line: summed over a fine polyline of the
+    # world-line read in S (chords converge to the proper time from above, the twin paradox), not from the clocks' code
+    for body, worldline in h.worldlines:
+        ticks = sorted(in_s[f"a-clock-{body}"][:, 1] * L)
+        for t0, t1 in zip(ticks, ticks[1:]):
+            kinks = [e.t for e in (worldline.first, worldline.last, *(x for seg in worldline.segments for x in (seg.start, seg.end)))
+                     if t0 < e.t < t1]
+            ts = np.unique(np.concatenate([np.linspace(t0, t1, 4001), kinks]))
+            xs = np.array([worldline.event_at_time(t).x for t in ts])
+            tau = np.sqrt(np.diff(ts) ** 2 - np.diff(xs) ** 2).sum()
+            assert tau == pytest.approx(step, rel=1e-6), (body, t0, t1)
     # before any impact the rod rests in S: its ends' ticks are at t = k * step
     first = min(i.event.t for i in h.impacts)
     for end in ("rod_left", "rod_right"):
@@ -119,3 +127,12 @@ def test_every_style_draws_the_interior_and_stays_deterministic(style):
     _, again = drawn("fig2", 0.6, style)
     assert one == render.figure_bytes(again, "svg", style)
     assert b"a-rod-now-0" in one and b"b-clock-A" in one and b"a-rod-line-5" in one
+
+
+@pytest.mark.parametrize("name", ["fig1", "while_turning", "unequal_masses"])
+def test_clock_ticks_do_not_crowd_even_at_high_speed(name):
+    """The step follows the longest panel's time span: a body at rest in S' at v = 0.95 gets about ten ticks, not
+    fifty (found in review: a solid chain of circles)."""
+    _, fig = drawn(name, 0.95)
+    for gid, points in lines_of(fig, r"[ab]-clock-.*").items():
+        assert len(points) <= 13, (gid, len(points))
