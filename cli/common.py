@@ -32,14 +32,14 @@ BROKEN_PIPE_STATUS = 141
 
 def reports_errors(command):
     """The CLI edge: any library error (`RodParadoxError`) becomes its one sentence and exit status 2 (a failed
-    write: 1), no traceback; a reader that closed standard output ends the command quietly."""
+    write or a missing tool such as ffmpeg: 1), no traceback; a reader that closed standard output ends the command quietly."""
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
-        from rodparadox.errors import WriteFailed
+        from rodparadox.errors import ToolMissing, WriteFailed
 
         try:
             return command(*args, **kwargs)
-        except WriteFailed as e:
+        except (WriteFailed, ToolMissing) as e:
             raise EnvironmentFailure(str(e)) from None
         except RodParadoxError as e:
             raise BadInput(str(e)) from None

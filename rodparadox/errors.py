@@ -41,3 +41,8 @@ class FrameError(ValueError, RodParadoxError):
 
 class OptionError(ValueError, RodParadoxError):
     """A command-line option that cannot be used as given (a format, an output path, a frame list): says which."""
+
+
+class ToolMissing(RuntimeError, RodParadoxError):
+    """A program the command needs (ffmpeg for MP4) is not installed: the environment, not the input, so the
+    command line exits 1; says how to install it."""

@@ -150,3 +150,79 @@ def prepare(jobs: Sequence[Job], output: str | None) -> None:
     for job in jobs:  # a missing folder, a dangling link, a locked folder (root passes)
         for path in job.paths.values():
             check_target(path)
+
+
+# --- animations (`sears-paradox animate`) -----------------------------------------------------------
+
+#: what `animate` writes: a GIF or MP4 file, or a folder of numbered PNG stills
+ANIMATION_FORMATS = ("gif", "mp4", "png")
+
+
+class AnimationJob(NamedTuple):
+    """One animation: the scenario with --v and --L, its frames (now: the panels; boost: the two ends), its
+    format, and where it goes: the file (gif, mp4) or the folder of stills (png), whose stills are STEM_0000.png."""
+
+    name: str
+    scenario: Scenario
+    frames: tuple[Frame, ...]
+    fmt: str
+    path: Path
+    stem: str
+
+
+def plan_animation(name: str, *, v: float | None, L: float | None, frame: str, mode: str, fmt: str | None,
+                   output: str | None, style: str) -> AnimationJob:
+    """The animation `animate` will write, named as `plot` names figures with the mode as the kind
+    (`fig2_now.gif`, `fig2_boost_v0.8.mp4`, the folder `fig2_now/` of `fig2_now_0000.png` ...), every input
+    checked, nothing drawn or written yet.
+
+    The format is --format, else the extension of -o (.gif, .mp4), else gif. For gif and mp4, -o is a folder
+    that exists or a file name; for png it names the folder of the stills (created if missing, in a folder
+    that exists); without -o, everything goes in `outputs/`.
+    """
+    from .animation import MODES, boost_ends
+
+    if output is not None and not output.strip():
+        raise OptionError(f"option -o must name a file or folder, got {output!r}.")
+    if mode not in MODES:
+        raise OptionError(f"option --mode must be one of {', '.join(MODES)}, got {mode!r}.")
+    suffix = Path(output).suffix.lstrip(".").lower() if output is not None else ""
+    if fmt is None:
+        fmt = suffix if suffix in ("gif", "mp4") else "gif"
+    fmt = fmt.strip().lower()
+    if fmt not in ANIMATION_FORMATS:
+        raise OptionError(f"option --format must be one of {', '.join(ANIMATION_FORMATS)}, got {fmt!r}.")
+    if suffix in ANIMATION_FORMATS and suffix != fmt and not Path(output).is_dir():
+        raise OptionError(f"option -o names {output!r} but --format is {fmt}; make them agree.")
+    if fmt == "png" and suffix == "png" and not Path(output).is_dir():
+        raise OptionError(f"option -o: png writes numbered stills into a folder; name the folder, not "
+                          f"{output!r}.")
+    base = load(name)
+    s = base.with_overrides(v=v, L=L)
+    try:
+        frames = parse_frames(frame, s.v) if mode == "now" else boost_ends(frame, s.v)
+    except FrameError as e:
+        raise OptionError(f"option --frame: {e}") from None
+    stem = output_name(stem_of(name), base, v, L, frames, style, (), mode)
+    if fmt == "png":
+        path = Path(output) if output is not None else Path(DEFAULT_FOLDER) / stem
+    else:
+        folder, file = destination(output, 1, (fmt,))
+        path = file if file is not None else folder / f"{stem}.{fmt}"
+    return AnimationJob(name, s, tuple(frames), fmt, path, stem)
+
+
+def prepare_animation(job: AnimationJob, output: str | None) -> None:
+    """Before anything is drawn: create the default folder (only it), check the file or the stills' folder."""
+    from .video import check_folder
+
+    if output is None:
+        try:
+            os.makedirs(DEFAULT_FOLDER, exist_ok=True)
+        except OSError as e:
+            raise OptionError(f"cannot create the output folder {DEFAULT_FOLDER}: "
+                              f"{(e.strerror or str(e)).lower()}.") from None
+    if job.fmt == "png":
+        check_folder(job.path)
+    else:
+        check_target(job.path)

@@ -1,0 +1,88 @@
+"""`sears-paradox animate`: the paradox in motion, as a GIF, an MP4 or numbered PNG stills.
+
+Thin: parse the options, plan and check through `rodparadox.jobs`, `rodparadox.animation` and
+`rodparadox.video`, then draw (matplotlib only from here on) and stream the frames to the file.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from rodparadox.styles import STYLE_NAMES
+
+from .common import L_option, emit, quiet_option, reports_errors, run_scenario, v_option
+
+#: the defaults: 6 seconds at 25 frames per second, a rate a GIF stores exactly (4 hundredths of a second)
+DEFAULT_FPS = 25
+DEFAULT_SECONDS = 6.0
+
+
+@click.command()
+@click.argument("scenario", metavar="SCENARIO")
+@v_option
+@L_option
+@click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U|A..B",
+              help="now: the panels, as plot's --frame (e.g. both,0.3); boost: the frames to boost between, "
+                   "A..B, each rest, moving or a velocity U (both is rest..moving).")
+@click.option("--mode", "mode", type=click.Choice(("now", "boost")), default="now", show_default=True,
+              help="now: each frame's line of simultaneity sweeps up, with its space below; boost: the frame "
+                   "velocity runs smoothly from A to B.")
+@click.option("--format", "fmt", default=None, metavar="gif|mp4|png",
+              help="gif, mp4 (needs ffmpeg) or png (numbered stills in a folder). [default: the extension of -o, "
+                   "else gif]")
+@click.option("--fps", "fps", type=int, default=DEFAULT_FPS, show_default=True, metavar="N",
+              help="Frames per second; for a GIF one of 1, 2, 4, 5, 10, 20, 25, 50 (it stores hundredths of a "
+                   "second).")
+@click.option("--seconds", "seconds", type=float, default=DEFAULT_SECONDS, show_default=True, metavar="S",
+              help="The animation's length, above 0 and at most 120 seconds: round(S * N) frames.")
+@click.option("-o", "--output", "output", metavar="PATH", default=None,
+              help="gif, mp4: a folder (it must exist) or a file name; png: the folder of the stills. "
+                   "[default: outputs/, created if missing]")
+@click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
+              help="default: colour, colour-blind safe; print: black and white, serif; slides: large type.")
+@quiet_option
+@reports_errors
+def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: str, fmt: str | None, fps: int,
+            seconds: float, output: str | None, style: str, quiet: bool) -> None:
+    """Animate SCENARIO: both frames' "now" sweeping in lock-step, or a continuous boost, as GIF, MP4 or stills.
+
+    Writes OUTPUT/NAME.gif (or .mp4, or the folder OUTPUT/NAME/ of NAME_0000.png
+    ...), NAME being the scenario's name, the mode (_now, _boost), then every
+    non-default option as plot names them (fig2_now.gif, fig2_boost_v0.8.mp4),
+    and prints its path, `PATH (unchanged)` when the bytes would not change.
+    The same command gives the same bytes.
+
+    Example: sears-paradox animate fig2 --fps 10 --seconds 2
+    """
+    from rodparadox import jobs as planned
+    from rodparadox.animation import frame_count, timeline
+    from rodparadox.video import check_fps, require_ffmpeg
+
+    job = planned.plan_animation(scenario, v=v, L=L, frame=frame, mode=mode, fmt=fmt, output=output, style=style)
+    check_fps(job.fmt, fps)
+    count = frame_count(seconds, fps)
+    if job.fmt == "mp4":
+        require_ffmpeg()
+    history = run_scenario(job.scenario, job.name)
+    planned.prepare_animation(job, output)
+    line = timeline(history, job.frames, mode, count)
+
+    from rodparadox.animate_draw import frames_of  # matplotlib: only now, after every input has been checked
+    from rodparadox.video import write_frames
+
+    drawn = frames_of(history, job.frames, mode, style, line)
+    with click.progressbar(drawn, length=count, label=str(job.path), file=sys.stderr,
+                           hidden=not _is_terminal(sys.stderr)) as bar:
+        written = write_frames(job.path, job.fmt, fps, bar, name=job.stem)
+    if not quiet:
+        shown = f"{job.path}/" if job.fmt == "png" else str(job.path)
+        emit(shown if written else f"{shown} (unchanged)")
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):
+        return False

@@ -1,0 +1,268 @@
+"""The timeline of an animation: what each panel shows at each instant (README, "Animating"). Pure, no matplotlib.
+
+Two modes:
+
+* **now**: each panel is one frame; its line of simultaneity sweeps up its
+  time window (`frames.time_window`, the same as `plot`'s) and a strip under
+  it shows the frame's space at that instant (`strip_at`).
+* **boost**: one panel whose frame runs smoothly from one velocity to another
+  (`boost_velocities`), over one fixed window that holds every frame's.
+
+The drawing reads a `NowTimeline` or `BoostTimeline` and nothing else.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .engine import History
+from .errors import OptionError
+from .frames import Frame, sampling_tolerance, time_window, view
+from .numbers import exact
+from .rod import rod_on_slice
+
+MODES = ("now", "boost")
+#: the longest animation, and the most frames one may have: enough for two minutes at 25 fps
+MAX_SECONDS = 120.0
+MAX_FRAMES = 3000
+#: material points along the strip's bar: enough that the colour varies smoothly along it
+STRIP_POINTS = 96
+#: an impact flashes while the panel's time is within this fraction of its window of the impact's time
+#: (or half a frame's step, if that is longer, so that every impact flashes in at least one frame)
+FLASH_FRACTION = 0.02
+#: the colour scale's half-range when the rod never changes velocity in a frame (every point at the centre)
+STILL_BOUND = 0.1
+
+
+def frame_count(seconds: float, fps: int) -> int:
+    """round(seconds * fps) frames, checked: 0 < seconds <= MAX_SECONDS, at least 2 and at most MAX_FRAMES."""
+    if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
+        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+    if not (isinstance(seconds, (int, float)) and math.isfinite(seconds) and 0 < seconds <= MAX_SECONDS):
+        raise OptionError(f"option --seconds must be a duration above 0 and at most {MAX_SECONDS:g} seconds, "
+                          f"got {seconds!r}.")
+    count = round(seconds * fps)
+    if count < 2:
+        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frame{'s' if count != 1 else ''}; "
+                          f"an animation needs at least 2.")
+    if count > MAX_FRAMES:
+        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frames; at most {MAX_FRAMES} are "
+                          f"drawn, so lower one of them.")
+    return count
+
+
+def sweep(count: int) -> np.ndarray:
+    """The lock-step parameter s of each of `count` frames: evenly from 0 (first frame) to 1 (last)."""
+    return np.linspace(0.0, 1.0, count)
+
+
+# --- now mode --------------------------------------------------------------------------------------
+
+def now_times(history: History, frames: tuple[Frame, ...], count: int) -> np.ndarray:
+    """(count, len(frames)): the time each panel shows at each instant, in that panel's frame.
+
+    The panels move in lock-step on one parameter s, running evenly from 0 to 1: each frame's own time,
+    scaled to its window, t = t_lo + s (t_hi - t_lo). So every panel sweeps exactly the window `plot` draws,
+    from before the first change to after the last, at an even pace of its own clock, and the readout of
+    each panel's "now" advances steadily.
+
+    Why not the rod's proper time at its centre? It is monotonic in every frame's time (the centre's
+    world-line is time-like, so its events come in the same order in every frame: tested), so it would
+    work as a parameter. But each frame's window maps to a different span of it (in S' the window starts
+    and ends at other centre events than in S), so some panels would stand still at the ends, and along
+    it a frame's time runs at dt/dtau = cosh(rapidity of the centre), which jumps at every turn: the
+    now-line would speed up and slow down. The cost of the choice made: at one instant the panels' now
+    lines need not cross the rod's centre at one event (they could not all do so at every point anyway).
+    """
+    s = sweep(count)
+    out = np.empty((count, len(frames)))
+    for k, frame in enumerate(frames):
+        t_lo, t_hi = time_window(history, frame)
+        out[:, k] = t_lo + s * (t_hi - t_lo)
+        out[-1, k] = t_hi  # exactly the window's end, not its rounding
+    return out
+
+
+@dataclass(frozen=True)
+class Strip:
+    """The frame's space at the instant t: the rod as a bar, its material points' velocities, the particles, and
+    the impacts that flash now. Positions and velocities in the frame's coordinates (units of L, c = 1).
+
+    `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
+    (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
+    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t.
+    """
+
+    t: float
+    sigma: np.ndarray
+    x: np.ndarray
+    velocity: np.ndarray
+    particles: tuple[tuple[str, float], ...]
+    flashing: tuple[str, ...]
+
+
+def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS) -> Strip:
+    """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`."""
+    eta = frame.rapidity
+    sigmas = np.linspace(0.0, history.scenario.L, points)
+    rod = rod_on_slice(history, eta, t, sigmas)
+    particles = tuple((name, history.worldline(name).boosted(eta).event_at_time(t).x)
+                      for name in ("A", "B") if history.worldline(name) is not None)
+    flashing = tuple(i.label for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash)
+    return Strip(t, rod.sigma, rod.x, rod.velocity, particles, flashing)
+
+
+def flash_time(window: tuple[float, float], count: int) -> float:
+    """How long before and after its instant an impact flashes: FLASH_FRACTION of the window, or half a frame's
+    step if longer, so that every impact flashes in at least one frame."""
+    span = window[1] - window[0]
+    return max(FLASH_FRACTION * span, 0.5 * span / max(count - 1, 1))
+
+
+@dataclass(frozen=True)
+class ColourScale:
+    """The strip's diverging colour scale: `centre` (the frame's initial rod velocity) +- `bound`."""
+
+    centre: float
+    bound: float
+
+    @property
+    def limits(self) -> tuple[float, float]:
+        return self.centre - self.bound, self.centre + self.bound
+
+
+def rod_rapidities(history: History) -> tuple[float, ...]:
+    """Every rapidity, in S, a material point of the rod takes at the start or end of a piece of its world-line.
+
+    A point's rapidity is 0 before the first turn, runs monotonically from `rapidity_from` to `rapidity_stop`
+    during each turn, stays there between turns, and is `final_rapidity` after the last: so the extremes of
+    every point's rapidity over the whole history are among these. (A turn's `rapidity_to`, the rod's
+    dynamical rapidity, is not: a stopped turn never reaches it.)
+    """
+    values = [0.0, history.final_rapidity]
+    for turn in history.turns:
+        values += [turn.rapidity_from, turn.rapidity_stop]
+    return tuple(values)
+
+
+def colour_scale(history: History, frame: Frame) -> ColourScale:
+    """Centred on the rod's velocity in `frame` before any impact; bound the largest distance from it of any
+    material point's velocity over the whole history, so the colours mean the same at every instant."""
+    centre = frame.rod_velocity()
+    eta = frame.rapidity
+    bound = max(abs(math.tanh(r - eta) - centre) for r in rod_rapidities(history))
+    return ColourScale(centre, bound if bound > 0 else STILL_BOUND)
+
+
+@dataclass(frozen=True)
+class NowTimeline:
+    """Now mode: the panels' frames, windows, each instant's times (count, panels), flash times, colour scales."""
+
+    frames: tuple[Frame, ...]
+    windows: tuple[tuple[float, float], ...]
+    times: np.ndarray
+    flash: tuple[float, ...]
+    scales: tuple[ColourScale, ...]
+
+    mode = "now"
+
+    def __len__(self) -> int:
+        return len(self.times)
+
+    def strip(self, history: History, k: int, panel: int) -> Strip:
+        return strip_at(history, self.frames[panel], float(self.times[k, panel]), self.flash[panel])
+
+
+def now_timeline(history: History, frames: tuple[Frame, ...], count: int) -> NowTimeline:
+    times = now_times(history, frames, count)
+    windows = tuple(time_window(history, f) for f in frames)
+    return NowTimeline(tuple(frames), windows, times, tuple(flash_time(w, count) for w in windows),
+                       tuple(colour_scale(history, f) for f in frames))
+
+
+# --- boost mode ------------------------------------------------------------------------------------
+
+def boost_velocities(v_from: float, v_to: float, count: int) -> np.ndarray:
+    """`count` frame velocities from v_from to v_to (both exactly), eased in and out.
+
+    The ease is in rapidity, the quantity boosts add: eta = eta_from + (eta_to - eta_from)(1 - cos(pi s))/2,
+    s from 0 to 1 evenly; so equal steps are equal boosts, the boost starts and stops gently, and near c the
+    frames do not crowd together as they would evenly in velocity.
+    """
+    a, b = math.atanh(v_from), math.atanh(v_to)
+    ease = (1.0 - np.cos(np.pi * sweep(count))) / 2.0
+    out = np.tanh(a + (b - a) * ease)
+    out[0], out[-1] = v_from, v_to
+    return out + 0.0  # no -0
+
+
+def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
+    """--frame in boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
+    `rest..moving` (the default). The two ends must differ."""
+    from .errors import FrameError
+    from .frames import frame_of_velocity
+
+    spec = spec.strip()
+    if spec == "both":
+        spec = "rest..moving"
+    parts = spec.split("..")
+    if len(parts) != 2:
+        raise OptionError(f"option --frame: in boost mode give the frames to boost between as A..B (each rest, "
+                          f"moving or a velocity U relative to S), e.g. rest..moving, got {spec!r}.")
+    ends = []
+    for part in (p.strip() for p in parts):
+        if part in ("rest", "moving"):
+            ends.append(Frame(part, 0.0 if part == "rest" else -v))
+            continue
+        try:
+            ends.append(frame_of_velocity(float(part) + 0.0))
+        except (ValueError, FrameError) as e:
+            reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
+            raise OptionError(f"option --frame: each end of A..B must be rest, moving or a velocity U relative "
+                              f"to S; {reason}".rstrip(".") + ".") from None
+    if ends[0].velocity == ends[1].velocity:
+        raise OptionError(f"option --frame: {spec} boosts from a frame to itself; give two different frames.")
+    return ends[0], ends[1]
+
+
+@dataclass(frozen=True)
+class BoostTimeline:
+    """Boost mode: the frame at each instant, and one time and x window holding every one of them."""
+
+    frames: tuple[Frame, ...]
+    t_window: tuple[float, float]
+    x_window: tuple[float, float]
+
+    mode = "boost"
+
+    def __len__(self) -> int:
+        return len(self.frames)
+
+
+def boost_timeline(history: History, start: Frame, end: Frame, count: int) -> BoostTimeline:
+    """The frames from `start` to `end` (`boost_velocities`; the ends keep their names), and the union of every
+    frame's window: its time window (`time_window`, as `plot`) and the x its world-lines reach within it, so the
+    axes stay still while the world-lines move."""
+    velocities = boost_velocities(start.velocity, end.velocity, count)
+    frames = [start] + [Frame(f"u={exact(float(u))}", float(u)) for u in velocities[1:-1]] + [end]
+    tolerance = sampling_tolerance(history)
+    t_lo = x_lo = math.inf
+    t_hi = x_hi = -math.inf
+    for frame in frames:
+        fv = view(history, frame)
+        t_lo, t_hi = min(t_lo, fv.t_range[0]), max(t_hi, fv.t_range[1])
+        for points in fv.worldline_points(tolerance).values():
+            x_lo, x_hi = min(x_lo, float(points[:, 0].min())), max(x_hi, float(points[:, 0].max()))
+    return BoostTimeline(tuple(frames), (t_lo, t_hi), (x_lo, x_hi))
+
+
+def timeline(history: History, frames: tuple[Frame, ...], mode: str, count: int) -> NowTimeline | BoostTimeline:
+    """The timeline of `count` frames: now mode over the panels `frames`, boost mode from frames[0] to frames[1]."""
+    if mode == "now":
+        return now_timeline(history, frames, count)
+    if mode == "boost":
+        return boost_timeline(history, frames[0], frames[1], count)
+    raise OptionError(f"option --mode must be one of {', '.join(MODES)}, got {mode!r}.")

@@ -1,0 +1,457 @@
+"""Writing an animation's frames to files: GIF, MP4 or numbered PNG stills (README, "Animating"). No matplotlib.
+
+A frame is an RGB uint8 numpy array of shape (H, W, 3); every frame of one
+animation has the same size. `open_sink(path, fmt, fps)` gives a sink:
+`sink.add(frame)` for each frame, then `sink.close()`, which returns True if
+the file (or any still) was written and False if it already held exactly
+these bytes and was left untouched; `sink.abort()` (or leaving a `with` block
+by an exception) throws away what was made, leaving no file behind.
+`write_frames(path, fmt, fps, frames)` does all three for an iterable.
+
+Every format is deterministic: the same frames give the same bytes (GIF and
+PNG on any machine, MP4 with the same ffmpeg). Files are written atomically
+through `output.write_atomic`; stills are written one by one as they come,
+each atomically.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import zlib
+from pathlib import Path
+from typing import Iterable
+
+import numpy as np
+
+from .errors import OptionError, OutputError, ToolMissing, WriteFailed
+from .output import check_target, write_atomic
+
+FORMATS = ("gif", "mp4", "png")
+#: frame rates a GIF stores exactly: it keeps each frame's duration in hundredths of a second
+GIF_FPS = (1, 2, 4, 5, 10, 20, 25, 50)
+#: the colours of a GIF's one palette
+GIF_COLOURS = 256
+#: zlib level for frames a GIF holds between its two passes: fast, and a diagram still shrinks 20-fold or more
+_HOLD_LEVEL = 1
+
+
+def check_fps(fmt: str, fps: int) -> int:
+    """The frame rate for a format: a positive integer; for a GIF one whose 100/fps is an integer."""
+    if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
+        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+    if fmt == "gif" and fps not in GIF_FPS:
+        raise OptionError(f"option --fps: a GIF stores frame durations in hundredths of a second, so only "
+                          f"{', '.join(map(str, GIF_FPS))} frames per second are exact, got {fps}; "
+                          f"choose one of them or --format mp4.")
+    return fps
+
+
+# --- ffmpeg ----------------------------------------------------------------------------------------
+
+def find_ffmpeg() -> str | None:
+    """ffmpeg on the PATH, else the one the optional `imageio-ffmpeg` package ships, else None."""
+    found = shutil.which("ffmpeg")
+    if found:
+        return found
+    try:
+        import imageio_ffmpeg
+    except ImportError:
+        return None
+    try:
+        return imageio_ffmpeg.get_ffmpeg_exe()
+    except (RuntimeError, OSError):  # the package without its binary
+        return None
+
+
+def require_ffmpeg() -> str:
+    """ffmpeg's path, or one sentence naming both ways to get it."""
+    exe = find_ffmpeg()
+    if exe is None:
+        raise ToolMissing("--format mp4 needs ffmpeg, which was found neither on the PATH nor in the imageio-ffmpeg "
+                          "package; install one of them: apt-get install ffmpeg, or pip install "
+                          "'sears-paradox[video]'.")
+    return exe
+
+
+def ffmpeg_command(exe: str, width: int, height: int, fps: int, target: str) -> list[str]:
+    """Raw RGB frames on standard input to H.264 (yuv420p, sizes padded to even with white) in an MP4 at `target`.
+
+    One thread and the bitexact flags, no metadata: the same frames give the same bytes with the same ffmpeg.
+    """
+    return [exe, "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
+            "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{width}x{height}", "-r", str(fps), "-i", "-",
+            "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:0:0:white",
+            "-c:v", "libx264", "-pix_fmt", "yuv420p", "-threads", "1", "-preset", "medium", "-crf", "18",
+            "-flags", "+bitexact", "-fflags", "+bitexact", "-map_metadata", "-1", "-movflags", "+faststart",
+            "-f", "mp4", target]
+
+
+# --- sinks -----------------------------------------------------------------------------------------
+
+class _Sink:
+    """What every sink shares: the frame size, checked on every frame; `with` aborts on an exception."""
+
+    def __init__(self, path: Path, fps: int, size: tuple[int, int] | None):
+        self.path, self.fps, self.size, self.count = Path(path), fps, size, 0
+        self._done = False
+
+    def _check(self, frame: np.ndarray) -> np.ndarray:
+        frame = np.asarray(frame)
+        if frame.dtype != np.uint8 or frame.ndim != 3 or frame.shape[2] != 3:
+            raise ValueError(f"a frame must be an (H, W, 3) uint8 array, got {frame.dtype} of shape {frame.shape}")
+        if self.size is None:
+            self.size = (frame.shape[1], frame.shape[0])
+        elif (frame.shape[1], frame.shape[0]) != tuple(self.size):
+            raise ValueError(f"frame {self.count} is {frame.shape[1]}x{frame.shape[0]}, the animation "
+                             f"{self.size[0]}x{self.size[1]}")
+        return frame
+
+    def add(self, frame: np.ndarray) -> None:
+        raise NotImplementedError
+
+    def close(self) -> bool:
+        raise NotImplementedError
+
+    def abort(self) -> None:
+        self._done = True
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, value, trace) -> None:
+        if not self._done:
+            self.abort()
+
+
+class GifSink(_Sink):
+    """A looping GIF, every frame 100/fps hundredths of a second, one palette for the whole animation.
+
+    Two passes, so that one palette fits every frame and no colour flickers: each frame is held
+    zlib-compressed (a diagram shrinks 20-fold or more) while the colours of all frames are counted;
+    `close` chooses the palette (`palette_of`), maps each frame to it (nearest colour, no dither) and
+    writes only the rectangle that changed since the frame before. Memory: the compressed frames, the
+    colour counts, and two frames at a time.
+    """
+
+    def __init__(self, path: Path, fps: int, size: tuple[int, int] | None = None):
+        check_fps("gif", fps)
+        super().__init__(path, fps, size)
+        self._held: list[bytes] = []
+        self._colours = np.empty(0, dtype=np.uint32)
+        self._counts = np.empty(0, dtype=np.int64)
+
+    def add(self, frame: np.ndarray) -> None:
+        frame = self._check(frame)
+        packed = pack(frame)
+        colours, counts = np.unique(packed, return_counts=True)
+        self._merge(colours, counts)
+        self._held.append(zlib.compress(np.ascontiguousarray(frame).tobytes(), _HOLD_LEVEL))
+        self.count += 1
+
+    def _merge(self, colours: np.ndarray, counts: np.ndarray) -> None:
+        both = np.concatenate([self._colours, colours])
+        merged, where = np.unique(both, return_inverse=True)
+        total = np.zeros(len(merged), dtype=np.int64)
+        np.add.at(total, where, np.concatenate([self._counts, counts]))
+        self._colours, self._counts = merged, total
+
+    def encode(self) -> bytes:
+        """The GIF's bytes (after every frame was added)."""
+        from PIL import GifImagePlugin, Image
+
+        if not self._held:
+            raise ValueError("an animation needs at least one frame")
+        width, height = self.size
+        palette = palette_of(self._colours, self._counts)
+        lookup = np.zeros(1 << 24, dtype=np.uint8)  # 0xRRGGBB -> palette index: 16 MiB, a gather per frame
+        lookup[self._colours] = nearest_entries(self._colours, palette)
+        table = np.zeros((GIF_COLOURS, 3), dtype=np.uint8)
+        table[:len(palette)] = palette
+        out = io.BytesIO()
+        out.write(b"GIF89a" + _u16(width) + _u16(height) + bytes([0xF7, 0, 0]) + table.tobytes())
+        out.write(b"!\xff\x0bNETSCAPE2.0\x03\x01" + _u16(0) + b"\x00")  # loop forever
+        previous = None
+        for held in self._held:
+            frame = np.frombuffer(zlib.decompress(held), dtype=np.uint8).reshape(height, width, 3)
+            index = lookup[pack(frame)]
+            box = _changed_box(previous, index)
+            previous = index
+            x0, y0, x1, y1 = box
+            crop = Image.frombytes("P", (x1 - x0, y1 - y0), np.ascontiguousarray(index[y0:y1, x0:x1]).tobytes())
+            crop.putpalette(table.tobytes())
+            # disposal 1: keep the frame, the next one paints only what changed
+            for chunk in GifImagePlugin.getdata(crop, (x0, y0), duration=1000 // self.fps, disposal=1):
+                out.write(chunk)
+        out.write(b";")
+        return out.getvalue()
+
+    def close(self) -> bool:
+        data = self.encode()
+        self._held = []
+        self._done = True
+        return write_atomic(self.path, data)
+
+    def abort(self) -> None:
+        self._held = []
+        super().abort()
+
+
+class Mp4Sink(_Sink):
+    """H.264 in an MP4 through ffmpeg: frames streamed to its standard input, written to a temporary folder,
+    then moved into place by `write_atomic` (so an unchanged file is left alone)."""
+
+    def __init__(self, path: Path, fps: int, size: tuple[int, int] | None = None, ffmpeg: str | None = None):
+        check_fps("mp4", fps)
+        super().__init__(path, fps, size)
+        self._exe = ffmpeg or require_ffmpeg()
+        self._folder: tempfile.TemporaryDirectory | None = None
+        self._process: subprocess.Popen | None = None
+        self._errors = None
+
+    def _start(self) -> None:
+        self._folder = tempfile.TemporaryDirectory(prefix="sears-paradox-")
+        self._target = os.path.join(self._folder.name, "video.mp4")
+        self._errors = tempfile.TemporaryFile()
+        width, height = self.size
+        self._process = subprocess.Popen(ffmpeg_command(self._exe, width, height, self.fps, self._target),
+                                         stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=self._errors)
+
+    def add(self, frame: np.ndarray) -> None:
+        frame = self._check(frame)
+        if self._process is None:
+            self._start()
+        try:
+            self._process.stdin.write(np.ascontiguousarray(frame).tobytes())
+        except BrokenPipeError:
+            self._fail()
+        self.count += 1
+
+    def _fail(self) -> None:
+        status = self._process.wait()
+        self._errors.seek(0)
+        said = self._errors.read().decode("utf-8", "replace").strip().splitlines()
+        self.abort()
+        raise WriteFailed(f"cannot write {self.path}: ffmpeg failed with status {status}"
+                          + (f": {said[-1]}" if said else "") + ".")
+
+    def close(self) -> bool:
+        if self._process is None:
+            raise ValueError("an animation needs at least one frame")
+        try:
+            self._process.stdin.close()
+        except BrokenPipeError:
+            pass
+        if self._process.wait() != 0:
+            self._fail()
+        try:
+            data = Path(self._target).read_bytes()
+        finally:
+            self.abort()
+        self._done = True
+        return write_atomic(self.path, data)
+
+    def abort(self) -> None:
+        if self._process is not None:
+            if self._process.poll() is None:
+                self._process.kill()
+            self._process.wait()
+            if self._process.stdin and not self._process.stdin.closed:
+                try:
+                    self._process.stdin.close()
+                except OSError:
+                    pass
+            self._process = None
+        if self._errors is not None:
+            self._errors.close()
+            self._errors = None
+        if self._folder is not None:
+            self._folder.cleanup()
+            self._folder = None
+        super().abort()
+
+
+class PngSink(_Sink):
+    """Numbered stills FOLDER/NAME_0000.png, NAME_0001.png, ..., each written atomically as it comes.
+
+    `path` is the folder; it is created if missing (its parent must exist). A still that already holds
+    the same bytes is left untouched. At `close`, stills of this NAME numbered beyond the last frame (left by
+    an earlier, longer run) are removed, so the folder holds exactly this animation. An interrupted run
+    leaves the stills written so far, each whole.
+    """
+
+    def __init__(self, path: Path, fps: int, size: tuple[int, int] | None = None, name: str | None = None):
+        check_fps("png", fps)
+        super().__init__(path, fps, size)
+        self.name = name or self.path.name
+        self.changed = False
+        check_folder(self.path)
+
+    def still(self, k: int) -> Path:
+        return self.path / f"{self.name}_{k:04d}.png"
+
+    def add(self, frame: np.ndarray) -> None:
+        frame = self._check(frame)
+        if self.count == 0:
+            self.path.mkdir(exist_ok=True)
+        self.changed |= write_atomic(self.still(self.count), png_bytes(frame))
+        self.count += 1
+
+    def close(self) -> bool:
+        if self.count == 0:
+            raise ValueError("an animation needs at least one frame")
+        pattern = re.compile(re.escape(self.name) + r"_(\d{4,})\.png")
+        for old in sorted(self.path.iterdir()):
+            match = pattern.fullmatch(old.name)
+            if match and int(match.group(1)) >= self.count and old.is_file():
+                old.unlink()
+                self.changed = True
+        self._done = True
+        return self.changed
+
+
+def check_folder(folder: str | os.PathLike) -> Path:
+    """The folder of the stills: an existing folder, or a new one whose parent exists and can be written."""
+    folder = Path(folder)
+    if folder.is_dir():
+        check_target(folder / ".probe")  # can be written into
+        return folder
+    if folder.exists():
+        raise OutputError(f"cannot write the stills into {folder}: it is a file, not a folder.")
+    parent = folder.absolute().parent
+    if not parent.is_dir():
+        raise OutputError(f"cannot create the folder {folder} for the stills: the folder {folder.parent} does not "
+                          f"exist; create it first.")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise OutputError(f"cannot create the folder {folder} for the stills: permission denied in the folder "
+                          f"{folder.parent}.")
+    return folder
+
+
+def png_bytes(frame: np.ndarray) -> bytes:
+    """One still: a PNG with no time or text chunk, compressed at a fixed level, so the same pixels give the
+    same bytes."""
+    from PIL import Image
+
+    out = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(frame), "RGB").save(out, "PNG", optimize=False, compress_level=6)
+    return out.getvalue()
+
+
+def open_sink(path: str | os.PathLike, fmt: str, fps: int, size: tuple[int, int] | None = None, *,
+              name: str | None = None):
+    """A sink for `fmt` (gif, mp4: a file; png: a folder of stills NAME_0000.png ...); `size` (W, H) or taken
+    from the first frame."""
+    if fmt == "gif":
+        return GifSink(Path(path), fps, size)
+    if fmt == "mp4":
+        return Mp4Sink(Path(path), fps, size)
+    if fmt == "png":
+        return PngSink(Path(path), fps, size, name=name)
+    raise OptionError(f"option --format must be one of {', '.join(FORMATS)}, got {fmt!r}.")
+
+
+def write_frames(path: str | os.PathLike, fmt: str, fps: int, frames: Iterable[np.ndarray], *,
+                 name: str | None = None) -> bool:
+    """Every frame into one sink; True if written, False if unchanged. Leaves no file on any exception."""
+    sink = open_sink(path, fmt, fps, name=name)
+    with sink:
+        for frame in frames:
+            sink.add(frame)
+        return sink.close()
+
+
+# --- palettes --------------------------------------------------------------------------------------
+
+def pack(frame: np.ndarray) -> np.ndarray:
+    """Each pixel's colour as one integer 0xRRGGBB, in the frame's shape (H, W)."""
+    f = frame.astype(np.uint32)
+    return (f[..., 0] << 16) | (f[..., 1] << 8) | f[..., 2]
+
+
+def unpack(colours: np.ndarray) -> np.ndarray:
+    """(n, 3) uint8 colours from integers 0xRRGGBB."""
+    c = np.asarray(colours, dtype=np.uint32)
+    return np.stack([(c >> 16) & 255, (c >> 8) & 255, c & 255], axis=-1).astype(np.uint8)
+
+
+def palette_of(colours: np.ndarray, counts: np.ndarray, size: int = GIF_COLOURS) -> np.ndarray:
+    """At most `size` colours for pixels of the given colours (sorted 0xRRGGBB integers) and counts.
+
+    Every colour, exactly, when there are no more than `size`. Otherwise a greedy variance cut: start with
+    one box of all colours and split, `size` - 1 times, the box with the largest count-weighted squared
+    error about its mean, across its widest axis at the cut that leaves the least error. Each box gives its
+    count-weighted mean, rounded. A colour that covers many pixels (the page, a line's ink) ends alone in a
+    box, so it is kept exactly; anti-aliased edges share the rest. Deterministic: no randomness, ties broken
+    by order.
+    """
+    rgb = unpack(colours).astype(np.float64)
+    if len(rgb) <= size:
+        return rgb.astype(np.uint8)
+    w = counts.astype(np.float64)
+
+    def error(idx: np.ndarray) -> float:
+        ww = w[idx]
+        mean = (rgb[idx] * ww[:, None]).sum(0) / ww.sum()
+        return float((ww * ((rgb[idx] - mean) ** 2).sum(1)).sum())
+
+    boxes = [(error(np.arange(len(rgb))), np.arange(len(rgb)))]
+    while len(boxes) < size:
+        k = max(range(len(boxes)), key=lambda j: boxes[j][0])
+        err, idx = boxes[k]
+        if err <= 0:
+            break
+        points, ww = rgb[idx], w[idx]
+        mean = (points * ww[:, None]).sum(0) / ww.sum()
+        axis = int(np.argmax((ww[:, None] * (points - mean) ** 2).sum(0)))
+        order = np.argsort(points[:, axis], kind="stable")
+        idx, points, ww = idx[order], points[order], ww[order]
+        # the cut between two distinct values along the axis that minimises the two halves' squared error
+        cw = np.cumsum(ww)
+        cs = np.cumsum(points * ww[:, None], axis=0)
+        cq = np.cumsum((points ** 2).sum(1) * ww)
+        left_err = cq[:-1] - (cs[:-1] ** 2).sum(1) / cw[:-1]
+        rw, rs, rq = cw[-1] - cw[:-1], cs[-1] - cs[:-1], cq[-1] - cq[:-1]
+        right_err = rq - (rs ** 2).sum(1) / rw
+        valid = points[1:, axis] != points[:-1, axis]
+        total = np.where(valid, left_err + right_err, np.inf)
+        if not np.isfinite(total).any():
+            boxes[k] = (0.0, idx)
+            continue
+        cut = int(np.argmin(total)) + 1
+        boxes[k:k + 1] = [(error(idx[:cut]), idx[:cut]), (error(idx[cut:]), idx[cut:])]
+    out = np.array([(rgb[idx] * w[idx, None]).sum(0) / w[idx].sum() for _, idx in boxes])
+    return np.clip(np.rint(out), 0, 255).astype(np.uint8)
+
+
+def nearest_entries(colours: np.ndarray, palette: np.ndarray) -> np.ndarray:
+    """For each colour (0xRRGGBB integers), the index of the nearest palette entry (squared RGB distance; the
+    first of equals)."""
+    rgb = unpack(colours).astype(np.int32)
+    pal = palette.astype(np.int32)
+    out = np.empty(len(rgb), dtype=np.int64)
+    for start in range(0, len(rgb), 4096):
+        chunk = rgb[start:start + 4096]
+        d = ((chunk[:, None, :] - pal[None, :, :]) ** 2).sum(2)
+        out[start:start + 4096] = np.argmin(d, axis=1)
+    return out
+
+
+def _changed_box(previous: np.ndarray | None, index: np.ndarray) -> tuple[int, int, int, int]:
+    """(x0, y0, x1, y1): the rectangle where `index` differs from `previous`; the whole frame for the first, one
+    pixel for an identical frame (a GIF frame cannot be empty, and each frame must be there to keep its time)."""
+    if previous is None:
+        return 0, 0, index.shape[1], index.shape[0]
+    changed = previous != index
+    rows, cols = np.flatnonzero(changed.any(1)), np.flatnonzero(changed.any(0))
+    if len(rows) == 0:
+        return 0, 0, 1, 1
+    return int(cols[0]), int(rows[0]), int(cols[-1]) + 1, int(rows[-1]) + 1
+
+
+def _u16(n: int) -> bytes:
+    return int(n).to_bytes(2, "little")

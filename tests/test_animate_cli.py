@@ -1,0 +1,164 @@
+"""`sears-paradox animate`: names, formats, frame counts and durations read back, determinism, and bad input
+(one sentence; exit 2, or 1 for a missing ffmpeg). Small: a few frames each, so the file runs in seconds."""
+
+import os
+import subprocess
+import sys
+
+import pytest
+from click.testing import CliRunner
+from PIL import Image
+
+from sears_paradox_cli.main import main
+
+#: a short animation: 4 frames
+SHORT = ["--fps", "4", "--seconds", "1"]
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, ["animate", *args])
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+def error_of(*args, expect=2) -> str:
+    result = run(*args, expect=expect)
+    assert isinstance(result.exception, SystemExit), result.exception
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1 and "Traceback" not in result.output, result.output
+    return lines[0][len("Error: "):]
+
+
+@pytest.fixture
+def here(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
+    assert run("fig2", *SHORT).output == "outputs/fig2_now.gif\n"
+    im = Image.open(here / "outputs" / "fig2_now.gif")
+    assert im.n_frames == 4 and im.info["duration"] == 250 and im.info["loop"] == 0
+    first = (here / "outputs" / "fig2_now.gif").read_bytes()
+    stamp = os.stat(here / "outputs" / "fig2_now.gif").st_mtime_ns
+    assert run("fig2", *SHORT).output == "outputs/fig2_now.gif (unchanged)\n"
+    assert os.stat(here / "outputs" / "fig2_now.gif").st_mtime_ns == stamp
+    (here / "outputs" / "fig2_now.gif").unlink()
+    run("fig2", *SHORT, "-q")
+    assert (here / "outputs" / "fig2_now.gif").read_bytes() == first  # byte-identical, and -q prints nothing
+
+
+@pytest.mark.parametrize("args, path", [
+    (["--mode", "boost"], "outputs/fig2_boost.gif"),
+    (["--mode", "boost", "--v", "0.8", "--frame", "rest..0.3"], "outputs/fig2_boost_v0.8_rest_u0.3.gif"),
+    (["--frame", "rest", "--style", "print"], "outputs/fig2_now_rest_print.gif"),
+    (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now.gif"),
+    (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2.gif"),
+])
+def test_names_follow_plots_rule_with_the_mode_as_the_kind(here, args, path):
+    assert run("fig2", *SHORT, *args).output == f"{path}\n"
+    assert (here / path).is_file()
+
+
+def test_boost_has_its_frame_count(here):
+    run("fig1", "--mode", "boost", "--fps", "5", "--seconds", "1.2")
+    assert Image.open(here / "outputs" / "fig1_boost.gif").n_frames == 6
+
+
+def test_png_writes_numbered_stills_into_a_folder_named_like_the_file(here):
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now/\n"
+    names = sorted(p.name for p in (here / "outputs" / "fig2_now").iterdir())
+    assert names == [f"fig2_now_{k:04d}.png" for k in range(4)]
+    sizes = {Image.open(here / "outputs" / "fig2_now" / n).size for n in names}
+    assert len(sizes) == 1
+    before = {n: (here / "outputs" / "fig2_now" / n).read_bytes() for n in names}
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now/ (unchanged)\n"
+    assert run("fig2", *SHORT, "--format", "png", "-o", "stills").output == "stills/\n"
+    assert {n: (here / "stills" / n).read_bytes() for n in names} == before
+
+
+def test_output_file_and_folder(here):
+    (here / "anims").mkdir()
+    assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now.gif\n"
+    assert run("fig2", *SHORT, "-o", "anims/lecture.GIF").output == "anims/lecture.GIF\n"
+    assert not (here / "outputs").exists()  # only the default folder is ever created
+
+
+def test_mp4_has_its_frames(here):
+    from rodparadox.video import find_ffmpeg
+
+    exe = find_ffmpeg()
+    if exe is None:
+        pytest.skip("no ffmpeg: neither on the PATH nor from imageio-ffmpeg")
+    assert run("fig2", *SHORT, "-o", "a.mp4").output == "a.mp4\n"
+    probe = subprocess.run([exe, "-v", "error", "-i", "a.mp4", "-f", "rawvideo", "-pix_fmt", "rgb24", "-"],
+                           capture_output=True, check=True).stdout
+    assert run("fig2", *SHORT, "--format", "mp4").output == "outputs/fig2_now.mp4\n"
+    assert (here / "a.mp4").read_bytes() == (here / "outputs" / "fig2_now.mp4").read_bytes()
+    gif = Image.open(run("fig2", *SHORT).output.strip())
+    width, height = (n + n % 2 for n in gif.size)
+    assert len(probe) == 4 * width * height * 3
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--fps", "0"], "option --fps must be a whole number of frames per second above 0, got 0."),
+    (["--seconds", "-1"], "option --seconds must be a duration above 0 and at most 120 seconds, got -1.0."),
+    (["--fps", "30"], "option --fps: a GIF stores frame durations in hundredths of a second, so only 1, 2, 4, 5, "
+                      "10, 20, 25, 50 frames per second are exact, got 30; choose one of them or --format mp4."),
+    (["--format", "webm"], "option --format must be one of gif, mp4, png, got 'webm'."),
+    (["-o", "a.mp4", "--format", "gif"], "option -o names 'a.mp4' but --format is gif; make them agree."),
+    (["-o", "a.png", "--format", "png"], "option -o: png writes numbered stills into a folder; name the folder, "
+                                          "not 'a.png'."),
+    (["-o", "nowhere/a.gif"], "cannot write nowhere/a.gif: the folder nowhere does not exist; create it first."),
+    (["-o", "nowhere"], "the output folder nowhere does not exist; create it first."),
+    (["-o", ""], "option -o must name a file or folder, got ''."),
+    (["--mode", "boost", "--frame", "rest"], "option --frame: in boost mode give the frames to boost between as "
+                                             "A..B (each rest, moving or a velocity U relative to S), e.g. "
+                                             "rest..moving, got 'rest'."),
+    (["--frame", "fast"], "option --frame: a frame must be rest, moving, both or a velocity U with -0.9999999 <= "
+                          "U <= 0.9999999 (or a comma-separated list of these), got 'fast'."),
+    (["--v", "1"], None),
+])
+def test_bad_input_is_one_sentence_exit_2_and_writes_nothing(here, args, message):
+    said = error_of("fig2", *args)
+    if message is not None:
+        assert said == message
+    assert list(here.iterdir()) == []
+
+
+def test_a_file_as_the_stills_folder_is_refused(here):
+    (here / "stills").write_text("x")
+    assert error_of("fig2", *SHORT, "--format", "png", "-o", "stills") == \
+        "cannot write the stills into stills: it is a file, not a folder."
+
+
+def test_an_unwritable_folder_is_refused(here, unwritable_folder):
+    said = error_of("fig2", *SHORT, "-o", str(unwritable_folder))
+    assert said == f"cannot write {unwritable_folder}/fig2_now.gif: permission denied in the folder {unwritable_folder}."
+
+
+def test_mp4_without_ffmpeg_is_one_sentence_and_exit_1(here, monkeypatch):
+    import rodparadox.video
+
+    monkeypatch.setattr(rodparadox.video, "find_ffmpeg", lambda: None)
+    assert error_of("fig2", "--format", "mp4", expect=1) == (
+        "--format mp4 needs ffmpeg, which was found neither on the PATH nor in the imageio-ffmpeg package; install "
+        "one of them: apt-get install ffmpeg, or pip install 'sears-paradox[video]'.")
+    assert list(here.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv", [["animate", "--help"], ["animate", "fig2", "--fps", "0"],
+                                  ["animate", "fig2", "--fps", "30"]])
+def test_help_and_refused_input_import_no_matplotlib(argv):
+    code = ("import sys\nfrom sears_paradox_cli.main import main\n"
+            f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
+            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
+
+
+def test_no_progress_bar_when_stderr_is_not_a_terminal(here):
+    code = "import sys\nfrom sears_paradox_cli.main import main\nmain(sys.argv[1:])"
+    result = subprocess.run([sys.executable, "-c", code, "animate", "fig2", *SHORT],
+                            capture_output=True, text=True, timeout=120)
+    assert (result.returncode, result.stdout, result.stderr) == (0, "outputs/fig2_now.gif\n", "")
