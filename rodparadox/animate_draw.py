@@ -1,10 +1,11 @@
-"""A stand-in for the animation's drawing, until `rodparadox.render.animate.frames_of` replaces it.
+"""The animation's frames (README, "Animations"): now mode over `plot`'s diagram, boost mode over fixed axes.
 
-It draws only what the timeline says, plainly, so the whole pipeline (timeline -> frames -> GIF, MP4, PNG)
-runs end to end and is tested: in now mode, one strip per panel (the rod as a bar coloured by its material
-points' velocities, the particles as labelled dots, the impacts that flash, the panel's time); in boost
-mode, the world-lines in the frame of the instant, over fixed axes. matplotlib (Agg) is imported here;
-import this module only after every input has been checked.
+Now mode draws the diagram once, as `plot` does, grows the figure downward by a band of strips, and
+for each instant redraws only what moves over the saved background (blitting): each frame's own line
+of simultaneity sweeping up its panel, and under the panel, on the same x scale, that frame's space at
+that instant (the rod as a bar coloured by its material points' velocities, the particles as labelled
+dots, an impact flashing as a star). Boost mode redraws the world-lines in the frame of each instant over
+fixed axes. matplotlib (Agg) is imported here; import this module only after every input has been checked.
 
 The interface the real drawing keeps:
 
@@ -31,6 +32,8 @@ from matplotlib.figure import Figure
 from .animation import BoostTimeline, NowTimeline
 from .engine import History
 from .frames import Frame, sampling_tolerance, view
+from .numbers import shown
+from .styles import STYLES
 
 _SIZES = {"default": 10.0, "print": 10.0, "slides": 14.0}
 _MAPS = {"default": "RdBu_r", "print": "PuOr_r", "slides": "RdBu_r"}
@@ -50,45 +53,110 @@ def _rgb(canvas: FigureCanvasAgg) -> np.ndarray:
     return np.asarray(canvas.buffer_rgba())[..., :3].copy()
 
 
+#: the band under the diagram holding one strip per panel, inches: title, strip, colour bar and its ticks
+_STRIP_BAND = {"default": 1.25, "print": 1.25, "slides": 1.9}
+
+
 def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.ndarray]:
-    size = _SIZES.get(style, 10.0)
-    n = len(timeline.frames)
-    figure = Figure(figsize=(8.0, 1.3 * n + 0.3), dpi=_DPI)
-    canvas = FigureCanvasAgg(figure)
-    tolerance = sampling_tolerance(history)
-    bars, dots, labels, readouts = [], [], [], []
-    for p, (frame, window, scale) in enumerate(zip(timeline.frames, timeline.windows, timeline.scales)):
-        ax = figure.add_axes((0.06, 1 - (p + 1) / n + 0.28 / n, 0.78, 0.5 / n))
-        points = view(history, frame).worldline_points(tolerance)
-        xs = np.concatenate([pts[:, 0] for pts in points.values()])
-        pad = 0.05 * (xs.max() - xs.min())
-        ax.set_xlim(xs.min() - pad, xs.max() + pad)
-        ax.set_ylim(-1, 1)
-        ax.set_yticks([])
-        ax.tick_params(labelsize=0.8 * size)
-        norm = Normalize(*scale.limits)
-        bar = LineCollection([], cmap=_MAPS.get(style, "RdBu_r"), norm=norm, linewidths=10, capstyle="butt")
-        ax.add_collection(bar)
-        colour_axes = figure.add_axes((0.87, 1 - (p + 1) / n + 0.28 / n, 0.015, 0.5 / n))
-        figure.colorbar(bar, cax=colour_axes).ax.tick_params(labelsize=0.7 * size)
-        bars.append(bar)
-        dots.append(ax.plot([], [], "o", color="black", markersize=5)[0])
-        labels.append([ax.text(0, 0.35, name, ha="center", fontsize=size) for name, _ in
-                       timeline.strip(history, 0, p).particles])
-        readouts.append(ax.set_title("", fontsize=size, loc="left"))
-    for k in range(len(timeline)):
-        for p, frame in enumerate(timeline.frames):
-            strip = timeline.strip(history, k, p)
-            mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
-            bars[p].set_segments([[(a, 0), (b, 0)] for a, b in zip(strip.x[:-1], strip.x[1:])])
-            bars[p].set_array(mid)
-            dots[p].set_data([x for _, x in strip.particles], [0.0] * len(strip.particles))
-            for text, (name, x) in zip(labels[p], strip.particles):
-                text.set_position((x, 0.35))
-            flash = f"   impact {', '.join(strip.flashing)}" if strip.flashing else ""
-            readouts[p].set_text(f"{frame.name}: t = {strip.t:+.3f}{flash}")
-            readouts[p].set_color("crimson" if strip.flashing else "black")
-        yield _rgb(canvas)
+    """The diagram as `plot` draws it, with each frame's own line of simultaneity (its "now", horizontal in its
+    own panel) sweeping up, and under each panel a strip of that frame's space at that instant, on the panel's
+    x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting)."""
+    from . import render
+
+    st = STYLES[style]
+    L = history.scenario.L
+    with render.style_context(style):
+        figure = render.draw(history, timeline.frames, style)
+        width, height = figure.get_size_inches()
+        band = _STRIP_BAND.get(style, 1.25)
+        panels = [ax for ax in figure.axes if (ax.get_gid() or "").endswith("-axes")]
+        rows = sorted({round(ax.get_position().y0, 6) for ax in panels}, reverse=True)
+        total = height + band * len(rows)
+        _make_room_below(figure, height, total, band * len(rows))
+        figure.set_dpi(_NOW_DPI.get(style, _DPI))
+        canvas = FigureCanvasAgg(figure)
+        fs = st.font_size
+        moving = []
+        updates = []
+        for p, (ax, frame, scale) in enumerate(zip(panels, timeline.frames, timeline.scales)):
+            letter = (ax.get_gid() or "a")[0]
+            now = ax.axhline(timeline.times[0, p] / L, color=_NOW_COLOUR[style], linewidth=2.0 * st.rod.width / 1.7,
+                             zorder=8, animated=True, gid=f"{letter}-now")
+            # the strip: under the panel, on its x scale, in the band of the panel's row
+            pos = ax.get_position()
+            # which row of panels it is in: its place before the band was added
+            row = min(range(len(rows)), key=lambda r: abs(rows[r] - (pos.y0 * total - band * len(rows)) / height))
+            base = band * (len(rows) - 1 - row)
+            strip_ax = figure.add_axes((pos.x0, (base + band * 0.52) / total, pos.width, band * 0.24 / total))
+            strip_ax.set_xlim(ax.get_xlim())
+            strip_ax.set_ylim(-1.0, 1.0)
+            strip_ax.set_yticks([])
+            strip_ax.tick_params(labelsize=0.8 * fs, length=2.5, pad=2)
+            strip_ax.set_gid(f"{letter}-strip")
+            norm = Normalize(*scale.limits)
+            bar = LineCollection([], cmap=_MAPS.get(style, "RdBu_r"), norm=norm, linewidths=band * 0.24 * 72 * 0.5,
+                                 capstyle="butt", animated=True)
+            strip_ax.add_collection(bar)
+            colour_ax = figure.add_axes((pos.x0 + 0.15 * pos.width, (base + band * 0.27) / total, 0.7 * pos.width,
+                                         band * 0.06 / total))
+            bar_legend = figure.colorbar(bar, cax=colour_ax, orientation="horizontal")
+            bar_legend.ax.tick_params(labelsize=0.8 * fs, length=2, pad=1)
+            bar_legend.set_label("velocity of the rod's material points", fontsize=0.8 * fs, labelpad=1)
+            dots = strip_ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=True)[0]
+            names = [strip_ax.text(0.0, 0.45, name, ha="center", va="bottom", fontsize=fs, style="italic",
+                                   color=st.particles[name].colour, animated=True)
+                     for name, _ in timeline.strip(history, 0, p).particles]
+            flash = strip_ax.plot([], [], "*", color=_NOW_COLOUR[style], markersize=2.2 * st.impact_size,
+                                  animated=True)[0]
+            readout = strip_ax.set_title("", fontsize=fs, loc="left", pad=3)
+            readout.set_animated(True)
+            impacts = {e.impact.label: e.x / L for e in view(history, frame).events}
+            moving += [now, bar, dots, flash, readout, *names]
+            updates.append((p, frame, now, bar, dots, names, flash, readout, impacts))
+        canvas.draw()
+        background = canvas.copy_from_bbox(figure.bbox)
+        for k in range(len(timeline)):
+            canvas.restore_region(background)
+            for p, frame, now, bar, dots, names, flash, readout, impacts in updates:
+                strip = timeline.strip(history, k, p)
+                now.set_ydata([strip.t / L, strip.t / L])
+                x = strip.x / L
+                mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
+                bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
+                bar.set_array(mid)
+                dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))
+                for text, (name, xp) in zip(names, strip.particles):
+                    text.set_position((xp / L, 0.45))
+                flash.set_data([impacts[label] for label in strip.flashing], [0.0] * len(strip.flashing))
+                symbol = render.frame_symbol(frame)
+                clock = render.coordinate_names(frame)[1]
+                lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
+                readout.set_text(f"frame {symbol} at {clock.strip('$')} = {shown(strip.t / L, 4)} L{lit}")
+                for artist in (now, bar, dots, flash, readout, *names):
+                    artist.axes.draw_artist(artist)
+            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+#: pixels per inch of the now-mode frames: about 1050 px wide on the 7 in page, 1330 px on the 13.3 in slide
+_NOW_DPI = {"default": 150, "print": 150, "slides": 100}
+#: the frame's own now-line and an impact's flash: a colour of its own in each style
+_NOW_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
+
+
+def _make_room_below(figure: Figure, height: float, total: float, band: float) -> None:
+    """Grow the figure downward by `band` inches, keeping everything already in it where it was on the page."""
+    width = figure.get_size_inches()[0]
+    figure.set_size_inches(width, total)
+    squeeze = height / total
+    for ax in figure.axes:
+        pos = ax.get_position()
+        ax.set_position((pos.x0, (pos.y0 * height + band) / total, pos.width, pos.height * squeeze))
+    for text in figure.texts:
+        x, y = text.get_position()
+        text.set_position((x, (y * height + band) / total))
+    for legend in figure.legends:
+        anchor = legend.get_bbox_to_anchor().transformed(figure.transFigure.inverted())
+        legend.set_bbox_to_anchor((anchor.x0, (anchor.y0 * height + band) / total), transform=figure.transFigure)
 
 
 def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:

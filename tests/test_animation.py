@@ -11,7 +11,7 @@ from rodparadox.animation import (FLASH_FRACTION, MAX_FRAMES, boost_ends, boost_
                                   colour_scale, frame_count, now_timeline, now_times, strip_at)
 from rodparadox.engine import run
 from rodparadox.errors import OptionError
-from rodparadox.frames import Frame, time_window
+from rodparadox.frames import Frame, paper_frames, time_window
 from rodparadox.kinematics import Event
 from rodparadox.rod import material_worldline
 from rodparadox.scenario import load
@@ -218,3 +218,25 @@ def test_frame_count_refuses_in_one_sentence(seconds, fps, message):
     with pytest.raises(OptionError) as e:
         frame_count(seconds, fps)
     assert str(e.value) == message
+
+
+def test_now_frames_show_the_diagram_with_a_moving_now_line_and_are_reproducible():
+    """The drawing: every frame the same size; the now-line's colour (#CC0033) appears on a row of pixels that climbs
+    from frame to frame (t grows upward); two runs give identical pixels."""
+    from rodparadox.animate_draw import frames_of
+    from rodparadox.animation import timeline as make_timeline
+
+    h = run(load("fig2"))
+    frames = paper_frames(0.6)
+    line = make_timeline(h, frames, "now", 4)
+    first = list(frames_of(h, frames, "now", "default", line))
+    again = list(frames_of(h, frames, "now", "default", line))
+    assert len(first) == 4 and len({f.shape for f in first}) == 1
+    assert all(np.array_equal(a, b) for a, b in zip(first, again))
+    rows = []
+    for image in first:
+        red = np.all(np.abs(image.astype(int) - [0xCC, 0x00, 0x33]) <= 8, axis=2)
+        counts = red.sum(axis=1)
+        rows.append(int(np.argmax(counts)))  # the row where the now-line runs across a panel
+        assert counts.max() > 0.2 * image.shape[1]
+    assert rows == sorted(rows, reverse=True) and len(set(rows)) == 4  # image rows count down as t goes up
