@@ -35,7 +35,6 @@ from .frames import Frame, sampling_tolerance, view
 from .numbers import shown
 from .styles import STYLES
 
-_SIZES = {"default": 10.0, "print": 10.0, "slides": 14.0}
 _MAPS = {"default": "RdBu_r", "print": "PuOr_r", "slides": "RdBu_r"}
 _DPI = 100
 
@@ -46,11 +45,6 @@ def frames_of(history: History, frames: tuple[Frame, ...], mode: str, style: str
     if mode == "now":
         return _now(history, timeline, style)
     return _boost(history, timeline, style)
-
-
-def _rgb(canvas: FigureCanvasAgg) -> np.ndarray:
-    canvas.draw()
-    return np.asarray(canvas.buffer_rgba())[..., :3].copy()
 
 
 #: the band under the diagram holding one strip per panel, inches: title, strip, colour bar and its ticks
@@ -160,22 +154,76 @@ def _make_room_below(figure: Figure, height: float, total: float, band: float) -
 
 
 def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:
-    size = _SIZES.get(style, 10.0)
-    figure = Figure(figsize=(6.0, 6.0), dpi=_DPI)
-    canvas = FigureCanvasAgg(figure)
-    ax = figure.add_axes((0.12, 0.1, 0.83, 0.8))
-    ax.set_xlim(*timeline.x_window)
-    ax.set_ylim(*timeline.t_window)
-    ax.set_xlabel("x / L", fontsize=size)
-    ax.set_ylabel("t / L", fontsize=size)
-    tolerance = sampling_tolerance(history)
-    lines = {}
-    for frame in timeline.frames:
-        for name, worldline in history.worldlines:  # over the whole fixed window, so lines reach the axes' edges
-            points = worldline.boosted(frame.rapidity).sample(*timeline.t_window, tolerance)
-            if name not in lines:
-                lines[name] = ax.plot([], [], "-" if name.startswith("rod") else "--",
-                                      color="tab:blue" if name.startswith("rod") else "black")[0]
-            lines[name].set_data(points[:, 0], points[:, 1])
-        ax.set_title(f"frame {frame.name}: velocity {frame.velocity:+.4f} relative to S", fontsize=size)
-        yield _rgb(canvas)
+    """One panel over fixed axes; at each instant the world-lines, the rod's world-sheet, the impacts and the axes
+    of S and S' (tilted, through the shared origin) redrawn in the frame of that instant, over the saved
+    background (blitting)."""
+    from matplotlib.patches import Polygon
+
+    from . import render
+
+    st = STYLES[style]
+    L, v = history.scenario.L, history.scenario.v
+    fs = st.font_size
+    with render.style_context(style):
+        side = min(st.max_width, st.max_height) * 0.8
+        figure = Figure(figsize=(side, side), dpi=_NOW_DPI.get(style, _DPI))
+        canvas = FigureCanvasAgg(figure)
+        ax = figure.add_axes((0.14, 0.1, 0.8, 0.78))
+        (x0, x1), (t0, t1) = (np.array(timeline.x_window) / L), (np.array(timeline.t_window) / L)
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(t0, t1)
+        ax.set_xlabel("x/L in the frame of the instant", fontsize=1.05 * fs)
+        ax.set_ylabel("t/L", fontsize=1.05 * fs)
+        ax.tick_params(labelsize=fs)
+        title = ax.set_title("", fontsize=1.1 * fs)
+        title.set_animated(True)
+        tolerance = sampling_tolerance(history)
+        sheet = ax.add_patch(Polygon(np.zeros((3, 2)), closed=True, facecolor=st.sheet, edgecolor="none", zorder=1,
+                                     animated=True))
+        inks = {name: (st.rod if name.startswith("rod_") else st.particles[name]) for name, _ in history.worldlines}
+        lines = {name: ax.plot([], [], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes, zorder=4,
+                               animated=True)[0] for name, ink in inks.items()}
+        axes_of = {(frame, axis): ax.plot([], [], color=st.other_axes.colour, linewidth=st.other_axes.width,
+                                          linestyle=st.other_axes.dashes, zorder=2, animated=True)[0]
+                   for frame in ("rest", "moving") for axis in ("x", "t")}
+        names = {key: ax.text(0, 0, "", color=st.other_axes.colour, fontsize=fs, style="italic", animated=True)
+                 for key in axes_of}
+        dots = ax.plot([], [], "o", color=st.impact_colour, markersize=st.impact_size, markeredgecolor="white",
+                       zorder=7, animated=True)[0]
+        labels = [ax.text(0, 0, render.impact_text(i.label), fontsize=fs, animated=True) for i in history.impacts]
+        canvas.draw()
+        background = canvas.copy_from_bbox(figure.bbox)
+        reach = 2.0 * max(abs(x0), abs(x1), abs(t0), abs(t1))
+        for frame in timeline.frames:
+            canvas.restore_region(background)
+            eta = frame.rapidity
+            points = {name: w.boosted(eta).sample(*timeline.t_window, tolerance) / L for name, w in history.worldlines}
+            for name, line in lines.items():
+                line.set_data(points[name][:, 0], points[name][:, 1])
+            sheet.set_xy(np.concatenate([points["rod_left"], points["rod_right"][::-1]]))
+            for (other, axis), line in axes_of.items():
+                u = render.relative_velocity(0.0 if other == "rest" else -v, frame.velocity)  # that frame, seen here
+                dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
+                line.set_data([-reach * dx, reach * dx], [-reach * dt, reach * dt])
+                names[(other, axis)].set_text(axis + ("\N{PRIME}" if other == "moving" else ""))
+                names[(other, axis)].set_position(_inside_end(dx, dt, (x0, x1, t0, t1)))
+            events = [i.event.boosted(eta) for i in history.impacts]
+            dots.set_data([e.x / L for e in events], [e.t / L for e in events])
+            for text, e in zip(labels, events):
+                text.set_position((e.x / L + 0.03 * (x1 - x0), e.t / L))
+            title.set_text(f"frame of velocity {shown(frame.velocity, 4)} relative to S")
+            for artist in (sheet, *axes_of.values(), *names.values(), *lines.values(), dots, *labels, title):
+                ax.draw_artist(artist)
+            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+def _inside_end(dx: float, dt: float, box) -> tuple[float, float]:
+    """Where the line through the origin along (dx, dt) leaves the box (x0, x1, t0, t1), on its upper or right
+    side, pulled in a little: where the axis's name goes."""
+    x0, x1, t0, t1 = box
+    if dt < 0 or (dt == 0 and dx < 0):
+        dx, dt = -dx, -dt
+    limits = [t1 * 0.9 / dt] if dt > 0 else []
+    limits += [x1 * 0.9 / dx] if dx > 0 else [x0 * 0.9 / dx] if dx < 0 else []
+    scale = min(limit for limit in limits if limit > 0) if any(limit > 0 for limit in limits) else 0.0
+    return dx * scale, dt * scale
