@@ -18,10 +18,10 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from .engine import History
-from .frames import Frame
+from .frames import PANEL_LETTERS, Frame
 from .ledger import impact_entries, initial_total, ledger_slice
 from .ledger_report import slice_times
-from .render import PANEL_LETTERS, axis_label, coordinate_names, frame_symbol, style_context
+from .render import axis_label, coordinate_names, frame_symbol, style_context
 from .styles import Style
 
 #: where a time is one impact's instant: the rounding of boosting an event twice
