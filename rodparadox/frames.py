@@ -17,8 +17,10 @@ from .kinematics import SAMPLING_TOLERANCE, Event, Segment
 from .model import FASTEST
 from .numbers import exact
 
+#: one panel per frame, lettered (a), (b), ...: at most eight in one figure
+PANEL_LETTERS = "abcdefgh"
 #: panels in one figure, lettered (a) to (h): the most frames one figure shows
-MAX_PANELS = 8
+MAX_PANELS = len(PANEL_LETTERS)
 #: the fastest frame shown, as fast as the fastest v (model.FASTEST): faster, g exceeds 2000 and a
 #: particle's velocity in the frame, 1 - 1e-14 or closer, no longer has the digits to tell it from c
 FASTEST_FRAME = FASTEST
@@ -30,6 +32,21 @@ def check_velocity(u: float) -> float:
         raise FrameError(f"a frame velocity must be a number U with {-FASTEST_FRAME!r} <= U <= {FASTEST_FRAME!r} "
                          f"(units of c) for double precision to place the events, got {u!r}.")
     return float(u) + 0.0
+
+
+def relative_velocity(u: float, w: float) -> float:
+    """Velocity, seen from a frame of velocity w, of a frame of velocity u (both relative to S): velocity addition."""
+    return (u - w) / (1.0 - u * w)
+
+
+def rest_frame() -> "Frame":
+    """S: the frame in which the rod is at rest before any impact."""
+    return Frame("rest", 0.0)
+
+
+def moving_frame(v: float) -> "Frame":
+    """S': the paper's moving frame, of velocity -v relative to S (the rod moves at +v in it)."""
+    return Frame("moving", -v)
 
 
 def frame_of_velocity(u: float) -> "Frame":
@@ -64,7 +81,7 @@ class Frame:
 
 def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, ...]:
     """S and S', and optionally one more frame of the given velocity relative to S (`frame_of_velocity`)."""
-    frames = [Frame("rest", 0.0), Frame("moving", -v)]
+    frames = [rest_frame(), moving_frame(v)]
     if extra_velocity is not None:
         frames.append(frame_of_velocity(extra_velocity))
     return tuple(frames)
@@ -83,7 +100,7 @@ def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
     for item in (part.strip() for part in spec.split(",")):
         named = {"rest": ("rest",), "moving": ("moving",), "both": ("rest", "moving")}.get(item)
         if named is not None:
-            asked = [Frame(name, 0.0 if name == "rest" else -v) for name in named]
+            asked = [rest_frame() if name == "rest" else moving_frame(v) for name in named]
         else:
             try:
                 u = float(item) + 0.0  # -0 is 0

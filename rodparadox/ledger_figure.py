@@ -19,11 +19,11 @@ from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter
 
 from .engine import History
-from .frames import Frame
+from .frames import PANEL_LETTERS, Frame
 from .ledger import ZERO, impact_entries, initial_total, ledger_slice
 from .ledger_report import slice_times
 from .numbers import shown
-from .render import PANEL_LETTERS, axis_label, coordinate_names, frame_symbol, style_context
+from .render import axis_label, coordinate_names, frame_symbol, style_context
 from .styles import Style
 
 #: where a time is one impact's instant: the rounding of boosting an event twice

@@ -1,0 +1,162 @@
+"""A whole diagram: panels laid out in points, each drawn from the layers, a suptitle and a legend.
+
+`draw` makes a Figure of the size the layout chooses (the style's page bounds it); `draw_into` draws into a Figure
+or SubFigure the caller has sized, fitting the panels into it, and hands back the panels and the artists by layer,
+so a caller (an animation) can update artists with `set_data` instead of drawing again.
+"""
+
+from __future__ import annotations
+
+import io
+from contextlib import contextmanager
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Iterator, Mapping, Sequence
+
+import matplotlib
+from matplotlib.figure import Figure, SubFigure
+from matplotlib.legend_handler import HandlerTuple
+
+from .. import rod
+from ..engine import History
+from ..frames import PANEL_LETTERS, Frame
+from ..styles import FORMATS, STYLES, Style
+from .layers import Options, legend_entries
+from .layout import Layout, Page, Panel, font_sizes, lay_out, panel_of
+from .panel import draw_panel
+
+# metadata that would make two runs differ (dates, versions) is left out
+_METADATA = {
+    "svg": {"Date": None, "Creator": None},
+    "pdf": {"Creator": None, "Producer": None, "CreationDate": None, "ModDate": None},
+    "png": {"Software": None},
+}
+#: a target may be this much smaller than the layout (points) before the diagram is said not to fit: rounding
+_FIT_SLACK = 1e-6
+
+
+@contextmanager
+def style_context(style: Style | str) -> Iterator[Style]:
+    """Apply a style's rcParams while drawing or saving; restore them afterwards."""
+    style = STYLES[style] if isinstance(style, str) else style
+    with matplotlib.rc_context(style.rc):
+        yield style
+
+
+@dataclass(frozen=True)
+class PanelInfo:
+    """One drawn panel: its frame, its letter, its data box (the world-lines with their margin) and the axes'
+    limits `box` (x0, x1, t0, t1, units of L), and its axes."""
+
+    frame: Frame
+    letter: str
+    data_box: tuple[float, float, float, float]
+    box: tuple[float, float, float, float]
+    axes: object
+
+
+@dataclass(frozen=True)
+class Diagram:
+    """A drawn diagram: the figure (or subfigure) it is in, its panels in order, and every enabled layer's
+    artists by layer name (`rod`, `particle-A`, `impacts`, ...; `layers.LAYERS`) and panel letter."""
+
+    figure: Figure | SubFigure
+    panels: tuple[PanelInfo, ...]
+    artists: Mapping[str, Mapping[str, tuple]]
+
+
+def _checked(frames: Sequence[Frame]) -> tuple[Frame, ...]:
+    if not 1 <= len(frames) <= len(PANEL_LETTERS):
+        raise ValueError(f"draw takes 1 to {len(PANEL_LETTERS)} frames (panels (a) to (h)), got {len(frames)}")
+    return tuple(frames)
+
+
+def draw(history: History, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Figure:
+    """The figure of a scenario's history: one panel per frame, side by side, in the given order."""
+    frames = _checked(frames)
+    with style_context(style) as st:
+        builder = _Builder(history, frames, st, options)
+        layout = builder.lay_out(Page.of_style(st))
+        figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
+        return builder.render(figure, layout, layout.width, layout.height).figure
+
+
+def draw_into(target: Figure | SubFigure, history: History, frames: Sequence[Frame], style: str = "default",
+              options: Options = Options()) -> Diagram:
+    """Draw the diagram into a Figure or SubFigure the caller has sized; returns its panels and artists.
+
+    The layout is the one `draw` makes, with the target's size (in points) as the page: the panels are as tall
+    as the target lets them be, and the whole is centred in the target. A target too small for panels with room
+    for their tick labels is refused (ValueError, naming the size needed). The target's style is the caller's:
+    save it inside `style_context(style)` (as `figure_bytes` does) to get the style's fonts.
+    """
+    frames = _checked(frames)
+    dpi = (target.get_figure(root=True) if isinstance(target, SubFigure) else target).dpi
+    width, height = target.bbox.width * 72 / dpi, target.bbox.height * 72 / dpi  # points
+    with style_context(style) as st:
+        builder = _Builder(history, frames, st, options)
+        layout = builder.lay_out(Page(width, height, height))
+        if layout.width > width + _FIT_SLACK or layout.height > height + _FIT_SLACK:
+            raise ValueError(f"the diagram needs at least {layout.width / 72:.2f} x {layout.height / 72:.2f} in; "
+                             f"the target is {width / 72:.2f} x {height / 72:.2f} in.")
+        return builder.render(target, layout, width, height)
+
+
+def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
+    """The figure as SVG, PDF or PNG bytes; the same figure always gives the same bytes."""
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown format {fmt!r}; use one of {', '.join(FORMATS)}")
+    with style_context(style) as st:
+        buffer = io.BytesIO()
+        figure.savefig(buffer, format=fmt, metadata=_METADATA[fmt], dpi=st.png_dpi if fmt == "png" else 72)
+        return buffer.getvalue()
+
+
+class _Builder:
+    """One diagram's panels, laid out and then drawn into a target."""
+
+    def __init__(self, history: History, frames: tuple[Frame, ...], style: Style, options: Options):
+        self.history, self.style, self.options = history, style, options
+        self.fs = font_sizes(style)
+        self.panels: list[Panel] = [panel_of(history, letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
+        # one clock step for every panel (proper time is the same in every frame), from the longest time span
+        self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
+        self.legend = legend_entries(style, history, options, self.clock_step)
+
+    def lay_out(self, page: Page) -> Layout:
+        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page)
+
+    def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
+        """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""
+        m, fs = layout.metrics, self.fs
+        ox, oy = (width - layout.width) / 2, (height - layout.height) / 2  # 0 when the target is the layout's size
+        infos, artists = [], {}
+        y = layout.height - layout.top
+        for row, block in zip(layout.rows, layout.blocks):
+            y -= block
+            x = (layout.width - m.row_width(row)) / 2
+            for p in row:
+                step = layout.steps[p.letter]
+                x += m.gutter(p, step)
+                ax = target.add_axes(((ox + x) / width, (oy + y + m.bottom_axis) / height, p.width / width,
+                                      p.height / height))
+                x += p.width + m.gap
+                ax.set_gid(f"{p.letter}-axes")
+                drawn = draw_panel(ax, p, step, m, self.history, self.style, self.options, self.clock_step)
+                for name, layer_artists in drawn.items():
+                    artists.setdefault(name, {})[p.letter] = layer_artists
+                infos.append(PanelInfo(p.view.frame, p.letter, tuple(p.data_box), tuple(p.box), ax))
+            y -= m.row_gap
+        top_spare = height - oy - layout.height  # above the layout, in the target
+        target.text(0.5, 1 - (top_spare + 7) / height, layout.suptitle, ha="center", va="top", fontsize=fs["suptitle"],
+                    gid="title")
+        handles, labels = self.legend
+        legend = target.legend(handles, labels, loc="upper center",
+                               bbox_to_anchor=(0.5, (oy + layout.legend_height - 2) / height),
+                               ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
+                               columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
+                               handler_map={tuple: HandlerTuple(ndivide=1)})  # the rod: strip and line in one
+        legend.set_gid("legend")
+        infos.sort(key=lambda info: info.letter)
+        return Diagram(target, tuple(infos),
+                       MappingProxyType({name: MappingProxyType(by_panel) for name, by_panel in artists.items()}))

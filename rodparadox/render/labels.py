@@ -1,0 +1,167 @@
+"""Label placement in points: each label beside its anchor, clear of every line, marker and earlier label."""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .text import text_size
+
+#: an impact's label sits within this many points of its marker's edge, or a thin leader line ties it to the marker
+LABEL_REACH = 12.0
+
+
+class Label(NamedTuple):
+    """A text to place beside one of its anchors (data units, best first), clear of every line, marker and label."""
+
+    gid: str
+    text: str
+    anchors: tuple[tuple[float, float], ...]
+    preferred: float  # direction, degrees, counter-clockwise from +x
+    colour: str
+    size: float
+    avoid_radius: float = 0.0  # points kept clear around the first anchor (a marker)
+    italic: bool = False  # plain text in italics: a single letter needs no mathtext
+    guides_block: bool = False  # an axis's name: it must not sit on any line, its own included
+    box_size: tuple[float, float] | None = None  # (width, height) in points, if not measured from `text`
+
+
+class Area(NamedTuple):
+    """Where labels go: the axes' limits (x0, x1, t0, t1, units of L) and its size in points."""
+
+    box: tuple[float, float, float, float]
+    width: float
+    height: float
+
+
+def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """For each box (k, 4: xmin ymin xmax ymax), how many segments (n, 4: x0 y0 x1 y1) cross it (Liang-Barsky)."""
+    if len(segments) == 0:
+        return np.zeros(len(boxes), dtype=int)
+    x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
+    dx, dy = x1 - x0, y1 - y0
+    lo = np.zeros((len(boxes), len(segments)))
+    hi = np.ones_like(lo)
+    ok = np.ones(lo.shape, dtype=bool)
+    b = [boxes[:, i][:, None] for i in range(4)]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
+            zero = p == 0
+            ok &= ~(zero & (q < 0))
+            r = q / np.where(zero, 1.0, p)
+            lo = np.where(p < 0, np.maximum(lo, r), lo)
+            hi = np.where(p > 0, np.minimum(hi, r), hi)
+    return np.count_nonzero(ok & (lo <= hi), axis=1)
+
+
+def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], guides: list[np.ndarray],
+          widest_line: float, impact_size: float, font_size: float) -> list[tuple]:
+    """Put each label near its anchor where its box crosses no line, marker or earlier label; returns each label's
+    artists (its text, and its leader line if it has one), in the order of `labels`.
+
+    Candidates ring the anchor (24 directions, growing distances). The first
+    free one wins: nearest ring first, then nearest the preferred direction.
+    Crossing a guide (an extra's line) costs as much as three rings outwards,
+    and such a label gets a white ground; crossing anything else is a last resort.
+    A leader is 0.6 pt wide for a label of `impact_size` in a style of 9 pt type, scaled with both.
+    """
+    x0, x1, t0, t1 = frame.box
+    sx, st_ = frame.width / (x1 - x0), frame.height / (t1 - t0)  # points per unit of L (equal, up to rounding)
+
+    def to_pt(points: np.ndarray) -> np.ndarray:
+        return np.column_stack([(points[:, 0] - x0) * sx, (points[:, 1] - t0) * st_])
+
+    def segments_of(polylines: list[np.ndarray]) -> np.ndarray:
+        parts = [np.column_stack([q[:-1], q[1:]]) for q in map(to_pt, polylines) if len(q) > 1]
+        return np.concatenate(parts) if parts else np.empty((0, 4))
+
+    def crossings(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+        lo, hi = boxes[:, :2].min(0), boxes[:, 2:].max(0)  # only nearby segments can be hit
+        near = ((np.maximum(segments[:, 0], segments[:, 2]) >= lo[0]) & (np.minimum(segments[:, 0], segments[:, 2]) <= hi[0])
+                & (np.maximum(segments[:, 1], segments[:, 3]) >= lo[1]) & (np.minimum(segments[:, 1], segments[:, 3]) <= hi[1]))
+        return boxes_hit_segments(boxes, segments[near])
+
+    hard, soft = segments_of(obstacles), segments_of(guides)
+    taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
+    pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
+    radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
+    angles = np.arange(0.0, 360.0, 15.0)
+    never = 10 ** 9
+    drawn: list[tuple] = []
+    for label in labels:
+        w, h = label.box_size or text_size(label.text, label.size, label.italic)[:2]
+        anchors = to_pt(np.array(label.anchors))
+        turn = np.abs((angles - label.preferred + 180) % 360 - 180)
+        order = angles[np.lexsort((angles, turn))]
+        # candidates ordered by ring, then anchor, then direction: that order breaks ties in cost
+        ring = np.repeat(np.arange(len(radii)), len(anchors) * len(order))
+        which = np.tile(np.repeat(np.arange(len(anchors)), len(order)), len(radii))
+        a = np.radians(np.tile(order, len(radii) * len(anchors)))
+        r = radii[ring] + label.avoid_radius
+        c, s_ = np.cos(a), np.sin(a)
+        px, py = anchors[which, 0] + r * c, anchors[which, 1] + r * s_
+        ha = np.where(c > 0.3, 0, np.where(c < -0.3, 2, 1))  # left, center, right
+        va = np.where(s_ > 0.3, 0, np.where(s_ < -0.3, 2, 1))  # bottom, center, top
+        bx, by = px - ha * w / 2, py - va * h / 2
+        boxes = np.column_stack([bx - pad, by - pad, bx + w + pad, by + h + pad])
+        inside = ((boxes[:, 0] >= edge) & (boxes[:, 1] >= edge) & (boxes[:, 2] <= frame.width - edge)
+                  & (boxes[:, 3] <= frame.height - edge))
+        cost = np.full(len(boxes), never)
+        crossed_guides = np.zeros(len(boxes), dtype=int)
+        for first, last in ((0, 3), (3, 6), (6, len(radii))):  # nearest rings first; stop once one is free
+            chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
+            if len(chunk) == 0:
+                continue
+            b = boxes[chunk]
+            blocked = crossings(b, hard)
+            if taken:
+                other = np.array(taken)
+                blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
+                            & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
+            crossed_guides[chunk] = crossings(b, soft)
+            if label.guides_block:
+                blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
+            cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]
+            if (blocked + crossed_guides[chunk] == 0).any():
+                break
+        k = int(np.lexsort((np.arange(len(boxes)), cost))[0])  # cheapest; among equals, the earliest candidate
+        if cost[k] == never:  # no room inside the panel at all: centre it on the first anchor
+            anchor = anchors[0]
+            box = (anchor[0] - w / 2, anchor[1] - h / 2, anchor[0] + w / 2, anchor[1] + h / 2)
+            position, alignment, ground = anchor, ("center", "center"), True
+        else:
+            box = tuple(boxes[k])
+            position = (px[k], py[k])
+            alignment = (("left", "center", "right")[ha[k]], ("bottom", "center", "top")[va[k]])
+            ground = crossed_guides[k] > 0 or cost[k] >= 1000
+        taken.append(box)
+        text = ax.text(x0 + position[0] / sx, t0 + position[1] / st_, label.text, ha=alignment[0], va=alignment[1],
+                       fontsize=label.size, fontstyle="italic" if label.italic else "normal", color=label.colour,
+                       zorder=8, gid=label.gid,
+                       bbox=dict(boxstyle="square,pad=0.1", facecolor="white", edgecolor="none") if ground else None)
+        artists = (text,)
+        if label.avoid_radius and cost[k] != never:
+            leader = _leader(anchors[0], (bx[k], by[k], bx[k] + w, by[k] + h), label.avoid_radius - 1.0)
+            if leader is not None:  # a label that could not sit close is tied to its marker
+                line, = ax.plot(x0 + leader[:, 0] / sx, t0 + leader[:, 1] / st_, color=label.colour,
+                                linewidth=0.6 * label.size / impact_size * font_size / 9.0, linestyle="solid", zorder=6.5,
+                                gid=label.gid.replace("-label-", "-leader-"))
+                artists += (line,)
+                hard = np.concatenate([hard, leader.reshape(1, 4)])
+        drawn.append(artists)
+    return drawn
+
+
+def _leader(centre: np.ndarray, text_box: tuple[float, float, float, float], radius: float) -> np.ndarray | None:
+    """A leader (points, 2 x 2) from the marker's edge to the nearest point of the label's box, if farther than LABEL_REACH."""
+    nearest = np.array([min(max(centre[0], text_box[0]), text_box[2]), min(max(centre[1], text_box[1]), text_box[3])])
+    distance = float(np.hypot(*(nearest - centre)))
+    if distance - radius <= LABEL_REACH:
+        return None
+    start = centre + (nearest - centre) * (radius / distance)
+    return np.array([start, nearest])
+
+
+def _marker_box(centre, radius: float):
+    return (centre[0] - radius, centre[1] - radius, centre[0] + radius, centre[1] + radius)

@@ -1,0 +1,516 @@
+"""The elements of a diagram, one layer each: it draws itself into a panel's axes and gives its own legend entry.
+
+A layer is a small frozen object with
+  name                                   its key in `Diagram.artists`;
+  enabled(options) -> bool               whether the options ask for it;
+  draw(ax, panel) -> LayerArtists        its artists in one panel, the polylines labels must avoid (`obstacles`)
+                                         or may cross on a white ground (`guides`), and its labels to place;
+  legend_entry(style, history, options)  its (handle, text) in the legend, or None.
+Every layer's ink comes from the style through `line_kwargs` / `marker_kwargs`, so a style says once how a kind
+of line looks. `LAYERS` is the drawing order (with the zorders, it fixes the SVG's order of elements), `LEGEND`
+the legend's order (the paper's caption: the bodies, then the impacts, then the lines of simultaneity, then the
+extras), and a layer's `label_rank` the order its labels are placed in (markers' labels first: they must sit
+beside their marker).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, NamedTuple
+
+import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Polygon
+
+from .. import kinematics, rod
+from ..engine import History
+from ..frames import Frame, FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
+from ..kinematics import Event, HyperbolicArc
+from ..numbers import shown
+from ..styles import Ink, Style
+from .labels import Label
+from .text import coordinate_names, frame_symbol, impact_text, impact_text_size
+
+#: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
+CONE_REACH = 0.16
+#: two impacts share one line of simultaneity when its intercepts agree to this fraction (rounding of a boost)
+SAME_LINE = 1e-9
+
+
+class Options(NamedTuple):
+    """The teacher's extras, all off by default because they crowd a printed figure."""
+
+    other_axes: bool = False  # the other frame's x and t axes, tilted
+    light_cones: bool = False  # the light cone of every impact
+    hyperbolae: bool = False  # calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin
+    grid: bool = False
+    rod_lines: int = 0  # this many interior material world-lines of the rod
+    rod_now: bool = False  # the rod's own lines of simultaneity: each turn's fan, and lines between turns
+    proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end
+
+
+# --- ink: how the style says a line or a marker is drawn, in one place ---------------------------------------
+
+def line_kwargs(ink: Ink) -> dict[str, Any]:
+    """matplotlib's keywords for a line drawn in `ink`."""
+    return {"color": ink.colour, "linewidth": ink.width, "linestyle": ink.dashes}
+
+
+def marker_kwargs(size: float, face: str, edge: str, edge_width: float) -> dict[str, Any]:
+    """matplotlib's keywords for round markers without a line."""
+    return {"linestyle": "none", "marker": "o", "markersize": size, "markerfacecolor": face,
+            "markeredgecolor": edge, "markeredgewidth": edge_width}
+
+
+def impact_marker(style: Style) -> dict[str, Any]:
+    """An impact: a filled dot with a white rim, so it reads on top of any line."""
+    return marker_kwargs(style.impact_size, style.impact_colour, "white", 0.6)
+
+
+def clock_marker(style: Style, ink: Ink) -> dict[str, Any]:
+    """A tick of proper time: a hollow circle in the world-line's colour."""
+    return marker_kwargs(style.clock_size, "white", ink.colour, 0.8)
+
+
+def line_handle(ink: Ink) -> Line2D:
+    return Line2D([], [], **line_kwargs(ink))
+
+
+def widest_line(style: Style) -> float:
+    """The widest line a label must keep clear of."""
+    return max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
+                                     style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
+
+
+# --- what a layer is given and gives back ------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class PanelContext:
+    """One panel as the layers see it: the history in one frame, the axes' limits and tick steps, the style."""
+
+    history: History
+    style: Style
+    options: Options
+    fs: dict[str, float]  # type sizes, points
+    letter: str
+    view: FrameView
+    worldlines: dict[str, np.ndarray]  # units of L
+    box: tuple[float, float, float, float]  # the axes' limits x0, x1, t0, t1, units of L
+    steps: tuple[float, float]  # the x and t tick steps, units of L
+    clock_step: float  # proper time between two clock ticks, same units as L
+
+    @property
+    def L(self) -> float:
+        return self.history.scenario.L
+
+    @property
+    def v(self) -> float:
+        return self.history.scenario.v
+
+    def events(self) -> list[tuple[str, str, float, float]]:
+        """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
+        return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
+
+    def plot(self, ax, points: np.ndarray, ink: Ink, zorder: float, gid: str):
+        """A polyline in `ink`: the one way layers draw a line."""
+        line, = ax.plot(points[:, 0], points[:, 1], **line_kwargs(ink), zorder=zorder, gid=gid)
+        return line
+
+
+class LayerArtists(NamedTuple):
+    """What a layer drew in one panel."""
+
+    artists: tuple = ()
+    obstacles: tuple = ()  # polylines (n x 2, units of L) that no label may cross
+    guides: tuple = ()  # polylines a label may cross, on a white ground
+    labels: tuple = ()  # Labels to place once every layer has drawn
+
+
+class Layer:
+    """One element of the diagram; see the module's docstring."""
+
+    name = ""
+    label_rank = 0
+
+    def enabled(self, options: Options) -> bool:
+        return True
+
+    def draw(self, ax, panel: PanelContext) -> LayerArtists:
+        raise NotImplementedError
+
+    def legend_entry(self, style: Style, history: History, options: Options,
+                     clock_step: float | None = None) -> tuple[Any, str] | None:
+        return None
+
+
+def clip_line(x: float, t: float, dx: float, dt: float, box) -> np.ndarray | None:
+    """The part inside box = (x0, x1, t0, t1) of the infinite line through (x, t) along (dx, dt), or None."""
+    x0, x1, t0, t1 = box
+    lo, hi = -math.inf, math.inf
+    for p, a, b in ((dx, x0 - x, x1 - x), (dt, t0 - t, t1 - t)):
+        if p == 0.0:
+            if a > 0 or b < 0:
+                return None
+            continue
+        s0, s1 = sorted((a / p, b / p))
+        lo, hi = max(lo, s0), min(hi, s1)
+    if not lo < hi:
+        return None
+    return np.array([[x + lo * dx, t + lo * dt], [x + hi * dx, t + hi * dt]])
+
+
+# --- the layers ----------------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Grid(Layer):
+    name = "grid"
+
+    def enabled(self, options):
+        return options.grid
+
+    def draw(self, ax, panel):
+        ax.grid(True, **line_kwargs(panel.style.grid), zorder=0)
+        ax.set_axisbelow(True)
+        return LayerArtists(artists=tuple(ax.get_xgridlines()) + tuple(ax.get_ygridlines()))
+
+
+@dataclass(frozen=True)
+class WorldSheet(Layer):
+    """The rod's world-sheet, shaded between its ends' world-lines (its legend entry is the rod's)."""
+
+    name = "sheet"
+
+    def draw(self, ax, panel):
+        left, right = panel.worldlines["rod_left"], panel.worldlines["rod_right"]
+        # add_artist, not fill: the limits are fixed, and fill would walk every vertex to update them
+        sheet = ax.add_artist(Polygon(np.concatenate([left, right[::-1]]), closed=True, facecolor=panel.style.sheet,
+                                      edgecolor="none", zorder=1, gid=f"{panel.letter}-sheet"))
+        return LayerArtists(artists=(sheet,))
+
+
+@dataclass(frozen=True)
+class MaterialLines(Layer):
+    """--rod-lines: world-lines of material points inside the rod (README, "Inside the rod")."""
+
+    name = "rod-lines"
+
+    def enabled(self, options):
+        return bool(options.rod_lines)
+
+    def draw(self, ax, panel):
+        t_lo, t_hi = panel.view.t_range
+        lines = rod.material_lines(panel.history, panel.view.frame.rapidity, panel.options.rod_lines, t_lo, t_hi,
+                                   sampling_tolerance(panel.history))
+        drawn, points_drawn = [], []
+        for k, (_sigma, points) in enumerate(lines, start=1):
+            points = points / panel.L
+            drawn.append(panel.plot(ax, points, panel.style.rod_interior, 3, f"{panel.letter}-rod-line-{k}"))
+            points_drawn.append(points)
+        return LayerArtists(artists=tuple(drawn), guides=tuple(points_drawn))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(style.rod_interior), "material points inside the rod"
+
+
+@dataclass(frozen=True)
+class RodNow(Layer):
+    """--rod-now: the rod's own lines of simultaneity, drawn across the rod only."""
+
+    name = "rod-now"
+
+    def enabled(self, options):
+        return options.rod_now
+
+    def draw(self, ax, panel):
+        eta = panel.view.frame.rapidity
+        t_lo, t_hi = panel.view.t_range
+        lines = [(a.boosted(eta), b.boosted(eta)) for a, b in rod.now_lines(panel.history)]
+        drawn, segments = [], []
+        for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
+            segment = np.array([[a.x, a.t], [b.x, b.t]]) / panel.L
+            drawn.append(panel.plot(ax, segment, panel.style.rod_now, 3.5, f"{panel.letter}-rod-now-{k}"))
+            segments.append(segment)
+        return LayerArtists(artists=tuple(drawn), guides=tuple(segments))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(style.rod_now), "the rod's own lines of simultaneity"
+
+
+@dataclass(frozen=True)
+class Clocks(Layer):
+    """--proper-time: ticks of equal proper time on every world-line, the same events in every panel."""
+
+    name = "clocks"
+
+    def enabled(self, options):
+        return options.proper_time
+
+    def draw(self, ax, panel):
+        st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
+        t_lo, t_hi = panel.view.t_range
+        # the same events in every panel: counted in S (tau = 0 at t = 0 there), then boosted
+        x0, x1, t0, t1 = (value * L for value in panel.box)
+        corners = [Event(x, t).boosted(-eta).t for x in (x0, x1) for t in (t0, t1)]
+        drawn = []
+        for name, worldline in panel.history.worldlines:
+            ink = st.rod if name.startswith("rod_") else st.particles[name]
+            marks = [e.boosted(eta) for _, e in kinematics.proper_time_events(
+                worldline, panel.clock_step, min(corners), max(corners))]
+            # within the frame's time window, where the world-lines are drawn
+            marks = np.array([[e.x, e.t] for e in marks if t_lo <= e.t <= t_hi and x0 <= e.x <= x1]).reshape(-1, 2) / L
+            line, = ax.plot(marks[:, 0], marks[:, 1], **clock_marker(st, ink), zorder=6,
+                            gid=f"{panel.letter}-clock-{name}")
+            drawn.append(line)
+        return LayerArtists(artists=tuple(drawn))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        step = clock_step / history.scenario.L
+        return Line2D([], [], **clock_marker(style, style.rod)), f"proper time: a tick every {shown(step, 4)} L"
+
+
+@dataclass(frozen=True)
+class RodEnds(Layer):
+    """The world-lines of the rod's two ends (solid); the legend shows them over the world-sheet."""
+
+    name = "rod"
+
+    def draw(self, ax, panel):
+        drawn = tuple(panel.plot(ax, panel.worldlines[end], panel.style.rod, 4, f"{panel.letter}-{end}")
+                      for end in ("rod_left", "rod_right"))
+        return LayerArtists(artists=drawn, obstacles=tuple(panel.worldlines[end] for end in ("rod_left", "rod_right")))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        sheet = Patch(facecolor=style.sheet, edgecolor="none")
+        return (sheet, line_handle(style.rod)), "rod: its ends (solid), world-sheet shaded"
+
+
+@dataclass(frozen=True)
+class Particle(Layer):
+    """A particle's world-line (dashed), its letter beside the first part of it, else further along where there is room."""
+
+    particle: str
+    label_rank = 2  # several anchors to choose from: placed last
+
+    @property
+    def name(self) -> str:
+        return f"particle-{self.particle}"
+
+    def draw(self, ax, panel):
+        name = self.particle
+        if name not in panel.worldlines:
+            return LayerArtists()
+        ink, points, box = panel.style.particles[name], panel.worldlines[name], panel.box
+        line = panel.plot(ax, points, ink, 5, f"{panel.letter}-{name}")
+        first = next((e.t / panel.L for e in panel.view.events if e.impact.particle == name), points[-1, 1])
+        span = points[-1, 1] - points[0, 1]
+        times = [points[0, 1] + min(0.1 * (box[3] - box[2]), 0.6 * (first - points[0, 1]))]
+        times += [points[0, 1] + f * span for f in (0.35, 0.65, 0.9)]
+        anchors = tuple((float(np.interp(t, points[:, 1], points[:, 0])), t) for t in times)
+        label = Label(f"{panel.letter}-particle-label-{name}", name, anchors, 180.0 if name == "A" else 0.0,
+                      ink.colour, panel.fs["particle"], italic=True)
+        return LayerArtists(artists=(line,), obstacles=(points,), labels=(label,))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        if history.worldline(self.particle) is None:
+            return None
+        return line_handle(style.particles[self.particle]), f"particle {self.particle}"
+
+
+@dataclass(frozen=True)
+class Simultaneity(Layer):
+    """Lines of simultaneity of S (`rest`) or of S' (`moving`) through every impact; one line for impacts on it."""
+
+    family: str  # rest or moving
+    zorder: float
+
+    @property
+    def name(self) -> str:
+        return f"simultaneity-{self.family}"
+
+    def ink(self, style: Style) -> Ink:
+        return style.rest_simultaneity if self.family == "rest" else style.moving_simultaneity
+
+    def frame(self, v: float) -> Frame:
+        return rest_frame() if self.family == "rest" else moving_frame(v)
+
+    def draw(self, ax, panel):
+        slope = relative_velocity(self.frame(panel.v).velocity, panel.view.frame.velocity)  # dt/dx of the line in this panel
+        events = panel.events()
+        drawn: list[tuple[float, str, list[str]]] = []
+        for label, _, x, t in events:
+            intercept = t - slope * x
+            same = next((d for d in drawn if abs(d[0] - intercept) <= SAME_LINE * (1 + abs(intercept))), None)
+            if same is not None:
+                same[2].append(label)
+            else:
+                drawn.append((intercept, label, [label]))
+        artists, segments = [], []
+        for intercept, label, labels in drawn:
+            x, t = next((e[2], e[3]) for e in events if e[0] == label)
+            segment = clip_line(x, t, 1.0, slope, panel.box)
+            if segment is None:
+                continue
+            artists.append(panel.plot(ax, segment, self.ink(panel.style), self.zorder,
+                                      f"{panel.letter}-simultaneity-{self.family}-{'+'.join(labels)}"))
+            segments.append(segment)
+        return LayerArtists(artists=tuple(artists), obstacles=tuple(segments))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(self.ink(style)), f"line of simultaneity of {frame_symbol(self.frame(history.scenario.v))}"
+
+
+@dataclass(frozen=True)
+class OtherAxes(Layer):
+    """--other-axes: the other paper frame's x and t axes through the shared origin, tilted, each named at its end."""
+
+    name = "other-axes"
+    label_rank = 1
+
+    def enabled(self, options):
+        return options.other_axes
+
+    def draw(self, ax, panel):
+        ink, letter, (x0, x1, t0, t1) = panel.style.other_axes, panel.letter, panel.box
+        artists, segments, labels = [], [], []
+        for other in (rest_frame(), moving_frame(panel.v)):
+            if other.name == panel.view.frame.name:
+                continue
+            u = relative_velocity(other.velocity, panel.view.frame.velocity)
+            xn, tn = coordinate_names(other)
+            for axis, (dx, dt), name in (("t", (u, 1.0), tn), ("x", (1.0, u), xn)):
+                segment = clip_line(0.0, 0.0, dx, dt, panel.box)
+                if segment is None:
+                    continue
+                artists.append(panel.plot(ax, segment, ink, 2, f"{letter}-axis-{other.name}-{axis}"))
+                segments.append(segment)
+                end = segment[1]
+                inward = math.degrees(math.atan2((t0 + t1) / 2 - end[1], (x0 + x1) / 2 - end[0]))
+                labels.append(Label(f"{letter}-axis-label-{other.name}-{axis}", name, ((end[0], end[1]),), inward,
+                                    ink.colour, panel.fs["impact"], italic=True, guides_block=True))
+        return LayerArtists(artists=tuple(artists), guides=tuple(segments), labels=tuple(labels))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(style.other_axes), "axes of the other frame"
+
+
+@dataclass(frozen=True)
+class LightCones(Layer):
+    """--light-cones: short arms of every impact's light cone."""
+
+    name = "light-cones"
+
+    def enabled(self, options):
+        return options.light_cones
+
+    def draw(self, ax, panel):
+        x0, x1, t0, t1 = panel.box
+        reach = CONE_REACH * min(x1 - x0, t1 - t0)  # short arms: a cone per impact, not a lattice of lines
+        artists, segments = [], []
+        for label, _, x, t in panel.events():
+            for side, slope in (("right", 1.0), ("left", -1.0)):
+                segment = clip_line(x, t, 1.0, slope, (x - reach, x + reach, t - reach, t + reach))
+                segment = None if segment is None else clip_line(x, t, 1.0, slope, panel.box)
+                if segment is not None:
+                    segment = np.clip(segment, [[x - reach, t - reach]], [[x + reach, t + reach]])
+                    artists.append(panel.plot(ax, segment, panel.style.light_cone, 1.5,
+                                              f"{panel.letter}-light-cone-{label}-{side}"))
+                    segments.append(segment)
+        return LayerArtists(artists=tuple(artists), guides=tuple(segments))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(style.light_cone), "light cone of an impact"
+
+
+@dataclass(frozen=True)
+class Hyperbolae(Layer):
+    """--hyperbolae: calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin, k a multiple of the t step."""
+
+    name = "hyperbolae"
+
+    def enabled(self, options):
+        return options.hyperbolae
+
+    def draw(self, ax, panel):
+        artists, curves = [], []
+        for k, points in enumerate(self.curves(panel)):
+            artists.append(panel.plot(ax, points, panel.style.hyperbola, 1.2, f"{panel.letter}-hyperbola-{k}"))
+            curves.append(points)
+        return LayerArtists(artists=tuple(artists), guides=tuple(curves))
+
+    @staticmethod
+    def curves(panel: PanelContext) -> list[np.ndarray]:
+        """The branches that enter the panel, sampled within the drawing's tolerance."""
+        x0, x1, t0, t1 = panel.box
+        step = panel.steps[1]  # the t step is the finer
+        reach = max(abs(x0), abs(x1), abs(t0), abs(t1))
+        out = []
+        for m in range(1, 7):
+            k = m * step
+            if k > reach:
+                break
+            for swap in (False, True):  # x-branches (space-like), then t-branches (time-like)
+                for side in (1, -1):
+                    lo_c, hi_c = (x0, x1) if swap else (t0, t1)  # the coordinate that runs along the branch
+                    lo = math.asinh(max(min(lo_c / k, 1e6), -1e6))
+                    hi = math.asinh(max(min(hi_c / k, 1e6), -1e6))
+                    if side == -1:
+                        lo, hi = -hi, -lo
+                    arc = HyperbolicArc(Event(0.0, 0.0), k, side, lo, hi)
+                    points = arc.sample(sampling_tolerance(panel.history) / panel.L)
+                    if swap:
+                        points = points[:, ::-1]
+                    inside = ((points[:, 0] >= x0) & (points[:, 0] <= x1) & (points[:, 1] >= t0) & (points[:, 1] <= t1))
+                    if inside.any():
+                        out.append(points)
+        return out
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return line_handle(style.hyperbola), ("calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} "
+                                              "x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}")
+
+
+@dataclass(frozen=True)
+class Impacts(Layer):
+    """Every impact: a marker on top, labelled the same in every panel (B1 -> B₁)."""
+
+    name = "impacts"
+    label_rank = 0  # beside its marker, before any other label takes the room
+
+    def draw(self, ax, panel):
+        st, fs, letter = panel.style, panel.fs, panel.letter
+        markers, labels = [], []
+        for label, end, x, t in panel.events():
+            marker, = ax.plot([x], [t], **impact_marker(st), zorder=7, gid=f"{letter}-impact-{label}")
+            markers.append(marker)
+            labels.append(Label(f"{letter}-impact-label-{label}", impact_text(label), ((x, t),),
+                                0.0 if end == "right" else 180.0, st.impact_colour, fs["impact"],
+                                avoid_radius=st.impact_size / 2 + 1.0,
+                                box_size=impact_text_size(label, fs["impact"])[:2]))
+        return LayerArtists(artists=tuple(markers), labels=tuple(labels))
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        return Line2D([], [], **impact_marker(style)), "impact"
+
+
+_SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD = WorldSheet(), MaterialLines(), RodNow(), Clocks(), RodEnds()
+_A, _B = Particle("A"), Particle("B")
+_REST, _MOVING = Simultaneity("rest", 2.2), Simultaneity("moving", 2.1)
+_OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS = OtherAxes(), LightCones(), Hyperbolae(), Impacts()
+
+#: the drawing order: the grid behind, the world-sheet, the rod's inside, its ends, the particles, the lines of
+#: simultaneity, the extras' lines, the impacts on top (zorders decide what covers what; this order breaks ties)
+LAYERS: tuple[Layer, ...] = (Grid(), _SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD, _A, _B, _REST, _MOVING,
+                             _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS)
+#: the legend's order, as the paper's caption reads: bodies, impacts, lines of simultaneity, then the extras
+LEGEND: tuple[Layer, ...] = (_ROD, _A, _B, _IMPACTS, _REST, _MOVING, _OTHER_AXES, _CONES, _ROD_LINES, _ROD_NOW,
+                             _CLOCKS, _HYPERBOLAE)
+assert set(LEGEND) <= set(LAYERS)
+
+
+def legend_entries(style: Style, history: History, options: Options, clock_step: float) -> tuple[list, list[str]]:
+    """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
+    time between clock ticks, chosen by the diagram from its panels' time spans)."""
+    entries = [layer.legend_entry(style, history, options, clock_step) for layer in LEGEND if layer.enabled(options)]
+    entries = [entry for entry in entries if entry is not None]
+    return [handle for handle, _ in entries], [text for _, text in entries]

@@ -1,0 +1,57 @@
+"""One panel: a frame's axes (limits, ticks, axis names, title), then every enabled layer, then the labels."""
+
+from __future__ import annotations
+
+from matplotlib.ticker import FixedLocator, FuncFormatter
+
+from ..engine import History
+from ..styles import Style
+from .labels import Area, place
+from .layers import LAYERS, Options, PanelContext, widest_line
+from .layout import Metrics, Panel
+from .text import axis_label, coordinate_names, tick_text, ticks_at
+
+
+def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: History, style: Style,
+               options: Options, clock_step: float) -> dict[str, tuple]:
+    """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name."""
+    _axes(ax, p, steps, m)
+    panel = PanelContext(history, style, options, m.fs, p.letter, p.view, p.worldlines, tuple(p.box), steps,
+                         clock_step)
+    drawn: dict[str, list] = {}
+    obstacles, guides, labels = [], [], []
+    for layer in LAYERS:
+        if not layer.enabled(options):
+            continue
+        out = layer.draw(ax, panel)
+        drawn[layer.name] = list(out.artists)
+        obstacles += out.obstacles
+        guides += out.guides
+        labels += [(layer.label_rank, layer.name, label) for label in out.labels]
+    labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
+    placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
+                   widest_line(style), m.fs["impact"], style.font_size)
+    for (_, name, _), artists in zip(labels, placed):
+        drawn[name] += artists
+    return {name: tuple(artists) for name, artists in drawn.items()}
+
+
+def _axes(ax, p: Panel, steps: tuple[float, float], m: Metrics) -> None:
+    """Limits (equal scales), fixed ticks with their labels, the axes' names and the panel's title."""
+    fs = m.fs
+    x0, x1, t0, t1 = p.box
+    x_step, step = steps
+    xt, tt = ticks_at(x0, x1, x_step), ticks_at(t0, t1, step)
+    xname, tname = coordinate_names(p.view.frame)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(t0, t1)
+    ax.set_aspect("equal", adjustable="box")
+    ax.xaxis.set_major_locator(FixedLocator(xt))
+    ax.yaxis.set_major_locator(FixedLocator(tt))
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda value, _pos: tick_text(value, x_step)))
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda value, _pos: tick_text(value, step)))
+    ax.tick_params(labelsize=fs["tick"], length=m.tick_len, pad=m.tick_pad)
+    italic = "normal" if "$" in xname else "italic"
+    ax.set_xlabel(axis_label(xname), fontsize=fs["label"], fontstyle=italic, labelpad=m.label_pad)
+    ax.set_ylabel(axis_label(tname), fontsize=fs["label"], fontstyle=italic, labelpad=m.label_pad)
+    ax.set_title("\n".join(p.title_lines), fontsize=fs["title"], y=1.0)  # y given: no search for tick labels above the axes

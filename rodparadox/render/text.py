@@ -1,0 +1,169 @@
+"""What the panels say, and how large it is: frame names, axis and impact labels, titles, tick labels, and text
+measured in points as the SVG and PDF backends lay it out (current rcParams), without a renderer."""
+
+from __future__ import annotations
+
+import math
+import re
+from functools import lru_cache
+
+import matplotlib
+import numpy as np
+from matplotlib.cbook import is_math_text
+from matplotlib.font_manager import FontProperties
+from matplotlib.textpath import text_to_path
+
+from ..frames import Frame, FrameView
+from ..model import Scenario
+from ..numbers import MINUS, SCIENTIFIC_ABOVE, shown
+
+
+def frame_symbol(frame: Frame) -> str:
+    """The frame's name as the paper writes it: S, S′, or u = ... for any other frame."""
+    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
+
+
+def coordinate_names(frame: Frame) -> tuple[str, str]:
+    """The frame's (x, t) as plain italic text, or mathtext for a frame of velocity u (x_u, t_u)."""
+    return {"rest": ("x", "t"), "moving": ("x\N{PRIME}", "t\N{PRIME}")}.get(frame.name, ("$x_u$", "$t_u$"))
+
+
+def axis_label(name: str) -> str:
+    """x -> x/L (set in italics), $x_u$ -> $x_u/L$ (mathtext)."""
+    return f"{name[:-1]}/L$" if name.endswith("$") else f"{name}/L"
+
+
+def impact_text(label: str) -> str:
+    """An impact's label in mathtext: B1 -> $B_1$."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
+    return f"${m.group(1)}_{{{m.group(2)}}}$" if m else label
+
+
+def impact_text_size(label: str, size: float) -> tuple[float, float, float]:
+    """A box at least as large as `impact_text(label)` draws, from plain glyph metrics (no mathtext parse).
+
+    The letter in italics, then the digits at 0.7 of the size, then a tenth of
+    the size to spare; height: the letter's plus the subscript's drop. It is a
+    few per cent larger than mathtext's own box in every style (tested), which
+    is safe for placing the label: the drawn text lies inside it.
+    """
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
+    letter, digits = (m.group(1), m.group(2)) if m else (label, "")
+    w_letter, h_letter, _ = text_size(letter, size, italic=True)
+    w_digits = text_size(digits, 0.7 * size)[0] if digits else 0.0
+    return w_letter + w_digits + 0.1 * size, h_letter + 0.22 * size, 0.22 * size
+
+
+def _signed(value: float) -> str:
+    return ("+" if value > 0 else "") + shown(value, 4)
+
+
+def _velocity_phrase(before: float, after: float) -> str:
+    """The rod's velocity in a panel's frame, before the first impact and after the last."""
+    def at(u: float) -> str:
+        return "at rest" if abs(u) < 5e-13 else f"at {_signed(u)}"
+    if abs(before - after) < 5e-13:
+        return f"rod {at(before)} before and after"
+    return f"rod first {at(before)}, finally {at(after)}"
+
+
+def panel_title(letter: str, fv: FrameView) -> str:
+    """Plain text, no mathtext (each mathtext string costs milliseconds to lay out): the frame and the rod's velocity."""
+    frame = fv.frame
+    after = fv.events[-1].rod_velocity_after if fv.events else frame.rod_velocity()
+    return f"({letter}) frame {frame_symbol(frame)}: {_velocity_phrase(frame.rod_velocity(), after)}"
+
+
+def mathtext_safe(text: str) -> str:
+    return text.replace("$", r"\$")
+
+
+def suptitle(scenario: Scenario, width: float, size: float) -> str:
+    """The scenario's name and v, with its description's first clause if that fits; a long name is cut with an ellipsis."""
+    s = scenario
+    room = width - 10
+
+    def fits(text: str) -> bool:
+        return approximate_size(text, size)[0] <= room
+
+    tail = f", $v = {shown(s.v, math_text=True)}$"
+    head = f"{mathtext_safe(s.name)}{tail}"
+    if not fits(head):  # the longest start of the name that fits, then an ellipsis: visibly cut, never off the page
+        lo, hi = 0, len(s.name)
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            lo, hi = (mid, hi) if fits(f"{mathtext_safe(s.name[:mid].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}") else (lo, mid - 1)
+        return f"{mathtext_safe(s.name[:lo].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}"
+    # the description's first clause: up to a semicolon or the end of its first sentence
+    clause = re.split(r";|\.(?=\s+[A-Z]|\s*$)", " ".join(s.description.split()))[0].strip()
+    if clause:
+        clause = re.sub(r"\b([SxXtT])'", "\\1\N{PRIME}", clause)  # S' as in the panels: S′
+        full = f"{head}: {mathtext_safe(clause)}"
+        if fits(full):
+            return full
+    return head
+
+
+# --- ticks ------------------------------------------------------------------------------------------
+
+def ticks_at(lo: float, hi: float, step: float) -> np.ndarray:
+    k = np.arange(math.ceil(lo / step - 1e-9), math.floor(hi / step + 1e-9) + 1)
+    return k * step
+
+
+def tick_text(value: float, step: float) -> str:
+    """A tick label with as many decimals as the step has (0.25 -> 2), a real minus sign, no -0; 2×10⁶ for steps of 10⁵ on."""
+    if step >= SCIENTIFIC_ABOVE / 10:
+        return shown(value, 3)
+    decimals = next(d for d in range(12) if abs(round(step, d) - step) <= 1e-9 * step)
+    text = f"{value:.{decimals}f}"
+    if float(text) == 0:
+        text = "0" if decimals == 0 else f"{0:.{decimals}f}"
+    return text.replace("-", MINUS)
+
+
+# --- sizes in points -------------------------------------------------------------------------------
+
+def text_size(text: str, size: float, italic: bool = False, ismath: bool | None = None) -> tuple[float, float, float]:
+    """(width, height, descent) in points of a text as the SVG and PDF backends lay it out (current rcParams).
+
+    `ismath` None reads the text as a Text artist does: mathtext if it holds an
+    even number of unescaped $ (matplotlib.cbook.is_math_text), else plain.
+    Drawing calls it for plain text only: parsing mathtext costs milliseconds
+    and the renderer parses each string again, so mathtext is sized from its
+    glyphs instead (`approximate_size`, `impact_text_size`).
+    """
+    rc = matplotlib.rcParams
+    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath),
+                     rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
+                     tuple(rc["font.serif"]))
+
+
+@lru_cache(maxsize=2048)  # a figure measures a few hundred texts; bounded, as a long-lived process draws many
+def _measured(text: str, size: float, italic: bool, ismath: bool, *fonts) -> tuple[float, float, float]:
+    """`text_size` for the current rcParams, whose font settings are `fonts` (part of the cache key only)."""
+    prop = FontProperties(size=size, style="italic" if italic else "normal")
+    w, h, d = text_to_path.get_text_width_height_descent(text, prop, ismath=ismath)
+    return float(w), float(h), float(d)
+
+
+# mathtext -> the plain characters it draws, roughly: the braces of groups vanish, \$ is a dollar sign
+_MATH_AS_PLAIN = {"\\$": "$", "\\pm": "\N{PLUS-MINUS SIGN}", "\\times": "\N{MULTIPLICATION SIGN}",
+                  "^2": "\N{SUPERSCRIPT TWO}", "{": "", "}": "", "'": "\N{PRIME}"}
+
+
+def approximate_size(text: str, size: float) -> tuple[float, float, float]:
+    """A slight over-estimate of what a Text artist draws for `text`, without parsing mathtext.
+
+    Plain text (no pair of unescaped $) is measured as it is. Mathtext is
+    measured as plain characters, each $...$ part by the characters it draws,
+    each \\$ outside them as a dollar sign, plus 4 %.
+    """
+    if not is_math_text(text):
+        return text_size(text, size, ismath=False)
+    parts = re.split(r"(?<!\\)\$", text)  # even: plain text between the math parts; odd: math
+    plain = "".join(part.replace("\\$", "$") if i % 2 == 0 else
+                    re.sub(r"\\\$|\\pm|\\times|\^2|[{}']", lambda m: _MATH_AS_PLAIN[m.group(0)], part)
+                    for i, part in enumerate(parts))
+    w, h, d = text_size(plain, size, ismath=False)
+    return w * 1.04 + 2.0, max(h, size * 1.1), max(d, size * 0.25)
