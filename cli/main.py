@@ -29,9 +29,22 @@ class _Main(click.Group):
     """The group, with one more edge: help and version text that cannot be written (a full disk) is one
     sentence and exit status 1; the commands' own output goes through `common.emit`."""
 
-    def main(self, *args, **kwargs):
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
         try:
-            return super().main(*args, **kwargs)
+            if not standalone_mode:
+                return super().main(args, prog_name, complete_var, standalone_mode, **extra)
+            try:
+                code = super().main(args, prog_name, complete_var, False, **extra)
+            except click.UsageError as e:  # click's own checks (a bad --style, --rod-lines -1): one sentence too
+                click.echo(f"Error: {e.format_message()}", err=True)
+                sys.exit(e.exit_code)
+            except click.ClickException as e:
+                e.show()
+                sys.exit(e.exit_code)
+            except click.exceptions.Abort:
+                click.echo("Aborted!", err=True)
+                sys.exit(1)
+            sys.exit(code if isinstance(code, int) else 0)
         except OSError as e:
             # only help and version text are written outside the commands' edge (reports_errors, emit)
             if e.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EFBIG):

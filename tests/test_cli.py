@@ -442,3 +442,16 @@ def test_a_closed_pipe_ends_quietly():
 def _cli_prefix() -> list[str]:
     script = Path(sys.executable).parent / "sears-paradox"
     return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', 'slides'."),
+    (["plot", "fig2", "--rod-lines", "-1"], "Invalid value for '--rod-lines': -1 is not in the range 0<=x<=50."),
+    (["events", "fig2", "--v", ""], "Invalid value for '--v': '' is not a valid float."),
+    (["nope"], "No such command 'nope'."),
+])
+def test_clicks_own_checks_are_one_sentence_too(argv, message):
+    """Found in review: click's usage errors printed three lines (Usage, Try, Error); now one sentence, exit 2."""
+    result = subprocess.run([sys.executable, "-c", "from sears_paradox_cli.main import main; main()", *argv],
+                            capture_output=True, text=True, timeout=60)
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"Error: {message}\n")
