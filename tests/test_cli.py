@@ -455,3 +455,13 @@ def test_clicks_own_checks_are_one_sentence_too(argv, message):
     result = subprocess.run([sys.executable, "-c", "from sears_paradox_cli.main import main; main()", *argv],
                             capture_output=True, text=True, timeout=60)
     assert (result.returncode, result.stdout, result.stderr) == (2, "", f"Error: {message}\n")
+
+
+def test_every_package_of_the_source_is_installed():
+    """A non-editable install takes only the packages pyproject.toml names: rodparadox.render once went missing
+    (`pip install .` then failed with ImportError on every drawing command; the editable test install hid it)."""
+    root = Path(__file__).resolve().parent.parent
+    line = re.search(r"^packages = \[(.*)\]$", (root / "pyproject.toml").read_text(), re.M).group(1)
+    listed = set(re.findall(r'"([\w.]+)"', line))
+    found = {".".join(p.relative_to(root).parent.parts) for p in (root / "rodparadox").rglob("__init__.py")}
+    assert found <= listed, found - listed
