@@ -317,8 +317,10 @@ def test_make_figures_builds_every_config_in_parallel_and_then_only_what_changed
     assert "Nothing to be done" in again
 
     stamp, svg = out / ".stamps" / "fig1", out / "fig1.svg"
-    old = time.time() - 1000
-    os.utime(stamp, (old, old))  # as if configs/fig1.yaml had changed since
+    # as if configs/fig1.yaml had changed since: older than it, and than every source (a checkout's files may be old)
+    newest = max(p.stat().st_mtime for p in [ROOT / "configs" / "fig1.yaml", *(ROOT / "rodparadox").rglob("*.py")])
+    old = min(time.time(), newest) - 1000
+    os.utime(stamp, (old, old))
     mtime = svg.stat().st_mtime
     third = subprocess.run(args + ["figures"], check=True, capture_output=True, text=True).stdout
     assert re.findall(r"plot configs/(\w+)\.yaml", third) == ["fig1"]
