@@ -18,7 +18,7 @@ FORMATS ?= svg,pdf
 PLOT_OPTIONS ?=
 
 CONFIGS := $(wildcard configs/*.yaml)
-SOURCES := $(wildcard rodparadox/*.py cli/*.py)
+SOURCES := $(wildcard rodparadox/*.py rodparadox/*/*.py cli/*.py)
 STAMPS := $(patsubst configs/%.yaml,$(OUTPUTS)/.stamps/%,$(CONFIGS))
 
 .PHONY: figures readme-figures
