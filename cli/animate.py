@@ -10,9 +10,8 @@ import sys
 
 import click
 
-from rodparadox.styles import STYLE_NAMES
 
-from .common import L_option, emit, quiet_option, reports_errors, run_scenario, v_option
+from .common import L_option, emit, quiet_option, reports_errors, run_scenario, style_option, v_option
 
 #: the defaults: 6 seconds at 25 frames per second, a rate a GIF stores exactly (4 hundredths of a second)
 DEFAULT_FPS = 25
@@ -40,8 +39,7 @@ DEFAULT_SECONDS = 6.0
 @click.option("-o", "--output", "output", metavar="PATH", default=None,
               help="gif, mp4: a folder (it must exist) or a file name; png: the folder of the stills. "
                    "[default: outputs/, created if missing]")
-@click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
-              help="default: colour, colour-blind safe; print: black and white, serif; slides: large type.")
+@style_option
 @quiet_option
 @reports_errors
 def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: str, fmt: str | None, fps: int,

@@ -124,3 +124,12 @@ frame_velocity_option = click.option("--frame-velocity", "frame_velocity", type=
                                      help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
 quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")
+
+
+def style_option(command):
+    """--style, as every drawing command takes it (the names come from `rodparadox.styles`, which imports nothing)."""
+    from rodparadox.styles import STYLE_NAMES
+
+    return click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
+                        help="default: colour, colour-blind safe; print: black and white, serif; "
+                             "slides: large type.")(command)

@@ -13,9 +13,9 @@ from pathlib import Path
 import click
 
 from rodparadox.styles import FORMATS as FIGURE_FORMATS
-from rodparadox.styles import STYLE_NAMES
 
-from .common import BadInput, L_option, emit, load_scenario, quiet_option, reports_errors, run_scenario, v_option
+from .common import (BadInput, L_option, emit, load_scenario, quiet_option, reports_errors, run_scenario, style_option,
+                     v_option)
 
 TABLE_FORMATS = ("text", "json", "csv")
 _EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv"}
@@ -74,8 +74,7 @@ def _kind(fmt: str | None, output: str | None) -> str:
 @click.option("-o", "--output", "output", metavar="PATH", default=None,
               help="Tables: a file ('-' or none: standard output). Figures: a folder (it must exist) or a file name. "
                    "[figures: outputs/, created if missing]")
-@click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
-              help="The figure's style, as plot's.")
+@style_option
 @quiet_option
 @reports_errors
 def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str | None, fmt: str | None,
@@ -89,8 +88,6 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     Example: sears-paradox ledger fig1 --frame moving --at 0.5,1,1.5
     """
     from rodparadox import jobs as planned
-    from rodparadox.errors import FrameError
-    from rodparadox.frames import parse_frames
     from rodparadox.output import check_target, write_atomic
 
     if output is not None and not output.strip():
@@ -104,10 +101,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
                 raise BadInput(f"option -o names {output!r} but --format is {fmt}; make them agree.")
             check_target(output)
         s = load_scenario(scenario, v, L)
-        try:
-            frames = parse_frames(frame, s.v)
-        except FrameError as e:
-            raise BadInput(f"option --frame: {e}") from None
+        frames = planned.frames_of(frame, s.v)
         from rodparadox import ledger_report
 
         text = {"text": ledger_report.to_text, "json": ledger_report.to_json,

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import click
 
-from rodparadox.styles import FORMATS, STYLE_NAMES
+from rodparadox.styles import FORMATS
 
-from .common import L_option, emit, quiet_option, reports_errors, run_scenario, v_option
+from .common import L_option, emit, quiet_option, reports_errors, run_scenario, style_option, v_option
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
            ("rod_now", "now"), ("proper_time", "clocks"))
@@ -29,8 +29,7 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
 @click.option("-o", "--output", "output", metavar="PATH_OR_DIR", default=None,
               help="A folder to write into (it must exist), or a file name for one scenario in one format. "
                    "[default: outputs/, created if missing]")
-@click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
-              help="default: colour, colour-blind safe; print: black and white, serif; slides: large type.")
+@style_option
 @click.option("--other-axes", is_flag=True, help="Draw the other frame's x and t axes, tilted, on each panel.")
 @click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")

@@ -122,10 +122,7 @@ def plan(names: Sequence[str], *, v: float | None, L: float | None, frame: str, 
     for name in names:
         base = load(name)
         s = base.with_overrides(v=v, L=L)
-        try:
-            frames = parse_frames(frame, s.v)
-        except FrameError as e:
-            raise OptionError(f"option --frame: {e}") from None
+        frames = frames_of(frame, s.v)
         stem = output_name(stem_of(name), base, v, L, frames, style, extras, kind)
         job = Job(name, s, frames, {f: file if file is not None else folder / f"{stem}.{f}" for f in formats})
         if any(job[1:] == other[1:] for other in jobs):
@@ -139,14 +136,26 @@ def plan(names: Sequence[str], *, v: float | None, L: float | None, frame: str, 
     return jobs
 
 
+def _make_default_folder() -> None:
+    """The default output folder, the only one a command creates itself."""
+    try:
+        os.makedirs(DEFAULT_FOLDER, exist_ok=True)
+    except OSError as e:
+        raise OptionError(f"cannot create the output folder {DEFAULT_FOLDER}: {(e.strerror or str(e)).lower()}.") from None
+
+
+def frames_of(spec: str, v: float) -> tuple[Frame, ...]:
+    """--frame, parsed by `frames.parse_frames`, its error named as the option's."""
+    try:
+        return parse_frames(spec, v)
+    except FrameError as e:
+        raise OptionError(f"option --frame: {e}") from None
+
+
 def prepare(jobs: Sequence[Job], output: str | None) -> None:
     """Before anything is drawn: create the default folder (only it), and check every file can be written."""
     if output is None:
-        try:
-            os.makedirs(DEFAULT_FOLDER, exist_ok=True)
-        except OSError as e:
-            raise OptionError(f"cannot create the output folder {DEFAULT_FOLDER}: "
-                              f"{(e.strerror or str(e)).lower()}.") from None
+        _make_default_folder()
     for job in jobs:  # a missing folder, a dangling link, a locked folder (root passes)
         for path in job.paths.values():
             check_target(path)
@@ -217,11 +226,7 @@ def prepare_animation(job: AnimationJob, output: str | None) -> None:
     from .video import check_folder
 
     if output is None:
-        try:
-            os.makedirs(DEFAULT_FOLDER, exist_ok=True)
-        except OSError as e:
-            raise OptionError(f"cannot create the output folder {DEFAULT_FOLDER}: "
-                              f"{(e.strerror or str(e)).lower()}.") from None
+        _make_default_folder()
     if job.fmt == "png":
         check_folder(job.path)
     else:
