@@ -138,7 +138,7 @@ def _plain_zero(text: str) -> str:
     return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
 
 
-def _coordinate_format(values: list[float]):
+def coordinate_format(values: list[float]):
     """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
     kept so that the digits say the precision; rounding-sized values (ROUNDING) are 0."""
     largest = max((abs(x) for x in values), default=0.0)
@@ -150,7 +150,7 @@ def _coordinate_format(values: list[float]):
     return text
 
 
-def _velocity_format(velocities: list[float]):
+def velocity_format(velocities: list[float]):
     """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
     the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
     as many more decimals as keep it from rounding to 1 (check_below_c: none is 1)."""
@@ -176,8 +176,8 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     for fv in views:
         check_below_c(fv)
     events = [e for fv in views for e in fv.events]
-    coordinate = _coordinate_format([c for e in events for c in (e.x, e.t)])
-    velocity = _velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
+    coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
+    velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
                                                                e.rod_velocity_before, e.rod_velocity_after)])
     speeds = [[velocity(u) for u in (e.particle_velocity_before, e.particle_velocity_after, e.rod_velocity_before,
                                       e.rod_velocity_after)] for e in events]

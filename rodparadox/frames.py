@@ -15,7 +15,7 @@ from .engine import WORLDLINE_NAMES, History, Impact
 from .errors import FrameError
 from .kinematics import SAMPLING_TOLERANCE, Event, Segment
 from .model import FASTEST
-from .numbers import exact
+from .numbers import exact, shown
 
 #: one panel per frame, lettered (a), (b), ...: at most eight in one figure
 PANEL_LETTERS = "abcdefgh"
@@ -77,6 +77,16 @@ class Frame:
     def rod_velocity(self) -> float:
         """The rod's velocity in this frame before any impact (0, never -0, in S)."""
         return 0.0 - self.velocity
+
+
+def frame_symbol(frame: "Frame") -> str:
+    """The frame's name as the paper writes it: S, S′, or u = ... for any other frame (plain text)."""
+    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
+
+
+def frame_word(frame: "Frame") -> str:
+    """The frame in a file name: rest, moving, or u and every digit of its velocity (u0.3, u-0.5)."""
+    return frame.name if frame.name in ("rest", "moving") else "u" + exact(frame.velocity)
 
 
 def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, ...]:

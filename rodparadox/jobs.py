@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import NamedTuple, Sequence
 
 from .errors import FrameError, OptionError
-from .frames import Frame, parse_frames
+from .frames import Frame, frame_word, parse_frames
 from .model import Scenario
 from .numbers import exact
 from .output import check_target
@@ -27,7 +27,7 @@ DEFAULT_FOLDER = "outputs"
 
 def frame_suffix(frames: Sequence[Frame]) -> str:
     """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`."""
-    words = [f.name if f.name in ("rest", "moving") else "u" + exact(f.velocity) for f in frames]
+    words = [frame_word(f) for f in frames]
     name = "_".join(words).replace("rest_moving", "both")  # each frame appears once, so at most one `both`
     return "" if name == "both" else f"_{name}"
 

@@ -110,7 +110,7 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
     return out.getvalue()
 
 
-def _num(x: float, zero_below: float = 0.0) -> str:
+def number_text(x: float, zero_below: float = 0.0) -> str:
     """Seven significant digits, no -0; a value below `zero_below` in size is rounding of a difference: 0."""
     x = x + 0.0
     if abs(x) < zero_below:
@@ -121,7 +121,7 @@ def _num(x: float, zero_below: float = 0.0) -> str:
 
 def _frame_title(f: Frame) -> str:
     symbol = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name)
-    return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {_num(f.velocity)} relative to S"
+    return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {number_text(f.velocity)} relative to S"
 
 
 def _table(rows: list[list[str]], left: int = 1) -> list[str]:
@@ -151,10 +151,10 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
         zero = ROUNDING_ZERO * max(total.T, abs(total.p), 1e-300)
 
         def num(x: float) -> str:
-            return _num(x, zero)
+            return number_text(x, zero)
 
         lines += ["", _frame_title(f),
-                  f"  all bodies before the first impact: E = {_num(total.E)}, p = {num(total.p)}"]
+                  f"  all bodies before the first impact: E = {number_text(total.E)}, p = {num(total.p)}"]
         for e in impact_entries(history, eta):
             i = e.impact
             together = f", with {i.simultaneous_with}" if i.simultaneous_with else ""
@@ -166,13 +166,13 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
                                 ("kinetic total", e.kinetic_before, e.kinetic_after),
                                 ("hidden", e.hidden_before, e.hidden_after)):
                 rows.append([label, num(b.E), num(b.p), num(a.E), num(a.p)])
-            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {_num(e.t)}", *_table(rows),
+            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {number_text(e.t)}", *_table(rows),
                       f"  impulse to the rod: E {num(e.impulse.E)}, p {num(e.impulse.p)}"]
         if at:
             rows = [["t"] + [f"{name} {q}" for name in names + ["rod", "kinetic", "hidden"] for q in ("E", "p")]]
             for t in at:
                 sl = ledger_slice(history, eta, t)
                 values = [em for _, em in sl.bodies] + [sl.kinetic, sl.hidden]
-                rows.append([_num(t)] + [num(x) for em in values for x in (em.E, em.p)])
+                rows.append([number_text(t)] + [num(x) for em in values for x in (em.E, em.p)])
             lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", *_table(rows, left=0)]
     return "\n".join(lines) + "\n"

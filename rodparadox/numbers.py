@@ -49,3 +49,38 @@ def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
         if abs(float(text)) < 1.0 or abs(value) >= 1.0:
             break
     return text if math_text else text.replace("-", MINUS)
+
+
+#: the largest denominator a number is written as a fraction with: the paper's are 12ths, 8ths, 25ths at v = 0.6
+FRACTION_DENOMINATOR = 100
+#: a fraction stands for a float within this relative distance (the engine's rounding is about 1e-15 relative)
+FRACTION_MATCH = 1e-12
+
+
+def fraction(value: float, largest_denominator: int = FRACTION_DENOMINATOR) -> tuple[int, int] | None:
+    """(p, q) with q > 1 if `value` is p/q to FRACTION_MATCH relative, q <= `largest_denominator` and the decimal
+    of p/q never ends (q has a prime factor other than 2 and 5: 17/12, 1/3), else None.
+
+    A decimal that ends (5/4 = 1.25, 73/100 = 0.73) says everything already; 1.416667 does not say 17/12.
+    """
+    from fractions import Fraction
+
+    if not math.isfinite(value):
+        return None
+    f = Fraction(value).limit_denominator(largest_denominator)
+    if f.denominator == 1 or abs(value - f.numerator / f.denominator) > FRACTION_MATCH * max(abs(value), 1e-300):
+        return None
+    q = f.denominator
+    for prime in (2, 5):
+        while q % prime == 0:
+            q //= prime
+    return (f.numerator, f.denominator) if q > 1 else None
+
+
+def fraction_text(value: float) -> str | None:
+    """`value` as `17/12` (a real minus sign if negative), or None (see `fraction`)."""
+    pq = fraction(value)
+    if pq is None:
+        return None
+    p, q = pq
+    return f"{MINUS if p < 0 else ''}{abs(p)}/{q}"

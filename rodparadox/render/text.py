@@ -13,14 +13,9 @@ from matplotlib.cbook import is_math_text
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import text_to_path
 
-from ..frames import Frame, FrameView
+from ..frames import Frame, FrameView, frame_symbol
 from ..model import Scenario
 from ..numbers import MINUS, SCIENTIFIC_ABOVE, shown
-
-
-def frame_symbol(frame: Frame) -> str:
-    """The frame's name as the paper writes it: S, S′, or u = ... for any other frame."""
-    return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
 
 
 def coordinate_names(frame: Frame) -> tuple[str, str]:

@@ -1,0 +1,144 @@
+"""A handout as frozen blocks: what it says, not how it is set. Pure, no drawing, no LaTeX.
+
+`handout` builds these from a scenario's history; `handout_pdf` sets them on
+pages with matplotlib and `handout_tex` writes them as LaTeX, so the PDF and
+the LaTeX say the same words and show the same numbers.
+
+Text is plain Unicode (B₁, t′, γ, −, ×), one paragraph per `Paragraph`; a
+renderer wraps it. Numbers in tables are cells of text as they should be
+printed; a cell marked `blank` is one a worksheet leaves empty (ruled) for the
+student to fill in, and the answer key prints the same table with every cell
+filled.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+from .engine import History
+from .frames import Frame
+
+#: paper sizes in inches (width, height): ISO A4 (210 x 297 mm) and US Letter
+PAPERS = {"a4": (210 / 25.4, 297 / 25.4), "letter": (8.5, 11.0)}
+#: what a column holds: text flush left, text flush right, or numbers aligned at the decimal point
+ALIGNS = ("l", "r", "n")
+
+
+@dataclass(frozen=True)
+class Heading:
+    """A heading: level 1 a scenario's section, level 2 a part of it."""
+
+    text: str
+    level: int = 1
+
+    def __post_init__(self) -> None:
+        if self.level not in (1, 2):
+            raise ValueError(f"a heading's level is 1 or 2, got {self.level!r}")
+
+
+@dataclass(frozen=True)
+class Paragraph:
+    """One paragraph of running text."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class Cell:
+    """A table cell: its text, and whether a worksheet leaves it blank for the student."""
+
+    text: str
+    blank: bool = False
+
+
+@dataclass(frozen=True)
+class Table:
+    """A table: `name` is stable and file-safe (`events_rest`, `ledger_moving`), used for the LaTeX fragment's
+    file name; `align` has one letter of ALIGNS per column; `notes` are lines printed under the table."""
+
+    name: str
+    caption: str
+    header: tuple[str, ...]
+    rows: tuple[tuple[Cell, ...], ...]
+    align: str
+    notes: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        if len(self.align) != len(self.header) or any(a not in ALIGNS for a in self.align):
+            raise ValueError(f"table {self.name}: align {self.align!r} must have one of {ALIGNS} per column")
+        for row in self.rows:
+            if len(row) != len(self.header):
+                raise ValueError(f"table {self.name}: a row has {len(row)} cells for {len(self.header)} columns")
+
+    @property
+    def has_blanks(self) -> bool:
+        return any(c.blank for row in self.rows for c in row)
+
+    def filled(self) -> "Table":
+        """The same table with every cell filled: the answer key's copy of a worksheet's table."""
+        rows = tuple(tuple(Cell(c.text) for c in row) for row in self.rows)
+        return Table(self.name, self.caption, self.header, rows, self.align, self.notes)
+
+
+@dataclass(frozen=True)
+class Diagram:
+    """The two-frame (or more) Minkowski diagram of a history, as `plot` draws it, full text width."""
+
+    name: str
+    history: History
+    frames: tuple[Frame, ...]
+    caption: str
+
+
+@dataclass(frozen=True)
+class Strips:
+    """The rod and the particles in one frame's space at successive instants of that frame's time (the strip of
+    `animate`, as stills), earliest first."""
+
+    name: str
+    history: History
+    frame: Frame
+    times: tuple[float, ...]
+    caption: str
+
+
+@dataclass(frozen=True)
+class Question:
+    """A worksheet question and its worked answer (paragraphs), which the answer key prints."""
+
+    number: int
+    text: str
+    answer: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class PageBreak:
+    """Start a new page here."""
+
+
+Block = Union[Heading, Paragraph, Table, Diagram, Strips, Question, PageBreak]
+
+
+@dataclass(frozen=True)
+class Section:
+    """One scenario's part of the document; `name` is its stem (fig2), file-safe."""
+
+    name: str
+    title: str
+    blocks: tuple[Block, ...]
+
+
+@dataclass(frozen=True)
+class Handout:
+    """The whole document: a title, a section per scenario, and for a worksheet the answer key's blocks (the filled
+    tables and the worked answers), printed from a new page at the end."""
+
+    title: str
+    sections: tuple[Section, ...]
+    worksheet: bool = False
+    answer_key: tuple[Block, ...] = ()
+
+    def blocks(self) -> tuple[Block, ...]:
+        """Every block in order, sections first, then the answer key."""
+        return tuple(b for s in self.sections for b in s.blocks) + self.answer_key

@@ -1,0 +1,124 @@
+"""The events and the ledger as `document.Table`s: the numbers a handout prints, built once. Pure.
+
+The events table has the columns `sears-paradox events` prints, with its digits
+(`export.coordinate_format`, `export.velocity_format`); the ledger table has,
+per impact, the particle's, the rod's and the hidden (E, p) just before and
+after (as `sears-paradox ledger` prints them); the hidden table has the hidden
+part on the slices between impacts where it is not zero. A worksheet's copy
+leaves every number blank (`blank=True`); labels stay.
+"""
+
+from __future__ import annotations
+
+import re
+
+from .document import Cell, Table
+from .engine import History
+from .export import check_below_c, coordinate_format, velocity_format
+from .frames import Frame, frame_symbol, frame_word, view
+from .ledger import impact_entries, initial_total, ledger_slice, turn_times
+from .ledger_report import ROUNDING_ZERO, number_text
+from .numbers import MINUS, fraction_text
+
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def impact_name(label: str) -> str:
+    """An impact's label as the figures write it: B1 -> B₁."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
+    return m.group(1) + m.group(2).translate(_SUBSCRIPT) if m else label
+
+
+def coordinates(frame: Frame) -> tuple[str, str]:
+    """The frame's (x, t) in plain text: x, t in S; x′, t′ in S′; x_u, t_u otherwise."""
+    return {"rest": ("x", "t"), "moving": ("x\N{PRIME}", "t\N{PRIME}")}.get(frame.name, ("xᵤ", "tᵤ"))
+
+
+def with_fraction(text: str, value: float) -> str:
+    """A number's text, followed by its exact fraction where the decimal never ends: `+1.416667 (17/12)`."""
+    exact = fraction_text(value)
+    return f"{text} ({exact})" if exact and float(text.replace(MINUS, "-")) != 0.0 else text
+
+
+def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
+    """The impacts in one frame, in the frame's time order: label, end, x, t, and the particle's and the rod's
+    velocities just before and after (c = 1; x and t in the unit L is given in)."""
+    fv = view(history, frame)
+    check_below_c(fv)
+    events = sorted(fv.events, key=lambda e: e.t)  # sorted is stable: the rod's order at one instant
+    coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
+    velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
+                                                             e.rod_velocity_before, e.rod_velocity_after)])
+    x, t = coordinates(frame)
+    rows = []
+    for e in events:
+        numbers = [with_fraction(coordinate(e.x), e.x), with_fraction(coordinate(e.t), e.t)]
+        numbers += [with_fraction(velocity(u), u) for u in (e.particle_velocity_before, e.particle_velocity_after,
+                                                            e.rod_velocity_before, e.rod_velocity_after)]
+        rows.append((Cell(impact_name(e.impact.label)), Cell(e.impact.end),
+                     *(Cell(n.replace("-", MINUS), blank) for n in numbers)))
+    notes = []
+    for e in events:
+        i = e.impact
+        if i.simultaneous_with and i.label < i.simultaneous_with:
+            notes.append(f"{impact_name(i.label)} and {impact_name(i.simultaneous_with)} lie on one line of the "
+                         f"rod's own simultaneity.")
+        if i.while_turning:
+            notes.append(f"{impact_name(i.label)} strikes while the rod is still turning.")
+    return Table(f"events_{frame_word(frame)}", f"The impacts in frame {frame_symbol(frame)}",
+                 ("impact", "end", x, t, "particle before", "particle after", "rod before", "rod after"),
+                 tuple(rows), "llnnnnnn", tuple(notes))
+
+
+def _zero_below(history: History, frame: Frame) -> float:
+    """Differences of totals below this are rounding (ledger_report.ROUNDING_ZERO of the frame's kinetic scale)."""
+    total = initial_total(history, frame.rapidity)
+    return ROUNDING_ZERO * max(total.T, abs(total.p), 1e-300)
+
+
+def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
+    """Per impact, in the frame's time order: the particle's (E, p), the rod's dynamical (E, p) and the hidden
+    part just before and after (E in M c², p in M c)."""
+    zero = _zero_below(history, frame)
+    rows = []
+    for e in impact_entries(history, frame.rapidity):
+        name = impact_name(e.impact.label)
+        t = with_fraction(number_text(e.t), e.t)
+        for k, (body, b, a) in enumerate(((f"particle {e.impact.particle}", e.particle_before, e.particle_after),
+                                          ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
+                                          ("hidden", e.hidden_before, e.hidden_after))):
+            values = [number_text(q, zero) for q in (b.E, b.p, a.E, a.p)]
+            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else ""), Cell(body),
+                         *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
+    _, tn = coordinates(frame)
+    return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
+                 ("impact", tn, "body", "E before", "p before", "E after", "p after"), tuple(rows), "lnlnnnn",
+                 ("E in M c², p in M c, M the rod's mass; hidden: the total before the first impact less every "
+                  "body's kinetic (E, p) on the frame's slice.",))
+
+
+def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
+    """The middle of each stretch of the frame's time between consecutive changes (impacts, a turn's start or end)."""
+    eta = frame.rapidity
+    changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(turn_times(history, eta)))
+    scale = history.scenario.L + max((abs(t) for t in changes), default=0.0)
+    return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > 1e-9 * scale)
+
+
+def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table | None:
+    """The hidden (E, p) on the slices between impacts where it is not zero, or None where it is zero on all."""
+    zero = _zero_below(history, frame)
+    rows = []
+    for t in hidden_instants(history, frame):
+        hidden = ledger_slice(history, frame.rapidity, t).hidden
+        E, p = number_text(hidden.E, zero), number_text(hidden.p, zero)
+        if E == "0" and p == "0":
+            continue
+        rows.append((Cell(with_fraction(number_text(t), t).replace("-", MINUS)),
+                     *(Cell(with_fraction(q, float(q)).replace("-", MINUS), blank) for q in (E, p))))
+    if not rows:
+        return None
+    _, tn = coordinates(frame)
+    return Table(f"hidden_{frame_word(frame)}", f"The hidden part between impacts, frame {frame_symbol(frame)}",
+                 (tn, "hidden E", "hidden p"), tuple(rows), "nnn",
+                 ("Each slice lies halfway between two consecutive impacts or ends of a turn.",))
