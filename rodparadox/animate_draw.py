@@ -53,11 +53,31 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
     own panel) sweeping up, and under each panel a strip of that frame's space at that instant, on the panel's
     x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting)."""
     from . import render
-    from .render.strip import FLASH_COLOUR, draw_strip, update_strip
 
-    st = STYLES[style]
-    L = history.scenario.L
     with render.style_context(style):
+        scene = NowScene(history, timeline, style)
+        canvas = scene.canvas
+        canvas.draw()
+        background = canvas.copy_from_bbox(scene.figure.bbox)
+        for k in range(len(timeline)):
+            canvas.restore_region(background)
+            for artist in scene.update(k):
+                artist.axes.draw_artist(artist)
+            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+class NowScene:
+    """Now mode's figure: `plot`'s diagram with a band of strips below, drawn once; `update(k)` moves each panel's
+    now-line and strip to instant k and returns the artists it moved, in drawing order. Build it inside
+    `render.style_context(style)`."""
+
+    def __init__(self, history: History, timeline: NowTimeline, style: str):
+        from . import render
+        from .render.strip import FLASH_COLOUR, draw_strip
+
+        st = STYLES[style]
+        self.history, self.timeline, self.L = history, timeline, history.scenario.L
+        L = self.L
         figure = render.draw(history, timeline.frames, style)
         width, height = figure.get_size_inches()
         band = _STRIP_BAND.get(style, 1.25)
@@ -66,8 +86,8 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
         total = height + band * len(rows)
         _make_room_below(figure, height, total, band * len(rows))
         figure.set_dpi(_NOW_DPI.get(style, _DPI))
-        canvas = FigureCanvasAgg(figure)
-        updates = []
+        self.figure, self.canvas = figure, FigureCanvasAgg(figure)
+        self.panels = []
         for p, (ax, frame, scale) in enumerate(zip(panels, timeline.frames, timeline.scales)):
             letter = (ax.get_gid() or "a")[0]
             now = ax.axhline(timeline.times[0, p] / L, color=FLASH_COLOUR[style], linewidth=2.0 * st.rod.width / 1.7,
@@ -84,18 +104,17 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
                                          band * 0.06 / total))
             strip = draw_strip(strip_ax, timeline.strip(history, 0, p), st, scale, frame, L=L, colour_ax=colour_ax,
                                bar_width=band * 0.24 * 72 * 0.5, animated=True)
-            updates.append((p, frame, now, strip))
-        canvas.draw()
-        background = canvas.copy_from_bbox(figure.bbox)
-        for k in range(len(timeline)):
-            canvas.restore_region(background)
-            for p, frame, now, strip in updates:
-                shown_now = timeline.strip(history, k, p)
-                now.set_ydata([shown_now.t / L, shown_now.t / L])
-                moved = update_strip(strip, shown_now, frame, L)
-                for artist in (now, *moved):
-                    artist.axes.draw_artist(artist)
-            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+            self.panels.append((frame, now, strip))
+
+    def update(self, k: int) -> list:
+        from .render.strip import update_strip
+
+        L, moved = self.L, []
+        for p, (frame, now, strip) in enumerate(self.panels):
+            shown_now = self.timeline.strip(self.history, k, p)
+            now.set_ydata([shown_now.t / L, shown_now.t / L])
+            moved += [now, *update_strip(strip, shown_now, frame, L)]
+        return moved
 
 
 #: pixels per inch of the now-mode frames: about 1050 px wide on the 7 in page, 1330 px on the 13.3 in slide
