@@ -139,8 +139,8 @@ _PREAMBLE = r"""%% handout.tex, written by sears-paradox handout --format tex: c
 \usepackage{siunitx}
 \usepackage[font=small,labelfont=bf,skip=6pt]{caption}
 \captionsetup[table]{position=top}
-%% the same PDF from the same sources: no date and no random ID in the file (pdfTeX only)
-\ifdefined\pdfinfoomitdate \pdfinfoomitdate=1 \pdftrailerid{} \fi
+%% the same PDF from the same sources: no date, no random ID, no pdfTeX banner in the file (pdfTeX only)
+\ifdefined\pdfinfoomitdate \pdfinfoomitdate=1 \pdftrailerid{} \pdfsuppressptexinfo=-1 \fi
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6\baselineskip plus 2pt}
 %% a worksheet's room to write: #1 ruled lines the width of the text

@@ -298,16 +298,16 @@ def test_handout_tex_compiles_with_pdflatex_and_holds_the_events(worksheet, tmp_
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("kpsewhich") is None,
                     reason="pdflatex is not installed")
-def test_pgfplots_reads_a_world_line(worksheet, tmp_path):
+def test_pgfplots_reads_the_world_lines_as_the_readme_shows(worksheet, tmp_path):
     found = subprocess.run(["kpsewhich", "pgfplots.sty"], capture_output=True, text=True).stdout.strip()
     if not found:
         pytest.skip("pgfplots is not installed")
     h, files = worksheet
-    write({n: b for n, b in files.items() if n.startswith("fig2_moving_")}, tmp_path)
-    (tmp_path / "plot.tex").write_text("\n".join([
-        r"\documentclass{article}", r"\usepackage{pgfplots}", r"\begin{document}", r"\begin{tikzpicture}",
-        r"\begin{axis}", r"\addplot[no markers] table {fig2_moving_rod_left.dat};",
-        r"\addplot[only marks, nodes near coords, point meta=explicit symbolic] table[x=x, y=t, meta=label] "
-        r"{fig2_moving_events.dat};", r"\end{axis}", r"\end{tikzpicture}", r"\end{document}", ""]))
+    write({n: b for n, b in files.items() if n.endswith(".dat")}, tmp_path)
+    readme = files["README.txt"].decode()
+    picture = readme[readme.index("\\begin{tikzpicture}"):readme.index("\\end{tikzpicture}") + len("\\end{tikzpicture}")]
+    (tmp_path / "plot.tex").write_text("\n".join([r"\documentclass{article}", r"\usepackage{pgfplots}",
+                                                  r"\begin{document}", picture, r"\end{document}", ""]))
     log = pdflatex(tmp_path, "plot.tex")
-    assert "Undefined control sequence" not in log
+    assert "Undefined control sequence" not in log and "! " not in log
+    assert "fig1_rest_rod_left.dat" in log and "fig1_rest_events.dat" in log  # the tables were read
