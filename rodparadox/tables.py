@@ -19,6 +19,7 @@ from .frames import Frame, frame_symbol, frame_word, view
 from .ledger import impact_entries, initial_total, ledger_slice, turn_times
 from .ledger_report import ROUNDING_ZERO, number_text
 from .numbers import MINUS, fraction_text
+from .table_formats import latex_text, to_latex, to_markdown  # noqa: F401 (the tables' text formats, importable here)
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
