@@ -277,16 +277,21 @@ def all_tables(v: float) -> list[Table]:
                     reason="pdflatex is not installed (apt-get install texlive-latex-recommended)")
 def test_every_fragment_compiles_and_fits_an_a4_page(tmp_path):
     """Events, ledger and hidden tables of every built-in at v = 0.6 and 0.95, blank and filled, the slices, odd
-    numbers (L = 1e-5: exponents; v = 1e-6: long decimals) and every character latex_text maps, in one document."""
+    numbers (L = 1e-5: exponents; v = 1e-6: long decimals), every character latex_text maps, and what
+    `events` and `ledger --format latex` print, in one document."""
     tables = all_tables(0.6) + all_tables(0.95)
     tables.append(events_table(history_of("fig2", 0.6, L=1e-5), paper_frames(0.6)[0]))
     tables.append(events_table(history_of("fig2", 1e-6), paper_frames(1e-6, 0.3)[2]))
     tables.append(Table("odd", "odd", ("text", "n"), ((Cell("a_b & 50% #1 $5 {x} ~ ^ \\ <|>"),
                                                         Cell("1.110223e\N{MINUS SIGN}16")),
                                                        (Cell("B₁ t′ xᵤ γ − ² × ± ≤ → ·"), Cell("n/a"))), "ln"))
+    fragments = [to_latex(table) for table in tables]
+    # and the commands' whole files, several tables in each
+    fragments += [cli("events", "fig2", "--frame-velocity", "0.3", "--format", "latex"),
+                  cli("ledger", "while_turning", "--at", "0.5,1", "--format", "latex")]
     inputs = []
-    for k, table in enumerate(tables):
-        (tmp_path / f"t{k}.tex").write_text(to_latex(table), encoding="utf-8")
+    for k, fragment in enumerate(fragments):
+        (tmp_path / f"t{k}.tex").write_text(fragment, encoding="utf-8")
         inputs.append(rf"\noindent\input{{t{k}}}\par\bigskip")
     (tmp_path / "doc.tex").write_text("\n".join([
         r"\documentclass{article}", r"\usepackage[a4paper,margin=2.5cm]{geometry}", r"\usepackage{booktabs,siunitx}",
