@@ -17,6 +17,7 @@ last column.
 from __future__ import annotations
 
 import re
+from typing import Sequence
 
 from .document import Cell, Table
 
@@ -82,7 +83,7 @@ def latex_text(text: str) -> str:
         elif c.isascii() or ("\u00c0" <= c <= "\u00ff" and c.isalpha()):
             # a lone letter marked as a symbol (t′, xᵤ) goes into the math with its mark
             if (c.isalpha() and k + 1 < len(text) and text[k + 1] in _SYMBOL_MARKS and c.isascii()
-                    and (k == 0 or not text[k - 1].isalnum())):
+                    and (k == 0 or not text[k - 1].isalnum() or text[k - 1] in _MATH)):  # γt′: a word of math
                 pieces.append((True, c))
             else:
                 pieces.append((False, c))
@@ -151,9 +152,10 @@ def to_markdown(table: Table) -> str:
 #: the ruled space a worksheet leaves for a student's answer: a rule wide enough to write +1.416667 by hand, with
 #: an invisible strut that makes its row tall enough to write above it (only rows with blanks grow)
 BLANK_RULE = r"\rule{0pt}{3.2ex}\rule{5em}{0.4pt}"
-#: every S column prints its numbers as given: the explicit plus kept, no rounding, no digit groups (set in a
-#: group around the tabular, so the including document's own siunitx settings are untouched)
-SIUNITX_OPTIONS = "retain-explicit-plus, round-mode=none, group-digits=none"
+#: every S column prints its numbers as given: the explicit plus kept, no rounding, no digit groups, and an exponent
+#: as the text tables write it, 1.583333e−5, not 1.583333 × 10⁻⁵, which would not fit a page in the events table
+#: (set in a group around the tabular, so the including document's own siunitx settings are untouched)
+SIUNITX_OPTIONS = r"retain-explicit-plus, round-mode=none, group-digits=none, output-exponent-marker=\ensuremath{\mathrm{e}}"
 #: the line of fractions sits this much closer under its numbers than a row would
 FRACTION_LINE_SKIP = "-0.6ex"
 #: a number as the tables print it, optionally followed by its exact fraction: +1.416667 (17/12), 1.110223e−16
@@ -179,7 +181,7 @@ def table_format(texts: list[str]) -> str | None:
     exponents = [m for m in numbers if m["exponent"]]
     if exponents:
         spec += "e" + ("-" if any(m["exponent_sign"] for m in exponents) else "")
-        spec += str(max(len(m["exponent"]) for m in exponents))
+        spec += str(max(len(str(int(m["exponent"]))) for m in exponents))  # siunitx drops leading zeros: e−05 is e−5
     return spec
 
 
@@ -200,8 +202,8 @@ def _column_spec(table: Table, k: int) -> str:
 
 
 #: a header longer than this (in characters) in a number column is set on two lines, split at a space, so that
-#: `particle before` is not wider than its numbers
-HEADER_WRAP = 10
+#: `particle before` and `rod before` are not wider than their numbers
+HEADER_WRAP = 8
 
 
 def _latex_header(head: str, align: str) -> str:
@@ -260,5 +262,19 @@ def to_latex(table: Table) -> str:
             lines.append(cells + r" \\")
     lines += [r"\bottomrule", r"\end{tabular}", r"\endgroup"]
     for k, note in enumerate(table.notes):
-        lines.append((r"\par\smallskip" if k == 0 else r"\par") + r"{\footnotesize " + latex_text(note) + r"\par}")
+        space = r"\par\smallskip" if k == 0 else r"\par"
+        lines.append(space + r"\noindent{\footnotesize " + latex_text(note) + r"\par}")
     return "\n".join(lines) + "\n"
+
+
+# --- several tables as one text -------------------------------------------------------------------------
+
+def tables_markdown(heading: str, tables: Sequence[Table]) -> str:
+    """A heading line, then each table (to_markdown), a blank line between."""
+    return "\n".join([heading.translate(_MARKDOWN_ESCAPE) + "\n", *(to_markdown(t) for t in tables)])
+
+
+def tables_latex(heading: str, tables: Sequence[Table]) -> str:
+    """The heading as a comment, then each table's fragment (to_latex), a \\bigskip between: one file to \\input."""
+    body = "\n\\bigskip\n\n".join(to_latex(t) for t in tables)  # the blank line before \bigskip ends a paragraph
+    return f"% {' '.join(heading.split())}\n\n" + body
