@@ -5,7 +5,9 @@ The events table has the columns `sears-paradox events` prints, with its digits
 per impact, the particle's, the rod's and the hidden (E, p) just before and
 after (as `sears-paradox ledger` prints them); the hidden table has the hidden
 part on the slices between impacts where it is not zero. A worksheet's copy
-leaves every number blank (`blank=True`); labels stay.
+leaves every number blank (`blank=True`), the ledger's impact times too (they
+are the events table's); labels stay, and so do the hidden table's slice times,
+which say where the numbers asked for are taken.
 """
 
 from __future__ import annotations
@@ -110,7 +112,8 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
                                           ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
                                           ("hidden", e.hidden_before, e.hidden_after))):
             values = [number_text(q, zero) for q in (b.E, b.p, a.E, a.p)]
-            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else ""), Cell(body),
+            # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
+            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0), Cell(body),
                          *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
     _, tn = coordinates(frame)
     return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
