@@ -122,6 +122,16 @@ def _frame_name(frame: Frame) -> str:
     return symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
 
 
+def _cap(text: str) -> str:
+    """A sentence's first letter upper case: the frame u = 0.3 -> The frame u = 0.3."""
+    return text[:1].upper() + text[1:]
+
+
+def _table_unit(L: float) -> str:
+    """How the tables give x and t: in units of L, or, for L other than 1, in the unit L is given in."""
+    return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
+
+
 def _time_of(frame: Frame) -> str:
     """The frame's time coordinate: t, t′, tᵤ."""
     return coordinates(frame)[1]
@@ -189,6 +199,32 @@ class _Reading:
             else:
                 out.append([i])
         return tuple(tuple(c) for c in out)
+
+    @cached_property
+    def lines(self) -> tuple[tuple[Impact, ...], ...]:
+        """The rod's lines of simultaneity it is struck on, in its own order, each with its impacts: one collision,
+        or several when a particle strikes again at once (rule 7). Consecutive impacts on one line share its
+        rapidity and their time along it."""
+        out: list[list[Impact]] = []
+        for i in self.history.impacts:
+            last = out[-1][-1] if out else None
+            if (last is not None and last.line_rapidity == i.line_rapidity
+                    and abs(last.event.time_in(i.line_rapidity) - i.event.time_in(i.line_rapidity))
+                    <= SAME_INSTANT * self.scale):
+                out[-1].append(i)
+            else:
+                out.append([i])
+        return tuple(tuple(line) for line in out)
+
+    @cached_property
+    def turn_causes(self) -> tuple[tuple[Impact, ...], ...]:
+        """For each of `History.turns`, the impacts that started it: those on the line after which the rod's
+        momentum no longer matches the line (engine: a turn starts where the rod's rapidity differs from the
+        line's). Should the count ever differ, the impacts at each turn's pivot."""
+        starting = [line for line in self.lines if line[-1].rod_rapidity_after != line[-1].line_rapidity]
+        if len(starting) == len(self.history.turns):
+            return tuple(starting)
+        return tuple(self.impacts_at(turn.pivot) for turn in self.history.turns)
 
     def velocity(self, rapidity: float, frame: Frame) -> float:
         """The velocity in the frame of a body of this rapidity in S; a rounding-sized one is 0."""
@@ -298,9 +334,10 @@ def setup_text(history: History) -> str:
             text += (f", so at t = 0 it is {_in_l(gap / s.L)} from that end." if gap >= 0 else
                      f", so at t = 0 it is at x = {_in_l(starts[p.name].x / s.L)}.")
         sentences.append(text)
-    sentences.append("Below, lengths and times are given as multiples of L, speeds as fractions of c (c = 1), "
-                     "masses in units of M; t = 0 is the instant of S at which the particles are where this "
-                     "paragraph puts them.")
+    tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit L is given in, L = {exact(s.L)})"
+    sentences.append(f"Below, lengths and times are given as multiples of L{tables_unit}, speeds as fractions of c "
+                     f"(c = 1), masses in units of M; t = 0 is the instant of S at which the particles are where this "
+                     f"paragraph puts them.")
     return " ".join(sentences)
 
 
@@ -353,19 +390,22 @@ def _simultaneity(r: _Reading) -> str:
         where = "; ".join(f"{r.when([i], f)} in {_frame_name(f)}" for f in r.frames)
         return f"The rod is struck once, by {i.particle} at its {i.end} end: {impact_name(i.label)}, at {where}."
     sentences = []
-    collisions = r.collisions
-    if all(len(c) == 1 for c in collisions):
+    collisions, lines = r.collisions, r.lines
+    if len(lines) == len(h.impacts):
         sentences.append(f"The rod takes its impacts one at a time, in the order {_names(h.impacts)}: no two lie on "
                          f"one line of its own simultaneity, so each is a collision of its own.")
     elif len(collisions) == 1:
         sentences.append(f"The rod takes {_names(h.impacts)} together: they lie on one line of its own "
                          f"simultaneity and make one collision.")
     else:
-        parts = [_names(c) + (" together" if len(c) > 1 else "") for c in collisions]
-        sentences.append(f"In its own time the rod takes {', then '.join(parts)}; impacts it takes together lie on "
-                         f"one line of its own simultaneity and make one collision.")
+        parts = []
+        for line in lines:
+            on_line = [c for c in collisions if c[0] in line]
+            parts.append(", then at once ".join(_names(c) + (" together" if len(c) > 1 else "") for c in on_line))
+        sentences.append(f"In its own time the rod takes {', then '.join(parts)}: impacts it takes at once lie on "
+                         f"one line of its own simultaneity, and impacts it takes together make one collision.")
     # every set of impacts at one instant of a shown frame, or on one line of the rod's own simultaneity
-    groups: list[tuple[Impact, ...]] = [c for c in collisions if len(c) > 1]
+    groups: list[tuple[Impact, ...]] = [line for line in lines if len(line) > 1]
     for frame in r.frames:
         groups += [g for _, g in r.instants(frame) if len(g) > 1]
     seen = set()
@@ -381,10 +421,10 @@ def _simultaneity(r: _Reading) -> str:
             continue
         together = [f for f in r.frames if all(r.same_time(r.t(i, f), r.t(group[0], f)) for i in group)]
         apart = [f for f in r.frames if f not in together]
-        on_rod_line = any(set(group) <= set(c) for c in collisions)
+        on_rod_line = any(set(group) <= set(line) for line in lines)
         if together:
             text = (f"{_names(group)} lie on one line of simultaneity of "
-                    + _listed([f"{frame_symbol(f)} ({r.when(group, f)})" for f in together]))
+                    + _listed([f"{_frame_name(f)} ({r.when(group, f)})" for f in together]))
             if not on_rod_line:
                 text += ", but not on one of the rod's own lines"
         else:
@@ -395,13 +435,13 @@ def _simultaneity(r: _Reading) -> str:
                 ordered = sorted(group, key=lambda i: r.t(i, f))
                 first, last = ordered[0], ordered[-1]
                 gap = r.length(r.t(last, f) - r.t(first, f))
-                details.append(f"in {frame_symbol(f)}, where {impact_name(first.label)} comes at {r.when([first], f)} "
+                details.append(f"in {_frame_name(f)}, where {impact_name(first.label)} comes at {r.when([first], f)} "
                                f"and {impact_name(last.label)} at {_in_l(r.length(r.t(last, f)))}, {_in_l(gap)} later")
             text += ". They are not simultaneous " + "; nor ".join(details)
         sentences.append(text + ".")
     if not groups:
         sentences.append("No two impacts lie on one line of simultaneity of "
-                         + " or of ".join(frame_symbol(f) for f in r.frames) + ".")
+                         + " or of ".join(_frame_name(f) for f in r.frames) + ".")
     # the order in each frame's time, and where it is not the rod's own
     orders = []
     for f in r.frames:
@@ -409,13 +449,13 @@ def _simultaneity(r: _Reading) -> str:
         for k, (t, group) in enumerate(r.instants(f)):
             time = r.when(group, f) if k == 0 else _in_l(r.length(t))
             steps.append(f"{_names(group)}{' together' if len(group) > 1 else ''} ({time})")
-        orders.append(f"in {frame_symbol(f)} {', then '.join(steps)}")
+        orders.append(f"in {_frame_name(f)} {', then '.join(steps)}")
     sentences.append("In each frame's own time the order is: " + "; ".join(orders) + ".")
     for f in r.frames:
         pair = _out_of_order(r, f)
         if pair is not None:
             a, b = (impact_name(i.label) for i in pair)
-            sentences.append(f"In {frame_symbol(f)} {b} comes before {a}, although the rod takes {a} first: the two "
+            sentences.append(f"In {_frame_name(f)} {b} comes before {a}, although the rod takes {a} first: the two "
                              f"events are too far apart for light to join them, so frames may disagree about their "
                              f"order, and it is the rod's own order that decides what happens to it.")
     return " ".join(sentences)
@@ -441,7 +481,7 @@ def _velocities(r: _Reading) -> str:
                  "shape follows only as its lines of simultaneity turn (below)."]
     unchanged = all(abs(c[-1].rod_rapidity_after) <= SAME_RAPIDITY for c in collisions)
     if unchanged:
-        speeds = _listed([f"{_velocity(r.rod_velocities(f)[0])} in {frame_symbol(f)}" for f in r.frames])
+        speeds = _listed([f"{_velocity(r.rod_velocities(f)[0])} in {_frame_name(f)}" for f in r.frames])
         sentences.append(f"It never changes: it is {speeds} before, between and after the impacts.")
         return " ".join(sentences)
     for f in r.frames:
@@ -449,9 +489,9 @@ def _velocities(r: _Reading) -> str:
         steps = [f"{_velocity(u[0])} before {_names(collisions[0])}"]
         steps += [f"{_velocity(u[k + 1])} after {_names(c)} ({r.when(c, f)})" for k, c in enumerate(collisions)]
         order = "" if [c[0] for c in collisions] == _first_of_each(r, f) else \
-            f" (the clocks of {frame_symbol(f)} put these impacts in another order)"
-        sentences.append(f"In {frame_symbol(f)}, in the rod's own order{order}: " + "; ".join(steps) + ".")
-    finals = [(r.rod_velocities(f)[-1], frame_symbol(f)) for f in r.frames]
+            f" (the clocks of {_frame_name(f)} put these impacts in another order)"
+        sentences.append(f"In {_frame_name(f)}, in the rod's own order{order}: " + "; ".join(steps) + ".")
+    finals = [(r.rod_velocities(f)[-1], _frame_name(f)) for f in r.frames]
     at_rest = [symbol for u, symbol in finals if u == 0.0]
     moving = [f"{_velocity(u)} in {symbol}" for u, symbol in finals if u != 0.0]
     states = _listed(([f"is at rest in {_listed(at_rest)}"] if at_rest else [])
@@ -486,13 +526,14 @@ def _pushed(before: float, after: float) -> str:
 
 
 def _turn_cause(r: _Reading, turn: Turn) -> tuple[Impact, ...]:
-    return r.impacts_at(turn.pivot)
+    """The impacts that started the turn."""
+    return r.turn_causes[next(k for k, t in enumerate(r.history.turns) if t is turn)]
 
 
 def _rest_at_full_length(r: _Reading, frame: Frame) -> list[str]:
     """Where the whole rod stands still in the frame after a turn that completes (`_rests`): when, and why."""
     out = []
-    time, symbol = _time_of(frame), frame_symbol(frame)
+    time, symbol = _time_of(frame), _frame_name(frame)
     for turn, end, next_start, next_turn in _rests(r, frame):
         cause = _names(_turn_cause(r, turn))
         if next_start is None and frame.name == "rest":
@@ -531,10 +572,10 @@ def _why(r: _Reading) -> str:
                 middle = 0.5 * (r.t(first, f) + r.t(last, f))
                 hidden = ledger_slice(h, f.rapidity, middle).hidden
                 sentences.append(
-                    f"In {frame_symbol(f)} {impact_name(first.label)} comes at {r.when([first], f)} and "
+                    f"In {_frame_name(f)} {impact_name(first.label)} comes at {r.when([first], f)} and "
                     f"{impact_name(last.label)} only at {_in_l(r.length(r.t(last, f)))}, yet the rod moves on at "
                     f"{_velocity(r.rod_velocities(f)[0])} between them: it takes both impulses together, on its own "
-                    f"line of simultaneity, where they cancel. Between them in {frame_symbol(f)}, {first.particle} "
+                    f"line of simultaneity, where they cancel. Between them in {_frame_name(f)}, {first.particle} "
                     f"has already been struck and {last.particle} not yet, so the momentum {first.particle} gave up, "
                     f"{_number(hidden.p)} M c, is carried by the stress in the rod: the hidden part of the ledger.")
         if not still:
@@ -551,7 +592,7 @@ def _why(r: _Reading) -> str:
             u = r.rod_velocities(f)
             steps = [f"{_pushed(u[k], u[k + 1])} ({_names(c)})" for k, c in enumerate(collisions) if u[k + 1] != u[k]]
             backwards = "" if any(a * b < 0 for a in u for b in u) else ", never moving backwards"
-            motions.append(f"in {frame_symbol(f)} it {_listed(steps)}{backwards}")
+            motions.append(f"in {_frame_name(f)} it {_listed(steps)}{backwards}")
         text = "; ".join(motions)
         sentences.append(text[0].upper() + text[1:] + ".")
     for k, c in enumerate(collisions):
@@ -586,7 +627,7 @@ def _why(r: _Reading) -> str:
         for f in r.frames:
             speeds = [r.velocity(x, f) for x in [0.0, h.final_rapidity]
                       + [y for t in h.turns for y in (t.rapidity_from, t.rapidity_stop)]]
-            ranges.append(f"from {_velocity(min(speeds))} to {_velocity(max(speeds))} in {frame_symbol(f)}")
+            ranges.append(f"from {_velocity(min(speeds))} to {_velocity(max(speeds))} in {_frame_name(f)}")
         sentences.append("Because its turns are cut short, the rod's material only ever moves at velocities "
                          + _listed(ranges) + ".")
     for f in r.frames:
@@ -596,8 +637,8 @@ def _why(r: _Reading) -> str:
 
 def _in_frames(r: _Reading, velocities: Sequence[float]) -> str:
     """−0.2425 c in S (+0.4183 c in S′): one velocity per frame shown, the first frame's outside the brackets."""
-    text = f"{_velocity(velocities[0])} in {frame_symbol(r.frames[0])}"
-    rest = [f"{_velocity(u)} in {frame_symbol(f)}" for u, f in zip(velocities[1:], r.frames[1:])]
+    text = f"{_velocity(velocities[0])} in {_frame_name(r.frames[0])}"
+    rest = [f"{_velocity(u)} in {_frame_name(f)}" for u, f in zip(velocities[1:], r.frames[1:])]
     return text + (f" ({'; '.join(rest)})" if rest else "")
 
 
@@ -689,7 +730,7 @@ def _gradually(before: float, after: float) -> str:
 def _which_end_first(r: _Reading, frame: Frame) -> str:
     """Which end of the rod changes velocity first in the frame, when, and how the other follows."""
     h = r.history
-    symbol, time = frame_symbol(frame), _time_of(frame)
+    symbol, time = _frame_name(frame), _time_of(frame)
     eta = frame.rapidity
     if not h.turns:
         u = r.rod_velocities(frame)[0]
@@ -703,7 +744,7 @@ def _which_end_first(r: _Reading, frame: Frame) -> str:
         """What one end does in one turn: jumps at its impact, or follows the hyperbola."""
         if struck:
             before, after = (r.velocity(x + eta, frame) for x in _kink(h.worldline(f"rod_{end}").boosted(eta), start))
-            return f"is struck by {_names(_turn_cause(r, turn))} and {_direction(before, after)} at once"
+            return f"is struck by {_names(r.impacts_at(turn.pivot))} and {_direction(before, after)} at once"
         return _gradually(r.velocity(turn.rapidity_from, frame), r.velocity(turn.rapidity_stop, frame)) + \
             f" by {time} = {_in_l(r.length(stop))}"
 
@@ -730,7 +771,8 @@ def _which_end_first(r: _Reading, frame: Frame) -> str:
         text += "it " + change(first, turn, struck, start, stop)
     else:
         cause = _turn_cause(r, turn)
-        text += (f"before {_names(cause)} strikes the {turn.pivot_end} end (at {_in_l(r.length(turn.pivot.time_in(eta)))}"
+        strike = "strike" if len(cause) > 1 else "strikes"
+        text += (f"before {_names(cause)} {strike} the {turn.pivot_end} end (at {_in_l(r.length(turn.pivot.time_in(eta)))}"
                  f"), it {change(first, turn, struck, start, stop)}, because the rod responds along its own line of "
                  f"simultaneity through {_names(cause)}, which reaches the {first} end earlier in {symbol}")
     if len(order) > 1:
@@ -744,7 +786,7 @@ def _which_end_first(r: _Reading, frame: Frame) -> str:
 def strips_caption(history: History, frame: Frame, times: Sequence[float]) -> str:
     """What the stills show, at which instants, and what to look at."""
     r = _Reading(history, (frame,))
-    symbol = frame_symbol(frame)
+    symbol = _frame_name(frame)
     instants = _listed([_number(r.length(t)) for t in times])
     return (f"The rod and the particles in {symbol} at {_time_of(frame)} = {instants} (in units of L), earliest "
             f"first. The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of "
@@ -756,11 +798,11 @@ def strips_caption(history: History, frame: Frame, times: Sequence[float]) -> st
 # --- tables --------------------------------------------------------------------------------------------------
 
 def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
-    symbol, time = frame_symbol(frame), _time_of(frame)
+    symbol, time = _frame_name(frame), _time_of(frame)
     x = coordinates(frame)[0]
     blocks: list[Block] = [
-        Paragraph(f"The impacts in {symbol}, in the order of {symbol}'s time: where and when each strikes ({x} and "
-                  f"{time} in the unit L is given in), and the velocities (in units of c) of the particle and of the "
+        Paragraph(f"The impacts in {symbol}, in the order of its time: where and when each strikes ({x} and {time} "
+                  f"{_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and of the "
                   f"rod just before and just after it."),
         tables.events_table(history, frame, blank),
         Paragraph(f"The ledger in {symbol}: at each impact, the energy E and momentum p of the particle, of the rod "
@@ -853,11 +895,11 @@ def _question_lorentz(r: _Reading, a: Frame, b: Frame, pair: tuple[Impact, ...])
     g = _gamma(w)
     xa, ta = coordinates(a)
     xb, tb = coordinates(b)
-    A, B = frame_symbol(a), frame_symbol(b)
+    A, B = _frame_name(a), _frame_name(b)
     sign, W = ("+" if w < 0 else MINUS), _n7(abs(w))
     given = "; ".join(f"{impact_name(i.label)} strikes at {xa} = {_in_l(r.length(r.x(i, a)), ANSWER_DIGITS)}, "
                       f"{ta} = {_in_l(r.length(r.t(i, a)), ANSWER_DIGITS)}" for i in pair)
-    steps = [f"{B} moves at w = {_velocity(w, ANSWER_DIGITS)} relative to {A}, so {tb} = γ({ta} − w {xa}) = "
+    steps = [f"{_cap(B)} moves at w = {_velocity(w, ANSWER_DIGITS)} relative to {A}, so {tb} = γ({ta} − w {xa}) = "
              f"γ({ta} {sign} {W} {xa}) and {xb} = γ({xa} {sign} {W} {ta}), with γ = 1/√(1 − w²) = 1/√(1 − {W}²) = "
              f"{_approx(g)}."]
     times = []
@@ -866,13 +908,13 @@ def _question_lorentz(r: _Reading, a: Frame, b: Frame, pair: tuple[Impact, ...])
         inner = t - w * x
         times.append(g * inner)
         steps.append(f"{impact_name(i.label)}: {tb} = {_n7(g)} × ({_n7(t)} {sign} {W} × {_bracketed(x)}) L = "
-                     f"{_n7(g)} × {_n7(inner)} L = {_in_l_approx(g * inner)}.")
+                     f"{_n7(g)} × {_bracketed(inner) if inner < 0 else _n7(inner)} L = {_in_l_approx(g * inner)}.")
     if len(pair) == 1:
         i = pair[0]
         x, t = r.length(r.x(i, a)), r.length(r.t(i, a))
         steps.append(f"And {xb} = {_n7(g)} × ({_n7(x)} {sign} {W} × {_bracketed(t)}) L = "
                      f"{_in_l_approx(g * (x - w * t))}.")
-        return (f"In {A}, {given}. {B} moves at {_velocity(w, ANSWER_DIGITS)} relative to {A}. Use the Lorentz "
+        return (f"In {A}, {given}. {_cap(B)} moves at {_velocity(w, ANSWER_DIGITS)} relative to {A}. Use the Lorentz "
                 f"transformation to find where and when it strikes in {B}.", tuple(steps))
     p, q = pair
     apart_a = abs(r.length(r.t(q, a) - r.t(p, a)))
@@ -886,7 +928,7 @@ def _question_lorentz(r: _Reading, a: Frame, b: Frame, pair: tuple[Impact, ...])
         earlier, later = (p, q) if times[0] < times[1] else (q, p)
         steps.append(f"The times differ: in {B} {impact_name(later.label)} comes {_in_l_approx(abs(times[1] - times[0]))}"
                      f" after {impact_name(earlier.label)}, while {in_a}.")
-    text = (f"In {A}, {given}. {B} moves at {_velocity(w, ANSWER_DIGITS)} relative to {A}. Use the Lorentz "
+    text = (f"In {A}, {given}. {_cap(B)} moves at {_velocity(w, ANSWER_DIGITS)} relative to {A}. Use the Lorentz "
             f"transformation to find {tb} of each. Are they simultaneous in {B}?")
     if not same_a and not same_b and (r.t(p, a) - r.t(q, a)) * (r.t(p, b) - r.t(q, b)) < 0:
         text += f" Which comes first in {B}?"
@@ -903,8 +945,8 @@ def _question_read(r: _Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> 
         x, t = r.length(r.x(i, f)), r.length(r.t(i, f))
         xs, ts = coordinates(f)
         letter = PANEL_LETTERS[r.frames.index(f)]
-        lines.append(f"In {frame_symbol(f)} (panel ({letter})): {xs} = {_in_l_approx(x)}, {ts} = {_in_l_approx(t)}.")
-        checks.append(f"in {frame_symbol(f)} {_bracketed(t)}² − {_bracketed(x)}² = {_approx(t * t - x * x)}")
+        lines.append(f"In {_frame_name(f)} (panel ({letter})): {xs} = {_in_l_approx(x)}, {ts} = {_in_l_approx(t)}.")
+        checks.append(f"in {_frame_name(f)} {_bracketed(t)}² − {_bracketed(x)}² = {_approx(t * t - x * x)}")
     letters = [f"({PANEL_LETTERS[r.frames.index(f)]})" for f in panels]
     where = f"panel {letters[0]}" if len(letters) == 1 else f"panels {_listed(letters)}"
     text = (f"Read off the diagram, in {where}, where and when {impact_name(i.label)} happens ({i.particle} striking "
@@ -917,7 +959,7 @@ def _question_read(r: _Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> 
 def _question_velocity(r: _Reading, a: Frame, b: Frame) -> _Asked:
     """The rod's velocity after a collision (or a particle's, if the rod never changes) in b, by velocity addition."""
     w = _relative(a, b)
-    A, B = frame_symbol(a), frame_symbol(b)
+    A, B = _frame_name(a), _frame_name(b)
     candidates = [(f"After {_names(c)} the rod moves at {_velocity(r.velocity(c[-1].rod_rapidity_after, a), ANSWER_DIGITS)}"
                    f" in {A}.", f"the rod's velocity after {_names(c)}", r.velocity(c[-1].rod_rapidity_after, a))
                   for c in r.collisions]
@@ -931,7 +973,7 @@ def _question_velocity(r: _Reading, a: Frame, b: Frame) -> _Asked:
         candidates = [c for c in candidates if c[2] != 0.0]
     given, what, u = max(candidates, key=lambda c: abs(relative_velocity(c[2], w)))
     result = relative_velocity(u, w)
-    answer = [f"{B} moves at w = {_velocity(w, ANSWER_DIGITS)} relative to {A}, so a velocity u in {A} is "
+    answer = [f"{_cap(B)} moves at w = {_velocity(w, ANSWER_DIGITS)} relative to {A}, so a velocity u in {A} is "
               f"(u − w)/(1 − u w) in {B}.",
               f"({_signed(u, ANSWER_DIGITS)} − ({_signed(w, ANSWER_DIGITS)}))/(1 − ({_signed(u, ANSWER_DIGITS)}) × "
               f"({_signed(w, ANSWER_DIGITS)})) = {_bracketed(u - w)}/{_bracketed(1 - u * w)} = "
@@ -957,8 +999,8 @@ def _between(r: _Reading, frame: Frame, t: float) -> str:
     if before and after:
         return f"after {impact_name(before[-1].label)} and before {impact_name(after[0].label)}"
     if after:
-        return f"before {impact_name(after[0].label)}, the first impact in {frame_symbol(frame)}"
-    return f"after {impact_name(before[-1].label)}, the last impact in {frame_symbol(frame)}"
+        return f"before {impact_name(after[0].label)}, the first impact in {_frame_name(frame)}"
+    return f"after {impact_name(before[-1].label)}, the last impact in {_frame_name(frame)}"
 
 
 def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
@@ -984,7 +1026,7 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     s = ledger_slice(h, f.rapidity, t)
     total = initial_total(h, f.rapidity)
     zero = 1e-12 * max(total.E, abs(total.p))
-    symbol, time = frame_symbol(f), _time_of(f)
+    symbol, time = _frame_name(f), _time_of(f)
     whole = _whole_rod(r, f, t)
     bodies = dict(s.bodies)
     steps = ["A body of mass m moving at u has momentum m u/√(1 − u²) (c = 1)."]
@@ -1052,9 +1094,9 @@ def _question_other_speed(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
             p, q = found[labels[0]], found[labels[1]]
             for f in reading.frames:
                 gap = reading.length(reading.t(q, f) - reading.t(p, f))
-                out.append(f"{names[0]} and {names[1]} are simultaneous in {frame_symbol(f)}" if gap == 0.0 else
+                out.append(f"{names[0]} and {names[1]} are simultaneous in {_frame_name(f)}" if gap == 0.0 else
                            f"{names[1]} comes {_in_l(abs(gap), ANSWER_DIGITS)} {'after' if gap > 0 else 'before'} "
-                           f"{names[0]} in {frame_symbol(f)}")
+                           f"{names[0]} in {_frame_name(f)}")
         elif len(labels) == 2:
             out.append(f"the rod is struck {len(history.impacts)} times: {_names(history.impacts)}")
         elif history.turns:
@@ -1071,7 +1113,7 @@ def _question_other_speed(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     changes = ("S′ and the speed of " + _listed(following) + ", which the scenario takes from v, change with it"
                if following else "S′ changes with it; the particles keep the speeds the scenario gives them")
     if len(labels) == 2:
-        asked = (f"How long after {names[0]} does {names[1]} come, in {frame_symbol(a)} and in {frame_symbol(b)}? "
+        asked = (f"How long after {names[0]} does {names[1]} come, in {_frame_name(a)} and in {_frame_name(b)}? "
                  f"Does the rod end at rest in S?")
     else:
         asked = "How long does the far end of the rod take, in S, to reach the rod's new velocity? How does the rod end?"
@@ -1088,7 +1130,8 @@ def _question_stopped_turn(r: _Reading) -> _Asked | None:
     stopper = next(i for i in h.impacts if i.label == turn.stopped_by)
     cause = _turn_cause(r, turn)
     far = "left" if turn.pivot_end == "right" else "right"
-    P, E = cause[-1].event, stopper.event
+    P, E = turn.pivot, stopper.event
+    at_pivot = [i for i in cause if i in r.impacts_at(P)] or r.impacts_at(P)
     dx, dt = r.length(E.x - P.x), r.length(E.t - P.t)
     u_far = dt / dx  # on the hyperbola (x − x_P)² − (t − t_P)² = L² the velocity is (t − t_P)/(x − x_P)
     u_rod = r.velocity(turn.rapidity_to, rest_frame())
@@ -1097,7 +1140,7 @@ def _question_stopped_turn(r: _Reading) -> _Asked | None:
             f"moving in S at that instant, and how does that compare with the rod's velocity after {name}? (During a "
             f"turn about the event P the far end moves on the hyperbola (x − x_P)² − (t − t_P)² = L², whose velocity "
             f"at (x, t) is (t − t_P)/(x − x_P).)")
-    answer = (f"P is {name}, at x = {_in_l(r.length(P.x), ANSWER_DIGITS)}, t = {_in_l(r.length(P.t), ANSWER_DIGITS)}; "
+    answer = (f"P is {_names(at_pivot)}, at x = {_in_l(r.length(P.x), ANSWER_DIGITS)}, t = {_in_l(r.length(P.t), ANSWER_DIGITS)}; "
               f"{stop} is at x = {_in_l(r.length(E.x), ANSWER_DIGITS)}, t = {_in_l(r.length(E.t), ANSWER_DIGITS)}.",
               f"{stop} is on the hyperbola: {_bracketed(dx)}² − {_bracketed(dt)}² = {_n7(dx * dx - dt * dt)} (in L²).",
               f"The {far} end's velocity there: {_n7(dt)}/{_bracketed(dx)} = {_velocity(u_far, ANSWER_DIGITS)} in {S}, "
@@ -1131,7 +1174,7 @@ def _question_at_rest(r: _Reading) -> _Asked | None:
         if not rests:
             continue
         turn, end, next_start, _ = rests[0]
-        symbol, time = frame_symbol(f), _time_of(f)
+        symbol, time = _frame_name(f), _time_of(f)
         u0 = r.rod_velocities(f)[0]
         if next_start is None:
             when = f"from {time} = {_in_l_approx(r.length(end))} on"
@@ -1191,11 +1234,12 @@ def _question_momentum(r: _Reading, collision: tuple[Impact, ...] | None = None)
     pb, pa = _momentum(1.0, ub), _momentum(1.0, ua)
     rows.append(f"the rod (M): {_velocity(ub, ANSWER_DIGITS)} → {_velocity(ua, ANSWER_DIGITS)}, p = {_n7(pb)} → "
                 f"{_n7(pa)} M c")
+    why = ua != ub and len(c) > 1
     text = (f"Using the velocities in S just before and just after {_names(c)} (the events table), check that "
-            f"momentum is conserved in S." + (" Why does the rod move off?" if ua != ub else ""))
+            f"momentum is conserved in S." + (" Why does the rod move off?" if why else ""))
     answer = ["p = m u/√(1 − u²). " + "; ".join(rows) + ".",
               f"Before: {_n7(before + pb)} M c; after: {_n7(after + pa)} M c: the same."]
-    if ua != ub and len(c) > 1:
+    if why:
         answer.append("The particles' momenta do not cancel before the impacts (the heavier one carries more), so the "
                       "rod carries the difference after them.")
     return text, tuple(answer)
@@ -1212,7 +1256,7 @@ def _question_together(r: _Reading, b: Frame) -> _Asked | None:
     first, last = ordered[0], ordered[-1]
     if r.same_time(r.t(first, b), r.t(last, b)):
         return None
-    symbol = frame_symbol(b)
+    symbol = _frame_name(b)
     u_rod = r.velocity(c[0].rod_rapidity_before, b)
     hidden = ledger_slice(h, b.rapidity, 0.5 * (r.t(first, b) + r.t(last, b))).hidden
     momenta = [_momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
@@ -1263,7 +1307,8 @@ def questions(history: History, frames: Sequence[Frame]) -> tuple[Question, ...]
     pair = _lorentz_pair(r, a, b)
     asked: list[_Asked] = [_question_read(r, a, b, pair), _question_lorentz(r, a, b, pair), _question_velocity(r, a, b)]
     fitting = [_question_hidden(r, a, b), _question_stopped_turn(r), _question_at_rest(r), _question_single(r),
-               _question_momentum(r) if len({p.mass for p in history.scenario.particles}) > 1 else None,
+               _question_momentum(r, next((c for c in r.collisions if len(c) > 1), None))
+               if len({p.mass for p in history.scenario.particles}) > 1 else None,
                _question_together(r, b), _question_zigzag(r)]
     asked += [q for q in fitting if q is not None]
     other = _question_other_speed(r, a, b)

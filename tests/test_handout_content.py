@@ -503,3 +503,48 @@ def test_a_single_particles_answer_is_g_v_l():
     asked = handout.questions(history("single", 0.6), paper_frames(0.6))
     answer = answer_of(asked, "B₁ gives the rod's momentum the velocity −0.6 c")
     assert "takes 0.75 L of S's time" in answer and "moves 0.45 L to the left" in answer
+
+
+# --- scenarios beyond the built-ins -----------------------------------------------------------------------------
+
+HEAVY_B = """
+name: heavy
+v: 0.6
+L: 2
+particles:
+  B: {mass: 5, gap: 0.5}
+  A: {mass: 0.3, speed: 0.9, timed_with: {particle: B, frame: 0.3, delay: 0.4}}
+"""
+
+
+def test_a_re_strike_on_one_rod_line_is_told_as_such_and_turns_keep_their_own_cause():
+    from rodparadox.scenario import parse
+    h = run(parse(HEAVY_B, "heavy.yaml", "heavy"))
+    # the engine: A1 stops B1's turn; B, five times the rod's mass, sits at the pivot and strikes again at once
+    # on A1's line (rule 7): B2 at B1's event, on one line of the rod's simultaneity with A1
+    assert [i.label for i in h.impacts] == ["B1", "A1", "B2"] and h.impacts[1].simultaneous_with == "B2"
+    assert (h.impacts[0].event.x, h.impacts[0].event.t) == (h.impacts[2].event.x, h.impacts[2].event.t)
+    text = explanation_text_of(h, paper_frames(0.6))
+    assert "no two lie on one line of its own simultaneity" not in text
+    assert "A₁ and B₂ lie on one line of the rod's own simultaneity" in text
+    assert "B₁ and B₂ happen at one event" in text
+    assert "still turning from B₁:" in text  # the turn B1 started, not B2, which came after it
+    # L = 2: the text gives multiples of L, the tables the unit L is given in
+    assert "the tables give them in the unit L is given in, L = 2" in handout.setup_text(h)
+    # the timing frame given as a velocity
+    assert "in the time of the frame of velocity +0.3 c relative to S" in handout.setup_text(h)
+
+
+def explanation_text_of(h, frames) -> str:
+    return " ".join(p.text for p in handout.explanation(h, frames))
+
+
+def test_a_third_frame_is_named_the_frame_u_in_running_text():
+    from rodparadox.frames import frame_of_velocity
+    frames = paper_frames(0.6) + (frame_of_velocity(0.3),)
+    h = history("single", 0.6)
+    text = explanation_text_of(h, frames)
+    assert "in the frame u = 0.3" in text and "In u = 0.3" not in text
+    doc = handout.build([("single", h, frames)])
+    caption = next(b for b in section_blocks(doc, Diagram)).caption
+    assert "(c) in the frame u = 0.3, moving at +0.3 c relative to S" in caption
