@@ -950,10 +950,12 @@ def _question_read(r: _Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> 
     letters = [f"({PANEL_LETTERS[r.frames.index(f)]})" for f in panels]
     where = f"panel {letters[0]}" if len(letters) == 1 else f"panels {_listed(letters)}"
     text = (f"Read off the diagram, in {where}, where and when {impact_name(i.label)} happens ({i.particle} striking "
-            f"the {i.end} end). Check your readings: t² − x² must be the same in every frame.")
+            f"the {i.end} end).")
+    if len(panels) == 1:
+        return text, tuple(lines) + ("A careful reading gets these to about a twentieth of L.",)
     answer = tuple(lines) + (f"A careful reading gets these to about a twentieth of L. The check, in units of L²: "
                              f"{'; '.join(checks)}: the same, as a Lorentz transformation keeps t² − x².",)
-    return text, answer
+    return text + " Check your readings: t² − x² must be the same in every frame.", answer
 
 
 def _question_velocity(r: _Reading, a: Frame, b: Frame) -> _Asked:
@@ -1216,6 +1218,11 @@ def _question_single(r: _Reading) -> _Asked | None:
     return text, answer
 
 
+def _s_table(r: _Reading) -> str:
+    """Where the student finds velocities in S: the events table of S, if S is shown."""
+    return " (the events table of S)" if any(f.name == "rest" for f in r.frames) else ""
+
+
 def _question_momentum(r: _Reading, collision: tuple[Impact, ...] | None = None) -> _Asked:
     """Momentum in S before and after a collision (the first, or the one given), from the velocities."""
     h = r.history
@@ -1235,7 +1242,7 @@ def _question_momentum(r: _Reading, collision: tuple[Impact, ...] | None = None)
     rows.append(f"the rod (M): {_velocity(ub, ANSWER_DIGITS)} → {_velocity(ua, ANSWER_DIGITS)}, p = {_n7(pb)} → "
                 f"{_n7(pa)} M c")
     why = ua != ub and len(c) > 1
-    text = (f"Using the velocities in S just before and just after {_names(c)} (the events table), check that "
+    text = (f"Using the velocities in S just before and just after {_names(c)}{_s_table(r)}, check that "
             f"momentum is conserved in S." + (" Why does the rod move off?" if why else ""))
     answer = ["p = m u/√(1 − u²). " + "; ".join(rows) + ".",
               f"Before: {_n7(before + pb)} M c; after: {_n7(after + pa)} M c: the same."]
@@ -1258,7 +1265,6 @@ def _question_together(r: _Reading, b: Frame) -> _Asked | None:
         return None
     symbol = _frame_name(b)
     u_rod = r.velocity(c[0].rod_rapidity_before, b)
-    hidden = ledger_slice(h, b.rapidity, 0.5 * (r.t(first, b) + r.t(last, b))).hidden
     momenta = [_momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
                for i in c]
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
@@ -1268,8 +1274,8 @@ def _question_together(r: _Reading, b: Frame) -> _Asked | None:
             f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
     answer = (f"{_velocity(u_rod, ANSWER_DIGITS)}, as before and after: the rod takes {_names(c)} together, on one line "
               f"of its own simultaneity, and there the impulses cancel{cancel}.",
-              f"Between the two impacts in {symbol} the momentum {first.particle} has given up, {_approx(hidden.p)} M c, "
-              f"is held by the stress in the rod: the hidden part of the ledger.")
+              f"Between the two impacts in {symbol} the momentum {first.particle} has given up is held by the stress "
+              f"in the rod: the hidden part of the ledger, which the question on hidden momentum computes.")
     return text, answer
 
 
@@ -1282,8 +1288,8 @@ def _question_zigzag(r: _Reading) -> _Asked | None:
     u = r.rod_velocities(rest)
     steps = [f"after {_names(c)} (t = {_in_l(r.length(r.t(c[0], rest)), ANSWER_DIGITS)}) "
              f"{_velocity(u[k + 1], ANSWER_DIGITS)}: it {_pushed(u[k], u[k + 1])}" for k, c in enumerate(r.collisions)]
-    text = ("From the events table of S: in which direction is the rod driven after each impact? Why is it struck "
-            "more than once by the same particle?")
+    text = (f"From the rod's velocities in S{_s_table(r)}: in which direction is the rod driven after each impact? "
+            f"Why is it struck more than once by the same particle?")
     answer = [f"Its velocity in S is 0 before {_names(r.collisions[0])}; " + "; ".join(steps) + "."]
     repeat = next((i for i in h.impacts if any(p.particle == i.particle for p in h.impacts[:h.impacts.index(i)])), None)
     if repeat is not None:
