@@ -36,6 +36,7 @@ from .errors import RodParadoxError
 from .frames import (PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
                      rest_frame, time_window)
 from .ledger import initial_total, ledger_slice
+from .ledger_report import ROUNDING_ZERO
 from .numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, shown
 from .rod import rod_on_slice, turn_corners, turn_interval
 from .tables import SAME_INSTANT, coordinates, impact_name, time_order
@@ -52,6 +53,8 @@ OTHER_SPEEDS = (0.8, 0.5, 0.9, 0.3)
 SAME_RAPIDITY = 1e-9
 #: the rod's material points sampled to tell whether it moves as a whole on a slice (not turning there)
 WHOLE_ROD_POINTS = 9
+#: two stills closer than this fraction of the frame's time window look alike on the page: one is kept
+STRIP_SEPARATION = 0.02
 
 
 # --- numbers as text -----------------------------------------------------------------------------------------
@@ -263,22 +266,18 @@ def _zigzags(rapidities: Sequence[float]) -> bool:
     return reversals > 1 or returns
 
 
-def zigzags(history: History) -> bool:
-    """Whether the rod zig-zags (see `_zigzags`), from its dynamical rapidity before and after each collision."""
-    reading = _Reading(history, (rest_frame(),))
-    return _zigzags([0.0] + [c[-1].rod_rapidity_after for c in reading.collisions])
-
-
 # --- the set-up -----------------------------------------------------------------------------------------------
+
+def _speed(history: History) -> str:
+    """v = 0.6, or v = 0.6, L = 2."""
+    s = history.scenario
+    return f"v = {exact(s.v)}" + (f", L = {exact(s.L)}" if s.L != 1.0 else "")
+
 
 def title(items: Sequence[tuple[str, History]]) -> str:
     """The Sears paradox: fig2 at v = 0.6; fig1 and fig2 at v = 0.6; fig1 at v = 0.6 and fig2 at v = 0.8."""
-    def speed(h: History) -> str:
-        s = h.scenario
-        return f"v = {exact(s.v)}" + (f", L = {exact(s.L)}" if s.L != 1.0 else "")
-
     stems = [item[0] for item in items]
-    speeds = [speed(item[1]) for item in items]
+    speeds = [_speed(item[1]) for item in items]
     if len(set(speeds)) == 1:
         return f"The Sears paradox: {_listed(stems)} at {speeds[0]}"
     return "The Sears paradox: " + _listed([f"{stem} at {sp}" for stem, sp in zip(stems, speeds)])
@@ -689,7 +688,7 @@ def strip_times(history: History, frame: Frame) -> tuple[float, ...]:
     candidates += [(1, start) for start, _ in turns if not any(r.same_time(start, t) for t in impacts)]
     candidates += [(2, 0.5 * (a + b)) for a, b in turns if b - a > 0]
     candidates += [(3, end) for _, end in turns]
-    close = 0.02 * (t_hi - t_lo)  # closer instants look alike on the page
+    close = STRIP_SEPARATION * (t_hi - t_lo)
     chosen: list[tuple[int, float]] = []
     for priority, t in sorted(candidates):
         if all(abs(t - c) > close for _, c in chosen):
@@ -1013,7 +1012,7 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     chosen = None
     for f in [b, a] + [f for f in r.frames if f not in (a, b)]:
         total = initial_total(h, f.rapidity)
-        zero = 1e-12 * max(total.E, abs(total.p))  # a difference of totals below this is rounding
+        zero = ROUNDING_ZERO * max(total.E, abs(total.p))  # a difference of totals below this is rounding
         for t in tables.hidden_instants(h, f):
             hidden = ledger_slice(h, f.rapidity, t).hidden
             if abs(hidden.p) > zero:
@@ -1027,7 +1026,7 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     _, f, t = chosen
     s = ledger_slice(h, f.rapidity, t)
     total = initial_total(h, f.rapidity)
-    zero = 1e-12 * max(total.E, abs(total.p))
+    zero = ROUNDING_ZERO * max(total.E, abs(total.p))
     symbol, time = _frame_name(f), _time_of(f)
     whole = _whole_rod(r, f, t)
     bodies = dict(s.bodies)
@@ -1268,7 +1267,7 @@ def _question_together(r: _Reading, b: Frame) -> _Asked | None:
     momenta = [_momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
                for i in c]
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
-              f"{_listed([_n7(p) + ' M c' for p in momenta])}, which cancel)" if abs(sum(momenta)) <= 1e-12 * sum(
+              f"{_listed([_n7(p) + ' M c' for p in momenta])}, which cancel)" if abs(sum(momenta)) <= ROUNDING_ZERO * sum(
                   abs(p) for p in momenta) else "")
     text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
             f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
@@ -1328,7 +1327,8 @@ def questions(history: History, frames: Sequence[Frame]) -> tuple[Question, ...]
 # --- the document ---------------------------------------------------------------------------------------------
 
 def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool) -> tuple[Section, list[Block]]:
-    s = history.scenario
+    """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
+    the questions again)."""
     blocks: list[Block] = [Heading(heading(history)), Paragraph(setup_text(history)),
                            Diagram(f"{stem}_diagram", history, frames, diagram_caption(history, frames)),
                            Heading("What the diagram shows", 2)]
@@ -1340,7 +1340,7 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     blocks.append(Heading("The numbers", 2))
     for f in frames:
         blocks += _tables(history, f, worksheet)
-    section_title = f"{stem} at v = {exact(s.v)}"
+    section_title = f"{stem} at {_speed(history)}"
     key: list[Block] = []
     if worksheet:
         asked = questions(history, frames)
