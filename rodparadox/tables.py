@@ -5,7 +5,9 @@ The events table has the columns `sears-paradox events` prints, with its digits
 per impact, the particle's, the rod's and the hidden (E, p) just before and
 after (as `sears-paradox ledger` prints them); the hidden table has the hidden
 part on the slices between impacts where it is not zero. A worksheet's copy
-leaves every number blank (`blank=True`); labels stay.
+leaves every number blank (`blank=True`), the ledger's impact times too (they
+are the events table's); labels stay, and so do the hidden table's slice times,
+which say where the numbers asked for are taken.
 """
 
 from __future__ import annotations
@@ -23,6 +25,23 @@ from .numbers import MINUS, exact, fraction_text
 from .table_formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+#: two impacts closer than this in a frame's time, relative to L plus the largest |t|, are at one instant of it:
+#: boosting puts an ulp or two between impacts on one line of the frame, and the engine places events to
+#: about 1e-9 relative at its bounds (README, "Scenario files")
+SAME_INSTANT = 1e-9
+
+
+def time_order(times: Sequence[float], scale: float) -> list[int]:
+    """Indices of `times` (given in the rod's own order) in the order of a frame's time: times within
+    SAME_INSTANT * `scale` of each other are one instant, and keep the rod's own order (B₁ before A₁ in Fig. 2's
+    S′, whatever the rounding of t′ says)."""
+    by_time = sorted(range(len(times)), key=lambda k: times[k])
+    instant, first_time, instants = -1, None, {}
+    for k in by_time:
+        if first_time is None or times[k] - first_time > SAME_INSTANT * scale:
+            instant, first_time = instant + 1, times[k]
+        instants[k] = instant
+    return sorted(range(len(times)), key=lambda k: (instants[k], k))
 
 
 def impact_name(label: str) -> str:
@@ -47,7 +66,8 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
     velocities just before and after (c = 1; x and t in the unit L is given in)."""
     fv = view(history, frame)
     check_below_c(fv)
-    events = sorted(fv.events, key=lambda e: e.t)  # sorted is stable: the rod's order at one instant
+    scale = history.scenario.L + max((abs(e.t) for e in fv.events), default=0.0)
+    events = [fv.events[k] for k in time_order([e.t for e in fv.events], scale)]  # the rod's order at one instant
     coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
     velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
                                                              e.rod_velocity_before, e.rod_velocity_after)])
@@ -83,14 +103,18 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
     part just before and after (E in M c², p in M c)."""
     zero = _zero_below(history, frame)
     rows = []
-    for e in impact_entries(history, frame.rapidity):
+    rod_order = {i.label: k for k, i in enumerate(history.impacts)}
+    entries = sorted(impact_entries(history, frame.rapidity), key=lambda e: rod_order[e.impact.label])
+    scale = history.scenario.L + max((abs(e.t) for e in entries), default=0.0)
+    for e in (entries[k] for k in time_order([e.t for e in entries], scale)):
         name = impact_name(e.impact.label)
         t = with_fraction(number_text(e.t), e.t)
         for k, (body, b, a) in enumerate(((f"particle {e.impact.particle}", e.particle_before, e.particle_after),
                                           ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
                                           ("hidden", e.hidden_before, e.hidden_after))):
             values = [number_text(q, zero) for q in (b.E, b.p, a.E, a.p)]
-            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else ""), Cell(body),
+            # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
+            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0), Cell(body),
                          *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
     _, tn = coordinates(frame)
     return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
