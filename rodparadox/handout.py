@@ -33,13 +33,14 @@ from . import tables
 from .document import Block, Diagram, Handout, Heading, Paragraph, Question, Section, Strips
 from .engine import History, Impact, Turn, run
 from .errors import RodParadoxError
-from .frames import (PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
+from .frames import (ONE_INSTANT, PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
                      rest_frame, time_window)
 from .ledger import initial_total, ledger_slice
 from .ledger_report import ROUNDING_ZERO
 from .numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, shown
 from .rod import rod_on_slice, turn_corners, turn_interval
-from .tables import SAME_INSTANT, coordinates, impact_name, time_order
+from .frames import time_order
+from .tables import coordinates, impact_name
 
 #: significant digits of a number in running text (explanations, captions), and in a worked answer
 PROSE_DIGITS = 4
@@ -175,10 +176,10 @@ class _Reading:
 
     def length(self, value: float) -> float:
         """A coordinate or time as a multiple of L, rounding-sized values 0 (x′ = 0 of A₁ in Fig. 1 is 6e-17)."""
-        return 0.0 if abs(value) <= SAME_INSTANT * self.scale else value / self.L
+        return 0.0 if abs(value) <= ONE_INSTANT * self.scale else value / self.L
 
     def same_time(self, a: float, b: float) -> bool:
-        return abs(a - b) <= SAME_INSTANT * self.scale
+        return abs(a - b) <= ONE_INSTANT * self.scale
 
     def instants(self, frame: Frame) -> tuple[tuple[float, tuple[Impact, ...]], ...]:
         """The impacts grouped by instant of the frame's time, in its order (each group in the rod's order)."""
@@ -213,7 +214,7 @@ class _Reading:
             last = out[-1][-1] if out else None
             if (last is not None and last.line_rapidity == i.line_rapidity
                     and abs(last.event.time_in(i.line_rapidity) - i.event.time_in(i.line_rapidity))
-                    <= SAME_INSTANT * self.scale):
+                    <= ONE_INSTANT * self.scale):
                 out[-1].append(i)
             else:
                 out.append([i])
@@ -252,7 +253,7 @@ class _Reading:
     def impacts_at(self, event) -> tuple[Impact, ...]:
         """The impacts at an event (a turn's pivot), in the rod's order."""
         return tuple(i for i in self.history.impacts
-                     if math.hypot(i.event.x - event.x, i.event.t - event.t) <= SAME_INSTANT * self.scale)
+                     if math.hypot(i.event.x - event.x, i.event.t - event.t) <= ONE_INSTANT * self.scale)
 
 
 def _zigzags(rapidities: Sequence[float]) -> bool:
@@ -414,7 +415,7 @@ def _simultaneity(r: _Reading) -> str:
             continue
         seen.add(key)
         same_event = all(math.hypot(i.event.x - group[0].event.x, i.event.t - group[0].event.t)
-                         <= SAME_INSTANT * r.scale for i in group)
+                         <= ONE_INSTANT * r.scale for i in group)
         if same_event:
             sentences.append(f"{_names(group)} happen at one event, so at one instant of every frame.")
             continue
@@ -1162,7 +1163,7 @@ def _rests(r: _Reading, frame: Frame) -> list[tuple[Turn, float, float | None, T
             continue
         end = turn_interval(turn, frame.rapidity)[1]
         later = sorted(((turn_interval(t, frame.rapidity)[0], t) for t in turns[k + 1:]), key=lambda st: st[0])
-        if later and later[0][0] < end - SAME_INSTANT * r.scale:
+        if later and later[0][0] < end - ONE_INSTANT * r.scale:
             continue  # another turn already moves part of the rod
         out.append((turn, end, later[0][0] if later else None, later[0][1] if later else None))
     return out

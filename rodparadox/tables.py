@@ -18,32 +18,13 @@ from typing import Sequence
 from .document import Cell, Table
 from .engine import History
 from .export import check_below_c, coordinate_format, velocity_format
-from .frames import Frame, frame_symbol, frame_word, view
+from .frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
 from .ledger import impact_entries, initial_total, ledger_slice, turn_times
 from .ledger_report import ROUNDING_ZERO, number_text
 from .numbers import MINUS, exact, fraction_text
 from .table_formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-#: two impacts closer than this in a frame's time, relative to L plus the largest |t|, are at one instant of it:
-#: boosting puts an ulp or two between impacts on one line of the frame, and the engine places events to
-#: about 1e-9 relative at its bounds (README, "Scenario files")
-SAME_INSTANT = 1e-9
-
-
-def time_order(times: Sequence[float], scale: float) -> list[int]:
-    """Indices of `times` (given in the rod's own order) in the order of a frame's time: times within
-    SAME_INSTANT * `scale` of each other are one instant, and keep the rod's own order (B₁ before A₁ in Fig. 2's
-    S′, whatever the rounding of t′ says)."""
-    by_time = sorted(range(len(times)), key=lambda k: times[k])
-    instant, first_time, instants = -1, None, {}
-    for k in by_time:
-        if first_time is None or times[k] - first_time > SAME_INSTANT * scale:
-            instant, first_time = instant + 1, times[k]
-        instants[k] = instant
-    return sorted(range(len(times)), key=lambda k: (instants[k], k))
-
-
 def impact_name(label: str) -> str:
     """An impact's label as the figures write it: B1 -> B₁."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
@@ -128,7 +109,7 @@ def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
     eta = frame.rapidity
     changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(turn_times(history, eta)))
     scale = history.scenario.L + max((abs(t) for t in changes), default=0.0)
-    return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > 1e-9 * scale)
+    return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > ONE_INSTANT * scale)
 
 
 def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table | None:
