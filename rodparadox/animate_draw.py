@@ -135,6 +135,7 @@ class NowScene:
             strip = draw_strip(strip_ax, first, st, scale, frame, L=L, colour_ax=colour_ax,
                                bar_width=0.5 * b.strip_h, animated=True)
             strip.readout.set_y(1.0 + b.readout_pad / b.strip_h)
+            strip.readout.set_fontsize(self._readout_size(p, frame, pos.width * 72 * width, st.font_size))
             strip_ax.tick_params(length=b.tick_len, pad=b.tick_pad)
             lens, m = None, magnifications[p]
             if m > 1:
@@ -151,6 +152,19 @@ class NowScene:
                 lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint", loc="left",
                                   fontsize=b.small, pad=b.lens_pad)
             self.panels.append(PanelMotion(frame, now, strip, lens, m))
+
+    def _readout_size(self, p: int, frame: Frame, room: float, size: float) -> float:
+        """The readout's type size: the style's, or less so that its longest text (the window's ends, with every
+        impact flashing) fits over the strip (`room` points), a narrow panel's on slides."""
+        from dataclasses import replace as with_
+
+        from .render import text_size
+        from .render.strip import readout_text
+
+        labels = tuple(i.label for i in self.history.impacts)
+        longest = max(text_size(readout_text(with_(self.timeline.strip(self.history, k, p), flashing=labels), frame,
+                                              self.L), size)[0] for k in (0, len(self.timeline) - 1))
+        return size if longest <= room else max(0.7 * size, size * room / longest)
 
     def _magnification(self, p: int, ax) -> float:
         """1 (no lens) when the rod is never shorter than LENS_BELOW of the panel's width; else a round number
@@ -346,10 +360,11 @@ def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np
                 dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
                 line.set_data([-reach * dx, reach * dx], [-reach * dt, reach * dt])
                 names[(other, axis)].set_position(_inside_end(dx, dt, (x0, x1, t0, t1)))
-            for name, text in particles.items():  # beside the world-line, three quarters of the way up
-                t = t0 + 0.78 * (t1 - t0)
-                x = history.worldline(name).boosted(eta).event_at_time(t * L).x / L
-                text.set_position((x + 0.02 * (x1 - x0), t))
+            for name, text in particles.items():  # beside the world-line, as high up as it is inside the panel
+                place = _letter_place(history.worldline(name).boosted(eta), L, (x0, x1, t0, t1))
+                text.set_visible(place is not None)
+                if place is not None:
+                    text.set_position(place)
             events = [i.event.boosted(eta) for i in history.impacts]
             dots.set_data([e.x / L for e in events], [e.t / L for e in events])
             for text, e in zip(labels, events):
@@ -359,6 +374,19 @@ def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np
                            *particles.values(), title):
                 ax.draw_artist(artist)
             yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+def _letter_place(worldline, L: float, box) -> tuple[float, float] | None:
+    """Where a particle's letter goes in boost mode: just right of its world-line at the highest of a few heights
+    (from three quarters of the panel's height down) where the world-line and the letter are inside the panel;
+    None if it is never inside."""
+    x0, x1, t0, t1 = box
+    for fraction in (0.78, 0.65, 0.5, 0.35, 0.2):
+        t = t0 + fraction * (t1 - t0)
+        x = worldline.event_at_time(t * L).x / L + 0.02 * (x1 - x0)
+        if x0 <= x <= x1 - 0.06 * (x1 - x0):
+            return x, t
+    return None
 
 
 def _boost_title(frame: Frame) -> str:

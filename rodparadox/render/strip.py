@@ -94,10 +94,22 @@ def colour_map(style: Style | str):
 
 
 def readout_text(strip: Strip, frame: Frame, L: float) -> str:
-    """`frame S at t = 2.111 L`, then the impacts flashing now: `   A1, B2!`."""
+    """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
+    now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
+    symbol = frame_symbol(frame)
+    where = symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
     lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
-    return f"frame {frame_symbol(frame)} at {clock.strip('$')} = {shown(strip.t / L, 4)} L{lit}"
+    return f"{clock} = {shown(strip.t / L, 4)} L in {where}{lit}"
+
+
+def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
+    """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
+    bar's name."""
+    lo, hi = scale.limits
+    colour_bar.set_ticks([lo, scale.centre, hi], labels=[shown(x + 0.0, 3) for x in (lo, scale.centre, hi)])
+    colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
+    colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
 
 def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, frame: Frame, *, L: float = 1.0,
@@ -126,8 +138,7 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     colour_bar = None
     if colour_ax is not None:
         colour_bar = ax.get_figure(root=False).colorbar(bar, cax=colour_ax, orientation="horizontal")
-        colour_bar.ax.tick_params(labelsize=0.8 * fs, length=2, pad=1)
-        colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=0.8 * fs, labelpad=1)
+        label_colour_bar(colour_bar, scale, 0.8 * fs)
     dots = ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=animated)[0]
     names = tuple(ax.text(0.0, letter_y, name, ha="center", va="bottom", fontsize=fs, style="italic",
                           color=st.particles[name].colour, animated=animated) for name, _ in strip.particles)
@@ -261,8 +272,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
                                      bar_h / height))
         colour_ax.set_gid("strips-colour-bar")
         shown_bar = target.colorbar(rows[0].collections[0], cax=colour_ax, orientation="horizontal")
-        shown_bar.ax.tick_params(labelsize=small, length=2, pad=1)
-        shown_bar.set_label(COLOUR_BAR_LABEL, fontsize=small, labelpad=1)
+        label_colour_bar(shown_bar, scale, small)
     return tuple(rows)
 
 
