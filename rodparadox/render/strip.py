@@ -108,10 +108,12 @@ def readout_text(strip: Strip, frame: Frame, L: float) -> str:
 def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
     """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
     bar's name."""
-    ticks = scale.limits[0], scale.centre, scale.limits[1]
+    lo, hi = scale.shown or scale.limits
+    ticks = sorted({lo, scale.centre, hi}) if lo <= scale.centre <= hi else [lo, hi]
     # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
     labels = [shown(0.0 if abs(x) <= ROUNDING * scale.bound else x, 3) for x in ticks]
     colour_bar.set_ticks(list(ticks), labels=labels)
+    colour_bar.ax.set_xlim(lo, hi)  # the velocities the rod takes: the scale's ends can lie past c
     colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
     colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
