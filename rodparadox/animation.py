@@ -93,7 +93,8 @@ class Strip:
 
     `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
     (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
-    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t.
+    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t, and
+    `flash_x` where each of them is (the impact's x in the frame, not the rod's now).
     """
 
     t: float
@@ -102,6 +103,7 @@ class Strip:
     velocity: np.ndarray
     particles: tuple[tuple[str, float], ...]
     flashing: tuple[str, ...]
+    flash_x: tuple[float, ...] = ()
 
 
 def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS) -> Strip:
@@ -111,8 +113,9 @@ def strip_at(history: History, frame: Frame, t: float, flash: float, points: int
     rod = rod_on_slice(history, eta, t, sigmas)
     particles = tuple((name, history.worldline(name).boosted(eta).event_at_time(t).x)
                       for name in ("A", "B") if history.worldline(name) is not None)
-    flashing = tuple(i.label for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash)
-    return Strip(t, rod.sigma, rod.x, rod.velocity, particles, flashing)
+    lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
+    return Strip(t, rod.sigma, rod.x, rod.velocity, particles, tuple(i.label for i in lit),
+                 tuple(i.event.boosted(eta).x for i in lit))
 
 
 def flash_time(window: tuple[float, float], count: int) -> float:
