@@ -355,3 +355,16 @@ def test_strips_size_is_the_least_target_draw_strips_into_accepts(style):
     render.draw_strips_into(Figure(figsize=(6.0, height / 72), dpi=72), history, frame, times, style)
     with pytest.raises(ValueError, match="4 strips need at least"):
         render.draw_strips_into(Figure(figsize=(6.0, (height - 2.0) / 72), dpi=72), history, frame, times, style)
+
+
+def test_the_strips_colour_bar_ends_at_zero_not_at_a_rounding_error():
+    """fig2 in S′: the scale is centred on 0.6 with bound 0.6, so its lower end is 0.6 − 0.6, which floats make
+    1.1e-16; the tick reads 0."""
+    from matplotlib.figure import Figure
+
+    history = run(load("fig2"))
+    moving = paper_frames(0.6)[1]
+    figure = Figure(figsize=(6.0, 4.0), dpi=72)
+    render.draw_strips_into(figure, history, moving, (0.5, 1.5, 2.5), "print")
+    [bar] = [ax for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]
+    assert [t.get_text() for t in bar.get_xticklabels()] == ["0", "0.6", "1.2"]

@@ -37,6 +37,8 @@ from ..numbers import shown
 from ..styles import STYLES, Style
 from .text import coordinate_names, frame_symbol
 
+#: a colour bar's tick closer to zero than this fraction of the scale's bound is zero but for rounding
+ROUNDING_ZERO = 1e-9
 #: the colour map of the bar in each style, centred on the frame's initial rod velocity: diverging blue-white-red
 #: on screen; in print a grey ramp, light (slower) to dark (faster), whose lightness runs one way only, so the
 #: bar reads in black and white (a diverging map turns both of its ends dark in grey, and its centre white)
@@ -107,7 +109,9 @@ def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> N
     """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
     bar's name."""
     lo, hi = scale.limits
-    colour_bar.set_ticks([lo, scale.centre, hi], labels=[shown(x + 0.0, 3) for x in (lo, scale.centre, hi)])
+    # an end that is zero but for rounding (0.6 - 0.6 = 1.1e-16: fig2's S', centred on v with bound v) reads 0
+    labels = [shown(0.0 if abs(x) < ROUNDING_ZERO * scale.bound else x + 0.0, 3) for x in (lo, scale.centre, hi)]
+    colour_bar.set_ticks([lo, scale.centre, hi], labels=labels)
     colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
     colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
@@ -261,7 +265,11 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
                                      bar_h / height))
         colour_ax.set_gid("strips-colour-bar")
         shown_bar = target.colorbar(rows[0].collections[0], cax=colour_ax, orientation="horizontal")
-        shown_bar.solids.set_rasterized(False)  # a printed page keeps it vector (matplotlib rasterises long scales)
+        # a printed page keeps it vector (matplotlib rasterises a long scale), each cell edged in its own colour so
+        # that no seam shows between neighbours when a viewer or printer antialiases them
+        shown_bar.solids.set_rasterized(False)
+        shown_bar.solids.set_edgecolor("face")
+        shown_bar.solids.set_linewidth(0.3)
         label_colour_bar(shown_bar, scale, small)
     return tuple(rows)
 
