@@ -410,10 +410,9 @@ class TableSet(Measured):
         self.decimals = [x + (w - head - tail) / 2 + head for x, w, head, tail in zip(self.xs, widths, heads, tails)]
         # vertical: caption lines, the header between rules, the rows (taller where a student writes), notes
         self.caption_size, self.caption_leading = t.caption, 1.3 * t.caption
-        caption_width = max(self.width, min(pages.text_width, 0.66 * pages.text_width))
+        caption_width = pages.left + pages.text_width - self.x  # from the table's left edge to the text's right
         self.caption_lines = wrap(words_of(table.caption, italic=True), t.caption, caption_width)
         self.caption_more = wrap(words_of(table.caption + " (continued)", italic=True), t.caption, caption_width)
-        self.caption_width = caption_width
         self.notes_lines = [line for note in table.notes for line in wrap(words_of(note), t.small, caption_width)]
         self.notes_leading = 1.3 * t.small
         self.rule_heavy, self.rule_light = 0.8, 0.5
@@ -481,8 +480,7 @@ class TableSet(Measured):
     def _draw(self, pages: Pages, y: float, groups: list[list[int]], first: bool, last: bool) -> None:
         size, table = self.size, self.table
         caption = self.caption_lines if first else self.caption_more
-        left = self.x if self.width >= self.caption_width else pages.left + (pages.text_width - self.caption_width) / 2
-        pages.lines(caption, left, y, self.caption_size, self.caption_leading)
+        pages.lines(caption, self.x, y, self.caption_size, self.caption_leading)
         y += len(caption) * self.caption_leading + 0.3 * size
         pages.line(self.x, y + self.rule_heavy / 2, self.width, self.rule_heavy)
         y += self.rule_heavy
@@ -519,7 +517,7 @@ class TableSet(Measured):
         y += self.rule_heavy
         if last and self.notes_lines:
             y += 0.35 * size
-            pages.lines(self.notes_lines, left, y, pages.type.small, self.notes_leading)
+            pages.lines(self.notes_lines, self.x, y, pages.type.small, self.notes_leading)
 
     def _anchor(self, j: int, align: str) -> tuple[float, str]:
         """Where a column's header (and text cells) go: its left edge, right edge, or centre for numbers."""
