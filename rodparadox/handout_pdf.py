@@ -420,7 +420,10 @@ class TableSet(Measured):
         self.row_h = (2.4 if table.has_blanks else 1.45) * size
         self.group_gap = 0.35 * size
         self.groups = _groups(table)
-        self.lead = self._head_h(self.caption_lines) + self._rows_h(self.groups[:1]) + self._foot_h(False)
+        # the least start on a page: the whole table if it fits a page (it is then never split), else its caption,
+        # header and first group of rows
+        whole = self.height(self.groups, True, True)
+        self.lead = whole if whole <= pages.text_height else self.height(self.groups[:1], True, False)
 
     def _columns(self, size: float) -> tuple[list[float], list[float], list[float]]:
         """Each column's width, and for a numbers column the widths of its widest parts before and from the

@@ -161,6 +161,13 @@ def test_a_heading_is_never_left_alone_at_the_foot_of_a_page():
                                                                         long_table(5))))))
     assert len(texts) == 2 and "Late heading" not in texts[0]
     assert "Late heading" in texts[1] and "row0left" in texts[1]
+    # three fillers fewer: room for the heading and the start of a twelve-row table, which is not split but moves
+    # to the next page whole, and takes its heading along
+    n -= 2
+    texts = pages_text(to_pdf(text_only(Section("s", "s", fillers(n) + (Heading("Late heading", 2),
+                                                                        long_table(12))))))
+    assert len(texts) == 2 and "Late heading" not in texts[0]
+    assert "Late heading" in texts[1] and "row0left" in texts[1]
 
 
 # --- the text read back ---------------------------------------------------------------------------------------
