@@ -4,8 +4,8 @@ Now mode draws the diagram once, as `plot` does, grows the figure downward by a 
 for each instant redraws only what moves over the saved background (blitting): each frame's own line
 of simultaneity sweeping up its panel, and under the panel, on the same x scale, that frame's space at
 that instant (the rod as a bar coloured by its material points' velocities, the particles as labelled
-dots, an impact flashing as a star). Boost mode redraws the world-lines in the frame of each instant over
-fixed axes. matplotlib (Agg) is imported here; import this module only after every input has been checked.
+dots, an impact flashing as a star: `render.strip`), magnified in a lens under it where the rod is small
+on the panel's scale. Boost mode redraws the world-lines in the frame of each instant over fixed axes. matplotlib (Agg) is imported here; import this module only after every input has been checked.
 
 The interface the real drawing keeps:
 

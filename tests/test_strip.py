@@ -88,6 +88,8 @@ def test_rows_are_labelled_with_their_time_and_marked_impacts_only_at_their_inst
     assert rows[-1].get_xlabel() == "x\N{PRIME}/L"
     colour_bars = [ax for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]
     assert len(colour_bars) == 1 and colour_bars[0].get_xlabel() == COLOUR_BAR_LABEL
+    # S' of fig2: the rod first moves at v and departs from it by v at most (it stops): 0 to 2v, centred on v
+    assert [t.get_text() for t in colour_bars[0].get_xticklabels()] == ["0", "0.6", "1.2"]
 
 
 def test_the_bar_colours_are_the_material_points_velocities_on_the_frames_scale():

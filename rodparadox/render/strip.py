@@ -37,8 +37,6 @@ from ..numbers import shown
 from ..styles import STYLES, Style
 from .text import coordinate_names, frame_symbol
 
-#: a colour bar's tick closer to zero than this fraction of the scale's bound is zero but for rounding
-ROUNDING_ZERO = 1e-9
 #: the colour map of the bar in each style, centred on the frame's initial rod velocity: diverging blue-white-red
 #: on screen; in print a grey ramp, light (slower) to dark (faster), whose lightness runs one way only, so the
 #: bar reads in black and white (a diverging map turns both of its ends dark in grey, and its centre white)
@@ -47,6 +45,8 @@ COLOUR_MAPS = {"default": "RdBu_r", "print": "print-greys", "slides": "RdBu_r"}
 PRINT_RAMP = (0.12, 0.88)
 #: the impact's flash (a star) and an animation's now-line: a colour of its own in each style
 FLASH_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
+#: a colour bar's tick closer to 0 than this fraction of the scale's half-range is 0 up to rounding
+ROUNDING = 1e-9
 #: what the colour bar says
 COLOUR_BAR_LABEL = "velocity of the rod's material points"
 #: the strip's axes run from -1 to 1 vertically; the bar lies on 0, a particle's letter starts here (animations)
@@ -108,10 +108,10 @@ def readout_text(strip: Strip, frame: Frame, L: float) -> str:
 def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
     """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
     bar's name."""
-    lo, hi = scale.limits
-    # an end that is zero but for rounding (0.6 - 0.6 = 1.1e-16: fig2's S', centred on v with bound v) reads 0
-    labels = [shown(0.0 if abs(x) < ROUNDING_ZERO * scale.bound else x + 0.0, 3) for x in (lo, scale.centre, hi)]
-    colour_bar.set_ticks([lo, scale.centre, hi], labels=labels)
+    ticks = scale.limits[0], scale.centre, scale.limits[1]
+    # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
+    labels = [shown(0.0 if abs(x) <= ROUNDING * scale.bound else x, 3) for x in ticks]
+    colour_bar.set_ticks(list(ticks), labels=labels)
     colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
     colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
@@ -309,9 +309,11 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[lis
 
 
 def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float]) -> _StillsRoom:
+    """The room of `draw_strips_into` for rows with these labels, in a style's type sizes."""
     from .text import approximate_size
 
-    gutter = max(approximate_size(text, fs["label"])[0] for text in [*labels, *notes]) + 8.0
+    # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
+    gutter = 1.05 * max(approximate_size(text, fs["label"])[0] for text in [*labels, *notes]) + 8.0 + 6.0
     tick_h = approximate_size("0123456789", fs["tick"])[1]
     label_h = approximate_size("$x_u/L$", fs["label"])[1]
     small = 0.8 * fs["tick"]
