@@ -57,8 +57,6 @@ MM = 72 / 25.4
 MARGIN = 20 * MM
 #: running text's size in each style, points (tables, captions and the footer are scaled from it)
 BODY_SIZE = {"print": 10.0, "default": 9.5, "slides": 12.0}
-#: the least type size a table is shrunk to when its natural width exceeds the text width, points
-LEAST_TABLE_SIZE = 6.5
 #: a worksheet's ruled answer lines: their distance (about that of ruled paper), and how many at least and at most
 ANSWER_LINE_GAP = 8 * MM
 ANSWER_LINES = (3, 8)
@@ -389,7 +387,7 @@ class TableSet(Measured):
         gap_w = 1.1 * size
         natural = sum(widths) + gap_w * (len(widths) - 1)
         if natural > pages.text_width:  # smaller type, as widths scale with it
-            scale = max(pages.text_width / natural, LEAST_TABLE_SIZE / size)
+            scale = pages.text_width / natural
             size *= scale
             widths, heads, tails = ([w * scale for w in ws] for ws in (widths, heads, tails))
             gap_w *= scale
@@ -419,7 +417,7 @@ class TableSet(Measured):
         self.header_h = 1.6 * size
         self.row_h = (2.4 if table.has_blanks else 1.45) * size
         self.group_gap = 0.35 * size
-        self.groups = _groups(table)
+        self.groups = _groups(table) or [[]]  # a table without rows still has its caption, header and rules
         # the least start on a page: the whole table if it fits a page (it is then never split), else its caption,
         # header and first group of rows
         whole = self.height(self.groups, True, True)
@@ -582,8 +580,8 @@ class QuestionSet(Measured):
             self.lead = self.text.lead + self.count * ANSWER_LINE_GAP
         else:
             first = [("Answer.", True, False)]
-            self.answers = [TextBlock(wrap(first + words_of(p) if k == 0 else words_of(p), t.body, answer_width), t.body,
-                                 t.leading, 0.3 * t.body if k == 0 else 0.4 * t.body, indent=1.5 * t.body)
+            self.answers = [TextBlock(wrap((first if k == 0 else []) + words_of(p), t.body, answer_width), t.body,
+                                      t.leading, (0.3 if k == 0 else 0.4) * t.body, indent=1.5 * t.body)
                             for k, p in enumerate(question.answer)]
             self.lead = self.text.lead + (self.answers[0].lead if self.answers else 0.0)
 
@@ -601,19 +599,19 @@ class QuestionSet(Measured):
             answer.set(pages)
 
 
-def _heading(block: Heading, pages: Pages, first: bool) -> TextBlock:
+def _heading(block: Heading, pages: Pages) -> TextBlock:
+    """Bold, level 1 larger; the gap above it is dropped at the top of a page."""
     t = pages.type
     size = t.h1 if block.level == 1 else t.h2
     lines = wrap(words_of(block.text, bold=True), size, pages.text_width)
-    gap = (1.4 if block.level == 1 else 1.1) * t.body
-    return TextBlock(lines, size, 1.25 * size, gap if not first else 0.0, heading=True)
+    return TextBlock(lines, size, 1.25 * size, (1.4 if block.level == 1 else 1.1) * t.body, heading=True)
 
 
 def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
     """A block measured for the pages (the diagram's height from its layout at the text width)."""
     t = pages.type
     if isinstance(block, Heading):
-        return _heading(block, pages, first=False)
+        return _heading(block, pages)
     if isinstance(block, Paragraph):
         return TextBlock(wrap(words_of(block.text), t.body, pages.text_width), t.body, t.leading, 0.55 * t.body)
     if isinstance(block, Table):
@@ -654,22 +652,18 @@ def page_figures(handout: Handout, paper: str = "a4", style: str = "print") -> t
         pages = Pages(paper, st, Type.of(st))
         parts = [(block, False) for section in handout.sections for block in section.blocks]
         parts += [(block, True) for block in handout.answer_key]
-        measured = []
-        first_heading = True
-        key_started = False
+        measured: list[Measured] = []
+        headings = key_started = False
         for block, in_key in parts:
             if in_key and not key_started:  # the answer key starts on a new page
                 measured.append(Break())
                 key_started = True
-            if isinstance(block, Heading):
-                if block.level == 1 and not first_heading:
-                    measured.append(Break())
-                measured.append(_heading(block, pages, first_heading))
-                first_heading = False
-            else:
-                measured.append(measure(block, pages, st, ruled=handout.worksheet and not in_key))
+            if isinstance(block, Heading) and block.level == 1 and headings:
+                measured.append(Break())  # a section's heading, after the document's first
+            headings = headings or isinstance(block, Heading)
+            measured.append(measure(block, pages, st, ruled=handout.worksheet and not in_key))
         for item, following in zip(measured, measured[1:] + [None]):
-            if isinstance(item, TextBlock) and item.heading and following is not None and not isinstance(following, Break):
+            if isinstance(item, TextBlock) and item.heading and following and not isinstance(following, Break):
                 item.set(pages, keep=following.lead)  # a heading is never left alone at the foot of a page
             else:
                 item.set(pages)

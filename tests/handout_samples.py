@@ -29,8 +29,8 @@ QUESTIONS = (
      ("In S, B₁ is at x = +0.5000000 L, t = +0.8333333 L (5/6 L); in S′ at x′ = +1.250000 L, t′ = +1.416667 L "
       "(17/12 L).",)),
     ("Show with a Lorentz transformation that A₁ and B₁ are simultaneous in S′ but not in S.",
-     ("With γ = 1.25 and S′ moving at −0.6: t′ = γ (t + v x). For B₁: 1.25 × (5/6 + 0.6 × 0.5) = 17/12. For A₁: "
-      "1.25 × (19/12 − 0.6 × 0.75) = 17/12. The same t′; in S they differ by 3/4 L.",
+     ("With γ = 1.25 and S′ moving at −0.6: t′ = γ (t + v x). For B₁: 1.25 × (5/6 + 0.6 × 0.5) = 17/12. "
+      "For A₁: 1.25 × (19/12 − 0.6 × 0.75) = 17/12. The same t′; in S they differ by 3/4 L.",
       "So the two impacts lie on one line of simultaneity of S′ and on two lines of S.")),
     ("What is the rod's velocity in S′ just after A₁?",
      ("+0.882353 (15/17): the velocity addition of +0.6 and +0.6, (0.6 + 0.6)/(1 + 0.36).",)),

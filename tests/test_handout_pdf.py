@@ -253,7 +253,7 @@ def pdf_renderer(figure):
 
 
 def run_box(run, renderer) -> Bbox:
-    """Where a run of the page's text is drawn, as the PDF renderer measures it (its own width, not the typesetter's)."""
+    """Where a run of the page's text is drawn, as the PDF renderer measures it (not the typesetter's widths)."""
     w, h, d = renderer.get_text_width_height_descent(run.text, run.font, ismath=False)
     left = run.x - {"left": 0.0, "center": 0.5, "right": 1.0}[run.ha] * w
     return Bbox([[left, run.y - d], [left + w, run.y - d + h]])
@@ -309,8 +309,8 @@ def test_a_worksheet_s_blank_cells_are_boxes_at_least_as_wide_as_their_numbers()
 
 
 def test_numbers_columns_are_aligned_at_the_decimal_point():
-    table = Table("t", "Numbers", ("value",), tuple((Cell(text),) for text in ("+1.5", "−12.25", "0", "3.333 (10/3)")),
-                  "n")
+    numbers = ("+1.5", "−12.25", "0", "3.333 (10/3)")
+    table = Table("t", "Numbers", ("value",), tuple((Cell(text),) for text in numbers), "n")
     [page] = page_figures(text_only(Section("s", "s", (table,))))
     runs = {run.text: run for run in page_runs(page) if run.gid and run.gid.startswith("t-")}
     with render.style_context("print"):
@@ -375,3 +375,14 @@ def test_the_strips_colour_bar_ends_at_zero_not_at_a_rounding_error():
     render.draw_strips_into(figure, history, moving, (0.5, 1.5, 2.5), "print")
     [bar] = [ax for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]
     assert [t.get_text() for t in bar.get_xticklabels()] == ["0", "0.6", "1.2"]
+
+
+def test_a_table_without_rows_and_a_table_wider_than_the_page_are_set_inside_the_margins():
+    empty = Table("empty", "Nothing happened", ("impact", "x"), (), "ln", ("No impact.",))
+    wide = Table("wide", "Twelve long columns", tuple(f"column {k}" for k in range(12)),
+                 ((tuple(Cell(f"+{k}.123456 ({k}/7)") for k in range(12))),), "n" * 12)
+    [page] = page_figures(text_only(Section("s", "s", (empty, wide))))
+    texts = [run.text for run in page_runs(page)]
+    assert {"Nothing happened", "impact", "x", "No impact.", "column 11", "+11.123456 (11/7)"} <= set(texts)
+    for what, box in drawn_extents(page, "print"):
+        assert MARGIN - 0.5 <= box.x0 and box.x1 <= page.bbox.width - MARGIN + 0.5, (what, box)
