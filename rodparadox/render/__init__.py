@@ -29,8 +29,8 @@ depend on a renderer, so it is fast and byte-for-byte reproducible.
 """
 
 from ..frames import PANEL_LETTERS, relative_velocity
-from .diagram import Diagram, PanelInfo, draw, draw_into, figure_bytes, style_context
-from .strip import StripArtists, draw_strip, draw_strips_into, update_strip
+from .diagram import Diagram, PanelInfo, draw, draw_into, figure_bytes, natural_size, style_context
+from .strip import StripArtists, draw_strip, draw_strips_into, strips_size, update_strip
 from .labels import LABEL_REACH
 from .layers import LAYERS, LEGEND, Layer, LayerArtists, Options, PanelContext
 from .text import (_measured, approximate_size, axis_label, coordinate_names, frame_symbol, impact_text,
@@ -38,5 +38,5 @@ from .text import (_measured, approximate_size, axis_label, coordinate_names, fr
 
 __all__ = ["PANEL_LETTERS", "LABEL_REACH", "LAYERS", "LEGEND", "Diagram", "Layer", "LayerArtists", "Options",
            "PanelContext", "PanelInfo", "StripArtists", "approximate_size", "axis_label", "coordinate_names", "draw", "draw_into", "draw_strip", "draw_strips_into",
-           "figure_bytes", "frame_symbol", "impact_text", "impact_text_size", "relative_velocity", "style_context",
-           "text_size", "update_strip"]
+           "figure_bytes", "frame_symbol", "impact_text", "impact_text_size", "natural_size", "relative_velocity", "strips_size",
+           "style_context", "text_size", "update_strip"]

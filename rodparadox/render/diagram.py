@@ -81,6 +81,16 @@ def draw(history: History, frames: Sequence[Frame], style: str = "default", opti
         return builder.render(figure, layout, layout.width, layout.height).figure
 
 
+def natural_size(history: History, frames: Sequence[Frame], width: float, height: float, style: str = "default",
+                 options: Options = Options()) -> tuple[float, float]:
+    """The (width, height) in points `draw` would give the diagram on a page `width` x `height` points (its panels
+    no taller than the style's): the size of a target `draw_into` fills exactly, e.g. a handout's full text width."""
+    frames = _checked(frames)
+    with style_context(style) as st:
+        layout = _Builder(history, frames, st, options).lay_out(Page(width, height, st.panel_height * 72))
+    return layout.width, layout.height
+
+
 def draw_into(target: Figure | SubFigure, history: History, frames: Sequence[Frame], style: str = "default",
               options: Options = Options()) -> Diagram:
     """Draw the diagram into a Figure or SubFigure the caller has sized; returns its panels and artists.

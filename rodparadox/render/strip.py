@@ -206,7 +206,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     """
     from .diagram import style_context
     from .layout import font_sizes, next_step
-    from .text import approximate_size, axis_label, impact_text, ticks_at
+    from .text import approximate_size, axis_label, ticks_at
 
     if not times:
         raise ValueError("draw_strips_into needs at least one time")
@@ -218,26 +218,15 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
         fs = font_sizes(st)
         scale = colour_scale(history, frame)
         strips = [strip_at(history, frame, t, AT_INSTANT * L) for t in times]
-        xname, clock = coordinate_names(frame)
-        labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
-        notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_text(f) for f in s.flashing)
-                 if s.flashing else "" for s in strips]
-        # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
-        gutter = 1.05 * max(approximate_size(text, fs["label"])[0] for text in labels + notes) + 8.0 + 6.0
-        right = 10.0
-        tick_h = approximate_size("0123456789", fs["tick"])[1]
-        label_h = approximate_size("$x_u/L$", fs["label"])[1]
-        small = 0.8 * fs["tick"]
-        bar_h = max(5.0, 0.7 * small)
-        below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + 10.0 + bar_h + (2 + 1 + 1.2 * small) * 2 + 4.0
-        top = 4.0
-        row_gap = 0.25 * fs["tick"]
-        least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
+        xname, _ = coordinate_names(frame)
+        labels, notes = _stills_labels(strips, frame, L)
+        room = _stills_room(labels, notes, fs)
+        gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
+        tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
         axes_w = width - gutter - right
-        if row_h < least_row or axes_w < 8 * fs["tick"]:
-            need_w = gutter + right + 8 * fs["tick"]
-            need_h = top + below + len(times) * least_row + row_gap * (len(times) - 1)
+        if row_h < room.least_row or axes_w < room.least_axes:
+            need_w, need_h = room.size(len(times))
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
         # the x range: every rod end and particle at these instants, with a margin
@@ -278,8 +267,78 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
                                      bar_h / height))
         colour_ax.set_gid("strips-colour-bar")
         shown_bar = target.colorbar(rows[0].collections[0], cax=colour_ax, orientation="horizontal")
+        # a printed page keeps it vector (matplotlib rasterises a long scale), each cell edged in its own colour so
+        # that no seam shows between neighbours when a viewer or printer antialiases them
+        shown_bar.solids.set_rasterized(False)
+        shown_bar.solids.set_edgecolor("face")
+        shown_bar.solids.set_linewidth(0.3)
         label_colour_bar(shown_bar, scale, small)
     return tuple(rows)
+
+
+class _StillsRoom(NamedTuple):
+    """Room around a block of stills, points: left of the rows for their labels, right, under them for the ticks,
+    the x name and the colour bar, above; between rows; the least row (a particle's letter fits above the bar) and
+    the least axes width; and the sizes those are made of."""
+
+    gutter: float
+    right: float
+    below: float
+    top: float
+    row_gap: float
+    least_row: float
+    least_axes: float
+    tick_h: float
+    label_h: float
+    small: float
+    bar_h: float
+
+    def size(self, rows: int, row_scale: float = 1.0) -> tuple[float, float]:
+        """(width, height) of a block of `rows` rows, each `row_scale` times the least row, with the least axes."""
+        return (self.gutter + self.right + self.least_axes,
+                self.top + self.below + rows * row_scale * self.least_row + self.row_gap * (rows - 1))
+
+
+def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[list[str], list[str]]:
+    """Each row's time (t′ = 1.25 L) and the impacts at that instant (mathtext), or an empty note."""
+    from .text import impact_text
+
+    clock = coordinate_names(frame)[1]
+    labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
+    notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_text(f) for f in s.flashing)
+             if s.flashing else "" for s in strips]
+    return labels, notes
+
+
+def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float]) -> _StillsRoom:
+    """The room of `draw_strips_into` for rows with these labels, in a style's type sizes."""
+    from .text import approximate_size
+
+    # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
+    gutter = 1.05 * max(approximate_size(text, fs["label"])[0] for text in [*labels, *notes]) + 8.0 + 6.0
+    tick_h = approximate_size("0123456789", fs["tick"])[1]
+    label_h = approximate_size("$x_u/L$", fs["label"])[1]
+    small = 0.8 * fs["tick"]
+    bar_h = max(5.0, 0.7 * small)
+    below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + 10.0 + bar_h + (2 + 1 + 1.2 * small) * 2 + 4.0
+    least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
+    return _StillsRoom(gutter, 10.0, below, 4.0, 0.25 * fs["tick"], least_row, 8 * fs["tick"], tick_h, label_h,
+                       small, bar_h)
+
+
+def strips_size(history: History, frame: Frame, times: Sequence[float], style: str,
+                row_scale: float = 1.0) -> tuple[float, float]:
+    """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
+    `row_scale` times the least row's height: what a page must leave for the block."""
+    from .diagram import style_context
+    from .layout import font_sizes
+
+    if not times:
+        raise ValueError("draw_strips_into needs at least one time")
+    L = history.scenario.L
+    with style_context(style) as st:
+        strips = [strip_at(history, frame, float(t), AT_INSTANT * L) for t in sorted(times)]
+        return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st)).size(len(strips), row_scale)
 
 
 class _Ticks:

@@ -119,7 +119,8 @@ def tick_text(value: float, step: float) -> str:
 
 # --- sizes in points -------------------------------------------------------------------------------
 
-def text_size(text: str, size: float, italic: bool = False, ismath: bool | None = None) -> tuple[float, float, float]:
+def text_size(text: str, size: float, italic: bool = False, ismath: bool | None = None,
+              bold: bool = False) -> tuple[float, float, float]:
     """(width, height, descent) in points of a text as the SVG and PDF backends lay it out (current rcParams).
 
     `ismath` None reads the text as a Text artist does: mathtext if it holds an
@@ -129,15 +130,15 @@ def text_size(text: str, size: float, italic: bool = False, ismath: bool | None 
     glyphs instead (`approximate_size`, `impact_text_size`).
     """
     rc = matplotlib.rcParams
-    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath),
+    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath), bool(bold),
                      rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
                      tuple(rc["font.serif"]))
 
 
 @lru_cache(maxsize=2048)  # a figure measures a few hundred texts; bounded, as a long-lived process draws many
-def _measured(text: str, size: float, italic: bool, ismath: bool, *fonts) -> tuple[float, float, float]:
+def _measured(text: str, size: float, italic: bool, ismath: bool, bold: bool, *fonts) -> tuple[float, float, float]:
     """`text_size` for the current rcParams, whose font settings are `fonts` (part of the cache key only)."""
-    prop = FontProperties(size=size, style="italic" if italic else "normal")
+    prop = FontProperties(size=size, style="italic" if italic else "normal", weight="bold" if bold else "normal")
     w, h, d = text_to_path.get_text_width_height_descent(text, prop, ismath=ismath)
     return float(w), float(h), float(d)
 
