@@ -1,7 +1,8 @@
 """`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (README, "The ledger").
 
-Thin: parse the options, call `rodparadox.ledger_report` (text, JSON, CSV)
-or `rodparadox.ledger_figure` (SVG, PDF, PNG), report what was written.
+Thin: parse the options, call `rodparadox.ledger_report` (text, JSON, CSV),
+`rodparadox.tables` (Markdown, LaTeX) or `rodparadox.ledger_figure` (SVG,
+PDF, PNG), report what was written.
 matplotlib is imported only to draw a figure.
 """
 
@@ -17,8 +18,9 @@ from rodparadox.styles import FORMATS as FIGURE_FORMATS
 from .common import (BadInput, L_option, emit, load_scenario, quiet_option, reports_errors, run_scenario, style_option,
                      v_option)
 
-TABLE_FORMATS = ("text", "json", "csv")
-_EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv"}
+TABLE_FORMATS = ("text", "json", "csv", "markdown", "latex")
+_EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv", "md": "markdown", "markdown": "markdown",
+               "tex": "latex"}
 
 
 def _times(spec: str | None) -> tuple[float, ...] | None:
@@ -56,7 +58,7 @@ def _kind(fmt: str | None, output: str | None) -> str:
     if suffix in FIGURE_FORMATS or Path(output).is_dir():
         return "figure"
     raise BadInput(f"option -o: cannot tell the format of {output!r} from its extension; name it "
-                   f".txt, .json, .csv, .svg, .pdf or .png, or give --format.")
+                   f".txt, .json, .csv, .md, .tex, .svg, .pdf or .png, or give --format.")
 
 
 @click.command()
@@ -67,10 +69,11 @@ def _kind(fmt: str | None, output: str | None) -> str:
               help="The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
                    "gives several (e.g. both,0.3).")
 @click.option("--at", "at", default=None, metavar="T1,T2,...",
-              help="Also give each body's (E, p) at these times of each frame (text, json, csv), in the unit L is "
+              help="Also give each body's (E, p) at these times of each frame (a table), in the unit L is "
                    "given in. [json and csv without --at: a dense sampling]")
-@click.option("--format", "fmt", default=None, metavar="text|json|csv|svg,pdf,png",
-              help="A table (text, json, csv) or a figure (svg, pdf, png). [default: the extension of -o, else text]")
+@click.option("--format", "fmt", default=None, metavar="text|json|csv|markdown|latex|svg,pdf,png",
+              help="A table (text, json, csv; markdown: pipe tables; latex: a booktabs/siunitx fragment) or a figure "
+                   "(svg, pdf, png). [default: the extension of -o, else text]")
 @click.option("-o", "--output", "output", metavar="PATH", default=None,
               help="Tables: a file ('-' or none: standard output). Figures: a folder (it must exist) or a file name. "
                    "[figures: outputs/, created if missing]")
@@ -102,10 +105,11 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
             check_target(output)
         s = load_scenario(scenario, v, L)
         frames = planned.frames_of(frame, s.v)
-        from rodparadox import ledger_report
+        from rodparadox import ledger_report, tables
 
-        text = {"text": ledger_report.to_text, "json": ledger_report.to_json,
-                "csv": ledger_report.to_csv}[fmt](run_scenario(s, scenario), frames, times)
+        text = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
+                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](run_scenario(s, scenario),
+                                                                                    frames, times)
         if output in (None, "-"):
             emit(text, nl=False)
             return
@@ -115,7 +119,8 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         return
 
     if times is not None:
-        raise BadInput("option --at selects the slices of a table (text, json, csv); a figure shows every instant.")
+        raise BadInput(f"option --at selects the slices of a table ({', '.join(TABLE_FORMATS)}); a figure shows every "
+                       f"instant.")
     jobs = planned.plan([scenario], v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, kind="ledger",
                         allowed=FIGURE_FORMATS, default_format="svg")
     histories = [run_scenario(job.scenario, job.name) for job in jobs]

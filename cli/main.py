@@ -24,6 +24,8 @@ from .plot import plot  # the drawing command; it imports matplotlib only when i
 
 #: what `export` writes, each named by its file extension
 EXPORT_FORMATS = ("json", "csv")
+#: what `events` prints: the aligned text table, a Markdown pipe table, or a LaTeX (booktabs, siunitx) fragment
+EVENTS_FORMATS = ("text", "markdown", "latex")
 
 
 class _Main(click.Group):
@@ -87,18 +89,29 @@ def list_scenarios() -> None:
 @v_option
 @L_option
 @frame_velocity_option
+@click.option("--format", "fmt", type=click.Choice(EVENTS_FORMATS, case_sensitive=False), default="text",
+              show_default=True,
+              help="text: aligned columns; markdown: a pipe table per frame; latex: a booktabs/siunitx fragment "
+                   "to \\input.")
 @reports_errors
-def events(scenario: str, v: float | None, L: float | None, frame_velocity: float | None) -> None:
+def events(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str) -> None:
     """Print the impacts in the rest frame S and the moving frame S' (and U if given).
 
     Example: sears-paradox events fig2 --v 0.8 --frame-velocity 0.3
     """
-    from rodparadox.export import to_table
     from rodparadox.frames import paper_frames
 
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    emit(to_table(run_scenario(s, scenario), frames), nl=False)
+    history = run_scenario(s, scenario)
+    if fmt == "text":
+        from rodparadox.export import to_table
+
+        emit(to_table(history, frames), nl=False)
+        return
+    from rodparadox import tables
+
+    emit((tables.events_markdown if fmt == "markdown" else tables.events_latex)(history, frames), nl=False)
 
 
 @main.command()

@@ -25,17 +25,14 @@ from typing import Iterator
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import LineCollection
-from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
 from .animation import BoostTimeline, NowTimeline
 from .engine import History
-from .frames import Frame, sampling_tolerance, view
+from .frames import Frame, sampling_tolerance
 from .numbers import shown
 from .styles import STYLES
 
-_MAPS = {"default": "RdBu_r", "print": "PuOr_r", "slides": "RdBu_r"}
 _DPI = 100
 
 
@@ -57,9 +54,30 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
     x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting)."""
     from . import render
 
-    st = STYLES[style]
-    L = history.scenario.L
     with render.style_context(style):
+        scene = NowScene(history, timeline, style)
+        canvas = scene.canvas
+        canvas.draw()
+        background = canvas.copy_from_bbox(scene.figure.bbox)
+        for k in range(len(timeline)):
+            canvas.restore_region(background)
+            for artist in scene.update(k):
+                artist.axes.draw_artist(artist)
+            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+class NowScene:
+    """Now mode's figure: `plot`'s diagram with a band of strips below, drawn once; `update(k)` moves each panel's
+    now-line and strip to instant k and returns the artists it moved, in drawing order. Build it inside
+    `render.style_context(style)`."""
+
+    def __init__(self, history: History, timeline: NowTimeline, style: str):
+        from . import render
+        from .render.strip import FLASH_COLOUR, draw_strip
+
+        st = STYLES[style]
+        self.history, self.timeline, self.L = history, timeline, history.scenario.L
+        L = self.L
         figure = render.draw(history, timeline.frames, style)
         width, height = figure.get_size_inches()
         band = _STRIP_BAND.get(style, 1.25)
@@ -68,13 +86,11 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
         total = height + band * len(rows)
         _make_room_below(figure, height, total, band * len(rows))
         figure.set_dpi(_NOW_DPI.get(style, _DPI))
-        canvas = FigureCanvasAgg(figure)
-        fs = st.font_size
-        moving = []
-        updates = []
+        self.figure, self.canvas = figure, FigureCanvasAgg(figure)
+        self.panels = []
         for p, (ax, frame, scale) in enumerate(zip(panels, timeline.frames, timeline.scales)):
             letter = (ax.get_gid() or "a")[0]
-            now = ax.axhline(timeline.times[0, p] / L, color=_NOW_COLOUR[style], linewidth=2.0 * st.rod.width / 1.7,
+            now = ax.axhline(timeline.times[0, p] / L, color=FLASH_COLOUR[style], linewidth=2.0 * st.rod.width / 1.7,
                              zorder=8, animated=True, gid=f"{letter}-now")
             # the strip: under the panel, on its x scale, in the band of the panel's row
             pos = ax.get_position()
@@ -83,58 +99,26 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
             base = band * (len(rows) - 1 - row)
             strip_ax = figure.add_axes((pos.x0, (base + band * 0.52) / total, pos.width, band * 0.24 / total))
             strip_ax.set_xlim(ax.get_xlim())
-            strip_ax.set_ylim(-1.0, 1.0)
-            strip_ax.set_yticks([])
-            strip_ax.tick_params(labelsize=0.8 * fs, length=2.5, pad=2)
             strip_ax.set_gid(f"{letter}-strip")
-            norm = Normalize(*scale.limits)
-            bar = LineCollection([], cmap=_MAPS.get(style, "RdBu_r"), norm=norm, linewidths=band * 0.24 * 72 * 0.5,
-                                 capstyle="butt", animated=True)
-            strip_ax.add_collection(bar)
             colour_ax = figure.add_axes((pos.x0 + 0.15 * pos.width, (base + band * 0.27) / total, 0.7 * pos.width,
                                          band * 0.06 / total))
-            bar_legend = figure.colorbar(bar, cax=colour_ax, orientation="horizontal")
-            bar_legend.ax.tick_params(labelsize=0.8 * fs, length=2, pad=1)
-            bar_legend.set_label("velocity of the rod's material points", fontsize=0.8 * fs, labelpad=1)
-            dots = strip_ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=True)[0]
-            names = [strip_ax.text(0.0, 0.45, name, ha="center", va="bottom", fontsize=fs, style="italic",
-                                   color=st.particles[name].colour, animated=True)
-                     for name, _ in timeline.strip(history, 0, p).particles]
-            flash = strip_ax.plot([], [], "*", color=_NOW_COLOUR[style], markersize=2.2 * st.impact_size,
-                                  animated=True)[0]
-            readout = strip_ax.set_title("", fontsize=fs, loc="left", pad=3)
-            readout.set_animated(True)
-            impacts = {e.impact.label: e.x / L for e in view(history, frame).events}
-            moving += [now, bar, dots, flash, readout, *names]
-            updates.append((p, frame, now, bar, dots, names, flash, readout, impacts))
-        canvas.draw()
-        background = canvas.copy_from_bbox(figure.bbox)
-        for k in range(len(timeline)):
-            canvas.restore_region(background)
-            for p, frame, now, bar, dots, names, flash, readout, impacts in updates:
-                strip = timeline.strip(history, k, p)
-                now.set_ydata([strip.t / L, strip.t / L])
-                x = strip.x / L
-                mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
-                bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
-                bar.set_array(mid)
-                dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))
-                for text, (name, xp) in zip(names, strip.particles):
-                    text.set_position((xp / L, 0.45))
-                flash.set_data([impacts[label] for label in strip.flashing], [0.0] * len(strip.flashing))
-                symbol = render.frame_symbol(frame)
-                clock = render.coordinate_names(frame)[1]
-                lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
-                readout.set_text(f"frame {symbol} at {clock.strip('$')} = {shown(strip.t / L, 4)} L{lit}")
-                for artist in (now, bar, dots, flash, readout, *names):
-                    artist.axes.draw_artist(artist)
-            yield np.asarray(canvas.buffer_rgba())[..., :3].copy()
+            strip = draw_strip(strip_ax, timeline.strip(history, 0, p), st, scale, frame, L=L, colour_ax=colour_ax,
+                               bar_width=band * 0.24 * 72 * 0.5, animated=True)
+            self.panels.append((frame, now, strip))
+
+    def update(self, k: int) -> list:
+        from .render.strip import update_strip
+
+        L, moved = self.L, []
+        for p, (frame, now, strip) in enumerate(self.panels):
+            shown_now = self.timeline.strip(self.history, k, p)
+            now.set_ydata([shown_now.t / L, shown_now.t / L])
+            moved += [now, *update_strip(strip, shown_now, frame, L)]
+        return moved
 
 
 #: pixels per inch of the now-mode frames: about 1050 px wide on the 7 in page, 1330 px on the 13.3 in slide
 _NOW_DPI = {"default": 150, "print": 150, "slides": 100}
-#: the frame's own now-line and an impact's flash: a colour of its own in each style
-_NOW_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
 
 
 def _make_room_below(figure: Figure, height: float, total: float, band: float) -> None:

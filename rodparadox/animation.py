@@ -14,7 +14,7 @@ The drawing reads a `NowTimeline` or `BoostTimeline` and nothing else.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -22,7 +22,8 @@ from .engine import History
 from .errors import OptionError
 from .frames import Frame, sampling_tolerance, time_window, view
 from .numbers import exact
-from .rod import rod_on_slice
+from .kinematics import WorldLine
+from .rod import material_worldline
 
 MODES = ("now", "boost")
 #: the longest animation, and the most frames one may have: enough for two minutes at 25 fps
@@ -93,7 +94,8 @@ class Strip:
 
     `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
     (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
-    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t.
+    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t, and
+    `flash_x` where each of them is (the impact's x in the frame, not the rod's now).
     """
 
     t: float
@@ -102,17 +104,33 @@ class Strip:
     velocity: np.ndarray
     particles: tuple[tuple[str, float], ...]
     flashing: tuple[str, ...]
+    flash_x: tuple[float, ...] = ()
 
 
-def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS) -> Strip:
-    """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`."""
+def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
+    """The exact world-lines, in `frame`, of `points` material points evenly spaced in proper distance from the
+    left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
+    at every instant."""
     eta = frame.rapidity
-    sigmas = np.linspace(0.0, history.scenario.L, points)
-    rod = rod_on_slice(history, eta, t, sigmas)
+    return tuple(material_worldline(history, float(sigma)).boosted(eta)
+                 for sigma in np.linspace(0.0, history.scenario.L, points))
+
+
+def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS,
+             material: tuple[WorldLine, ...] | None = None) -> Strip:
+    """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
+    the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
+    eta = frame.rapidity
+    if material is None:
+        material = material_points(history, frame, points)
+    sigmas = np.linspace(0.0, history.scenario.L, len(material))
+    x = np.array([w.event_at_time(t).x for w in material])
+    rapidity = np.array([w.rapidity_at_time(t) for w in material])
     particles = tuple((name, history.worldline(name).boosted(eta).event_at_time(t).x)
                       for name in ("A", "B") if history.worldline(name) is not None)
-    flashing = tuple(i.label for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash)
-    return Strip(t, rod.sigma, rod.x, rod.velocity, particles, flashing)
+    lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
+    return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
+                 tuple(i.event.boosted(eta).x for i in lit))
 
 
 def flash_time(window: tuple[float, float], count: int) -> float:
@@ -166,6 +184,8 @@ class NowTimeline:
     times: np.ndarray
     flash: tuple[float, ...]
     scales: tuple[ColourScale, ...]
+    #: each panel's `material_points`, built once
+    material: tuple[tuple[WorldLine, ...], ...] = field(default=(), compare=False, repr=False)
 
     mode = "now"
 
@@ -173,14 +193,16 @@ class NowTimeline:
         return len(self.times)
 
     def strip(self, history: History, k: int, panel: int) -> Strip:
-        return strip_at(history, self.frames[panel], float(self.times[k, panel]), self.flash[panel])
+        return strip_at(history, self.frames[panel], float(self.times[k, panel]), self.flash[panel],
+                        material=self.material[panel] if self.material else None)
 
 
 def now_timeline(history: History, frames: tuple[Frame, ...], count: int) -> NowTimeline:
     times = now_times(history, frames, count)
     windows = tuple(time_window(history, f) for f in frames)
     return NowTimeline(tuple(frames), windows, times, tuple(flash_time(w, count) for w in windows),
-                       tuple(colour_scale(history, f) for f in frames))
+                       tuple(colour_scale(history, f) for f in frames),
+                       tuple(material_points(history, f) for f in frames))
 
 
 # --- boost mode ------------------------------------------------------------------------------------

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 
@@ -156,6 +157,25 @@ class FrameView:
             parts = [p.sample(tolerance) for p in pieces]
             out[name] = np.concatenate([parts[0]] + [p[1:] for p in parts[1:]]) if parts else np.empty((0, 2))
         return out
+
+
+#: two impacts closer than this in a frame's time, relative to L plus the largest |t|, are at one instant of it:
+#: boosting puts an ulp or two between impacts on one line of the frame, and the engine places events to
+#: about 1e-9 relative at its bounds (README, "Scenario files")
+ONE_INSTANT = 1e-9
+
+
+def time_order(times: Sequence[float], scale: float) -> list[int]:
+    """Indices of `times` (given in the rod's own order) in the order of a frame's time: times within
+    ONE_INSTANT * `scale` of each other are one instant, and keep the rod's own order (B₁ before A₁ in Fig. 2's
+    S′, whatever the rounding of t′ says)."""
+    by_time = sorted(range(len(times)), key=lambda k: times[k])
+    instant, first_time, instants = -1, None, {}
+    for k in by_time:
+        if first_time is None or times[k] - first_time > ONE_INSTANT * scale:
+            instant, first_time = instant + 1, times[k]
+        instants[k] = instant
+    return sorted(range(len(times)), key=lambda k: (instants[k], k))
 
 
 def time_window(history: History, frame: Frame) -> tuple[float, float]:

@@ -21,6 +21,7 @@ import math
 from dataclasses import dataclass
 
 from .engine import History, Impact
+from .frames import time_order
 from .kinematics import HyperbolicArc, Line
 from .rod import material_worldline, turn_interval
 
@@ -207,7 +208,8 @@ def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry
                                EnergyMomentum.of(1.0, i.rod_rapidity_before - frame_rapidity),
                                EnergyMomentum.of(1.0, i.rod_rapidity_after - frame_rapidity),
                                kinetic_before, kinetic_after, total - kinetic_before, total - kinetic_after))
-    return tuple(sorted(out, key=lambda e: e.t))  # sorted is stable: the rod's order at one instant
+    scale = history.scenario.L + max((abs(e.t) for e in out), default=0.0)
+    return tuple(out[k] for k in time_order([e.t for e in out], scale))  # the rod's own order at one instant
 
 
 def turn_times(history: History, frame_rapidity: float) -> list[float]:

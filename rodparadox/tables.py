@@ -5,24 +5,26 @@ The events table has the columns `sears-paradox events` prints, with its digits
 per impact, the particle's, the rod's and the hidden (E, p) just before and
 after (as `sears-paradox ledger` prints them); the hidden table has the hidden
 part on the slices between impacts where it is not zero. A worksheet's copy
-leaves every number blank (`blank=True`); labels stay.
+leaves every number blank (`blank=True`), the ledger's impact times too (they
+are the events table's); labels stay, and so do the hidden table's slice times,
+which say where the numbers asked for are taken.
 """
 
 from __future__ import annotations
 
 import re
+from typing import Sequence
 
 from .document import Cell, Table
 from .engine import History
 from .export import check_below_c, coordinate_format, velocity_format
-from .frames import Frame, frame_symbol, frame_word, view
+from .frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
 from .ledger import impact_entries, initial_total, ledger_slice, turn_times
 from .ledger_report import ROUNDING_ZERO, number_text
-from .numbers import MINUS, fraction_text
+from .numbers import MINUS, exact, fraction_text
+from .table_formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 def impact_name(label: str) -> str:
     """An impact's label as the figures write it: B1 -> B₁."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
@@ -45,7 +47,8 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
     velocities just before and after (c = 1; x and t in the unit L is given in)."""
     fv = view(history, frame)
     check_below_c(fv)
-    events = sorted(fv.events, key=lambda e: e.t)  # sorted is stable: the rod's order at one instant
+    scale = history.scenario.L + max((abs(e.t) for e in fv.events), default=0.0)
+    events = [fv.events[k] for k in time_order([e.t for e in fv.events], scale)]  # the rod's order at one instant
     coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
     velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
                                                              e.rod_velocity_before, e.rod_velocity_after)])
@@ -81,14 +84,18 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
     part just before and after (E in M c², p in M c)."""
     zero = _zero_below(history, frame)
     rows = []
-    for e in impact_entries(history, frame.rapidity):
+    rod_order = {i.label: k for k, i in enumerate(history.impacts)}
+    entries = sorted(impact_entries(history, frame.rapidity), key=lambda e: rod_order[e.impact.label])
+    scale = history.scenario.L + max((abs(e.t) for e in entries), default=0.0)
+    for e in (entries[k] for k in time_order([e.t for e in entries], scale)):
         name = impact_name(e.impact.label)
         t = with_fraction(number_text(e.t), e.t)
         for k, (body, b, a) in enumerate(((f"particle {e.impact.particle}", e.particle_before, e.particle_after),
                                           ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
                                           ("hidden", e.hidden_before, e.hidden_after))):
             values = [number_text(q, zero) for q in (b.E, b.p, a.E, a.p)]
-            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else ""), Cell(body),
+            # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
+            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0), Cell(body),
                          *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
     _, tn = coordinates(frame)
     return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
@@ -102,7 +109,7 @@ def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
     eta = frame.rapidity
     changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(turn_times(history, eta)))
     scale = history.scenario.L + max((abs(t) for t in changes), default=0.0)
-    return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > 1e-9 * scale)
+    return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > ONE_INSTANT * scale)
 
 
 def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table | None:
@@ -122,3 +129,73 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
     return Table(f"hidden_{frame_word(frame)}", f"The hidden part between impacts, frame {frame_symbol(frame)}",
                  (tn, "hidden E", "hidden p"), tuple(rows), "nnn",
                  ("Each slice lies halfway between two consecutive impacts or ends of a turn.",))
+
+
+def slices_table(history: History, frame: Frame, times: Sequence[float], blank: bool = False) -> Table:
+    """Each body's kinetic (E, p), the kinetic total and the hidden part on the slices t = `times` of the frame (the
+    `--at` slices of `sears-paradox ledger`), a row per body, the time on the first row of each slice."""
+    zero = _zero_below(history, frame)
+    rows = []
+    for t in times:
+        s = ledger_slice(history, frame.rapidity, t)
+        named = [(f"particle {name}" if name != "rod" else "rod, kinetic", em) for name, em in s.bodies]
+        named += [("kinetic total", s.kinetic), ("hidden", s.hidden)]
+        for k, (body, em) in enumerate(named):
+            time = with_fraction(number_text(t), t).replace("-", MINUS) if k == 0 else ""
+            values = [number_text(q, zero) for q in (em.E, em.p)]
+            rows.append((Cell(time), Cell(body),
+                         *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
+    _, tn = coordinates(frame)
+    return Table(f"slices_{frame_word(frame)}",
+                 f"Each body's kinetic energy and momentum at chosen instants, frame {frame_symbol(frame)}",
+                 (tn, "body", "E", "p"), tuple(rows), "nlnn",
+                 (f"E in M c², p in M c, M the rod's mass, on the slice {tn} = const of the frame; hidden: the total "
+                  f"before the first impact less the kinetic total.",))
+
+
+# --- the tables of a command, as one Markdown or LaTeX text -----------------------------------------------
+
+def events_tables(history: History, frames: Sequence[Frame]) -> tuple[Table, ...]:
+    """`sears-paradox events` as tables: the impacts in each frame."""
+    return tuple(events_table(history, f) for f in frames)
+
+
+def ledger_tables(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> tuple[Table, ...]:
+    """`sears-paradox ledger` as tables: for each frame the ledger per impact, the hidden part between impacts
+    where it is not zero, and the --at slices if any."""
+    out: list[Table] = []
+    for f in frames:
+        out.append(ledger_table(history, f))
+        hidden = hidden_table(history, f)
+        if hidden is not None:
+            out.append(hidden)
+        if at:
+            out.append(slices_table(history, f, at))
+    return tuple(out)
+
+
+def heading(history: History, units: str) -> str:
+    """The line above a command's tables: the scenario, its v and L, and the units (`units`, after c = 1)."""
+    s = history.scenario
+    return f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)} (c = 1; {units})"
+
+
+#: the units of `events` and of `ledger`, as their text output states them
+EVENTS_UNITS = "x and t in the unit L is given in"
+LEDGER_UNITS = "E in M c², p in M c, M the rod's mass; t in the unit L is given in"
+
+
+def events_markdown(history: History, frames: Sequence[Frame]) -> str:
+    return tables_markdown(heading(history, EVENTS_UNITS), events_tables(history, frames))
+
+
+def events_latex(history: History, frames: Sequence[Frame]) -> str:
+    return tables_latex(heading(history, EVENTS_UNITS), events_tables(history, frames))
+
+
+def ledger_markdown(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+    return tables_markdown(heading(history, LEDGER_UNITS), ledger_tables(history, frames, at))
+
+
+def ledger_latex(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+    return tables_latex(heading(history, LEDGER_UNITS), ledger_tables(history, frames, at))

@@ -131,34 +131,58 @@ class _Sink:
 class GifSink(_Sink):
     """A looping GIF, every frame 100/fps hundredths of a second, one palette for the whole animation.
 
-    Two passes, so that one palette fits every frame and no colour flickers: each frame is held
-    zlib-compressed (a diagram shrinks 20-fold or more) while the colours of all frames are counted;
-    `close` chooses the palette (`palette_of`), maps each frame to it (nearest colour, no dither) and
-    writes only the rectangle that changed since the frame before. Memory: the compressed frames, the
-    colour counts, and two frames at a time.
+    Two passes, so that one palette fits every frame and no colour flickers: of each frame only the
+    rectangle that changed since the frame before is held, zlib-compressed, while the colours of all frames
+    are counted (the first frame's every pixel, then each frame's changed pixels: the counts of the frame
+    before, less the colours that left, plus those that came); `close` chooses the palette (`palette_of`),
+    maps each frame to it (nearest colour, no dither) and writes only the rectangle whose palette entries
+    changed since the frame before. Memory: the compressed rectangles, the colour counts, and two frames
+    at a time.
     """
 
     def __init__(self, path: Path, fps: int, size: tuple[int, int] | None = None):
         check_fps("gif", fps)
         super().__init__(path, fps, size)
-        self._held: list[bytes] = []
-        self._colours = np.empty(0, dtype=np.uint32)
-        self._counts = np.empty(0, dtype=np.int64)
+        self._held: list[tuple[tuple[int, int, int, int], bytes]] = []
+        self._colours = np.empty(0, dtype=np.uint32)  # every colour seen, sorted
+        self._counts = np.empty(0, dtype=np.int64)  # its pixels over every frame so far
+        self._current = np.empty(0, dtype=np.int64)  # its pixels in the last frame
+        self._previous: np.ndarray | None = None  # the last frame, packed
 
     def add(self, frame: np.ndarray) -> None:
         frame = self._check(frame)
         packed = pack(frame)
-        colours, counts = np.unique(packed, return_counts=True)
-        self._merge(colours, counts)
-        self._held.append(zlib.compress(np.ascontiguousarray(frame).tobytes(), _HOLD_LEVEL))
+        if self._previous is None:
+            self._count(packed.ravel(), +1)
+            box = (0, 0, packed.shape[1], packed.shape[0])
+        else:
+            changed = packed != self._previous
+            rows, cols = np.flatnonzero(changed.any(1)), np.flatnonzero(changed.any(0))
+            if len(rows):
+                self._count(self._previous[changed], -1)
+                self._count(packed[changed], +1)
+                box = (int(cols[0]), int(rows[0]), int(cols[-1]) + 1, int(rows[-1]) + 1)
+            else:
+                box = (0, 0, 0, 0)
+        self._counts += self._current
+        x0, y0, x1, y1 = box
+        self._held.append((box, zlib.compress(np.ascontiguousarray(frame[y0:y1, x0:x1]).tobytes(), _HOLD_LEVEL)))
+        self._previous = packed
         self.count += 1
 
-    def _merge(self, colours: np.ndarray, counts: np.ndarray) -> None:
-        both = np.concatenate([self._colours, colours])
-        merged, where = np.unique(both, return_inverse=True)
-        total = np.zeros(len(merged), dtype=np.int64)
-        np.add.at(total, where, np.concatenate([self._counts, counts]))
-        self._colours, self._counts = merged, total
+    def _count(self, pixels: np.ndarray, sign: int) -> None:
+        """Add (sign +1) or remove (-1) these pixels (packed colours) from the last frame's colour counts."""
+        colours, counts = np.unique(pixels, return_counts=True)
+        new = np.setdiff1d(colours, self._colours, assume_unique=True)
+        if len(new):
+            merged = np.union1d(self._colours, new)
+            where = np.searchsorted(merged, self._colours)
+            for name in ("_counts", "_current"):
+                grown = np.zeros(len(merged), dtype=np.int64)
+                grown[where] = getattr(self, name)
+                setattr(self, name, grown)
+            self._colours = merged
+        self._current[np.searchsorted(self._colours, colours)] += sign * counts
 
     def encode(self) -> bytes:
         """The GIF's bytes (after every frame was added)."""
@@ -176,9 +200,12 @@ class GifSink(_Sink):
         out.write(b"GIF89a" + _u16(width) + _u16(height) + bytes([0xF7, 0, 0]) + table.tobytes())
         out.write(b"!\xff\x0bNETSCAPE2.0\x03\x01" + _u16(0) + b"\x00")  # loop forever
         previous = None
-        for held in self._held:
-            frame = np.frombuffer(zlib.decompress(held), dtype=np.uint8).reshape(height, width, 3)
-            index = lookup[pack(frame)]
+        index = np.zeros((height, width), dtype=np.uint8)
+        for (x0, y0, x1, y1), held in self._held:
+            if x1 > x0:
+                crop = np.frombuffer(zlib.decompress(held), dtype=np.uint8).reshape(y1 - y0, x1 - x0, 3)
+                index = index.copy()  # `previous` keeps the frame before
+                index[y0:y1, x0:x1] = lookup[pack(crop)]
             box = _changed_box(previous, index)
             previous = index
             x0, y0, x1, y1 = box
@@ -192,12 +219,13 @@ class GifSink(_Sink):
 
     def close(self) -> bool:
         data = self.encode()
-        self._held = []
+        self._held, self._previous = [], None
         self._done = True
         return write_atomic(self.path, data)
 
     def abort(self) -> None:
         self._held = []
+        self._previous = None
         super().abort()
 
 

@@ -305,7 +305,10 @@ def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch
     assert target.read_text() == "old" and [p.name for p in tmp_path.iterdir()] == ["keep.json"]
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["list"], ["events", "fig2"], ["export", "fig2"], ["plot", "--help"], ["ledger", "fig2"], ["ledger", "fig2", "--format", "json", "--at", "1"], ["ledger", "--help"]])
+@pytest.mark.parametrize("argv", [["--help"], ["list"], ["events", "fig2"], ["export", "fig2"], ["plot", "--help"], ["ledger", "fig2"], ["ledger", "fig2", "--format", "json", "--at", "1"], ["ledger", "--help"],
+                                  ["events", "fig2", "--format", "markdown"], ["events", "fig2", "--format", "latex"],
+                                  ["ledger", "fig2", "--format", "markdown", "--at", "1"],
+                                  ["ledger", "fig2", "--format", "latex"]])
 def test_non_drawing_paths_never_import_matplotlib(argv):
     code = ("import sys\nfrom sears_paradox_cli.main import main\n"
             f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"

@@ -192,14 +192,14 @@ def test_the_figure_values_are_the_ledgers():
                              "comma-separated, got ''."),
     (["fig2", "--at", "nan"], "option --at must be one or more times (numbers, in the unit L is given in), "
                               "comma-separated, got 'nan'."),
-    (["fig2", "--format", "svg", "--at", "1"], "option --at selects the slices of a table (text, json, csv); a "
-                                               "figure shows every instant."),
-    (["fig2", "--format", "xls"], "option --format must be one of text, json, csv, or one or more of svg, pdf, png "
-                                  "comma-separated, got 'xls'."),
-    (["fig2", "--format", "json,svg"], "option --format must be one of text, json, csv, or one or more of svg, pdf, "
-                                       "png comma-separated, got 'json,svg'."),
+    (["fig2", "--format", "svg", "--at", "1"], "option --at selects the slices of a table (text, json, csv, "
+                                               "markdown, latex); a figure shows every instant."),
+    (["fig2", "--format", "xls"], "option --format must be one of text, json, csv, markdown, latex, or one "
+                                  "or more of svg, pdf, png comma-separated, got 'xls'."),
+    (["fig2", "--format", "json,svg"], "option --format must be one of text, json, csv, markdown, latex, or "
+                                       "one or more of svg, pdf, png comma-separated, got 'json,svg'."),
     (["fig2", "-o", "x.doc"], "option -o: cannot tell the format of 'x.doc' from its extension; name it .txt, .json, "
-                              ".csv, .svg, .pdf or .png, or give --format."),
+                              ".csv, .md, .tex, .svg, .pdf or .png, or give --format."),
     (["fig2", "-o", "x.csv", "--format", "json"], "option -o names 'x.csv' but --format is json; make them agree."),
     (["fig2", "-o", ""], "option -o must name a file or folder, got ''."),
     (["fig2", "--frame", "sideways"], "option --frame: a frame must be rest, moving, both or a velocity U with "

@@ -5,6 +5,7 @@ import os
 import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -79,6 +80,19 @@ def test_gif_with_many_colours_is_as_close_as_a_median_cut_of_all_frames_and_kee
     assert error.mean() <= 1.05 * yardstick
     for (pixels, _), want in zip(read, made):
         assert np.array_equal(pixels[10:14, 5:9][want[10:14, 5:9] == 255], want[10:14, 5:9][want[10:14, 5:9] == 255])
+
+
+def test_the_gif_counts_every_pixel_of_every_frame_though_it_looks_only_at_what_changed():
+    """The palette is chosen from the colour counts of all frames; the sink counts the first frame whole and then
+    only the pixels that changed. The counts must equal a plain count of every pixel of every frame."""
+    made = gradient_frames(5) + [gradient_frames(5)[-1]] + frames(3, 64, 48) + gradient_frames(2)
+    sink = video.GifSink(Path("unused.gif"), 25)
+    for frame in made:
+        sink.add(frame)
+    colours, counts = np.unique(np.concatenate([video.pack(f).ravel() for f in made]), return_counts=True)
+    assert np.array_equal(sink._colours, colours)
+    assert np.array_equal(sink._counts, counts)
+    sink.abort()
 
 
 def test_the_palette_is_every_colour_when_there_are_few_and_stays_within_256():

@@ -18,6 +18,9 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
            it draws itself, names what labels must avoid, and gives its own legend entry; ink from the style
   panel    one panel: its axes, then every enabled layer, then the labels
   diagram  `draw` (a Figure the layout sizes), `draw_into` (a Figure or SubFigure the caller sized), bytes
+  strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
+           particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
+           block of stills, the rod at successive instants
 
 The layout is computed in points rather than by matplotlib's layout
 engines: the figure's size follows from the data (equal scales), labels are
@@ -27,12 +30,13 @@ depend on a renderer, so it is fast and byte-for-byte reproducible.
 
 from ..frames import PANEL_LETTERS, relative_velocity
 from .diagram import Diagram, PanelInfo, draw, draw_into, figure_bytes, style_context
+from .strip import StripArtists, draw_strip, draw_strips_into, update_strip
 from .labels import LABEL_REACH
 from .layers import LAYERS, LEGEND, Layer, LayerArtists, Options, PanelContext
 from .text import (_measured, approximate_size, axis_label, coordinate_names, frame_symbol, impact_text,
                    impact_text_size, text_size)
 
 __all__ = ["PANEL_LETTERS", "LABEL_REACH", "LAYERS", "LEGEND", "Diagram", "Layer", "LayerArtists", "Options",
-           "PanelContext", "PanelInfo", "approximate_size", "axis_label", "coordinate_names", "draw", "draw_into",
+           "PanelContext", "PanelInfo", "StripArtists", "approximate_size", "axis_label", "coordinate_names", "draw", "draw_into", "draw_strip", "draw_strips_into",
            "figure_bytes", "frame_symbol", "impact_text", "impact_text_size", "relative_velocity", "style_context",
-           "text_size"]
+           "text_size", "update_strip"]

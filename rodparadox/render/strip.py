@@ -1,0 +1,245 @@
+"""The strip: one frame's space at one instant (README, "The paradox in motion"), for animations and handouts.
+
+The rod is a bar from its left end to its right end, coloured along its length by the velocity of its
+material points (a diverging scale centred on the frame's rod velocity before any impact,
+`animation.ColourScale`); the particles are labelled dots; an impact at (or, in an animation, near) the
+instant is a star. Positions are the frame's x in units of L, on the caller's x scale.
+
+Two ways in:
+
+* `draw_strip(ax, strip, style, scale, frame, L=...)` draws one strip into an axes and hands back its
+  artists (`StripArtists`); `update_strip(artists, strip, frame, L)` moves them to another instant
+  (an animation blits them over a saved background);
+* `draw_strips_into(target, history, frame, times, style)` draws, for one frame, a block of strips at
+  several instants of that frame's time, stacked top to bottom (earliest on top) on one shared x axis, with
+  one colour bar: "the rod at successive instants", for a printed page.
+
+Never pyplot; matplotlib is imported by the caller's choice of this module.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple, Sequence
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
+from matplotlib.colorbar import Colorbar
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure, SubFigure
+from matplotlib.lines import Line2D
+from matplotlib.text import Text
+
+from ..animation import ColourScale, Strip, colour_scale, strip_at
+from ..engine import History
+from ..frames import Frame
+from ..numbers import shown
+from ..styles import STYLES, Style
+from .text import coordinate_names, frame_symbol
+
+#: the colour map of the bar in each style: diverging, centred on the frame's initial rod velocity
+COLOUR_MAPS = {"default": "RdBu_r", "print": "PuOr_r", "slides": "RdBu_r"}
+#: the impact's flash (a star) and an animation's now-line: a colour of its own in each style
+FLASH_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
+#: what the colour bar says
+COLOUR_BAR_LABEL = "velocity of the rod's material points"
+#: the strip's axes run from -1 to 1 vertically; the bar lies on 0, a particle's letter starts here (animations)
+LETTER_Y = 0.45
+#: in a block of stills the bar is this fraction of a row's height, and a letter starts just above it
+STILL_BAR = 0.3
+STILL_LETTER_Y = STILL_BAR + 0.05
+
+
+class StripArtists(NamedTuple):
+    """A drawn strip's artists (and where its letters go, in the axes' y from -1 to 1): the bar (one segment between neighbouring material points, each coloured by
+    their mean velocity), the particles' dots and letters, the impacts' stars, the readout (which frame, which
+    instant, which impacts), and the colour bar (None when another strip's bar serves)."""
+
+    bar: LineCollection
+    dots: Line2D
+    names: tuple[Text, ...]
+    flash: Line2D
+    readout: Text | None
+    colour_bar: Colorbar | None
+    letter_y: float = LETTER_Y
+
+    @property
+    def moving(self) -> tuple:
+        """What changes from one instant to the next, in the order an animation draws it."""
+        return tuple(a for a in (self.bar, self.dots, self.flash, self.readout, *self.names) if a is not None)
+
+
+def _style(style: Style | str) -> Style:
+    return STYLES[style] if isinstance(style, str) else style
+
+
+def readout_text(strip: Strip, frame: Frame, L: float) -> str:
+    """`frame S at t = 2.111 L`, then the impacts flashing now: `   A1, B2!`."""
+    clock = coordinate_names(frame)[1]
+    lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
+    return f"frame {frame_symbol(frame)} at {clock.strip('$')} = {shown(strip.t / L, 4)} L{lit}"
+
+
+def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, frame: Frame, *, L: float = 1.0,
+               colour_ax: Axes | None = None, bar_width: float | None = None, animated: bool = False,
+               font_size: float | None = None, letter_y: float = LETTER_Y, readout: bool = True) -> StripArtists:
+    """Draw the strip of `frame` at the instant of `strip` into `ax` (its x limits are the caller's).
+
+    `bar_width`: the bar's thickness in points (default: half the axes' height); `colour_ax`: where the colour
+    bar goes (none without it); `animated`: the artists are left out of the canvas's own draw, for blitting;
+    `font_size`: of the letters and the readout (default: the style's).
+    """
+    st = _style(style)
+    fs = st.font_size if font_size is None else font_size
+    ax.set_ylim(-1.0, 1.0)
+    ax.set_yticks([])
+    ax.tick_params(labelsize=0.8 * fs, length=2.5, pad=2)
+    if bar_width is None:
+        bar_width = ax.bbox.height * 72 / ax.get_figure(root=True).dpi * 0.5
+    bar = LineCollection([], cmap=COLOUR_MAPS.get(st.name, "RdBu_r"), norm=Normalize(*scale.limits),
+                         linewidths=bar_width, capstyle="butt", animated=animated)
+    ax.add_collection(bar)
+    colour_bar = None
+    if colour_ax is not None:
+        colour_bar = ax.get_figure(root=False).colorbar(bar, cax=colour_ax, orientation="horizontal")
+        colour_bar.ax.tick_params(labelsize=0.8 * fs, length=2, pad=1)
+        colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=0.8 * fs, labelpad=1)
+    dots = ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=animated)[0]
+    names = tuple(ax.text(0.0, letter_y, name, ha="center", va="bottom", fontsize=fs, style="italic",
+                          color=st.particles[name].colour, animated=animated) for name, _ in strip.particles)
+    flash = ax.plot([], [], "*", color=FLASH_COLOUR.get(st.name, "#CC0033"), markersize=2.2 * st.impact_size,
+                    animated=animated)[0]
+    said = None
+    if readout:
+        said = ax.set_title("", fontsize=fs, loc="left", pad=3)
+        said.set_animated(animated)
+    artists = StripArtists(bar, dots, names, flash, said, colour_bar, letter_y)
+    if not animated:
+        update_strip(artists, strip, frame, L)
+    return artists
+
+
+def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1.0) -> tuple:
+    """Move a drawn strip to the instant of `strip`; returns the artists that changed (`StripArtists.moving`)."""
+    x = strip.x / L
+    mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
+    artists.bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
+    artists.bar.set_array(mid)
+    artists.dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))
+    for text, (_, xp) in zip(artists.names, strip.particles):
+        text.set_position((xp / L, artists.letter_y))
+    artists.flash.set_data([xf / L for xf in strip.flash_x], [0.0] * len(strip.flash_x))
+    if artists.readout is not None:
+        artists.readout.set_text(readout_text(strip, frame, L))
+    return artists.moving
+
+
+# --- a block of stills: the rod at successive instants ---------------------------------------------------
+
+#: an impact is "at" an instant of a still when its time there is within this many L: rounding of the times
+#: the caller passes (e.g. 17/12 written as 1.4166666666666667), far below anything a reader could see
+AT_INSTANT = 1e-9
+
+
+def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame, times: Sequence[float],
+                     style: str) -> tuple[Axes, ...]:
+    """For one frame, the rod and the particles in that frame's space at each of `times` (the frame's own
+    time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
+    of L, named with the frame's coordinate, e.g. x′/L); each row is labelled with its time (t′ = 1.25 L)
+    and marks the impacts at exactly that instant; one colour bar under the block serves every row (the
+    scale of the whole history, `animation.colour_scale`, so a colour is the same velocity in every row and
+    in the animation). Fills the target (a Figure or SubFigure the caller has sized).
+
+    Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid
+    `strips-colour-bar`. A target too small for the rows, their labels and the colour bar is refused
+    (ValueError, naming the size needed).
+    """
+    from .diagram import style_context
+    from .layout import font_sizes, next_step
+    from .text import approximate_size, axis_label, impact_text, ticks_at
+
+    if not times:
+        raise ValueError("draw_strips_into needs at least one time")
+    times = sorted(float(t) for t in times)
+    L = history.scenario.L
+    dpi = (target.get_figure(root=True) if isinstance(target, SubFigure) else target).dpi
+    width, height = target.bbox.width * 72 / dpi, target.bbox.height * 72 / dpi  # points
+    with style_context(style) as st:
+        fs = font_sizes(st)
+        scale = colour_scale(history, frame)
+        strips = [strip_at(history, frame, t, AT_INSTANT * L) for t in times]
+        xname, clock = coordinate_names(frame)
+        labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
+        notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_text(f) for f in s.flashing)
+                 if s.flashing else "" for s in strips]
+        # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
+        gutter = max(approximate_size(text, fs["label"])[0] for text in labels + notes) + 8.0
+        right = 10.0
+        tick_h = approximate_size("0123456789", fs["tick"])[1]
+        label_h = approximate_size("$x_u/L$", fs["label"])[1]
+        small = 0.8 * fs["tick"]
+        bar_h = max(5.0, 0.7 * small)
+        below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + 10.0 + bar_h + (2 + 1 + 1.2 * small) * 2 + 4.0
+        top = 4.0
+        row_gap = 0.25 * fs["tick"]
+        least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
+        row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
+        axes_w = width - gutter - right
+        if row_h < least_row or axes_w < 8 * fs["tick"]:
+            need_w = gutter + right + 8 * fs["tick"]
+            need_h = top + below + len(times) * least_row + row_gap * (len(times) - 1)
+            raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
+                             f"target is {width / 72:.2f} x {height / 72:.2f} in.")
+        # the x range: every rod end and particle at these instants, with a margin
+        xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in strips]) / L
+        lo, hi = float(xs.min()), float(xs.max())
+        margin = max(0.06 * (hi - lo), 0.1)
+        lo, hi = lo - margin, hi + margin
+        step = next_step(10.0 ** np.floor(np.log10((hi - lo) / 10)))
+        while (hi - lo) / step > max(2.0, axes_w / (3.0 * approximate_size("−0.00", fs["tick"])[0])):
+            step = next_step(step)
+        ticks = ticks_at(lo, hi, step)
+        rows: list[Axes] = []
+        y = height - top
+        for k, (strip, label, note) in enumerate(zip(strips, labels, notes)):
+            y -= row_h
+            ax = target.add_axes((gutter / width, y / height, axes_w / width, row_h / height),
+                                 sharex=rows[0] if rows else None)
+            y -= row_gap
+            ax.set_gid(f"strips-row-{k}")
+            ax.set_xlim(lo, hi)
+            draw_strip(ax, strip, st, scale, frame, L=L, bar_width=STILL_BAR * row_h / 2, font_size=fs["label"],
+                       letter_y=STILL_LETTER_Y, readout=False)
+            ax.set_xticks(ticks)
+            ax.xaxis.set_major_formatter(_Ticks(step))
+            ax.tick_params(labelsize=fs["tick"], length=3.5, pad=3.5, labelbottom=(k == len(times) - 1))
+            ax.grid(axis="x", color=st.grid.colour, linewidth=st.grid.width, zorder=0)
+            ax.set_axisbelow(True)
+            ax.text(-8.0 / axes_w, 0.5 if not note else 0.62, label, transform=ax.transAxes, ha="right",
+                    va="center", fontsize=fs["label"], gid=f"strips-time-{k}")
+            if note:
+                ax.text(-8.0 / axes_w, 0.24, note, transform=ax.transAxes, ha="right", va="center",
+                        fontsize=fs["tick"], gid=f"strips-impacts-{k}")
+            rows.append(ax)
+        rows[-1].set_xlabel(axis_label(xname), fontsize=fs["label"], labelpad=4.0,
+                            fontstyle="normal" if "$" in xname else "italic")
+        bar_y = below - (3.5 + 3.5 + tick_h + 4.0 + label_h) - 10.0 - bar_h
+        colour_ax = target.add_axes(((gutter + 0.15 * axes_w) / width, bar_y / height, 0.7 * axes_w / width,
+                                     bar_h / height))
+        colour_ax.set_gid("strips-colour-bar")
+        shown_bar = target.colorbar(rows[0].collections[0], cax=colour_ax, orientation="horizontal")
+        shown_bar.ax.tick_params(labelsize=small, length=2, pad=1)
+        shown_bar.set_label(COLOUR_BAR_LABEL, fontsize=small, labelpad=1)
+    return tuple(rows)
+
+
+class _Ticks:
+    """A tick formatter: tick_text with the block's step (a class, not a lambda: figures may be pickled)."""
+
+    def __init__(self, step: float):
+        self.step = step
+
+    def __call__(self, value, _pos=None) -> str:
+        from .text import tick_text
+
+        return tick_text(value, self.step)
