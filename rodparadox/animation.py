@@ -142,10 +142,13 @@ def flash_time(window: tuple[float, float], count: int) -> float:
 
 @dataclass(frozen=True)
 class ColourScale:
-    """The strip's diverging colour scale: `centre` (the frame's initial rod velocity) +- `bound`."""
+    """The strip's diverging colour scale: `centre` (the frame's initial rod velocity) +- `bound`; `shown` is the
+    part a colour bar shows, from the slowest to the fastest velocity any material point takes (never past c,
+    which centre +- bound can be: 0.6 +- 0.6 in Fig. 2's S′)."""
 
     centre: float
     bound: float
+    shown: tuple[float, float] | None = None
 
     @property
     def limits(self) -> tuple[float, float]:
@@ -171,8 +174,11 @@ def colour_scale(history: History, frame: Frame) -> ColourScale:
     material point's velocity over the whole history, so the colours mean the same at every instant."""
     centre = frame.rod_velocity()
     eta = frame.rapidity
-    bound = max(abs(math.tanh(r - eta) - centre) for r in rod_rapidities(history))
-    return ColourScale(centre, bound if bound > 0 else STILL_BOUND)
+    velocities = [math.tanh(r - eta) for r in rod_rapidities(history)]
+    bound = max(abs(u - centre) for u in velocities)
+    if bound <= 0:
+        return ColourScale(centre, STILL_BOUND)
+    return ColourScale(centre, bound, (min(velocities), max(velocities)))
 
 
 @dataclass(frozen=True)

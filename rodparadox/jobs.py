@@ -99,6 +99,16 @@ def destination(output: str | None, count: int, allowed: Sequence[str]) -> tuple
     return None, path
 
 
+def named(name: str, *, v: float | None, L: float | None, frames, style: str, extras: Sequence[str] = (),
+          kind: str = "") -> tuple[Scenario, tuple[Frame, ...], str]:
+    """What every drawing command does first: the scenario `name` with --v and --L, its frames (`frames(v)`, the
+    command's own reading of --frame, which names its errors), and the file name it writes (`output_name`)."""
+    base = load(name)
+    s = base.with_overrides(v=v, L=L)
+    chosen = tuple(frames(s.v))
+    return s, chosen, output_name(stem_of(name), base, v, L, chosen, style, extras, kind)
+
+
 class Job(NamedTuple):
     """One figure to draw: the name the user gave, the scenario with --v and --L, its frames and its files."""
 
@@ -120,10 +130,8 @@ def plan(names: Sequence[str], *, v: float | None, L: float | None, frame: str, 
     formats = formats_of(fmt, file, allowed, default_format)
     jobs: list[Job] = []
     for name in names:
-        base = load(name)
-        s = base.with_overrides(v=v, L=L)
-        frames = frames_of(frame, s.v)
-        stem = output_name(stem_of(name), base, v, L, frames, style, extras, kind)
+        s, frames, stem = named(name, v=v, L=L, frames=lambda v_: frames_of(frame, v_), style=style, extras=extras,
+                                kind=kind)
         job = Job(name, s, frames, {f: file if file is not None else folder / f"{stem}.{f}" for f in formats})
         if any(job[1:] == other[1:] for other in jobs):
             continue
@@ -206,19 +214,14 @@ def plan_animation(name: str, *, v: float | None, L: float | None, frame: str, m
     if fmt == "png" and suffix == "png" and not Path(output).is_dir():
         raise OptionError(f"option -o: png writes numbered stills into a folder; name the folder, not "
                           f"{output!r}.")
-    base = load(name)
-    s = base.with_overrides(v=v, L=L)
-    try:
-        frames = parse_frames(frame, s.v) if mode == "now" else boost_ends(frame, s.v)
-    except FrameError as e:
-        raise OptionError(f"option --frame: {e}") from None
-    stem = output_name(stem_of(name), base, v, L, frames, style, (), mode)
+    s, frames, stem = named(name, v=v, L=L, style=style, kind=mode,
+                            frames=lambda v_: frames_of(frame, v_) if mode == "now" else boost_ends(frame, v_))
     if fmt == "png":
         path = Path(output) if output is not None else Path(DEFAULT_FOLDER) / stem
     else:
         folder, file = destination(output, 1, (fmt,))
         path = file if file is not None else folder / f"{stem}.{fmt}"
-    return AnimationJob(name, s, tuple(frames), fmt, path, stem)
+    return AnimationJob(name, s, frames, fmt, path, stem)
 
 
 def prepare_animation(job: AnimationJob, output: str | None) -> None:

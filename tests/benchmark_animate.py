@@ -6,7 +6,8 @@
    against a bare matplotlib script (a separate process) that draws the same artists frame by frame:
    the same figure size and dpi, the diagram's lines, fills, texts, titles, ticks and legend, the two
    strips' axes and colour bars, and per frame the same now-lines, bars (a LineCollection with the same
-   segments and colours), particle dots and letters, flashes and readouts, from numbers saved beforehand,
+   segments and colours) and their outlines, particle dots and letters, flashes and readouts, and the lens
+   (the magnified strip) where the tool draws one, from numbers saved beforehand,
    with `FuncAnimation(...).save(..., writer=PillowWriter(fps=20))`; no scenario, no engine, no layout.
    Interleaved, so drifts in machine load hit both alike. Target: the tool at most 0.5 of the bare
    script's median wall time.
@@ -24,7 +25,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
 import statistics
 import subprocess
 import sys
@@ -65,6 +65,8 @@ for a in data["axes"]:
     ax.set_yticks(a["yticks"], a["yticklabels"], fontsize=a["tick_size"])
     ax.set_xlabel(a["xlabel"], fontsize=a["label_size"]); ax.set_ylabel(a["ylabel"], fontsize=a["label_size"])
     ax.set_title(a["title"], fontsize=a["title_size"])
+    if a["left_title"]:
+        ax.set_title(a["left_title"], fontsize=a["left_title_size"], loc="left")
     for t in a["texts"]:
         ax.text(t["x"], t["y"], t["text"], fontsize=t["size"], color=t["colour"], ha=t["ha"], va=t["va"])
     a["ax"] = ax
@@ -73,37 +75,46 @@ fig.legend([Line2D([], [], color=c, linestyle=dashes(d)) for c, d in data["legen
            loc="upper center", bbox_to_anchor=data["legend_anchor"], ncol=data["legend_columns"], frameon=False,
            fontsize=data["legend_size"])
 
+nows = [(data["axes"][n["panel"]]["ax"].axhline(0, color=n["colour"], linewidth=n["width"], zorder=8), n["t"])
+        for n in data["nows"]]
 moving = []
 for s in data["strips"]:
-    panel, strip, cax = data["axes"][s["panel"]]["ax"], data["axes"][s["strip"]]["ax"], data["axes"][s["colour"]]["ax"]
-    now = panel.axhline(0, color=s["now_colour"], linewidth=s["now_width"], zorder=8)
+    strip = data["axes"][s["strip"]]["ax"]
     bar = LineCollection([], cmap=s["cmap"], norm=Normalize(*s["limits"]), linewidths=s["bar_width"],
                          capstyle="butt")
     strip.add_collection(bar)
-    bar_legend = fig.colorbar(bar, cax=cax, orientation="horizontal")
-    bar_legend.ax.tick_params(labelsize=s["small"]); bar_legend.set_label(s["bar_label"], fontsize=s["small"])
+    if s["colour"] is not None:
+        cax = data["axes"][s["colour"]]["ax"]
+        bar_legend = fig.colorbar(bar, cax=cax, orientation="horizontal")
+        bar_legend.ax.tick_params(labelsize=s["small"]); bar_legend.set_label(s["bar_label"], fontsize=s["small"])
+    outline = strip.plot([], [], color=s["outline_colour"], linewidth=s["outline_width"])[0]
     dots = strip.plot([], [], "o", color="black", markersize=s["dot_size"])[0]
     names = [strip.text(0, s["letter_y"], n, ha="center", va="bottom", fontsize=s["size"], style="italic",
                         color=c) for n, c in s["names"]]
-    flash = strip.plot([], [], "*", color=s["now_colour"], markersize=s["star_size"])[0]
-    readout = strip.set_title("", fontsize=s["size"], loc="left")
-    moving.append((s, now, bar, dots, names, flash, readout))
+    flash = strip.plot([], [], "*", color=s["flash_colour"], markersize=s["star_size"])[0]
+    readout = strip.set_title("", fontsize=s["size"], loc="left") if s["readout"] else None
+    moving.append((s, bar, outline, dots, names, flash, readout))
 
 def update(k):
-    for s, now, bar, dots, names, flash, readout in moving:
+    for now, t in nows:
+        now.set_ydata([t[k], t[k]])
+    for s, bar, outline, dots, names, flash, readout in moving:
         f = s["frames"][k]
-        now.set_ydata([f["t"], f["t"]])
         x = f["x"]
         bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
         bar.set_array(f["colours"])
+        h = s["half_bar"]
+        outline.set_data([x[0], x[-1], x[-1], x[0], x[0]], [-h, -h, h, h, -h])
         dots.set_data(f["particles"], [0.0] * len(f["particles"]))
-        for text, xp in zip(names, f["particles"]):
+        for text, xp, shown in zip(names, f["particles"], f["shown"]):
             text.set_position((xp, s["letter_y"]))
+            text.set_visible(shown)
         flash.set_data(f["flash"], [0.0] * len(f["flash"]))
-        readout.set_text(f["readout"])
+        if readout is not None:
+            readout.set_text(f["readout"])
     return []
 
-FuncAnimation(fig, update, frames=len(data["strips"][0]["frames"]), blit=False).save(
+FuncAnimation(fig, update, frames=len(data["nows"][0]["t"]), blit=False).save(
     sys.argv[2], writer=PillowWriter(fps=data["fps"]), dpi=data["dpi"])
 '''
 
@@ -119,7 +130,6 @@ def command() -> list[str]:
 def scene_data(path: Path) -> None:
     """Save what `animate fig2` draws (the diagram, the strips' axes, and every frame's moving artists, with the
     same figure size and dpi) for the bare script."""
-    from matplotlib.collections import LineCollection
     from matplotlib.colors import to_hex
     from matplotlib.patches import Polygon
 
@@ -180,40 +190,45 @@ def scene_data(path: Path) -> None:
             data["axes"].append({
                 "position": list(ax.get_position().bounds), "xlim": list(ax.get_xlim()), "ylim": list(ax.get_ylim()),
                 "lines": lines, "fills": fills, "texts": texts, "title": ax.get_title(),
-                "title_size": ax.title.get_fontsize(), "xlabel": ax.get_xlabel(), "ylabel": ax.get_ylabel(),
+                "title_size": ax.title.get_fontsize(), "left_title": ax.get_title(loc="left"),
+                "left_title_size": ax._left_title.get_fontsize(), "xlabel": ax.get_xlabel(), "ylabel": ax.get_ylabel(),
                 "label_size": ax.xaxis.label.get_fontsize(),
                 "tick_size": ticks[0].label1.get_fontsize() if ticks else 10.0,
                 "xticks": list(map(float, ax.get_xticks())), "yticks": list(map(float, ax.get_yticks())),
                 "xticklabels": [t.get_text() for t in ax.get_xticklabels()],
                 "yticklabels": [t.get_text() for t in ax.get_yticklabels()],
             })
-        for p, (frame, now, strip) in enumerate(scene.panels):
-            strip_ax = strip.bar.axes
-            colour_ax = strip.colour_bar.ax
-            # the colour bar's own axes are drawn by the bare script's colorbar: no ticks of ours
-            for key in (colour_ax,):
-                data["axes"][index[key]].update(xticks=[], yticks=[], xticklabels=[], yticklabels=[], xlabel="")
+        data["nows"] = [{"panel": index[m.now.axes], "colour": to_hex(m.now.get_color()),
+                         "width": m.now.get_linewidth(), "t": []} for m in scene.panels]
+        strips = [(m.strip, m.strip.colour_bar) for m in scene.panels]
+        strips += [(m.lens, None) for m in scene.panels if m.lens is not None]
+        for strip, colour_bar in strips:
+            if colour_bar is not None:  # the bare script's colorbar draws the colour bar's own axes: no ticks of ours
+                data["axes"][index[colour_bar.ax]].update(xticks=[], yticks=[], xticklabels=[], yticklabels=[],
+                                                          xlabel="")
             data["strips"].append({
-                "panel": index[now.axes], "strip": index[strip_ax], "colour": index[colour_ax],
-                "now_colour": to_hex(now.get_color()), "now_width": now.get_linewidth(),
-                "cmap": COLOUR_MAPS["default"], "limits": list(strip.bar.norm.vmin for _ in [0]) +
-                [strip.bar.norm.vmax], "bar_width": float(strip.bar.get_linewidth()[0]),
+                "strip": index[strip.bar.axes], "colour": index[colour_bar.ax] if colour_bar is not None else None,
+                "cmap": COLOUR_MAPS["default"], "limits": [strip.bar.norm.vmin, strip.bar.norm.vmax],
+                "bar_width": float(strip.bar.get_linewidth()[0]), "half_bar": strip.half_bar,
+                "outline_colour": to_hex(strip.outline.get_color()), "outline_width": strip.outline.get_linewidth(),
                 "bar_label": COLOUR_BAR_LABEL, "small": 0.8 * STYLES["default"].font_size,
                 "dot_size": strip.dots.get_markersize(), "star_size": strip.flash.get_markersize(),
-                "letter_y": strip.letter_y, "size": strip.readout.get_fontsize(),
+                "flash_colour": to_hex(strip.flash.get_color()), "letter_y": strip.letter_y,
+                "size": strip.names[0].get_fontsize(), "readout": strip.readout is not None,
                 "names": [(t.get_text(), to_hex(t.get_color())) for t in strip.names], "frames": []})
         for k in range(count):
             scene.update(k)
-            for p, (frame, now, strip) in enumerate(scene.panels):
+            for m, now in zip(scene.panels, data["nows"]):
+                now["t"].append(float(m.now.get_ydata()[0]))
+            for (strip, _), record in zip(strips, data["strips"]):
                 segments = strip.bar.get_segments()
-                data["strips"][p]["frames"].append({
-                    "t": float(now.get_ydata()[0]),
+                record["frames"].append({
                     "x": [float(s[0][0]) for s in segments] + [float(segments[-1][-1][0])],
                     "colours": list(map(float, strip.bar.get_array())),
                     "particles": list(map(float, strip.dots.get_xdata())),
+                    "shown": [t.get_visible() for t in strip.names],
                     "flash": list(map(float, strip.flash.get_xdata())),
-                    "readout": strip.readout.get_text()})
-    assert all(isinstance(c, LineCollection) for c in [s.bar for _, _, s in scene.panels])
+                    "readout": strip.readout.get_text() if strip.readout is not None else ""})
     path.write_text(json.dumps(data))
 
 

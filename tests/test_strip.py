@@ -31,8 +31,15 @@ def block(h, frame, times, style="default", size=(7.0, 5.0)):
     return figure, rows
 
 
+def drawn(ax, name):
+    """The artist of a strip by its id: bar, outline, particles, impacts, particle-A ..."""
+    found = [a for a in ax.get_children() if (a.get_gid() or "").endswith(f"-{name}")]
+    assert len(found) == 1, (name, [a.get_gid() for a in ax.get_children()])
+    return found[0]
+
+
 def bar_ends(ax) -> tuple[float, float]:
-    segments = ax.collections[0].get_segments()
+    segments = drawn(ax, "bar").get_segments()
     return segments[0][0][0], segments[-1][-1][0]
 
 
@@ -53,7 +60,7 @@ def test_one_row_per_time_earliest_on_top_each_bar_the_exact_rod(name, v, which)
         right = h.worldline("rod_right").boosted(eta).event_at_time(t).x
         a, b = bar_ends(ax)
         assert a == pytest.approx(left, abs=AGREE * (1 + abs(t))) and b == pytest.approx(right, abs=AGREE * (1 + abs(t)))
-        dots = ax.lines[0].get_xdata()
+        dots = drawn(ax, "particles").get_xdata()
         want = [h.worldline(p).boosted(eta).event_at_time(t).x for p in ("A", "B") if h.worldline(p) is not None]
         assert np.allclose(dots, want, atol=AGREE * (1 + abs(t)), rtol=0)
         assert ax.get_xlim() == rows[0].get_xlim()  # one shared x axis
@@ -67,12 +74,13 @@ def test_rows_are_labelled_with_their_time_and_marked_impacts_only_at_their_inst
     h = history("fig2", v)
     t_b = g / (2 * v) * (1 + v * v)
     figure, rows = block(h, Frame("moving", -v), [0.5, t_b, 3.291666666666667, 4.0])
-    texts = [[t.get_text() for t in ax.texts if (t.get_gid() or "").startswith("strips-")] for ax in rows]
+    texts = [[t.get_text() for t in ax.texts if (t.get_gid() or "").startswith(("strips-time-", "strips-impacts-"))]
+             for ax in rows]
     assert texts[0] == ["t\N{PRIME} = 0.5 L"]
     assert texts[1] == ["t\N{PRIME} = 1.417 L", "impacts $B_{1}$, $A_{1}$"]
     assert texts[2] == ["t\N{PRIME} = 3.292 L", "impact $B_{2}$"]
     assert texts[3] == ["t\N{PRIME} = 4 L"]
-    stars = [ax.lines[1].get_xdata() for ax in rows]
+    stars = [drawn(ax, "impacts").get_xdata() for ax in rows]
     assert len(stars[0]) == 0 and len(stars[3]) == 0
     # the impacts' x in S', by hand: x' = g(x + v t) of B1 = (L/2, L/2v) and A1 = (-3L/4, ...) (README's table)
     assert sorted(stars[1]) == pytest.approx([0.25, 1.25], abs=1e-12)
@@ -80,6 +88,10 @@ def test_rows_are_labelled_with_their_time_and_marked_impacts_only_at_their_inst
     assert rows[-1].get_xlabel() == "x\N{PRIME}/L"
     colour_bars = [ax for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]
     assert len(colour_bars) == 1 and colour_bars[0].get_xlabel() == COLOUR_BAR_LABEL
+    # S' of fig2: the rod first moves at v = 0.6, stops (0) and, after A1, moves at 2v/(1 + v^2) = 15/17 = 0.882:
+    # the bar shows 0 to 15/17 with the starting velocity marked, never the scale's end 2v = 1.2, past c
+    assert [t.get_text() for t in colour_bars[0].get_xticklabels()] == ["0", "0.6", "0.882"]
+    assert colour_bars[0].get_xlim() == pytest.approx((0.0, 15 / 17), abs=1e-12)
 
 
 def test_the_bar_colours_are_the_material_points_velocities_on_the_frames_scale():
@@ -88,7 +100,7 @@ def test_the_bar_colours_are_the_material_points_velocities_on_the_frames_scale(
     frame = Frame("moving", -v)
     t = 2.0
     _, rows = block(h, frame, [t])
-    bar = rows[0].collections[0]
+    bar = drawn(rows[0], "bar")
     strip = strip_at(h, frame, t, 0.0)
     assert np.allclose(bar.get_array(), 0.5 * (strip.velocity[1:] + strip.velocity[:-1]), atol=1e-15)
     scale = colour_scale(h, frame)
@@ -121,4 +133,5 @@ def test_update_strip_moves_the_bar_to_the_exact_rod_at_another_instant():
         a, b = bar_ends(ax)
         assert a == pytest.approx(h.worldline("rod_left").boosted(eta).event_at_time(t).x, abs=1e-11)
         assert b == pytest.approx(h.worldline("rod_right").boosted(eta).event_at_time(t).x, abs=1e-11)
-        assert artists.readout.get_text().startswith(f"frame S\N{PRIME} at t\N{PRIME} = ")
+        said = artists.readout.get_text()
+        assert said.startswith("t\N{PRIME} = ") and said.endswith(" L in S\N{PRIME}"), said

@@ -37,10 +37,16 @@ from ..numbers import shown
 from ..styles import STYLES, Style
 from .text import coordinate_names, frame_symbol
 
-#: the colour map of the bar in each style: diverging, centred on the frame's initial rod velocity
-COLOUR_MAPS = {"default": "RdBu_r", "print": "PuOr_r", "slides": "RdBu_r"}
+#: the colour map of the bar in each style, centred on the frame's initial rod velocity: diverging blue-white-red
+#: on screen; in print a grey ramp, light (slower) to dark (faster), whose lightness runs one way only, so the
+#: bar reads in black and white (a diverging map turns both of its ends dark in grey, and its centre white)
+COLOUR_MAPS = {"default": "RdBu_r", "print": "print-greys", "slides": "RdBu_r"}
+#: the print ramp: matplotlib's Greys from 0.12 (light grey, L* about 91) to 0.88 (dark grey, L* about 22)
+PRINT_RAMP = (0.12, 0.88)
 #: the impact's flash (a star) and an animation's now-line: a colour of its own in each style
 FLASH_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
+#: a colour bar's tick closer to 0 than this fraction of the scale's half-range is 0 up to rounding
+ROUNDING = 1e-9
 #: what the colour bar says
 COLOUR_BAR_LABEL = "velocity of the rod's material points"
 #: the strip's axes run from -1 to 1 vertically; the bar lies on 0, a particle's letter starts here (animations)
@@ -51,38 +57,71 @@ STILL_LETTER_Y = STILL_BAR + 0.05
 
 
 class StripArtists(NamedTuple):
-    """A drawn strip's artists (and where its letters go, in the axes' y from -1 to 1): the bar (one segment between neighbouring material points, each coloured by
-    their mean velocity), the particles' dots and letters, the impacts' stars, the readout (which frame, which
-    instant, which impacts), and the colour bar (None when another strip's bar serves)."""
+    """A drawn strip's artists (and where its letters go, in the axes' y from -1 to 1): the bar (one segment between
+    neighbouring material points, each coloured by their mean velocity) and its outline (in the rod's ink, so a
+    bar at the centre of the colour scale, near white, still shows where the rod is), the particles' dots and
+    letters, the impacts' stars, the readout (which frame, which instant, which impacts; None when the caller
+    labels the strip), and the colour bar (None when another strip's bar serves)."""
 
     bar: LineCollection
+    outline: Line2D
     dots: Line2D
     names: tuple[Text, ...]
     flash: Line2D
     readout: Text | None
     colour_bar: Colorbar | None
     letter_y: float = LETTER_Y
+    half_bar: float = 0.5  # the bar's half thickness, in the axes' y
 
     @property
     def moving(self) -> tuple:
         """What changes from one instant to the next, in the order an animation draws it."""
-        return tuple(a for a in (self.bar, self.dots, self.flash, self.readout, *self.names) if a is not None)
+        return tuple(a for a in (self.bar, self.outline, self.dots, self.flash, self.readout, *self.names)
+                     if a is not None)
 
 
 def _style(style: Style | str) -> Style:
     return STYLES[style] if isinstance(style, str) else style
 
 
+def colour_map(style: Style | str):
+    """The bar's colour map in a style (`COLOUR_MAPS`): a matplotlib Colormap."""
+    import matplotlib
+    from matplotlib.colors import ListedColormap
+
+    name = COLOUR_MAPS.get(_style(style).name, "RdBu_r")
+    if name == "print-greys":
+        return ListedColormap(matplotlib.colormaps["Greys"](np.linspace(*PRINT_RAMP, 256)), name="print-greys")
+    return matplotlib.colormaps[name]
+
+
 def readout_text(strip: Strip, frame: Frame, L: float) -> str:
-    """`frame S at t = 2.111 L`, then the impacts flashing now: `   A1, B2!`."""
+    """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
+    now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
+    symbol = frame_symbol(frame)
+    where = symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
     lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
-    return f"frame {frame_symbol(frame)} at {clock.strip('$')} = {shown(strip.t / L, 4)} L{lit}"
+    return f"{clock} = {shown(strip.t / L, 4)} L in {where}{lit}"
+
+
+def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
+    """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
+    bar's name."""
+    lo, hi = scale.shown or scale.limits
+    ticks = sorted({lo, scale.centre, hi}) if lo <= scale.centre <= hi else [lo, hi]
+    # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
+    labels = [shown(0.0 if abs(x) <= ROUNDING * scale.bound else x, 3) for x in ticks]
+    colour_bar.set_ticks(list(ticks), labels=labels)
+    colour_bar.ax.set_xlim(lo, hi)  # the velocities the rod takes: the scale's ends can lie past c
+    colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
+    colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
 
 def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, frame: Frame, *, L: float = 1.0,
                colour_ax: Axes | None = None, bar_width: float | None = None, animated: bool = False,
-               font_size: float | None = None, letter_y: float = LETTER_Y, readout: bool = True) -> StripArtists:
+               font_size: float | None = None, letter_y: float = LETTER_Y, readout: bool = True,
+               gid: str | None = None) -> StripArtists:
     """Draw the strip of `frame` at the instant of `strip` into `ax` (its x limits are the caller's).
 
     `bar_width`: the bar's thickness in points (default: half the axes' height); `colour_ax`: where the colour
@@ -96,14 +135,16 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     ax.tick_params(labelsize=0.8 * fs, length=2.5, pad=2)
     if bar_width is None:
         bar_width = ax.bbox.height * 72 / ax.get_figure(root=True).dpi * 0.5
-    bar = LineCollection([], cmap=COLOUR_MAPS.get(st.name, "RdBu_r"), norm=Normalize(*scale.limits),
-                         linewidths=bar_width, capstyle="butt", animated=animated)
+    bar = LineCollection([], cmap=colour_map(st), norm=Normalize(*scale.limits), linewidths=bar_width,
+                         capstyle="butt", animated=animated)
     ax.add_collection(bar)
+    half_bar = bar_width / 2 / (ax.bbox.height * 72 / ax.get_figure(root=True).dpi / 2)  # points -> axes' y
+    outline = ax.plot([], [], color=st.rod.colour, linewidth=max(0.6, 0.45 * st.rod.width), solid_joinstyle="miter",
+                      solid_capstyle="butt", animated=animated)[0]
     colour_bar = None
     if colour_ax is not None:
         colour_bar = ax.get_figure(root=False).colorbar(bar, cax=colour_ax, orientation="horizontal")
-        colour_bar.ax.tick_params(labelsize=0.8 * fs, length=2, pad=1)
-        colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=0.8 * fs, labelpad=1)
+        label_colour_bar(colour_bar, scale, 0.8 * fs)
     dots = ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=animated)[0]
     names = tuple(ax.text(0.0, letter_y, name, ha="center", va="bottom", fontsize=fs, style="italic",
                           color=st.particles[name].colour, animated=animated) for name, _ in strip.particles)
@@ -113,7 +154,12 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     if readout:
         said = ax.set_title("", fontsize=fs, loc="left", pad=3)
         said.set_animated(animated)
-    artists = StripArtists(bar, dots, names, flash, said, colour_bar, letter_y)
+    artists = StripArtists(bar, outline, dots, names, flash, said, colour_bar, letter_y, half_bar)
+    gid = gid or ax.get_gid() or "strip"
+    for artist, name in ((bar, "bar"), (outline, "outline"), (dots, "particles"), (flash, "impacts"), (said, "readout"),
+                         *((text, f"particle-{text.get_text()}") for text in names)):
+        if artist is not None:
+            artist.set_gid(f"{gid}-{name}")
     if not animated:
         update_strip(artists, strip, frame, L)
     return artists
@@ -125,9 +171,13 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
     mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
     artists.bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
     artists.bar.set_array(mid)
+    h = artists.half_bar
+    artists.outline.set_data([x[0], x[-1], x[-1], x[0], x[0]], [-h, -h, h, h, -h])
     artists.dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))
+    lo, hi = sorted(artists.bar.axes.get_xlim())
     for text, (_, xp) in zip(artists.names, strip.particles):
         text.set_position((xp / L, artists.letter_y))
+        text.set_visible(bool(lo <= xp / L <= hi))  # a letter is not clipped (it may reach above the axes): hide it
     artists.flash.set_data([xf / L for xf in strip.flash_x], [0.0] * len(strip.flash_x))
     if artists.readout is not None:
         artists.readout.set_text(readout_text(strip, frame, L))
@@ -173,7 +223,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
         notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_text(f) for f in s.flashing)
                  if s.flashing else "" for s in strips]
         # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
-        gutter = max(approximate_size(text, fs["label"])[0] for text in labels + notes) + 8.0
+        gutter = 1.05 * max(approximate_size(text, fs["label"])[0] for text in labels + notes) + 8.0 + 6.0
         right = 10.0
         tick_h = approximate_size("0123456789", fs["tick"])[1]
         label_h = approximate_size("$x_u/L$", fs["label"])[1]
@@ -206,7 +256,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
             ax = target.add_axes((gutter / width, y / height, axes_w / width, row_h / height),
                                  sharex=rows[0] if rows else None)
             y -= row_gap
-            ax.set_gid(f"strips-row-{k}")
+            ax.set_gid(f"strips-row-{k}")  # its artists: strips-row-0-bar, strips-row-0-particles, ...
             ax.set_xlim(lo, hi)
             draw_strip(ax, strip, st, scale, frame, L=L, bar_width=STILL_BAR * row_h / 2, font_size=fs["label"],
                        letter_y=STILL_LETTER_Y, readout=False)
@@ -228,8 +278,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
                                      bar_h / height))
         colour_ax.set_gid("strips-colour-bar")
         shown_bar = target.colorbar(rows[0].collections[0], cax=colour_ax, orientation="horizontal")
-        shown_bar.ax.tick_params(labelsize=small, length=2, pad=1)
-        shown_bar.set_label(COLOUR_BAR_LABEL, fontsize=small, labelpad=1)
+        label_colour_bar(shown_bar, scale, small)
     return tuple(rows)
 
 
