@@ -28,7 +28,7 @@ from typing import Iterable
 
 import numpy as np
 
-from .errors import OptionError, OutputError, ToolMissing, WriteFailed
+from .errors import OptionError, ToolMissing, WriteFailed
 from .output import check_folder as check_output_folder, check_target, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
