@@ -29,7 +29,7 @@ from typing import Iterable
 import numpy as np
 
 from .errors import OptionError, ToolMissing, WriteFailed
-from .output import check_folder as check_output_folder, check_target, write_atomic
+from .output import check_folder as check_output_folder, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
 #: frame rates a GIF stores exactly: it keeps each frame's duration in hundredths of a second
