@@ -18,6 +18,7 @@ from . import common
 from .common import (BadInput, L_option, checked_frame_velocity, checked_output, emit, frame_velocity_option,
                      load_scenario, quiet_option, reports_errors, run_scenario, scenario_argument, v_option)
 from .animate import animate  # imports matplotlib only when it runs
+from .handout import handout
 from .ledger import ledger
 from .plot import plot  # the drawing command; it imports matplotlib only when it runs
 
@@ -169,3 +170,4 @@ def export_format(output: str, fmt: str | None) -> str:
 main.add_command(plot)
 main.add_command(ledger)
 main.add_command(animate)
+main.add_command(handout)

@@ -234,3 +234,82 @@ def prepare_animation(job: AnimationJob, output: str | None) -> None:
         check_folder(job.path)
     else:
         check_target(job.path)
+
+
+# --- handouts (`sears-paradox handout`) -------------------------------------------------------------
+
+#: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
+HANDOUT_FORMATS = ("pdf", "tex")
+#: handouts are photocopied in black and white
+HANDOUT_STYLE = "print"
+PAPER_NAMES = ("a4", "letter")
+HANDOUT_PAPER = "a4"
+
+
+class HandoutJob(NamedTuple):
+    """One document: every scenario (the names given, each with --v and --L), the frames of each, and where it
+    goes: the PDF file, or the folder of the LaTeX pieces."""
+
+    names: tuple[str, ...]
+    scenarios: tuple[Scenario, ...]
+    frames: tuple[tuple[Frame, ...], ...]
+    stems: tuple[str, ...]
+    fmt: str
+    path: Path
+
+
+def plan_handout(names: Sequence[str], *, v: float | None, L: float | None, frame: str, fmt: str | None,
+                 output: str | None, style: str, paper: str, worksheet: bool) -> HandoutJob:
+    """The document `handout` will write, every input checked, nothing computed or written yet.
+
+    Named as `plot` names figures, with the kind `handout` or `worksheet` and the scenarios' names joined
+    (`fig2_handout.pdf`, `fig1_fig2_worksheet_v0.8_letter.pdf`); the style is named only if not print, the
+    paper only if not A4. pdf: -o is a folder that exists or a file name .pdf; tex: -o names the folder of the
+    pieces (created if missing, in a folder that exists); without -o, everything goes in `outputs/`.
+    """
+    if output is not None and not output.strip():
+        raise OptionError(f"option -o must name a file or folder, got {output!r}.")
+    if paper not in PAPER_NAMES:
+        raise OptionError(f"option --paper must be one of {', '.join(PAPER_NAMES)}, got {paper!r}.")
+    suffix = Path(output).suffix.lstrip(".").lower() if output is not None else ""
+    if fmt is None:
+        fmt = "pdf"
+    fmt = fmt.strip().lower()
+    if fmt not in HANDOUT_FORMATS:
+        raise OptionError(f"option --format must be one of {', '.join(HANDOUT_FORMATS)}, got {fmt!r}.")
+    if fmt == "tex" and suffix == "pdf" and not Path(output).is_dir():
+        raise OptionError(f"option -o names {output!r} but --format is tex, which writes a folder; name the "
+                          f"folder.")
+    names = tuple(dict.fromkeys(names))  # a scenario given twice is one section
+    bases = [load(name) for name in names]
+    scenarios = tuple(base.with_overrides(v=v, L=L) for base in bases)
+    frames = tuple(frames_of(frame, s.v) for s in scenarios)
+    stems = tuple(stem_of(name) for name in names)
+    if len(set(stems)) < len(stems):
+        same = next(s for s in stems if stems.count(s) > 1)
+        raise OptionError(f"two scenarios are both named {same}; rename one of the files.")
+    kind = "worksheet" if worksheet else "handout"
+    stem = output_name("_".join(stems), bases[0], v, L, frames[0], "default", (), kind)
+    if style != HANDOUT_STYLE:
+        stem += f"_{style}"
+    if paper != HANDOUT_PAPER:
+        stem += f"_{paper}"
+    if fmt == "tex":
+        path = Path(output) if output is not None and not Path(output).is_dir() else \
+            Path(output if output is not None else DEFAULT_FOLDER) / stem
+    else:
+        folder, file = destination(output, 1, ("pdf",))
+        path = file if file is not None else folder / f"{stem}.pdf"
+    return HandoutJob(names, scenarios, frames, stems, fmt, path)
+
+
+def prepare_handout(job: HandoutJob, output: str | None) -> None:
+    """Before anything is computed: create the default folder (only it), check the file or the pieces' folder."""
+    from .output import check_folder
+
+    if output is None:
+        _make_default_folder()
+    if job.fmt == "tex":
+        check_folder(job.path, "the LaTeX pieces")
+    else:
+        check_target(job.path)

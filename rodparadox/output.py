@@ -120,3 +120,33 @@ def _umask() -> int:
     except OSError:
         pass
     return 0o022
+
+
+def check_folder(folder: str | os.PathLike, what: str) -> Path:
+    """A folder to write `what` into: an existing folder that can be written, or a new one whose parent exists
+    and can be written (the caller creates it, `make_folder`)."""
+    folder = Path(folder)
+    if folder.is_dir():
+        check_target(folder / ".probe")  # can be written into
+        return folder
+    if folder.exists():
+        raise OutputError(f"cannot write {what} into {folder}: it is a file, not a folder.")
+    parent = folder.absolute().parent
+    if not parent.is_dir():
+        raise OutputError(f"cannot create the folder {folder} for {what}: the folder {folder.parent} does not "
+                          f"exist; create it first.")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise OutputError(f"cannot create the folder {folder} for {what}: permission denied in the folder "
+                          f"{folder.parent}.")
+    return folder
+
+
+def write_folder(folder: str | os.PathLike, files: dict[str, bytes]) -> list[tuple[Path, bool]]:
+    """Write every file of `files` (name -> bytes) into `folder`, creating it if missing; each file atomically,
+    an unchanged one left alone. Returns (path, written) in the order given."""
+    folder = Path(folder)
+    try:
+        folder.mkdir(exist_ok=True)
+    except OSError as e:
+        raise OutputError(f"cannot create the folder {folder}: {_reason(e)}.") from None
+    return [(folder / name, write_atomic(folder / name, data)) for name, data in files.items()]

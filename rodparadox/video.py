@@ -28,8 +28,8 @@ from typing import Iterable
 
 import numpy as np
 
-from .errors import OptionError, OutputError, ToolMissing, WriteFailed
-from .output import check_target, write_atomic
+from .errors import OptionError, ToolMissing, WriteFailed
+from .output import check_folder as check_output_folder, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
 #: frame rates a GIF stores exactly: it keeps each frame's duration in hundredths of a second
@@ -344,20 +344,7 @@ class PngSink(_Sink):
 
 def check_folder(folder: str | os.PathLike) -> Path:
     """The folder of the stills: an existing folder, or a new one whose parent exists and can be written."""
-    folder = Path(folder)
-    if folder.is_dir():
-        check_target(folder / ".probe")  # can be written into
-        return folder
-    if folder.exists():
-        raise OutputError(f"cannot write the stills into {folder}: it is a file, not a folder.")
-    parent = folder.absolute().parent
-    if not parent.is_dir():
-        raise OutputError(f"cannot create the folder {folder} for the stills: the folder {folder.parent} does not "
-                          f"exist; create it first.")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise OutputError(f"cannot create the folder {folder} for the stills: permission denied in the folder "
-                          f"{folder.parent}.")
-    return folder
+    return check_output_folder(folder, "the stills")
 
 
 def png_bytes(frame: np.ndarray) -> bytes:

@@ -11,6 +11,9 @@
    against twenty separate `plot` processes.
 3. The ledger figure: `sears-paradox ledger fig2 --format svg` as a whole
    process against `sears-paradox plot fig2` (target <= 1.2), interleaved.
+4. The handout: `sears-paradox handout fig2` (the PDF) and `handout fig2
+   --worksheet` as whole processes against `sears-paradox plot fig2`
+   (target <= 3), interleaved.
 It prints the ratios of median wall-clock times (the targets), of the best
 (minimum) wall-clock times and of median CPU times (user + system, which other
 jobs on the machine disturb least), and the size of fig2.svg.
@@ -149,14 +152,21 @@ def main() -> None:
 
         ledger = command() + ["ledger", "fig2", "--format", "svg", "-o", "out"]
         timed(ledger, work)
-        single = {"tool": [], "bare": [], "bare_lines": [], "ledger": []}
+        handout = command() + ["handout", "fig2", "-o", "out"]
+        worksheet = handout + ["--worksheet"]
+        timed(handout, work)
+        single = {"tool": [], "bare": [], "bare_lines": [], "ledger": [], "handout": [], "worksheet": []}
         for _ in range(args.repeat):  # interleaved, so drifts in machine load hit all alike
             (work / "out" / "fig2.svg").unlink(missing_ok=True)
             (work / "out" / "fig2_ledger.svg").unlink(missing_ok=True)
+            (work / "out" / "fig2_handout.pdf").unlink(missing_ok=True)
+            (work / "out" / "fig2_worksheet.pdf").unlink(missing_ok=True)
             single["tool"].append(timed(plot + ["fig2", "-o", "out"], work))
             single["bare"].append(timed(bare + ["full"], work))
             single["bare_lines"].append(timed(bare + ["lines"], work))
             single["ledger"].append(timed(ledger, work))
+            single["handout"].append(timed(handout, work))
+            single["worksheet"].append(timed(worksheet, work))
         size = (work / "out" / "fig2.svg").stat().st_size
 
         configs = []
@@ -195,6 +205,10 @@ def main() -> None:
     print("    " + line("one_call", "twenty_processes"))
     print("the ledger figure, sears-paradox ledger fig2 --format svg against sears-paradox plot fig2 (target <= 1.2):")
     print("    " + line("ledger", "tool"))
+    print("the handout, sears-paradox handout fig2 (PDF) against sears-paradox plot fig2 (target <= 3):")
+    print("    " + line("handout", "tool"))
+    print("  and the worksheet, handout fig2 --worksheet:")
+    print("    " + line("worksheet", "tool"))
     print(f"fig2.svg     : {size} bytes ({size / 1024:.0f} KiB)")
     print(f"(medians of {args.repeat} and {args.batch_repeat} runs; Python {sys.version.split()[0]}, "
           f"{os.cpu_count()} CPUs)")

@@ -1,0 +1,124 @@
+"""`sears-paradox handout`: names, paper sizes, the PDF's text against `events`, the worksheet's answer key,
+the LaTeX folder, determinism, and bad input (one sentence, exit 2, nothing written)."""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+
+import pytest
+from click.testing import CliRunner
+
+from sears_paradox_cli.main import main
+
+pypdf = pytest.importorskip("pypdf")
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, list(args))
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+def error_of(*args, expect=2) -> str:
+    result = run("handout", *args, expect=expect)
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1 and "Traceback" not in result.output, result.output
+    return lines[0][len("Error: "):]
+
+
+@pytest.fixture
+def here(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def pages_text(path) -> list[str]:
+    return [page.extract_text() for page in pypdf.PdfReader(io.BytesIO(path.read_bytes())).pages]
+
+
+def normalised(text: str) -> str:
+    """Extracted text with the real minus written as '-' and runs of white space as one space."""
+    return re.sub(r"\s+", " ", text.replace("\N{MINUS SIGN}", "-"))
+
+
+def events_coordinates(*args) -> list[str]:
+    """Every x and t `sears-paradox events` prints, as printed."""
+    out = run("events", *args).output
+    rows = [line.split() for line in out.splitlines() if re.match(r"\s+[AB]\d+\s", line)]
+    return [cell for row in rows for cell in row[2:4]]
+
+
+def test_default_is_an_a4_pdf_in_outputs_and_the_same_bytes_twice(here):
+    assert run("handout", "fig2", "--v", "0.6").output == "outputs/fig2_handout_v0.6.pdf\n"
+    path = here / "outputs" / "fig2_handout_v0.6.pdf"
+    reader = pypdf.PdfReader(io.BytesIO(path.read_bytes()))
+    for page in reader.pages:
+        assert float(page.mediabox.width) == pytest.approx(595.276, abs=0.01)
+        assert float(page.mediabox.height) == pytest.approx(841.89, abs=0.01)
+    assert len(reader.pages) >= 2
+    first, stamp = path.read_bytes(), os.stat(path).st_mtime_ns
+    assert run("handout", "fig2", "--v", "0.6").output == f"{path.relative_to(here)} (unchanged)\n"
+    assert os.stat(path).st_mtime_ns == stamp
+    path.unlink()
+    assert run("handout", "fig2", "--v", "0.6", "-q").output == ""
+    assert path.read_bytes() == first
+
+
+def test_the_pdf_holds_the_event_coordinates_as_events_prints_them(here):
+    run("handout", "fig2", "--v", "0.73")
+    text = normalised(" ".join(pages_text(here / "outputs" / "fig2_handout_v0.73.pdf")))
+    for cell in events_coordinates("fig2", "--v", "0.73"):
+        assert cell in text, cell
+
+
+def test_letter_paper_and_names(here):
+    assert run("handout", "fig1", "--paper", "letter").output == "outputs/fig1_handout_letter.pdf\n"
+    for page in pypdf.PdfReader(here / "outputs" / "fig1_handout_letter.pdf").pages:
+        assert (float(page.mediabox.width), float(page.mediabox.height)) == (612.0, 792.0)
+
+
+def test_the_worksheets_answer_key_holds_what_its_tables_leave_blank(here):
+    assert run("handout", "fig2", "--worksheet").output == "outputs/fig2_worksheet.pdf\n"
+    pages = [normalised(t) for t in pages_text(here / "outputs" / "fig2_worksheet.pdf")]
+    key = next(k for k, t in enumerate(pages) if "Answer key" in t)
+    before, after = " ".join(pages[:key]), " ".join(pages[key:])
+    coordinates = events_coordinates("fig2")
+    assert all(c in after for c in coordinates)
+    assert not any(c in before for c in coordinates if len(c.strip("+-0.")) > 2)
+    assert len(re.findall(r"Question \d+", before)) in range(5, 9)
+
+
+def test_several_scenarios_make_one_document_with_a_section_each(here):
+    assert run("handout", "fig1", "fig2").output == "outputs/fig1_fig2_handout.pdf\n"
+    text = " ".join(pages_text(here / "outputs" / "fig1_fig2_handout.pdf"))
+    assert "fig1" in text and "fig2" in text
+
+
+def test_tex_writes_a_folder_of_pieces(here):
+    out = run("handout", "fig2", "--format", "tex").output.splitlines()
+    folder = here / "outputs" / "fig2_handout"
+    assert f"outputs/fig2_handout/handout.tex" in out
+    names = {p.name for p in folder.iterdir()}
+    assert "handout.tex" in names
+    assert any(n.endswith(".dat") for n in names) and any(n.endswith(".pdf") for n in names)
+    assert all(line.endswith("(unchanged)") for line in run("handout", "fig2", "--format", "tex").output.splitlines())
+
+
+@pytest.mark.parametrize("args, message", [
+    (["fig2", "--paper", "a5"], "'--paper'"),
+    (["fig2", "--format", "docx"], "'--format'"),
+    (["fig2", "--v", "1"], "v must be"),
+    (["no_such_scenario"], "no_such_scenario"),
+    (["fig2", "--format", "tex", "-o", "x.pdf"], "writes a folder"),
+    (["fig2", "-o", "missing/x.pdf"], "does not exist"),
+    (["fig2", "--frame", "0.5,sideways"], "option --frame"),
+])
+def test_bad_input_is_one_sentence_and_writes_nothing(here, args, message):
+    assert message in error_of(*args)
+    assert not (here / "outputs").exists() or not any((here / "outputs").iterdir())
+
+
+def test_an_unwritable_folder_is_refused(here, unwritable_folder):
+    assert "cannot write" in error_of("fig2", "-o", str(unwritable_folder))
