@@ -206,8 +206,11 @@ class TextRuns(Artist):
         scale = renderer.points_to_pixels(1.0)  # 1 in a PDF (72 dpi); Agg's dpi in a PNG
         gc = renderer.new_gc()
         gc.set_foreground("black")
+        # renderers that count y down from the top (Agg, for a PNG picture of a page) take it flipped, as Text does
+        height = renderer.get_canvas_width_height()[1] if renderer.flipy() else None
         for run in self.runs:
-            renderer.draw_text(gc, run.left * scale, run.y * scale, run.text, run.font, 0.0)
+            y = run.y * scale if height is None else height - run.y * scale
+            renderer.draw_text(gc, run.left * scale, y, run.text, run.font, 0.0)
         gc.restore()
         self.stale = False
 
@@ -682,3 +685,17 @@ def to_pdf(handout: Handout, paper: str = "a4", style: str = "print") -> bytes:
             for figure in figures:
                 pdf.savefig(figure)
     return buffer.getvalue()
+
+
+#: pixels per inch of a page shown as a picture (the README's): A4 at 60 dpi is 496 x 702 pixels
+PAGE_PICTURE_DPI = 60
+
+
+def page_png(handout: Handout, page: int = 0, paper: str = "a4", style: str = "print",
+             dpi: int = PAGE_PICTURE_DPI) -> bytes:
+    """One page (from 0) as a PNG picture, to show a handout where a PDF cannot be (the README)."""
+    figure = page_figures(handout, paper, style)[page]
+    with render.style_context(style):
+        buffer = io.BytesIO()
+        figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": None})
+        return buffer.getvalue()

@@ -122,3 +122,40 @@ def test_bad_input_is_one_sentence_and_writes_nothing(here, args, message):
 
 def test_an_unwritable_folder_is_refused(here, unwritable_folder):
     assert "cannot write" in error_of("fig2", "-o", str(unwritable_folder))
+
+
+def _readme_handout_section() -> str:
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    return readme[readme.index("<!-- handout:start -->"):readme.index("<!-- handout:end -->")]
+
+
+def test_readme_lists_the_questions_fig2s_worksheet_asks():
+    from rodparadox.engine import run as simulate
+    from rodparadox.frames import paper_frames
+    from rodparadox.handout import questions
+    from rodparadox.scenario import load
+
+    section = _readme_handout_section()
+    listed = section[section.index("<!-- fig2-questions:start -->"):section.index("<!-- fig2-questions:end -->")]
+    history = simulate(load("fig2"))
+    asked = [f"{q.number}. {q.text}" for q in questions(history, paper_frames(0.6))]
+    assert listed.split("\n")[1:-1] == asked
+
+
+def test_readme_page_picture_is_the_first_page_the_tool_sets_now():
+    from pathlib import Path
+
+    import matplotlib
+
+    from rodparadox.readme_pictures import handout_first_page
+
+    root = Path(__file__).resolve().parent.parent
+    assert "outputs/readme/fig2_handout_page1.png" in _readme_handout_section()
+    committed = (root / "outputs" / "readme" / "fig2_handout_page1.png").read_bytes()
+    made_with = (root / "outputs" / "readme" / "made-with.txt").read_text().split()
+    drawn = handout_first_page()
+    assert drawn[:8] == committed[:8] == b"\x89PNG\r\n\x1a\n"
+    if made_with == ["matplotlib", matplotlib.__version__]:  # another matplotlib draws other pixels
+        assert drawn == committed, "outputs/readme/fig2_handout_page1.png is out of date: run `make readme-figures`"

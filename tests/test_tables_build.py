@@ -49,7 +49,7 @@ def test_events_in_s_prime_at_v_06_are_the_papers_fractions():
     for label in ("A₁", "B₁"):
         assert rows[label][3].endswith("(17/12)")
         assert number(rows[label][3]) == pytest.approx(17 / 12, abs=1e-6)
-    assert rows["A₁"][7] == f"+0.882353 (15/17)"
+    assert rows["A₁"][7] == "+0.882353 (15/17)"
     assert table.header[2:4] == ("x′", "t′")
     assert [row[0].text for row in table.rows][:2] == ["B₁", "A₁"]  # one instant of S′: the rod takes B₁ first
 
