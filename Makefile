@@ -36,5 +36,5 @@ readme-figures:
 	@mkdir -p outputs/readme
 	$(SEARS_PARADOX) plot fig1 fig2 -o outputs/readme
 	$(SEARS_PARADOX) ledger fig2 -o outputs/readme/fig2_ledger.svg
-	$(PYTHON) -m rodparadox.readme_pictures outputs/readme
+	$(PYTHON) -m rodparadox.handout.readme_pictures outputs/readme
 	@$(PYTHON) -c 'import matplotlib; print("matplotlib", matplotlib.__version__)' > outputs/readme/made-with.txt

@@ -1,7 +1,7 @@
 """`sears-paradox animate`: the paradox in motion, as a GIF, an MP4 or numbered PNG stills.
 
-Thin: parse the options, plan and check through `rodparadox.jobs`, `rodparadox.animation` and
-`rodparadox.video`, then draw (matplotlib only from here on) and stream the frames to the file.
+Thin: parse the options, plan and check through `sears_paradox_cli.planning`, `rodparadox.animate.timeline` and
+`rodparadox.animate.encoders`, then draw (matplotlib only from here on) and stream the frames to the file.
 """
 
 from __future__ import annotations
@@ -54,9 +54,9 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
 
     Example: sears-paradox animate fig2 --fps 10 --seconds 2
     """
-    from rodparadox import jobs as planned
-    from rodparadox.animation import frame_count, timeline
-    from rodparadox.video import check_fps, require_ffmpeg
+    from sears_paradox_cli import planning as planned
+    from rodparadox.animate.timeline import frame_count, timeline
+    from rodparadox.animate.encoders import check_fps, require_ffmpeg
 
     job = planned.plan_animation(scenario, v=v, L=L, frame=frame, mode=mode, fmt=fmt, output=output, style=style)
     check_fps(job.fmt, fps)
@@ -67,8 +67,8 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     planned.prepare_animation(job, output)
     line = timeline(history, job.frames, mode, count)
 
-    from rodparadox.animate_draw import frames_of  # matplotlib: only now, after every input has been checked
-    from rodparadox.video import write_frames
+    from rodparadox.animate.scenes import frames_of  # matplotlib: only now, after every input has been checked
+    from rodparadox.animate.encoders import write_frames
 
     drawn = frames_of(history, job.frames, mode, style, line)
     with click.progressbar(drawn, length=count, label=str(job.path), file=sys.stderr,

@@ -89,14 +89,14 @@ def checked_output(output: str | None) -> str | None:
 
 def load_scenario(name: str, v: float | None, L: float | None):
     """A built-in scenario or YAML file, with the command line's --v and --L."""
-    from rodparadox.scenario import load
+    from rodparadox.io.scenario import load
 
     return load(name).with_overrides(v=v, L=L)
 
 
 def run_scenario(scenario, source: str):
     """Run a scenario; `source` is the name or path the user gave, to start any error sentence."""
-    from rodparadox.engine import run
+    from rodparadox.physics.engine import run
     from rodparadox.errors import ScenarioError
 
     try:
@@ -108,7 +108,7 @@ def run_scenario(scenario, source: str):
 def checked_frame_velocity(u: float | None) -> float | None:
     """--frame-velocity, checked by the library's one rule (`frames.check_velocity`); the message names the option."""
     from rodparadox.errors import FrameError
-    from rodparadox.frames import check_velocity
+    from rodparadox.physics.frames import check_velocity
 
     try:
         return None if u is None else check_velocity(u)
@@ -127,8 +127,8 @@ quiet_option = click.option("-q", "--quiet", is_flag=True,
 
 
 def style_option(command):
-    """--style, as every drawing command takes it (the names come from `rodparadox.styles`, which imports nothing)."""
-    from rodparadox.styles import STYLE_NAMES
+    """--style, as every drawing command takes it (the names come from `rodparadox.render.styles`, which imports nothing)."""
+    from rodparadox.render.styles import STYLE_NAMES
 
     return click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
                         help="default: colour, colour-blind safe; print: black and white, serif; "

@@ -1,7 +1,7 @@
 """`sears-paradox handout`: a printable handout or worksheet (PDF), or its LaTeX pieces for authors.
 
-Thin: parse the options, plan and check through `rodparadox.jobs`, build the document's blocks with
-`rodparadox.handout`, set them with `rodparadox.handout_pdf` or `rodparadox.handout_tex`, write.
+Thin: parse the options, plan and check through `sears_paradox_cli.planning`, build the document's blocks with
+`rodparadox.handout.build`, set them with `rodparadox.handout.pdf` or `rodparadox.handout.tex`, write.
 """
 
 from __future__ import annotations
@@ -46,23 +46,23 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
 
     Example: sears-paradox handout fig2 --v 0.6 --worksheet
     """
-    from rodparadox import jobs as planned
+    from sears_paradox_cli import planning as planned
 
     job = planned.plan_handout(scenarios, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                                paper=paper.lower(), worksheet=worksheet)
     histories = [run_scenario(s, name) for s, name in zip(job.scenarios, job.names)]
     planned.prepare_handout(job, output)
 
-    from rodparadox.handout import build
-    from rodparadox.output import write_atomic, write_folder
+    from rodparadox.handout.build import build
+    from rodparadox.io.output import write_atomic, write_folder
 
     document = build(list(zip(job.stems, histories, job.frames)), worksheet=worksheet)
     if job.fmt == "pdf":
-        from rodparadox.handout_pdf import to_pdf  # matplotlib: only now, after every input has been checked
+        from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 
         written = [(job.path, write_atomic(job.path, to_pdf(document, paper.lower(), style)))]
     else:
-        from rodparadox.handout_tex import tex_files
+        from rodparadox.handout.tex import tex_files
 
         written = write_folder(job.path, tex_files(document, paper.lower(), style))
     if not quiet:

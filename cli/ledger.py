@@ -1,7 +1,7 @@
 """`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (README, "The ledger").
 
-Thin: parse the options, call `rodparadox.ledger_report` (text, JSON, CSV),
-`rodparadox.tables` (Markdown, LaTeX) or `rodparadox.ledger_figure` (SVG,
+Thin: parse the options, call `rodparadox.io.ledger_report` (text, JSON, CSV),
+`rodparadox.tables.build` (Markdown, LaTeX) or `rodparadox.render.ledger_figure` (SVG,
 PDF, PNG), report what was written.
 matplotlib is imported only to draw a figure.
 """
@@ -13,7 +13,7 @@ from pathlib import Path
 
 import click
 
-from rodparadox.styles import FORMATS as FIGURE_FORMATS
+from rodparadox.render.styles import FORMATS as FIGURE_FORMATS
 
 from .common import (BadInput, L_option, emit, load_scenario, quiet_option, reports_errors, run_scenario, style_option,
                      v_option)
@@ -90,8 +90,8 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
 
     Example: sears-paradox ledger fig1 --frame moving --at 0.5,1,1.5
     """
-    from rodparadox import jobs as planned
-    from rodparadox.output import check_target, write_atomic
+    from sears_paradox_cli import planning as planned
+    from rodparadox.io.output import check_target, write_atomic
 
     if output is not None and not output.strip():
         raise BadInput(f"option -o must name a file or folder, got {output!r}.")
@@ -105,7 +105,8 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
             check_target(output)
         s = load_scenario(scenario, v, L)
         frames = planned.frames_of(frame, s.v)
-        from rodparadox import ledger_report, tables
+        from rodparadox.io import ledger_report
+        from rodparadox.tables import build as tables
 
         text = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
                 "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](run_scenario(s, scenario),
@@ -126,7 +127,8 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     histories = [run_scenario(job.scenario, job.name) for job in jobs]
     planned.prepare(jobs, output)
 
-    from rodparadox import ledger_figure, render  # matplotlib: only now, after every input has been checked
+    from rodparadox import render
+    from rodparadox.render import ledger_figure  # matplotlib: only now, after every input has been checked
 
     for history, job in zip(histories, jobs):
         figure = ledger_figure.draw(history, job.frames, style)

@@ -76,7 +76,7 @@ def list_scenarios() -> None:
 
     Example: sears-paradox list
     """
-    from rodparadox.scenario import builtin_names, describe
+    from rodparadox.io.scenario import builtin_names, describe
 
     names = builtin_names()
     width = max(map(len, names), default=0)
@@ -99,17 +99,17 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     Example: sears-paradox events fig2 --v 0.8 --frame-velocity 0.3
     """
-    from rodparadox.frames import paper_frames
+    from rodparadox.physics.frames import paper_frames
 
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
     history = run_scenario(s, scenario)
     if fmt == "text":
-        from rodparadox.export import to_table
+        from rodparadox.io.export import to_table
 
         emit(to_table(history, frames), nl=False)
         return
-    from rodparadox import tables
+    from rodparadox.tables import build as tables
 
     emit((tables.events_markdown if fmt == "markdown" else tables.events_latex)(history, frames), nl=False)
 
@@ -134,9 +134,9 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     Example: sears-paradox export fig2 --v 0.6 -o fig2.json
     """
-    from rodparadox.export import to_csv, to_json
-    from rodparadox.frames import paper_frames
-    from rodparadox.output import check_target, write_atomic
+    from rodparadox.io.export import to_csv, to_json
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.io.output import check_target, write_atomic
 
     fmt = export_format(checked_output(output), fmt)
     if output != "-":

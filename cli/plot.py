@@ -1,6 +1,6 @@
 """`sears-paradox plot`: draw the paper's Minkowski diagrams into SVG, PDF or PNG files.
 
-Thin: parse the options, call `rodparadox.render` and `rodparadox.output`,
+Thin: parse the options, call `rodparadox.render` and `rodparadox.io.output`,
 print the paths written. matplotlib is imported inside the command, so
 `--help` never loads it.
 """
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import click
 
-from rodparadox.styles import FORMATS
+from rodparadox.render.styles import FORMATS
 
 from .common import L_option, emit, quiet_option, reports_errors, run_scenario, style_option, v_option
 
@@ -57,7 +57,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     Example: sears-paradox plot fig2 --v 0.6
     """
-    from rodparadox import jobs as planned
+    from sears_paradox_cli import planning as planned
 
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time}
@@ -69,7 +69,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     planned.prepare(jobs, output)
 
     from rodparadox import render  # matplotlib: only now, after every input has been checked
-    from rodparadox.output import write_atomic
+    from rodparadox.io.output import write_atomic
 
     options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind

@@ -134,13 +134,13 @@ def scene_data(path: Path) -> None:
     from matplotlib.patches import Polygon
 
     from rodparadox import render
-    from rodparadox.animate_draw import NowScene
-    from rodparadox.animation import frame_count, timeline
-    from rodparadox.engine import run
-    from rodparadox.frames import paper_frames
+    from rodparadox.animate.scenes import NowScene
+    from rodparadox.animate.timeline import frame_count, timeline
+    from rodparadox.physics.engine import run
+    from rodparadox.physics.frames import paper_frames
     from rodparadox.render.strip import COLOUR_BAR_LABEL, COLOUR_MAPS
-    from rodparadox.scenario import load
-    from rodparadox.styles import STYLES
+    from rodparadox.io.scenario import load
+    from rodparadox.render.styles import STYLES
 
     scenario = load("fig2")
     history = run(scenario)
@@ -277,7 +277,7 @@ def speed(args, work: Path) -> None:
 
 
 def memory(args, work: Path) -> None:
-    from rodparadox.video import find_ffmpeg
+    from rodparadox.animate.encoders import find_ffmpeg
 
     fps = 25
     seconds = args.memory_frames / fps

@@ -82,9 +82,9 @@ def figure_data(path: Path) -> None:
     from matplotlib.patches import Polygon
 
     from rodparadox import render
-    from rodparadox.engine import run
-    from rodparadox.frames import paper_frames
-    from rodparadox.scenario import load
+    from rodparadox.physics.engine import run
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.io.scenario import load
 
     scenario = load("fig2")
     figure = render.draw(run(scenario), paper_frames(scenario.v))

@@ -9,11 +9,11 @@ from pathlib import Path
 
 import numpy as np
 
-from rodparadox import tables
-from rodparadox.document import Diagram, Handout, Heading, Paragraph, Question, Section, Strips
-from rodparadox.engine import run
-from rodparadox.frames import paper_frames, time_window
-from rodparadox.scenario import load
+from rodparadox.tables import build as tables
+from rodparadox.handout.document import Diagram, Handout, Heading, Paragraph, Question, Section, Strips
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import paper_frames, time_window
+from rodparadox.io.scenario import load
 
 SETUP = {
     "fig1": ("Particles A and B, each of the rod's mass M, approach a rod of proper length L at rest in S, A "
@@ -92,7 +92,7 @@ def handout(*names: str, worksheet: bool = False, strips: bool = True) -> Handou
 
 
 if __name__ == "__main__":
-    from rodparadox.handout_pdf import to_pdf
+    from rodparadox.handout.pdf import to_pdf
 
     out = Path(sys.argv[1] if len(sys.argv) > 1 else "outputs/handout-samples")
     out.mkdir(parents=True, exist_ok=True)

@@ -85,7 +85,7 @@ def test_output_file_and_folder(here):
 
 
 def test_mp4_has_its_frames(here):
-    from rodparadox.video import find_ffmpeg
+    from rodparadox.animate.encoders import find_ffmpeg
 
     exe = find_ffmpeg()
     if exe is None:
@@ -138,9 +138,9 @@ def test_an_unwritable_folder_is_refused(here, unwritable_folder):
 
 
 def test_mp4_without_ffmpeg_is_one_sentence_and_exit_1(here, monkeypatch):
-    import rodparadox.video
+    import rodparadox.animate.encoders
 
-    monkeypatch.setattr(rodparadox.video, "find_ffmpeg", lambda: None)
+    monkeypatch.setattr(rodparadox.animate.encoders, "find_ffmpeg", lambda: None)
     assert error_of("fig2", "--format", "mp4", expect=1) == (
         "--format mp4 needs ffmpeg, which was found neither on the PATH nor in the imageio-ffmpeg package; install "
         "one of them: apt-get install ffmpeg, or pip install 'sears-paradox[video]'.")

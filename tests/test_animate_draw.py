@@ -13,13 +13,13 @@ import pytest
 from matplotlib.colors import Normalize
 
 from rodparadox import render
-from rodparadox.animate_draw import LENS_BELOW, NowScene, frames_of
-from rodparadox.animation import colour_scale, timeline
-from rodparadox.engine import run
-from rodparadox.frames import Frame, paper_frames, time_window
+from rodparadox.animate.scenes import LENS_BELOW, NowScene, frames_of
+from rodparadox.animate.timeline import colour_scale, timeline
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.render.strip import PRINT_RAMP, colour_map
-from rodparadox.rod import material_worldline
-from rodparadox.scenario import load
+from rodparadox.physics.rod import material_worldline
+from rodparadox.io.scenario import load
 
 #: drawn coordinates against exact ones, in units of L: rounding only
 AGREE = 1e-12
@@ -186,7 +186,7 @@ def test_boost_frames_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
     """In the frame of velocity u, S's t axis (x = 0 of S) has slope dx/dt = -u and S''s (velocity -v) the
     relative velocity (-v - u)/(1 + v u) (velocity addition): read from the pixels' colours is too loose, so the drawn lines'
     direction is checked, at the first, middle and last frame."""
-    import rodparadox.animate_draw as drawing
+    import rodparadox.animate.scenes as drawing
 
     v = 0.6
     h = history("fig2", v)

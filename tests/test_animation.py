@@ -7,14 +7,14 @@ import math
 import numpy as np
 import pytest
 
-from rodparadox.animation import (FLASH_FRACTION, MAX_FRAMES, boost_ends, boost_timeline, boost_velocities,
+from rodparadox.animate.timeline import (FLASH_FRACTION, MAX_FRAMES, boost_ends, boost_timeline, boost_velocities,
                                   colour_scale, frame_count, now_timeline, now_times, strip_at)
-from rodparadox.engine import run
+from rodparadox.physics.engine import run
 from rodparadox.errors import OptionError
-from rodparadox.frames import Frame, paper_frames, time_window
-from rodparadox.kinematics import Event
-from rodparadox.rod import material_worldline
-from rodparadox.scenario import load
+from rodparadox.physics.frames import Frame, paper_frames, time_window
+from rodparadox.physics.kinematics import Event
+from rodparadox.physics.rod import material_worldline
+from rodparadox.io.scenario import load
 
 #: a position or time computed two ways (engine world-line, material world-line, hand formula) agrees to
 #: this, in units of L: a few hundred ulps of the coordinates involved (up to about 10 L)
@@ -223,8 +223,8 @@ def test_frame_count_refuses_in_one_sentence(seconds, fps, message):
 def test_now_frames_show_the_diagram_with_a_moving_now_line_and_are_reproducible():
     """The drawing: every frame the same size; the now-line's colour (#CC0033) appears on a row of pixels that climbs
     from frame to frame (t grows upward); two runs give identical pixels."""
-    from rodparadox.animate_draw import frames_of
-    from rodparadox.animation import timeline as make_timeline
+    from rodparadox.animate.scenes import frames_of
+    from rodparadox.animate.timeline import timeline as make_timeline
 
     h = run(load("fig2"))
     frames = paper_frames(0.6)

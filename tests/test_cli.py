@@ -67,7 +67,7 @@ def test_the_commands_share_one_module_and_plot_does_not_import_main():
 @pytest.mark.parametrize("command", ["events", "export", "plot"])
 def test_any_library_error_is_one_sentence_and_exit_2(command, tmp_path, monkeypatch):
     """Every RodParadoxError is caught once, at the CLI edge: here one the frames module might raise."""
-    import rodparadox.frames
+    import rodparadox.physics.frames
     from rodparadox.errors import RodParadoxError
 
     class Refused(ValueError, RodParadoxError):
@@ -77,8 +77,8 @@ def test_any_library_error_is_one_sentence_and_exit_2(command, tmp_path, monkeyp
         raise Refused("frame velocity must be a number u with -1 < u < 1 (units of c), got 1.")
 
     monkeypatch.chdir(tmp_path)
-    monkeypatch.setattr(rodparadox.frames, "paper_frames", refuse)  # events, export
-    monkeypatch.setattr(rodparadox.frames, "Frame", refuse)  # plot
+    monkeypatch.setattr(rodparadox.physics.frames, "paper_frames", refuse)  # events, export
+    monkeypatch.setattr(rodparadox.physics.frames, "Frame", refuse)  # plot
     assert error_of(command, "fig2") == "frame velocity must be a number u with -1 < u < 1 (units of c), got 1."
     assert list(tmp_path.iterdir()) == []
 
@@ -192,9 +192,9 @@ def test_export_json_contract_fig1():
 
 
 def test_export_json_round_trips_the_library_floats_exactly():
-    from rodparadox.engine import run as simulate
-    from rodparadox.frames import Frame, view
-    from rodparadox.scenario import load
+    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.frames import Frame, view
+    from rodparadox.io.scenario import load
 
     doc = json.loads(run("export", "fig2", "--v", "0.7").output)
     fv = view(simulate(load("fig2").with_overrides(v=0.7)), Frame("moving", -0.7))
@@ -290,7 +290,7 @@ def test_export_to_an_unwritable_folder_writes_nothing(unwritable_folder):
 def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch):
     import os
 
-    from rodparadox import output
+    from rodparadox.io import output
     from rodparadox.errors import OutputError
 
     target = tmp_path / "keep.json"
@@ -402,8 +402,8 @@ def test_frame_velocity_names_keep_every_digit(u, name):
 
 def test_frames_library_names_and_bounds_frames():
     from rodparadox.errors import FrameError
-    from rodparadox.frames import FASTEST_FRAME, check_velocity, frame_of_velocity
-    from rodparadox.model import FASTEST
+    from rodparadox.physics.frames import FASTEST_FRAME, check_velocity, frame_of_velocity
+    from rodparadox.physics.model import FASTEST
 
     assert FASTEST_FRAME == FASTEST
     assert frame_of_velocity(-0.0).name == "u=0" and frame_of_velocity(0.5).name == "u=0.5"
@@ -464,7 +464,7 @@ def test_every_package_of_the_source_is_installed():
     """A non-editable install takes only the packages pyproject.toml names: rodparadox.render once went missing
     (`pip install .` then failed with ImportError on every drawing command; the editable test install hid it)."""
     root = Path(__file__).resolve().parent.parent
-    line = re.search(r"^packages = \[(.*)\]$", (root / "pyproject.toml").read_text(), re.M).group(1)
+    line = re.search(r"^packages = \[(.*?)\]$", (root / "pyproject.toml").read_text(), re.M | re.S).group(1)
     listed = set(re.findall(r'"([\w.]+)"', line))
     found = {".".join(p.relative_to(root).parent.parts) for p in (root / "rodparadox").rglob("__init__.py")}
     assert found <= listed, found - listed

@@ -10,9 +10,9 @@ import pytest
 from matplotlib.figure import Figure
 
 from rodparadox import render
-from rodparadox.engine import run
-from rodparadox.frames import paper_frames
-from rodparadox.scenario import load
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import paper_frames
+from rodparadox.io.scenario import load
 
 EXTRAS = render.Options(other_axes=True, light_cones=True, hyperbolae=True, grid=True, rod_lines=3, rod_now=True,
                         proper_time=True)

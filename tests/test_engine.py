@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from rodparadox.collision import elastic
-from rodparadox.engine import run
-from rodparadox.kinematics import Event
-from rodparadox.scenario import Particle, Scenario, Timing, load
+from rodparadox.physics.collision import elastic
+from rodparadox.physics.engine import run
+from rodparadox.physics.kinematics import Event
+from rodparadox.io.scenario import Particle, Scenario, Timing, load
 
 
 def add(u, w):

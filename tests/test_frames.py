@@ -1,4 +1,4 @@
-"""A history seen from one frame (`rodparadox.frames`): the time window every panel and export covers.
+"""A history seen from one frame (`rodparadox.physics.frames`): the time window every panel and export covers.
 
 Expected values come from the engine's raw world-line segments and impacts,
 boosted here with x' = g(x - u t), t' = g(t - u x) written out, never from
@@ -14,11 +14,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from rodparadox.engine import run
+from rodparadox.physics.engine import run
 from rodparadox.errors import FrameError, ScenarioError
-from rodparadox.frames import MAX_PANELS, Frame, parse_frames, view
-from rodparadox.kinematics import Line
-from rodparadox.scenario import builtin_names, load
+from rodparadox.physics.frames import MAX_PANELS, Frame, parse_frames, view
+from rodparadox.physics.kinematics import Line
+from rodparadox.io.scenario import builtin_names, load
 
 SPEEDS = (0.3, 0.6, 0.9, 0.95, 0.99)
 #: the frames of the checks: S, S', and frames on either side of both, up to u = 0.9

@@ -132,10 +132,10 @@ def _readme_handout_section() -> str:
 
 
 def test_readme_lists_the_questions_fig2s_worksheet_asks():
-    from rodparadox.engine import run as simulate
-    from rodparadox.frames import paper_frames
-    from rodparadox.handout import questions
-    from rodparadox.scenario import load
+    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.handout.build import questions
+    from rodparadox.io.scenario import load
 
     section = _readme_handout_section()
     listed = section[section.index("<!-- fig2-questions:start -->"):section.index("<!-- fig2-questions:end -->")]
@@ -149,7 +149,7 @@ def test_readme_page_picture_is_the_first_page_the_tool_sets_now():
 
     import matplotlib
 
-    from rodparadox.readme_pictures import handout_first_page
+    from rodparadox.handout.readme_pictures import handout_first_page
 
     root = Path(__file__).resolve().parent.parent
     assert "outputs/readme/fig2_handout_page1.png" in _readme_handout_section()

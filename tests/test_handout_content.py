@@ -1,4 +1,4 @@
-"""What a handout and a worksheet say (`rodparadox.handout`), checked against hand derivations, never against the
+"""What a handout and a worksheet say (`rodparadox.handout.build`), checked against hand derivations, never against the
 code's own output: Fig. 2 and Fig. 1 at v = 0.6 in closed form (the numbers are derived in the comments), the
 worksheet's answers against an independent numpy computation from the events, and the shape of the document."""
 
@@ -12,12 +12,13 @@ import sys
 import numpy as np
 import pytest
 
-from rodparadox import handout, tables
-from rodparadox.document import Diagram, Handout, Heading, Paragraph, Question, Strips, Table
-from rodparadox.engine import run
-from rodparadox.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
-from rodparadox.rod import rod_on_slice
-from rodparadox.scenario import builtin_names, load, parse
+from rodparadox.handout import build as handout
+from rodparadox.tables import build as tables
+from rodparadox.handout.document import Diagram, Handout, Heading, Paragraph, Question, Strips, Table
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
+from rodparadox.physics.rod import rod_on_slice
+from rodparadox.io.scenario import builtin_names, load, parse
 
 
 def history(name: str, v: float | None = None):
@@ -308,7 +309,7 @@ def test_items_may_carry_their_own_frames_and_moving_means_each_scenarios_own_s_
 
 
 def test_the_module_is_pure():
-    code = "import sys, rodparadox.handout; assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
+    code = "import sys, rodparadox.handout.build; assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
     subprocess.run([sys.executable, "-c", code], check=True)
 
 

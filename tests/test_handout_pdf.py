@@ -20,13 +20,14 @@ from matplotlib.transforms import Bbox
 from matplotlib.text import Text
 
 from handout_samples import handout
-from rodparadox import render, tables
-from rodparadox.document import Cell, Handout, Heading, PageBreak, Paragraph, Question, Section, Table
-from rodparadox.engine import run
-from rodparadox.frames import paper_frames
-from rodparadox.handout_pdf import MARGIN, TextRuns, Type, page_figures, to_pdf
-from rodparadox.scenario import load
-from rodparadox.styles import STYLES
+from rodparadox import render
+from rodparadox.tables import build as tables
+from rodparadox.handout.document import Cell, Handout, Heading, PageBreak, Paragraph, Question, Section, Table
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import paper_frames
+from rodparadox.handout.pdf import MARGIN, TextRuns, Type, page_figures, to_pdf
+from rodparadox.io.scenario import load
+from rodparadox.render.styles import STYLES
 
 LOREM = ("The rod is struck at both ends by equal and opposite impulses that are simultaneous in its rest frame, "
          "and keeps its velocity in every frame, even where the impacts are not simultaneous.")
@@ -236,7 +237,7 @@ def test_two_runs_give_the_same_bytes(fig2_handout):
 def test_two_processes_give_the_same_bytes(fig2_worksheet):
     """Across separate Python processes (hash seeds, font caches and import order differ)."""
     script = ("import sys, hashlib; sys.path.insert(0, 'tests'); from handout_samples import handout; "
-              "from rodparadox.handout_pdf import to_pdf; "
+              "from rodparadox.handout.pdf import to_pdf; "
               "print(hashlib.sha256(to_pdf(handout('fig2', worksheet=True))).hexdigest())")
     root = Path(__file__).resolve().parent.parent
     digests = {subprocess.run([sys.executable, "-c", script], cwd=root, capture_output=True, text=True,

@@ -14,13 +14,13 @@ import sys
 import numpy as np
 import pytest
 
-from rodparadox.document import Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
-from rodparadox.engine import run
-from rodparadox.frames import frame_of_velocity, frame_symbol, frame_word, paper_frames, sampling_tolerance, view
-from rodparadox.handout_tex import data_files, file_stem, number, tex_files
-from rodparadox.scenario import load
-from rodparadox.table_formats import BLANK_RULE
-from rodparadox.tables import events_table, hidden_table, ledger_table
+from rodparadox.handout.document import Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import frame_of_velocity, frame_symbol, frame_word, paper_frames, sampling_tolerance, view
+from rodparadox.handout.tex import data_files, file_stem, number, tex_files
+from rodparadox.io.scenario import load
+from rodparadox.tables.formats import BLANK_RULE
+from rodparadox.tables.build import events_table, hidden_table, ledger_table
 
 V = 0.6
 G = 1 / math.sqrt(1 - V * V)  # 1.25
@@ -254,7 +254,7 @@ def test_a_handout_prints_its_questions_with_their_answers():
 
 
 def test_importing_the_writer_does_not_import_matplotlib():
-    code = "import sys, rodparadox.handout_tex; print('matplotlib' in sys.modules)"
+    code = "import sys, rodparadox.handout.tex; print('matplotlib' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
 

@@ -11,11 +11,11 @@ import pytest
 from click.testing import CliRunner
 
 from rodparadox import render
-from rodparadox.engine import run
-from rodparadox.frames import paper_frames, time_window
-from rodparadox.kinematics import Event
-from rodparadox.rod import clock_step, material_worldline
-from rodparadox.scenario import load
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import paper_frames, time_window
+from rodparadox.physics.kinematics import Event
+from rodparadox.physics.rod import clock_step, material_worldline
+from rodparadox.io.scenario import load
 from sears_paradox_cli.main import main
 
 INSIDE = render.Options(rod_lines=5, rod_now=True, proper_time=True)

@@ -27,11 +27,11 @@ import pytest
 from hypothesis import HealthCheck, assume, example, given, note, settings
 from hypothesis import strategies as st
 
-from rodparadox.engine import History, run
+from rodparadox.physics.engine import History, run
 from rodparadox.errors import ScenarioError
-from rodparadox.frames import Frame, view
-from rodparadox.kinematics import Event, HyperbolicArc, Line, WorldLine
-from rodparadox.scenario import Particle, Scenario, Timing, builtin_names, load
+from rodparadox.physics.frames import Frame, view
+from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, WorldLine
+from rodparadox.io.scenario import Particle, Scenario, Timing, builtin_names, load
 
 PRESETS = builtin_names()
 ROD_ENDS = ("rod_left", "rod_right")

@@ -32,12 +32,12 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from rodparadox.engine import run
-from rodparadox.frames import Frame, view
-from rodparadox.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_on_slice,
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import Frame, view
+from rodparadox.physics.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_on_slice,
                                turn_times)
-from rodparadox.rod import material_worldline, now_lines, rod_on_slice as rod_points, turn_interval
-from rodparadox.scenario import Particle, Scenario, builtin_names, load
+from rodparadox.physics.rod import material_worldline, now_lines, rod_on_slice as rod_points, turn_interval
+from rodparadox.io.scenario import Particle, Scenario, builtin_names, load
 
 from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
 
@@ -374,7 +374,7 @@ def test_slices_include_every_turns_start_and_end():
 def test_proper_time_marks_on_singles_left_end_by_hand(v, L):
     """The left end of `single`: at rest (tau = t) until B1 at t_B = L/2v; then on the hyperbola of radius L about B1
     (tau = t_B + L |phi|, at B1 - L (cosh phi, sinh phi)) to phi = -atanh v; then straight at -v (tau grows by dt/g)."""
-    from rodparadox.kinematics import proper_time_events
+    from rodparadox.physics.kinematics import proper_time_events
 
     h = run(load("single").with_overrides(v=v, L=L))
     t_b, a, g = L / (2 * v), math.atanh(v), g_of(v)

@@ -14,9 +14,9 @@ import matplotlib
 import pytest
 from click.testing import CliRunner
 
-from rodparadox.engine import run as simulate
-from rodparadox.rod import turn_interval
-from rodparadox.scenario import load
+from rodparadox.physics.engine import run as simulate
+from rodparadox.physics.rod import turn_interval
+from rodparadox.io.scenario import load
 from sears_paradox_cli.ledger import ledger
 from sears_paradox_cli.main import main
 
@@ -168,9 +168,9 @@ def test_the_figure_draws_every_curve_in_every_frame_with_its_impacts(in_tmp):
 
 def test_the_figure_values_are_the_ledgers():
     """The drawn kinetic total is the ledger's, and at an impact the curve jumps from before to after."""
-    from rodparadox import ledger_figure
-    from rodparadox.frames import Frame
-    from rodparadox.ledger import impact_entries
+    from rodparadox.render import ledger_figure
+    from rodparadox.physics.frames import Frame
+    from rodparadox.physics.ledger import impact_entries
 
     history = simulate(load("fig1"))
     frame = Frame("moving", -0.6)
@@ -246,8 +246,9 @@ def test_readme_documents_every_ledger_option():
 
 
 def test_readme_ledger_figure_is_what_the_tool_draws_now():
-    from rodparadox import ledger_figure, render
-    from rodparadox.frames import paper_frames
+    from rodparadox.render import ledger_figure
+    from rodparadox import render
+    from rodparadox.physics.frames import paper_frames
 
     path = ROOT / "outputs" / "readme" / "fig2_ledger.svg"
     assert "outputs/readme/fig2_ledger.svg" in _section()

@@ -6,7 +6,7 @@ import stat
 import pytest
 
 from rodparadox.errors import OutputError
-from rodparadox.output import write_atomic
+from rodparadox.io.output import write_atomic
 
 
 def test_new_file_then_unchanged_then_changed(tmp_path):

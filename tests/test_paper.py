@@ -45,9 +45,10 @@ from typing import Callable
 
 import pytest
 
-from rodparadox import engine, scenario
-from rodparadox.frames import Frame, view
-from rodparadox.kinematics import HyperbolicArc
+from rodparadox.physics import engine
+from rodparadox.io import scenario
+from rodparadox.physics.frames import Frame, view
+from rodparadox.physics.kinematics import HyperbolicArc
 
 VS = (0.1, 0.3, 0.6, 0.8, 0.95, 0.99)
 LS = (0.5, 1.0, 3.7)

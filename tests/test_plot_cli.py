@@ -213,7 +213,7 @@ def test_more_panels_than_a_figure_holds():
 
 def test_the_panel_limit_is_the_number_of_panel_letters():
     from rodparadox import render
-    from rodparadox.frames import MAX_PANELS
+    from rodparadox.physics.frames import MAX_PANELS
 
     assert MAX_PANELS == len(render.PANEL_LETTERS)
 
@@ -242,12 +242,12 @@ def test_bad_scenario_and_bad_override_write_nothing_even_for_the_good_ones():
 
 
 def test_a_failed_write_leaves_no_partial_file(in_tmp, monkeypatch):
-    import rodparadox.output
+    import rodparadox.io.output
 
     def full_disk(src, dst):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
-    monkeypatch.setattr(rodparadox.output.os, "replace", full_disk)
+    monkeypatch.setattr(rodparadox.io.output.os, "replace", full_disk)
     result = run("fig2", expect=1)  # the system failed, not the input: exit status 1
     assert result.output == "Error: cannot write outputs/fig2.svg: no space left on device.\n"
     assert _files(in_tmp) == set()
@@ -346,9 +346,9 @@ def test_readme_figures_are_what_the_tool_draws_now():
     import matplotlib
 
     from rodparadox import render
-    from rodparadox.engine import run as simulate
-    from rodparadox.frames import paper_frames
-    from rodparadox.scenario import load
+    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.io.scenario import load
 
     section = _readme_plot_section()
     made_with = (ROOT / "outputs" / "readme" / "made-with.txt").read_text().split()

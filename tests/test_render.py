@@ -23,12 +23,12 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgb
 
 from rodparadox import render
-from rodparadox.engine import run
+from rodparadox.physics.engine import run
 from rodparadox.errors import ScenarioError
-from rodparadox.frames import Frame, paper_frames, sampling_tolerance, view
-from rodparadox.kinematics import HyperbolicArc
-from rodparadox.scenario import builtin_names, load
-from rodparadox.styles import FORMATS, STYLE_NAMES, STYLES
+from rodparadox.physics.frames import Frame, paper_frames, sampling_tolerance, view
+from rodparadox.physics.kinematics import HyperbolicArc
+from rodparadox.io.scenario import builtin_names, load
+from rodparadox.render.styles import FORMATS, STYLE_NAMES, STYLES
 
 ROOT = Path(__file__).resolve().parent.parent
 SPEEDS = (0.1, 0.6, 0.95)
@@ -377,7 +377,7 @@ def test_text_with_a_lone_or_escaped_dollar_is_measured_as_a_text_artist_draws_i
 
 
 def test_the_text_size_cache_is_bounded():
-    info = render._measured.cache_info()
+    info = render.text_size_cache_info()
     assert info.maxsize is not None and info.maxsize <= 10_000
 
 
@@ -744,4 +744,4 @@ def test_fig2_svg_stays_small():
 def test_render_never_uses_pyplot():
     source = "".join(path.read_text() for path in sorted((ROOT / "rodparadox" / "render").glob("*.py")))
     assert "pyplot" not in source.replace("Never pyplot", "").replace("never pyplot", "")
-    assert "savefig(buffer" in source and "open(" not in source  # bytes only; rodparadox.output writes files
+    assert "savefig(buffer" in source and "open(" not in source  # bytes only; rodparadox.io.output writes files

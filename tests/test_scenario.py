@@ -6,7 +6,7 @@ import textwrap
 import pytest
 
 from rodparadox.errors import RodParadoxError, ScenarioError
-from rodparadox.scenario import Particle, Scenario, Timing, builtin_names, load, parse
+from rodparadox.io.scenario import Particle, Scenario, Timing, builtin_names, configs_folder, load, parse
 
 
 def refused(text: str) -> str:
@@ -59,7 +59,7 @@ def test_fig2_places_a_by_its_timing_not_by_a_typed_position():
 
 
 def test_a_path_and_a_builtin_name_give_the_same_scenario(tmp_path):
-    from rodparadox.scenario import configs_folder
+    from rodparadox.io.scenario import configs_folder
 
     copy = tmp_path / "copy.yaml"
     copy.write_text((configs_folder() / "fig2.yaml").read_text())
@@ -255,7 +255,7 @@ def test_anchors_and_merge_keys_within_bounds_are_read():
 
 
 def test_a_file_larger_than_the_limit_is_refused_before_it_is_read(tmp_path):
-    from rodparadox.scenario import MAX_FILE_BYTES
+    from rodparadox.io.scenario import MAX_FILE_BYTES
 
     big = tmp_path / "big.yaml"
     big.write_text("v: 0.6\nparticles: {B: {gap: 0.5}}\n#" + "x" * MAX_FILE_BYTES + "\n")
@@ -302,7 +302,7 @@ def test_an_existing_file_wins_over_a_builtin_name(tmp_path, monkeypatch):
     (tmp_path / "fig2").write_text("name: mine\nv: 0.3\nparticles: {B: {gap: 0.5}}\n")
     assert (load("fig2").name, load("fig2").v) == ("mine", 0.3)
     (tmp_path / "fig1").mkdir()  # a folder does not shadow the built-in
-    assert load("fig1") == load(str(__import__("rodparadox.scenario").scenario.configs_folder() / "fig1.yaml"))
+    assert load("fig1") == load(str(configs_folder() / "fig1.yaml"))
 
 
 @pytest.mark.parametrize("given, stem", [
@@ -310,7 +310,7 @@ def test_an_existing_file_wins_over_a_builtin_name(tmp_path, monkeypatch):
     ("dir/scene.v2", "scene.v2"), ("a.b.yaml", "a.b"),
 ])
 def test_stem_of_drops_any_yaml_extension_in_any_case(given, stem):
-    from rodparadox.scenario import stem_of
+    from rodparadox.io.scenario import stem_of
 
     assert stem_of(given) == stem
 

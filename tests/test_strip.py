@@ -9,12 +9,12 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from rodparadox.animation import colour_scale, strip_at
-from rodparadox.engine import run
-from rodparadox.frames import Frame, time_window
+from rodparadox.animate.timeline import colour_scale, strip_at
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import Frame, time_window
 from rodparadox.render import draw_strips_into, style_context
 from rodparadox.render.strip import COLOUR_BAR_LABEL, draw_strip, update_strip
-from rodparadox.scenario import load
+from rodparadox.io.scenario import load
 
 #: drawn coordinates against the exact world-lines, in units of L: rounding only
 AGREE = 1e-12

@@ -1,4 +1,4 @@
-"""The tables as Markdown and LaTeX (`rodparadox.table_formats`, `events`/`ledger --format markdown|latex`).
+"""The tables as Markdown and LaTeX (`rodparadox.tables.formats`, `events`/`ledger --format markdown|latex`).
 
 The numbers are checked against hand-derived values (Fig. 2 at v = 0.6: g = 5/4; in S, B₁ at t = L/2v = 5/6 and
 A₁ at t = L/2v + gvL = 19/12; in S′ both at t′ = (gL/2v)(1 + v²) = 17/12, and the rod leaves A₁ at
@@ -17,13 +17,13 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from rodparadox.document import Cell, Table
-from rodparadox.engine import run as simulate
-from rodparadox.frames import paper_frames
-from rodparadox.scenario import builtin_names, load
-from rodparadox.tables import (events_table, hidden_table, latex_text, ledger_table, slices_table, to_latex,
+from rodparadox.handout.document import Cell, Table
+from rodparadox.physics.engine import run as simulate
+from rodparadox.physics.frames import paper_frames
+from rodparadox.io.scenario import builtin_names, load
+from rodparadox.tables.build import (events_table, hidden_table, latex_text, ledger_table, slices_table, to_latex,
                                to_markdown)
-from rodparadox.table_formats import BLANK_TEXT, table_format
+from rodparadox.tables.formats import BLANK_TEXT, table_format
 from sears_paradox_cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent

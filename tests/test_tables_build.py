@@ -1,4 +1,4 @@
-"""The events, ledger and hidden tables a handout prints (rodparadox.tables), against hand derivations at v = 0.6
+"""The events, ledger and hidden tables a handout prints (rodparadox.tables.build), against hand derivations at v = 0.6
 (g = 5/4), and numbers.fraction."""
 
 from __future__ import annotations
@@ -7,12 +7,12 @@ import math
 
 import pytest
 
-from rodparadox.document import Cell, Table
-from rodparadox.engine import run
-from rodparadox.frames import moving_frame, rest_frame
+from rodparadox.handout.document import Cell, Table
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import moving_frame, rest_frame
 from rodparadox.numbers import MINUS, fraction, fraction_text
-from rodparadox.scenario import load
-from rodparadox.tables import events_table, hidden_table, impact_name, ledger_table, with_fraction
+from rodparadox.io.scenario import load
+from rodparadox.tables.build import events_table, hidden_table, impact_name, ledger_table, with_fraction
 
 
 def history(name: str, v: float = 0.6):

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from rodparadox import video
+from rodparadox.animate import encoders as video
 from rodparadox.errors import OptionError, OutputError, ToolMissing
 
 

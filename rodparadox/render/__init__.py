@@ -10,6 +10,10 @@ label, the same in every panel), and through every impact the line of
 simultaneity of S and of S'. Every artist carries a gid (`a-rod_left`,
 `b-impact-B1`, ...), which is also its id in the SVG.
 
+Importing the package loads no matplotlib: each name below is looked up in its module on first use
+(`render.draw`, `from rodparadox.render import draw`), so `render.styles`, which the command line's
+--help reads, stays light.
+
 The package, its imports running one way (text <- layout, labels <- layers <- panel <- diagram):
   text     what the panels say (frame names, titles, tick labels) and text sizes in points, without a renderer
   layout   the layout in points: data boxes, rows of panels, tick steps, title lines, the legend's shape
@@ -18,6 +22,8 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
            it draws itself, names what labels must avoid, and gives its own legend entry; ink from the style
   panel    one panel: its axes, then every enabled layer, then the labels
   diagram  `draw` (a Figure the layout sizes), `draw_into` (a Figure or SubFigure the caller sized), bytes
+  styles   the three styles as plain data (inks, dashes, rcParams, sizes): no matplotlib
+  ledger_figure  the ledger as a figure (momentum and energy against each frame's time)
   strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
            particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
            block of stills, the rod at successive instants
@@ -28,15 +34,27 @@ placed where they cross no line and no other label, and the result does not
 depend on a renderer, so it is fast and byte-for-byte reproducible.
 """
 
-from ..frames import PANEL_LETTERS, relative_velocity
-from .diagram import Diagram, PanelInfo, draw, draw_into, figure_bytes, natural_size, style_context
-from .strip import StripArtists, draw_strip, draw_strips_into, strips_size, update_strip
-from .labels import LABEL_REACH
-from .layers import LAYERS, LEGEND, Layer, LayerArtists, Options, PanelContext
-from .text import (_measured, approximate_size, axis_label, coordinate_names, frame_symbol, impact_text,
-                   impact_text_size, text_size)
+import importlib
 
-__all__ = ["PANEL_LETTERS", "LABEL_REACH", "LAYERS", "LEGEND", "Diagram", "Layer", "LayerArtists", "Options",
-           "PanelContext", "PanelInfo", "StripArtists", "approximate_size", "axis_label", "coordinate_names", "draw", "draw_into", "draw_strip", "draw_strips_into",
-           "figure_bytes", "frame_symbol", "impact_text", "impact_text_size", "natural_size", "relative_velocity", "strips_size",
-           "style_context", "text_size", "update_strip"]
+#: each public name, and the module of this package that defines it
+_HOME = {
+    "PANEL_LETTERS": "rodparadox.physics.frames", "relative_velocity": "rodparadox.physics.frames",
+    **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_into", "figure_bytes", "natural_size", "style_context",
+                     "FIGURE_METADATA"), "rodparadox.render.diagram"),
+    **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
+                    "rodparadox.render.strip"),
+    "LABEL_REACH": "rodparadox.render.labels",
+    **dict.fromkeys(("LAYERS", "LEGEND", "Layer", "LayerArtists", "Options", "PanelContext"), "rodparadox.render.layers"),
+    **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol", "impact_text",
+                     "impact_text_size", "text_size", "text_size_cache_info"), "rodparadox.render.text"),
+}
+
+__all__ = sorted(_HOME)
+
+
+def __getattr__(name: str):
+    if name not in _HOME:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_HOME[name]), name)
+    globals()[name] = value
+    return value

@@ -17,16 +17,16 @@ import matplotlib
 from matplotlib.figure import Figure, SubFigure
 from matplotlib.legend_handler import HandlerTuple
 
-from .. import rod
-from ..engine import History
-from ..frames import PANEL_LETTERS, Frame
-from ..styles import FORMATS, STYLES, Style
-from .layers import Options, legend_entries
-from .layout import Layout, Page, Panel, font_sizes, lay_out, panel_of
-from .panel import draw_panel
+from rodparadox.physics import rod
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import PANEL_LETTERS, Frame
+from rodparadox.render.styles import FORMATS, STYLES, Style
+from rodparadox.render.layers import Options, legend_entries
+from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of
+from rodparadox.render.panel import draw_panel
 
 # metadata that would make two runs differ (dates, versions) is left out
-_METADATA = {
+FIGURE_METADATA = {
     "svg": {"Date": None, "Creator": None},
     "pdf": {"Creator": None, "Producer": None, "CreationDate": None, "ModDate": None},
     "png": {"Software": None},
@@ -118,7 +118,7 @@ def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
         raise ValueError(f"unknown format {fmt!r}; use one of {', '.join(FORMATS)}")
     with style_context(style) as st:
         buffer = io.BytesIO()
-        figure.savefig(buffer, format=fmt, metadata=_METADATA[fmt], dpi=st.png_dpi if fmt == "png" else 72)
+        figure.savefig(buffer, format=fmt, metadata=FIGURE_METADATA[fmt], dpi=st.png_dpi if fmt == "png" else 72)
         return buffer.getvalue()
 
 

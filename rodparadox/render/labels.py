@@ -6,7 +6,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .text import text_size
+from rodparadox.render.text import text_size
 
 #: an impact's label sits within this many points of its marker's edge, or a thin leader line ties it to the marker
 LABEL_REACH = 12.0

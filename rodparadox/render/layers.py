@@ -23,14 +23,15 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon
 
-from .. import kinematics, rod
-from ..engine import History
-from ..frames import Frame, FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
-from ..kinematics import Event, HyperbolicArc
-from ..numbers import shown
-from ..styles import Ink, Style
-from .labels import Label
-from .text import coordinate_names, frame_symbol, impact_text, impact_text_size
+from rodparadox.physics import kinematics
+from rodparadox.physics import rod
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
+from rodparadox.physics.kinematics import Event, HyperbolicArc
+from rodparadox.numbers import shown
+from rodparadox.render.styles import Ink, Style
+from rodparadox.render.labels import Label
+from rodparadox.render.text import coordinate_names, frame_symbol, impact_text, impact_text_size
 
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16

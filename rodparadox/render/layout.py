@@ -9,10 +9,10 @@ from typing import NamedTuple, Sequence
 
 import numpy as np
 
-from ..engine import History
-from ..frames import Frame, FrameView, sampling_tolerance, view
-from ..styles import Style
-from .text import approximate_size, panel_title, suptitle, tick_text, ticks_at
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
+from rodparadox.render.styles import Style
+from rodparadox.render.text import approximate_size, panel_title, suptitle, tick_text, ticks_at
 
 #: smallest and largest width/height of a panel's data box; a box outside is padded with empty space
 ASPECT_RANGE = (0.62, 1.6)

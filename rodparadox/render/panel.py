@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
-from ..engine import History
-from ..styles import Style
-from .labels import Area, place
-from .layers import LAYERS, Options, PanelContext, widest_line
-from .layout import Metrics, Panel
-from .text import axis_label, coordinate_names, tick_text, ticks_at
+from rodparadox.physics.engine import History
+from rodparadox.render.styles import Style
+from rodparadox.render.labels import Area, place
+from rodparadox.render.layers import LAYERS, Options, PanelContext, widest_line
+from rodparadox.render.layout import Metrics, Panel
+from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
 
 
 def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: History, style: Style,

@@ -30,12 +30,12 @@ from matplotlib.figure import Figure, SubFigure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from ..animation import ColourScale, Strip, colour_scale, strip_at
-from ..engine import History
-from ..frames import Frame
-from ..numbers import shown
-from ..styles import STYLES, Style
-from .text import coordinate_names, frame_symbol
+from rodparadox.animate.timeline import ColourScale, Strip, colour_scale, strip_at
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame
+from rodparadox.numbers import shown
+from rodparadox.render.styles import STYLES, Style
+from rodparadox.render.text import coordinate_names, frame_symbol
 
 #: the colour map of the bar in each style, centred on the frame's initial rod velocity: diverging blue-white-red
 #: on screen; in print a grey ramp, light (slower) to dark (faster), whose lightness runs one way only, so the
@@ -204,9 +204,9 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     `strips-colour-bar`. A target too small for the rows, their labels and the colour bar is refused
     (ValueError, naming the size needed).
     """
-    from .diagram import style_context
-    from .layout import font_sizes, next_step
-    from .text import approximate_size, axis_label, ticks_at
+    from rodparadox.render.diagram import style_context
+    from rodparadox.render.layout import font_sizes, next_step
+    from rodparadox.render.text import approximate_size, axis_label, ticks_at
 
     if not times:
         raise ValueError("draw_strips_into needs at least one time")
@@ -301,7 +301,7 @@ class _StillsRoom(NamedTuple):
 
 def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[list[str], list[str]]:
     """Each row's time (t′ = 1.25 L) and the impacts at that instant (mathtext), or an empty note."""
-    from .text import impact_text
+    from rodparadox.render.text import impact_text
 
     clock = coordinate_names(frame)[1]
     labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
@@ -312,7 +312,7 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[lis
 
 def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float]) -> _StillsRoom:
     """The room of `draw_strips_into` for rows with these labels, in a style's type sizes."""
-    from .text import approximate_size
+    from rodparadox.render.text import approximate_size
 
     # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
     gutter = 1.05 * max(approximate_size(text, fs["label"])[0] for text in [*labels, *notes]) + 8.0 + 6.0
@@ -330,8 +330,8 @@ def strips_size(history: History, frame: Frame, times: Sequence[float], style: s
                 row_scale: float = 1.0) -> tuple[float, float]:
     """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
     `row_scale` times the least row's height: what a page must leave for the block."""
-    from .diagram import style_context
-    from .layout import font_sizes
+    from rodparadox.render.diagram import style_context
+    from rodparadox.render.layout import font_sizes
 
     if not times:
         raise ValueError("draw_strips_into needs at least one time")
@@ -348,6 +348,6 @@ class _Ticks:
         self.step = step
 
     def __call__(self, value, _pos=None) -> str:
-        from .text import tick_text
+        from rodparadox.render.text import tick_text
 
         return tick_text(value, self.step)

@@ -13,9 +13,9 @@ from matplotlib.cbook import is_math_text
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import text_to_path
 
-from ..frames import Frame, FrameView, frame_symbol
-from ..model import Scenario
-from ..numbers import MINUS, SCIENTIFIC_ABOVE, shown
+from rodparadox.physics.frames import Frame, FrameView, frame_symbol
+from rodparadox.physics.model import Scenario
+from rodparadox.numbers import MINUS, SCIENTIFIC_ABOVE, shown
 
 
 def coordinate_names(frame: Frame) -> tuple[str, str]:
@@ -147,6 +147,11 @@ def _measured(text: str, size: float, italic: bool, ismath: bool, bold: bool, *f
 _MATH_AS_PLAIN = {"\\$": "$", "\\pm": "\N{PLUS-MINUS SIGN}", "\\times": "\N{MULTIPLICATION SIGN}",
                   "^2": "\N{SUPERSCRIPT TWO}", "{": "", "}": "", "'": "\N{PRIME}"}
 
+
+
+def text_size_cache_info():
+    """How full `text_size`'s cache of measured texts is (functools' CacheInfo): it is bounded."""
+    return _measured.cache_info()
 
 def approximate_size(text: str, size: float) -> tuple[float, float, float]:
     """A slight over-estimate of what a Text artist draws for `text`, without parsing mathtext.

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .engine import SAME_EVENT, History, Turn
-from .kinematics import Event, Line, Segment, WorldLine
+from rodparadox.physics.engine import SAME_EVENT, History, Turn
+from rodparadox.physics.kinematics import Event, Line, Segment, WorldLine
 
 
 def material_worldline(history: History, sigma: float) -> WorldLine:

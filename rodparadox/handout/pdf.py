@@ -46,10 +46,10 @@ from matplotlib.gridspec import GridSpec
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from . import render
-from .document import (PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Strips, Table)
-from .render.diagram import _METADATA
-from .styles import STYLES, Style
+from rodparadox import render
+from rodparadox.handout.document import (PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Strips, Table)
+from rodparadox.render.diagram import FIGURE_METADATA
+from rodparadox.render.styles import STYLES, Style
 
 #: points per millimetre
 MM = 72 / 25.4
@@ -681,7 +681,7 @@ def to_pdf(handout: Handout, paper: str = "a4", style: str = "print") -> bytes:
     figures = page_figures(handout, paper, style)
     buffer = io.BytesIO()
     with render.style_context(style):
-        with PdfPages(buffer, metadata=dict(_METADATA["pdf"])) as pdf:
+        with PdfPages(buffer, metadata=dict(FIGURE_METADATA["pdf"])) as pdf:
             for figure in figures:
                 pdf.savefig(figure)
     return buffer.getvalue()

@@ -18,13 +18,13 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter
 
-from .engine import History
-from .frames import PANEL_LETTERS, Frame
-from .ledger import ZERO, impact_entries, initial_total, ledger_slice
-from .ledger_report import slice_times
-from .numbers import shown
-from .render import axis_label, coordinate_names, frame_symbol, style_context
-from .styles import Style
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import PANEL_LETTERS, Frame
+from rodparadox.physics.ledger import ZERO, impact_entries, initial_total, ledger_slice
+from rodparadox.io.ledger_report import slice_times
+from rodparadox.numbers import shown
+from rodparadox.render import axis_label, coordinate_names, frame_symbol, style_context
+from rodparadox.render.styles import Style
 
 #: where a time is one impact's instant: the rounding of boosting an event twice
 _SAME_INSTANT = 1e-12

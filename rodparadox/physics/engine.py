@@ -24,10 +24,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
-from .collision import elastic
-from .errors import ScenarioError
-from .kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
-from .model import Particle, Scenario
+from rodparadox.physics.collision import elastic
+from rodparadox.errors import ScenarioError
+from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
+from rodparadox.physics.model import Particle, Scenario
 
 #: impacts at the two ends closer than this on the rod's own time axis (units of L) are one simultaneous impact (rule 5)
 SIMULTANEITY_TOLERANCE = 1e-10

@@ -20,10 +20,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .engine import History, Impact
-from .frames import time_order
-from .kinematics import HyperbolicArc, Line
-from .rod import material_worldline, turn_interval
+from rodparadox.physics.engine import History, Impact
+from rodparadox.physics.frames import time_order
+from rodparadox.physics.kinematics import HyperbolicArc, Line
+from rodparadox.physics.rod import material_worldline, turn_interval
 
 
 @dataclass(frozen=True)

@@ -13,11 +13,11 @@ import json
 import math
 from typing import Any
 
-from .engine import History
-from .errors import FrameError
-from .frames import Frame, FrameView, sampling_tolerance, view
-from .numbers import exact
-from .kinematics import HyperbolicArc, Line, Segment
+from rodparadox.physics.engine import History
+from rodparadox.errors import FrameError
+from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
+from rodparadox.numbers import exact
+from rodparadox.physics.kinematics import HyperbolicArc, Line, Segment
 
 FORMAT = "sears-paradox/1"
 

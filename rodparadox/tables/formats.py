@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from .document import Cell, Table
+from rodparadox.handout.document import Cell, Table
 
 # --- plain Unicode text to LaTeX ------------------------------------------------------------------------
 

@@ -12,10 +12,10 @@ import io
 import json
 from typing import Any, Sequence
 
-from .engine import History
-from .frames import Frame, time_window
-from .rod import turn_interval
-from .ledger import EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice, turn_times
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, time_window
+from rodparadox.physics.rod import turn_interval
+from rodparadox.physics.ledger import EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice, turn_times
 
 FORMAT = "sears-paradox-ledger/1"
 #: slices drawn between the ends of a frame's time window when no --at times are given (plus every turn's start and

@@ -29,11 +29,11 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .animation import BoostTimeline, NowTimeline
-from .engine import History
-from .frames import Frame, sampling_tolerance
-from .numbers import shown
-from .styles import STYLES
+from rodparadox.animate.timeline import BoostTimeline, NowTimeline
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, sampling_tolerance
+from rodparadox.numbers import shown
+from rodparadox.render.styles import STYLES
 
 _DPI = 100
 
@@ -50,7 +50,7 @@ def _now(history: History, timeline: NowTimeline, style: str) -> Iterator[np.nda
     """The diagram as `plot` draws it, with each frame's own line of simultaneity (its "now", horizontal in its
     own panel) sweeping up, and under each panel a strip of that frame's space at that instant, on the panel's
     x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting)."""
-    from . import render
+    from rodparadox import render
 
     with render.style_context(style):
         scene = NowScene(history, timeline, style)
@@ -95,8 +95,8 @@ class NowScene:
     """
 
     def __init__(self, history: History, timeline: NowTimeline, style: str):
-        from . import render
-        from .render.strip import FLASH_COLOUR, draw_strip
+        from rodparadox import render
+        from rodparadox.render.strip import FLASH_COLOUR, draw_strip
 
         st = STYLES[style]
         self.history, self.timeline, self.L = history, timeline, history.scenario.L
@@ -158,8 +158,8 @@ class NowScene:
         impact flashing) fits over the strip (`room` points), a narrow panel's on slides."""
         from dataclasses import replace as with_
 
-        from .render import text_size
-        from .render.strip import readout_text
+        from rodparadox.render import text_size
+        from rodparadox.render.strip import readout_text
 
         labels = tuple(i.label for i in self.history.impacts)
         longest = max(text_size(readout_text(with_(self.timeline.strip(self.history, k, p), flashing=labels), frame,
@@ -177,7 +177,7 @@ class NowScene:
         return _round_below(LENS_FILL * span / longest)
 
     def update(self, k: int) -> list:
-        from .render.strip import update_strip
+        from rodparadox.render.strip import update_strip
 
         L, moved = self.L, []
         for p, motion in enumerate(self.panels):
@@ -211,7 +211,7 @@ def _same_labels(ax):
 
 def _offset_ticks(half: float) -> tuple[np.ndarray, float]:
     """The lens's ticks over -half..half: the midpoint and a round step each side of it; and the step."""
-    from .render.text import ticks_at
+    from rodparadox.render.text import ticks_at
 
     step = _round_below(0.9 * half)
     return ticks_at(-half, half, step), step
@@ -221,7 +221,7 @@ def _signed_labels(step: float):
     """Offsets written with their sign (−0.1, 0, +0.1), with as many decimals as the step has."""
     from matplotlib.ticker import FuncFormatter
 
-    from .render.text import tick_text
+    from rodparadox.render.text import tick_text
 
     def label(value: float, _pos=None) -> str:
         if abs(value) < 0.5 * step:
@@ -238,7 +238,7 @@ class _Band:
     (which start at LETTER_Y of a strip and may reach above it)."""
 
     def __init__(self, st, with_lens: bool):
-        from .render.strip import LETTER_Y
+        from rodparadox.render.strip import LETTER_Y
 
         fs = st.font_size
         self.small = 0.8 * fs
@@ -291,8 +291,8 @@ def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np
     from matplotlib.lines import Line2D
     from matplotlib.patches import Polygon
 
-    from . import render
-    from .render.layers import impact_marker, line_kwargs
+    from rodparadox import render
+    from rodparadox.render.layers import impact_marker, line_kwargs
 
     st = STYLES[style]
     L, v = history.scenario.L, history.scenario.v

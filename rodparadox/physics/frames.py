@@ -12,11 +12,11 @@ from typing import Sequence
 
 import numpy as np
 
-from .engine import WORLDLINE_NAMES, History, Impact
-from .errors import FrameError
-from .kinematics import SAMPLING_TOLERANCE, Event, Segment
-from .model import FASTEST
-from .numbers import exact, shown
+from rodparadox.physics.engine import WORLDLINE_NAMES, History, Impact
+from rodparadox.errors import FrameError
+from rodparadox.physics.kinematics import SAMPLING_TOLERANCE, Event, Segment
+from rodparadox.physics.model import FASTEST
+from rodparadox.numbers import exact, shown
 
 #: one panel per frame, lettered (a), (b), ...: at most eight in one figure
 PANEL_LETTERS = "abcdefgh"

@@ -28,8 +28,8 @@ from typing import Iterable
 
 import numpy as np
 
-from .errors import OptionError, ToolMissing, WriteFailed
-from .output import check_folder as check_output_folder, write_atomic
+from rodparadox.errors import OptionError, ToolMissing, WriteFailed
+from rodparadox.io.output import check_folder as check_output_folder, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
 #: frame rates a GIF stores exactly: it keeps each frame's duration in hundredths of a second

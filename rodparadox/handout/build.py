@@ -29,18 +29,18 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Sequence
 
-from . import tables
-from .document import Block, Diagram, Handout, Heading, Paragraph, Question, Section, Strips
-from .engine import History, Impact, Turn, run
-from .errors import RodParadoxError
-from .frames import (ONE_INSTANT, PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
+from rodparadox.tables import build as tables
+from rodparadox.handout.document import Block, Diagram, Handout, Heading, Paragraph, Question, Section, Strips
+from rodparadox.physics.engine import History, Impact, Turn, run
+from rodparadox.errors import RodParadoxError
+from rodparadox.physics.frames import (ONE_INSTANT, PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
                      rest_frame, time_window)
-from .ledger import initial_total, ledger_slice
-from .ledger_report import ROUNDING_ZERO
-from .numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, shown
-from .rod import rod_on_slice, turn_corners, turn_interval
-from .frames import time_order
-from .tables import coordinates, impact_name
+from rodparadox.physics.ledger import initial_total, ledger_slice
+from rodparadox.io.ledger_report import ROUNDING_ZERO
+from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, shown
+from rodparadox.physics.rod import rod_on_slice, turn_corners, turn_interval
+from rodparadox.physics.frames import time_order
+from rodparadox.tables.build import coordinates, impact_name
 
 #: significant digits of a number in running text (explanations, captions), and in a worked answer
 PROSE_DIGITS = 4

@@ -14,12 +14,12 @@ import os
 from pathlib import Path
 from typing import NamedTuple, Sequence
 
-from .errors import FrameError, OptionError
-from .frames import Frame, frame_word, parse_frames
-from .model import Scenario
-from .numbers import exact
-from .output import check_target
-from .scenario import load, stem_of
+from rodparadox.errors import FrameError, OptionError
+from rodparadox.physics.frames import Frame, frame_word, parse_frames
+from rodparadox.physics.model import Scenario
+from rodparadox.numbers import exact
+from rodparadox.io.output import check_target
+from rodparadox.io.scenario import load, stem_of
 
 #: where figures go when -o is not given; the only output folder a command creates itself
 DEFAULT_FOLDER = "outputs"
@@ -197,7 +197,7 @@ def plan_animation(name: str, *, v: float | None, L: float | None, frame: str, m
     that exists or a file name; for png it names the folder of the stills (created if missing, in a folder
     that exists); without -o, everything goes in `outputs/`.
     """
-    from .animation import MODES, boost_ends
+    from rodparadox.animate.timeline import MODES, boost_ends
 
     if output is not None and not output.strip():
         raise OptionError(f"option -o must name a file or folder, got {output!r}.")
@@ -226,7 +226,7 @@ def plan_animation(name: str, *, v: float | None, L: float | None, frame: str, m
 
 def prepare_animation(job: AnimationJob, output: str | None) -> None:
     """Before anything is drawn: create the default folder (only it), check the file or the stills' folder."""
-    from .video import check_folder
+    from rodparadox.animate.encoders import check_folder
 
     if output is None:
         _make_default_folder()
@@ -305,7 +305,7 @@ def plan_handout(names: Sequence[str], *, v: float | None, L: float | None, fram
 
 def prepare_handout(job: HandoutJob, output: str | None) -> None:
     """Before anything is computed: create the default folder (only it), check the file or the pieces' folder."""
-    from .output import check_folder
+    from rodparadox.io.output import check_folder
 
     if output is None:
         _make_default_folder()

@@ -26,11 +26,11 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from .document import PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
-from .engine import History
-from .frames import Frame, frame_word, sampling_tolerance, view
-from .styles import STYLES
-from .tables import latex_text, to_latex
+from rodparadox.handout.document import PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
+from rodparadox.render.styles import STYLES
+from rodparadox.tables.build import latex_text, to_latex
 
 #: the margin on every side of the page; the figures of the strips are drawn at the width this leaves
 MARGIN_MM = 20.0
@@ -225,7 +225,7 @@ def text_width_in(paper: str) -> float:
 def figure_pdf(block: Diagram | Strips, paper: str, style: str) -> bytes:
     """A figure block as PDF bytes: the diagram as `plot` draws it, or the strips as `animate` draws them, at the
     width of the text so their type prints at its size."""
-    from . import render
+    from rodparadox import render
 
     if isinstance(block, Diagram):
         figure = render.draw(block.history, block.frames, style)

@@ -14,8 +14,8 @@ from typing import Any
 
 import yaml
 
-from .errors import ScenarioError
-from .model import PARTICLE_NAMES, Particle, Scenario, Timing, shown
+from rodparadox.errors import ScenarioError
+from rodparadox.physics.model import PARTICLE_NAMES, Particle, Scenario, Timing, shown
 
 #: the largest scenario file read: a scenario is a few hundred bytes, and PyYAML reads about 100 kB a second
 MAX_FILE_BYTES = 100_000
@@ -231,7 +231,7 @@ def configs_folder() -> Path:
     spec = importlib.util.find_spec("rodparadox.configs")
     if spec is not None and spec.submodule_search_locations:
         return Path(list(spec.submodule_search_locations)[0])
-    return Path(__file__).resolve().parent.parent / "configs"
+    return Path(__file__).resolve().parents[2] / "configs"  # a checkout: rodparadox/io/ -> configs/
 
 
 def builtin_names() -> list[str]:

@@ -15,7 +15,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-from .errors import OutputError, WriteFailed
+from rodparadox.errors import OutputError, WriteFailed
 
 
 def _reason(e: OSError) -> str:

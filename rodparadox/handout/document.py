@@ -16,8 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Union
 
-from .engine import History
-from .frames import Frame
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame
 
 #: paper sizes in inches (width, height): ISO A4 (210 x 297 mm) and US Letter
 PAPERS = {"a4": (210 / 25.4, 297 / 25.4), "letter": (8.5, 11.0)}

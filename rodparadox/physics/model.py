@@ -12,7 +12,7 @@ import unicodedata
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from .errors import ScenarioError
+from rodparadox.errors import ScenarioError
 
 PARTICLE_NAMES = ("A", "B")
 #: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far

@@ -15,14 +15,14 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from .document import Cell, Table
-from .engine import History
-from .export import check_below_c, coordinate_format, velocity_format
-from .frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
-from .ledger import impact_entries, initial_total, ledger_slice, turn_times
-from .ledger_report import ROUNDING_ZERO, number_text
-from .numbers import MINUS, exact, fraction_text
-from .table_formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
+from rodparadox.handout.document import Cell, Table
+from rodparadox.physics.engine import History
+from rodparadox.io.export import check_below_c, coordinate_format, velocity_format
+from rodparadox.physics.frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
+from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, turn_times
+from rodparadox.io.ledger_report import ROUNDING_ZERO, number_text
+from rodparadox.numbers import MINUS, exact, fraction_text
+from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 def impact_name(label: str) -> str:

@@ -18,12 +18,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .engine import History
-from .errors import OptionError
-from .frames import Frame, sampling_tolerance, time_window, view
-from .numbers import exact
-from .kinematics import WorldLine
-from .rod import material_worldline
+from rodparadox.physics.engine import History
+from rodparadox.errors import OptionError
+from rodparadox.physics.frames import Frame, sampling_tolerance, time_window, view
+from rodparadox.numbers import exact
+from rodparadox.physics.kinematics import WorldLine
+from rodparadox.physics.rod import material_worldline
 
 MODES = ("now", "boost")
 #: the longest animation, and the most frames one may have: enough for two minutes at 25 fps
@@ -230,8 +230,8 @@ def boost_velocities(v_from: float, v_to: float, count: int) -> np.ndarray:
 def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
     """--frame in boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
-    from .errors import FrameError
-    from .frames import frame_of_velocity
+    from rodparadox.errors import FrameError
+    from rodparadox.physics.frames import frame_of_velocity
 
     spec = spec.strip()
     if spec == "both":

@@ -1,0 +1,13 @@
+"""The physics, pure (no drawing, no files): kinematics, collisions, the scenario model, the rigid engine, the
+rod's interior, frames and the energy-momentum ledger (README, "The model").
+
+  kinematics  events, boosts, exact lines and hyperbolic arcs, world-lines, proper time
+  collision   the elastic rule (README, "The model", rules 2 and 5)
+  model       the scenario as frozen, validated data
+  engine      runs a scenario: impacts, the rigid response (turns), the order of impacts -> `History`
+  rod         inside the rod: material points, the rod on a slice, its own lines of simultaneity
+  frames      a history seen from one frame; the frame conventions (S' = -v, velocity addition)
+  ledger      each body's energy and momentum on a slice of any frame, the hidden part
+
+Imports only `rodparadox.errors`, `rodparadox.numbers` and `rodparadox.tolerances` from outside.
+"""
