@@ -1,12 +1,17 @@
-"""How numbers are written: exactly in names (files, frames), readably in figures. Pure, no imports to speak of.
+"""How numbers are written: exactly in names (files, frames), readably in figures, aligned in tables; nice steps;
+impact labels. Pure, no imports to speak of.
 
-One home for both, so a frame's name, a file name and a figure's title never
-disagree about a number, and no figure shows a `-0` or a `1e-06`.
+One home for all of these, so a frame's name, a file name, a figure's title, a
+table and a handout never disagree about a number or an impact's name, and no
+figure shows a `-0` or a `1e-06`.
 """
 
 from __future__ import annotations
 
 import math
+import re
+
+from rodparadox.tolerances import FRACTION_MATCH, PRINTED_ZERO, STEP_ROUNDING
 
 MINUS = "\N{MINUS SIGN}"
 TIMES = "\N{MULTIPLICATION SIGN}"
@@ -51,10 +56,113 @@ def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
     return text if math_text else text.replace("-", MINUS)
 
 
+def exact_signed(value: float) -> str:
+    """`exact`, with its sign always written: +0.6, -0.9999999, +0 (a velocity the user gave, or its negative)."""
+    text = exact(value)
+    return text if text.startswith("-") else "+" + text
+
+
+def shown_signed(value: float, significant: int = 10) -> str:
+    """`shown`, with a + before a positive number: +0.6, −0.6, 0 (zero has no sign)."""
+    return ("+" if value > 0 else "") + shown(value, significant)
+
+
+# --- numbers in tables ----------------------------------------------------------------------------------------
+
+#: significant digits of a coordinate, and of the largest velocity, in a table (`events`, `ledger`, a handout's)
+TABLE_DIGITS = 7
+
+
+def _without_zero_sign(text: str) -> str:
+    """A number's text without the sign of a zero: -0.000 is +0.000 (a value that rounds to zero has no sign)."""
+    mantissa = text.split("e")[0]
+    return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
+
+
+def coordinate_format(values: list[float]):
+    """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
+    kept so that the digits say the precision; rounding-sized values (PRINTED_ZERO of the largest) are 0."""
+    largest = max((abs(x) for x in values), default=0.0)
+
+    def text(x: float) -> str:
+        if abs(x) <= PRINTED_ZERO * largest:
+            return "+0"
+        return _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+    return text
+
+
+def velocity_format(velocities: list[float]):
+    """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
+    the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
+    as many more decimals as keep it from rounding to 1 (`frames.check_below_c`: none is 1)."""
+    largest = max((abs(u) for u in velocities), default=0.0)
+    decimals = TABLE_DIGITS - 1
+    if 0 < largest < 0.1:
+        decimals = TABLE_DIGITS - 2 - math.floor(math.log10(largest))
+
+    def text(u: float) -> str:
+        near_c = math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
+        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c)}f}")
+    return text
+
+
+def number_text(x: float, zero_below: float = 0.0) -> str:
+    """TABLE_DIGITS significant digits, no -0; a value below `zero_below` in size is rounding of a difference: 0."""
+    x = x + 0.0
+    if abs(x) < zero_below:
+        return "0"
+    text = f"{x:.{TABLE_DIGITS}g}"
+    return "0" if float(text) == 0 else text
+
+
+# --- nice numbers -------------------------------------------------------------------------------------------------
+
+#: a nice number is one of these times a power of ten: tick steps, clock steps, scale bars
+NICE_MULTIPLES = (1, 2, 2.5, 5)
+
+
+def nice_number(value: float, bound: str = "at_least") -> float:
+    """The nice number (NICE_MULTIPLES times a power of ten) nearest `value` (> 0) on one side:
+
+    `at_least`: the least not below it (a tick step for at most so many ticks); `at_most`: the largest not
+    above it (a scale bar that fits); `above`: the least strictly above it (the next tick step up). Equality is
+    within STEP_ROUNDING, as `value` is often computed.
+    """
+    if bound == "above":
+        magnitude = 10.0 ** math.floor(math.log10(value) + STEP_ROUNDING)
+        return next(m * magnitude for m in (*NICE_MULTIPLES[1:], 10, 20) if m * magnitude > value * (1 + STEP_ROUNDING))
+    magnitude = 10.0 ** math.floor(math.log10(value))
+    if bound == "at_most":
+        return max(m * magnitude for m in NICE_MULTIPLES if m * magnitude <= value * (1 + STEP_ROUNDING))
+    if bound == "at_least":
+        return next(m * magnitude for m in (*NICE_MULTIPLES, 10) if m * magnitude >= value * (1 - STEP_ROUNDING))
+    raise ValueError(f"bound must be at_least, at_most or above, got {bound!r}")
+
+
+# --- impact labels ------------------------------------------------------------------------------------------------
+
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def impact_parts(label: str) -> tuple[str, str]:
+    """An impact's label split into its particle and its number: B12 -> (B, 12); anything else -> (label, "")."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
+    return (m.group(1), m.group(2)) if m else (label, "")
+
+
+def impact_name(label: str, math_text: bool = False) -> str:
+    """An impact's label as every figure, table and handout writes it: B1 -> B₁ (plain text, subscript digits),
+    or with `math_text` $B_{1}$ for mathtext; anything else as it is."""
+    letter, digits = impact_parts(label)
+    if not digits:
+        return label
+    return f"${letter}_{{{digits}}}$" if math_text else letter + digits.translate(_SUBSCRIPT)
+
+
+# --- fractions ----------------------------------------------------------------------------------------------------
+
 #: the largest denominator a number is written as a fraction with: the paper's are 12ths, 8ths, 25ths at v = 0.6
 FRACTION_DENOMINATOR = 100
-#: a fraction stands for a float within this relative distance (the engine's rounding is about 1e-15 relative)
-FRACTION_MATCH = 1e-12
 
 
 def fraction(value: float, largest_denominator: int = FRACTION_DENOMINATOR) -> tuple[int, int] | None:

@@ -58,12 +58,12 @@ def test_now_line_and_bar_ends_are_the_exact_world_lines_at_each_instant(name, v
             t = instant(h, motion.frame, k, count)
             eta = motion.frame.rapidity
             assert motion.now.get_ydata()[0] == pytest.approx(t, abs=AGREE * (1 + abs(t)))
-            left = h.worldline("rod_left").boosted(eta).event_at_time(t).x
-            right = h.worldline("rod_right").boosted(eta).event_at_time(t).x
+            left = h.worldline("rod_left").seen_from(eta).event_at_time(t).x
+            right = h.worldline("rod_right").seen_from(eta).event_at_time(t).x
             a, b = bar_ends(motion.strip)
             assert (a, b) == (pytest.approx(left, abs=AGREE * (1 + abs(t))), pytest.approx(right, abs=AGREE * (1 + abs(t))))
             for pname, x in zip([n for n in ("A", "B") if h.worldline(n) is not None], motion.strip.dots.get_xdata()):
-                assert x == pytest.approx(h.worldline(pname).boosted(eta).event_at_time(t).x, abs=AGREE * (1 + abs(t)))
+                assert x == pytest.approx(h.worldline(pname).seen_from(eta).event_at_time(t).x, abs=AGREE * (1 + abs(t)))
             if motion.lens is not None:  # the lens: the same rod, measured from the midpoint of its ends
                 a, b = bar_ends(motion.lens)
                 assert a == pytest.approx((left - right) / 2, abs=AGREE * (1 + abs(t)))
@@ -104,7 +104,7 @@ def test_the_bar_colours_are_the_material_points_velocities_through_the_colour_s
             bar = motion.strip.bar
             n = len(bar.get_segments()) + 1
             sigmas = np.linspace(0.0, h.scenario.L, n)
-            velocity = [math.tanh(material_worldline(h, float(sg)).boosted(motion.frame.rapidity).rapidity_at_time(t))
+            velocity = [math.tanh(material_worldline(h, float(sg)).seen_from(motion.frame.rapidity).rapidity_at_time(t))
                         for sg in sigmas]
             want = 0.5 * (np.array(velocity[1:]) + np.array(velocity[:-1]))
             assert np.allclose(bar.get_array(), want, atol=1e-12)
@@ -144,7 +144,7 @@ def test_the_now_line_and_the_bar_colour_are_where_they_should_be_in_the_pixels(
             a, b = bar_ends(motion.strip)
             px, py = strip_ax.transData.transform((0.5 * (a + b), 0.0))
             pixel = images[k][int(height - py), int(px)].astype(int)
-            middle = material_worldline(h, h.scenario.L / 2).boosted(frames[0].rapidity)
+            middle = material_worldline(h, h.scenario.L / 2).seen_from(frames[0].rapidity)
             velocity = math.tanh(middle.rapidity_at_time(t))
             want = np.array(motion.strip.bar.cmap(motion.strip.bar.norm(velocity))[:3]) * 255
             assert np.abs(pixel - want).max() <= 10, (pixel, want)

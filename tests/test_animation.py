@@ -44,14 +44,14 @@ def test_the_bar_runs_from_the_left_end_to_the_right_end_of_the_rod(name, v):
         t_lo, t_hi = time_window(h, frame)
         for t in np.linspace(t_lo, t_hi, 9):
             strip = strip_at(h, frame, float(t), flash=0.0, points=17)
-            left = h.worldline("rod_left").boosted(eta).event_at_time(t).x
-            right = h.worldline("rod_right").boosted(eta).event_at_time(t).x
+            left = h.worldline("rod_left").seen_from(eta).event_at_time(t).x
+            right = h.worldline("rod_right").seen_from(eta).event_at_time(t).x
             scale = 1 + abs(t) + abs(left)
             assert strip.x[0] == pytest.approx(left, abs=AGREE * scale)
             assert strip.x[-1] == pytest.approx(right, abs=AGREE * scale)
             assert np.all(np.diff(strip.x) > 0)  # material points keep their order along the rod
             for pname, x in strip.particles:
-                assert x == pytest.approx(h.worldline(pname).boosted(eta).event_at_time(t).x, abs=AGREE * scale)
+                assert x == pytest.approx(h.worldline(pname).seen_from(eta).event_at_time(t).x, abs=AGREE * scale)
 
 
 @pytest.mark.parametrize("v", [0.3, 0.6, 0.95])
@@ -62,7 +62,7 @@ def test_the_bar_velocities_are_the_material_points_velocities(v):
         for t in np.linspace(t_lo, t_hi, 7):
             strip = strip_at(h, frame, float(t), flash=0.0, points=9)
             for sigma, x, velocity in zip(strip.sigma, strip.x, strip.velocity):
-                w = material_worldline(h, float(sigma)).boosted(frame.rapidity)
+                w = material_worldline(h, float(sigma)).seen_from(frame.rapidity)
                 assert velocity == pytest.approx(math.tanh(w.rapidity_at_time(t)), abs=1e-12)
                 assert x == pytest.approx(w.event_at_time(t).x, abs=AGREE * (1 + abs(t)))
 
@@ -174,7 +174,7 @@ def test_boost_timeline_holds_every_frame_window_and_keeps_the_end_names():
         t_lo, t_hi = time_window(h, frame)
         assert line.t_window[0] <= t_lo and t_hi <= line.t_window[1]
         for name in ("A", "B", "rod_left", "rod_right"):
-            w = h.worldline(name).boosted(frame.rapidity)
+            w = h.worldline(name).seen_from(frame.rapidity)
             for t in (t_lo, t_hi):
                 assert line.x_window[0] - 1e-12 <= w.event_at_time(t).x <= line.x_window[1] + 1e-12
 

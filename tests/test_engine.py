@@ -164,7 +164,7 @@ def test_timing_in_an_arbitrary_frame_lands_on_time():
     h = run(s)
     first = {i.particle: i for i in h.impacts if i.label.endswith("1")}
     eta = math.atanh(0.3)
-    dt = first["A"].event.boosted(eta).t - first["B"].event.boosted(eta).t
+    dt = first["A"].event.seen_from(eta).t - first["B"].event.seen_from(eta).t
     assert dt == pytest.approx(0.7 * 1.5, rel=1e-12)
 
 

@@ -17,7 +17,7 @@ from rodparadox.tables import build as tables
 from rodparadox.handout.document import Diagram, Handout, Heading, Paragraph, Question, Strips, Table
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
-from rodparadox.physics.rod import rod_on_slice
+from rodparadox.physics.rod import rod_slice
 from rodparadox.io.scenario import builtin_names, load, parse
 
 
@@ -89,10 +89,10 @@ def test_fig2_explanation_gives_the_rods_velocity_after_a1_in_s_prime_as_15_17()
     h = history("fig2", 0.6)
     eta = math.atanh(-0.6)
     sigma = np.linspace(0.0, 1.0, 41)
-    now = rod_on_slice(h, eta, 17 / 12, sigma)  # rapidities in S'
+    now = rod_slice(h, eta, 17 / 12, sigma)  # rapidities in S'
     assert np.allclose(now.rapidity[1:-1], 0.0, atol=1e-9) and now.x[-1] - now.x[0] == pytest.approx(1.0, abs=1e-9)
     for t in (17 / 12 - 0.05, 17 / 12 + 0.05):
-        assert np.ptp(rod_on_slice(h, eta, t, sigma).rapidity[1:-1]) > 1e-3
+        assert np.ptp(rod_slice(h, eta, t, sigma).rapidity[1:-1]) > 1e-3
 
 
 def test_fig1_explanation_simultaneous_in_s_not_in_s_prime_and_the_rod_keeps_plus_v():
@@ -422,7 +422,7 @@ class Independent:
             self.add(u, momentum(p.mass, u))
             kinetic_p, kinetic_E = kinetic_p + momentum(p.mass, u), kinetic_E + energy(p.mass, u)
         sigma = np.linspace(0.0, s.L, 3201)
-        rapidity = rod_on_slice(h, math.atanh(-v), t_slice, sigma).rapidity
+        rapidity = rod_slice(h, math.atanh(-v), t_slice, sigma).rapidity
         rod_p = np.trapezoid(np.sinh(rapidity), sigma) / s.L
         rod_E = np.trapezoid(np.cosh(rapidity), sigma) / s.L
         slack = 1e-6  # the trapezoid sum's error, about 3e-8 at 3201 points (measured against quadrature)

@@ -48,7 +48,7 @@ def test_material_lines_are_the_exact_world_lines_of_evenly_spaced_points(name, 
         lines = lines_of(fig, rf"{letter}-rod-line-\d+")
         assert sorted(lines) == [f"{letter}-rod-line-{k}" for k in range(1, 6)]
         for k in range(1, 6):
-            exact = material_worldline(h, k * L / 6).boosted(frame.rapidity)
+            exact = material_worldline(h, k * L / 6).seen_from(frame.rapidity)
             points = lines[f"{letter}-rod-line-{k}"]
             x = np.array([exact.event_at_time(t * L).x / L for t in points[:, 1]])
             assert np.abs(x - points[:, 0]).max() <= 1.1e-4  # every vertex on the exact curve (sampled within 1e-4 L)
@@ -61,7 +61,7 @@ def test_the_rods_own_lines_are_L_long_end_to_end_and_fan_out_from_each_pivot(na
     for letter, frame in zip("ab", paper_frames(h.scenario.v)):
         segments = lines_of(fig, rf"{letter}-rod-now-\d+")
         assert segments
-        left, right = (h.worldline(end).boosted(frame.rapidity) for end in ("rod_left", "rod_right"))
+        left, right = (h.worldline(end).seen_from(frame.rapidity) for end in ("rod_left", "rod_right"))
         ends = []
         for (x0, t0), (x1, t1) in segments.values():
             assert (x1 - x0) ** 2 - (t1 - t0) ** 2 == pytest.approx(1.0, abs=1e-9)  # proper length L (units of L)
@@ -69,7 +69,7 @@ def test_the_rods_own_lines_are_L_long_end_to_end_and_fan_out_from_each_pivot(na
             assert right.event_at_time(t1 * L).x / L == pytest.approx(x1, abs=1e-9)
             ends += [(x0, t0), (x1, t1)]
         for turn in h.turns:
-            p = turn.pivot.boosted(frame.rapidity)
+            p = turn.pivot.seen_from(frame.rapidity)
             through = sum(math.hypot(x - p.x / L, t - p.t / L) < 1e-9 for x, t in ends)
             assert through >= 4 or not turn.completed  # the fan: four lines through the pivot
 
@@ -86,7 +86,7 @@ def test_clock_ticks_are_the_same_events_in_every_panel_and_a_step_of_proper_tim
     shared = 0
     for name_, points in in_moving.items():
         body = name_[len("b-clock-"):]
-        back = [Event(x * L, t * L).boosted(-frames[1].rapidity) for x, t in points]  # to S
+        back = [Event(x * L, t * L).seen_from(-frames[1].rapidity) for x, t in points]  # to S
         window = (frames[0], in_s[f"a-clock-{body}"])
         ticks_s = {(round(x, 6), round(t, 6)) for x, t in window[1]}
         lo, hi = window[1][:, 1].min(), window[1][:, 1].max()

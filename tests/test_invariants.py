@@ -7,7 +7,7 @@ evaluated from the raw fields of their segments (a Line's end points, a
 HyperbolicArc's centre, radius, side and angles), boosts are written out as
 x' = g(x - u t), t' = g(t - u x), collisions are redone with velocities and the
 relativistic velocity-addition law. The engine's own `event_at_time`,
-`boosted` and `elastic` are what is being tested, never the reference.
+`seen_from` (the boosts) and `elastic` are what is being tested, never the reference.
 
 Three engine bugs first found here have their own regression tests: a heavy
 particle left inside the rod by a turn stopped under rule 6, a second impact
@@ -284,7 +284,7 @@ def with_examples(*extra):
 # --- the checks -----------------------------------------------------------------------------------
 
 def tracks(history: History, eta: float = 0.0) -> dict[str, Track]:
-    return {name: Track(w.boosted(eta) if eta else w) for name, w in history.worldlines}
+    return {name: Track(w.seen_from(eta) if eta else w) for name, w in history.worldlines}
 
 
 def time_window(history: History, eta: float) -> tuple[float, float]:
@@ -292,7 +292,7 @@ def time_window(history: History, eta: float) -> tuple[float, float]:
     L = history.scenario.L
     times = [0.0]
     for name, w in history.worldlines:
-        b = w.boosted(eta)
+        b = w.seen_from(eta)
         times += [b.first.t, b.last.t]
     return min(times) - 2 * L, max(times) + 2 * L
 
@@ -388,7 +388,7 @@ def check_impact_lines(history: History) -> None:
 def check_continuous_timelike(history: History, eta: float = 0.0) -> None:
     L = history.scenario.L
     for name, w in history.worldlines:
-        w = w.boosted(eta) if eta else w
+        w = w.seen_from(eta) if eta else w
         assert math.isfinite(w.rapidity_before) and math.isfinite(w.rapidity_after)
         pieces = Track(w).pieces
         for a, b in zip(pieces[1:-1], pieces[2:-1]):
@@ -629,7 +629,7 @@ def check_frames(history: History, u: float) -> None:
         tol = 1e-12 * scale_of(L, x, t, i.event.x, i.event.t)
         assert e.impact == i
         assert (e.x, e.t) == pytest.approx((x, t), abs=tol)
-        b = i.event.boosted(eta)
+        b = i.event.seen_from(eta)
         assert (b.x, b.t) == pytest.approx((x, t), abs=tol)
         for seen, rapidity in ((e.particle_velocity_before, i.particle_rapidity_before),
                                (e.particle_velocity_after, i.particle_rapidity_after),
@@ -639,7 +639,7 @@ def check_frames(history: History, u: float) -> None:
     in_s, in_u = tracks(history), tracks(history, eta)
     lo, hi = time_window(history, 0.0)
     for name, w in history.worldlines:
-        boosted = w.boosted(eta)
+        boosted = w.seen_from(eta)
         for t in sample_times(lo, hi, 12, [in_s[name]]):
             x = in_s[name].x(t)
             xb, tb = boost(x, t, u)
@@ -649,8 +649,8 @@ def check_frames(history: History, u: float) -> None:
             assert in_u[name].x(tb) == pytest.approx(xb, abs=tol)  # the exact boosted segments
     # there and back is the identity; two boosts are one boost by the sum of their rapidities
     for name, w in history.worldlines:
-        back = Track(w.boosted(eta).boosted(-eta))
-        twice, once = Track(w.boosted(eta).boosted(0.4)), Track(w.boosted(eta + 0.4))
+        back = Track(w.seen_from(eta).seen_from(-eta))
+        twice, once = Track(w.seen_from(eta).seen_from(0.4)), Track(w.seen_from(eta + 0.4))
         for t in sample_times(lo, hi, 6, [in_s[name]]):
             assert back.x(t) == pytest.approx(in_s[name].x(t), abs=1e-9 * scale_of(L, t))
             t2 = boost(in_s[name].x(t), t, math.tanh(eta + 0.4))[1]
@@ -719,7 +719,7 @@ def polyline_distance(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
 
 def check_arc_sampling(arc: HyperbolicArc, tolerance: float, eta: float = 0.0) -> None:
     """`sample(tol)` of the arc boosted by eta stays within tol of the true curve, evaluated densely here."""
-    drawn = (arc.boosted(eta) if eta else arc).sample(tolerance)
+    drawn = (arc.seen_from(eta) if eta else arc).sample(tolerance)
     u = math.tanh(eta)
     phis = np.linspace(arc.phi_start, arc.phi_end, 3001)
     true = np.array([boost(*arc_point(arc, phi), u) for phi in phis])
@@ -877,15 +877,15 @@ def test_boosts_go_there_and_back_and_compose(x, t, a, b):
     e = Event(x, t)
     scale = scale_of(x, t) * math.cosh(abs(a) + abs(b)) ** 2
     expected = boost(x, t, math.tanh(a))
-    assert (e.boosted(a).x, e.boosted(a).t) == pytest.approx(expected, abs=1e-12 * scale)
-    back = e.boosted(a).boosted(-a)
+    assert (e.seen_from(a).x, e.seen_from(a).t) == pytest.approx(expected, abs=1e-12 * scale)
+    back = e.seen_from(a).seen_from(-a)
     assert (back.x, back.t) == pytest.approx((x, t), abs=1e-12 * scale)
-    twice, once = e.boosted(a).boosted(b), e.boosted(a + b)
+    twice, once = e.seen_from(a).seen_from(b), e.seen_from(a + b)
     assert (twice.x, twice.t) == pytest.approx((once.x, once.t), abs=1e-12 * scale)
     # the paper's S' (velocity -v): x' = g(x + v t), t' = g(t + v x)
     v = math.tanh(abs(a)) or 0.5
     g = 1 / math.sqrt(1 - v * v)
-    primed = e.boosted(-math.atanh(v))
+    primed = e.seen_from(-math.atanh(v))
     assert (primed.x, primed.t) == pytest.approx((g * (x + v * t), g * (t + v * x)), abs=1e-12 * scale)
     # the interval is the same in every frame
     assert twice.x ** 2 - twice.t ** 2 == pytest.approx(x * x - t * t, abs=1e-11 * scale * scale_of(x, t))
@@ -901,11 +901,11 @@ def test_boosted_arcs_are_the_boosted_curves(cx, ct, d, side, phi0, span, a, b):
         x, t = arc_point(arc, phi)
         for eta in (a, a + b):
             bx, bt = boost(x, t, math.tanh(eta))
-            seen = arc.boosted(eta)
+            seen = arc.seen_from(eta)
             scale = scale_of(x, t, cx, ct, d) * math.cosh(abs(eta)) * math.cosh(abs(phi) + abs(eta))
             assert arc_point(seen, phi - eta) == pytest.approx((bx, bt), abs=1e-12 * scale)
             assert seen.event_at_time(bt).x == pytest.approx(bx, abs=1e-9 * scale)
-        composed, direct = arc.boosted(a).boosted(b), arc.boosted(a + b)
+        composed, direct = arc.seen_from(a).seen_from(b), arc.seen_from(a + b)
         assert (composed.phi_start, composed.phi_end) == pytest.approx((direct.phi_start, direct.phi_end), abs=1e-12)
         assert (composed.centre.x, composed.centre.t) == pytest.approx((direct.centre.x, direct.centre.t),
                                                                        abs=1e-12 * scale_of(cx, ct) * math.cosh(3) ** 2)
@@ -1038,10 +1038,10 @@ def test_interrupted_turn_keeps_pivot_particle_outside(scenario):
 
 
 def test_boosted_worldline_can_be_read_at_every_time():
-    """Invariant 4 asks `worldline.boosted(eta).event_at_time(t)` for any t, also in the rounding gap (here 1.4e-14)
+    """Invariant 4 asks `worldline.seen_from(eta).event_at_time(t)` for any t, also in the rounding gap (here 1.4e-14)
     that boosting leaves between ZIGZAG's two left-end arcs in S' (it raised AssertionError before 300b53b)."""
     history, eta = run(ZIGZAG), -math.atanh(ZIGZAG.v)
-    w = history.worldline("rod_left").boosted(eta)
+    w = history.worldline("rod_left").seen_from(eta)
     a, b = w.segments[0], w.segments[1]
     t = 0.5 * (a.end.t + b.start.t)  # 10.648522228038296, between 10.648522228038289 and ...303
     assert w.event_at_time(t).x == pytest.approx(Track(w).x(t), abs=1e-9 * ZIGZAG.L)

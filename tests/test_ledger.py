@@ -34,9 +34,9 @@ from hypothesis import strategies as st
 
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import Frame, view
-from rodparadox.physics.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_on_slice,
+from rodparadox.physics.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_kinetic,
                                turn_times)
-from rodparadox.physics.rod import material_worldline, now_lines, rod_on_slice as rod_points, turn_interval
+from rodparadox.physics.rod import material_worldline, now_lines, rod_slice, turn_interval
 from rodparadox.io.scenario import Particle, Scenario, builtin_names, load
 
 from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
@@ -60,7 +60,7 @@ def test_the_ends_are_the_material_points_0_and_L(name, eta):
     h = run(load(name).with_overrides(L=2.3))
     L = h.scenario.L
     for end, sigma in (("rod_left", 0.0), ("rod_right", L)):
-        w, m = h.worldline(end).boosted(eta), material_worldline(h, sigma).boosted(eta)
+        w, m = h.worldline(end).seen_from(eta), material_worldline(h, sigma).seen_from(eta)
         lo, hi = min(i.event.time_in(eta) for i in h.impacts) - 3 * L, max(i.event.time_in(eta) for i in h.impacts) + 5 * L
         for t in np.linspace(lo, hi, 157):
             assert m.event_at_time(t).x == pytest.approx(w.event_at_time(t).x, abs=1e-12 * (L + abs(t)))
@@ -123,7 +123,7 @@ def test_the_rod_on_a_slice_is_rigid_in_its_own_frame_between_turns():
     h = run(load("fig2").with_overrides(v=0.8))
     eta = h.final_rapidity
     t = max(turn_interval(turn, eta)[1] for turn in h.turns) + 1.0
-    s = rod_points(h, eta, t, np.linspace(0, 1, 11))
+    s = rod_slice(h, eta, t, np.linspace(0, 1, 11))
     assert np.allclose(np.diff(s.x), 0.1, atol=1e-12) and np.allclose(s.velocity, 0.0, atol=1e-12)
 
 
@@ -350,9 +350,9 @@ def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios
         near = L * np.logspace(-12, -2.4, 500)
         edges = np.unique(np.concatenate([np.linspace(0.0, L, 4001), near, L - near]))
         mids, widths = 0.5 * (edges[1:] + edges[:-1]), np.diff(edges)
-        psi = rod_points(history, eta, t, mids).rapidity
+        psi = rod_slice(history, eta, t, mids).rapidity
         E, p = (np.cosh(psi) * widths).sum() / L, (np.sinh(psi) * widths).sum() / L
-        exact = rod_on_slice(history, eta, t)
+        exact = rod_kinetic(history, eta, t)
         assert close(exact, (E, p), 1e-5 * math.cosh(np.abs(psi).max())), (t, exact, E, p)
         RUNS["compared"] += 1
     runs_enough(prop, 30)

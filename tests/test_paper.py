@@ -218,7 +218,7 @@ def frame_of(name: str, v: float) -> Frame:
 
 
 def engine_worldline(fig: str, frame: str, name: str, v: float, L: float):
-    return history(fig, v, L).worldline(name).boosted(frame_of(frame, v).rapidity)
+    return history(fig, v, L).worldline(name).seen_from(frame_of(frame, v).rapidity)
 
 
 def engine_x(fig: str, frame: str, name: str, v: float, L: float, t: float) -> float:
@@ -297,7 +297,7 @@ def test_impacts_match_closed_forms_in_both_frames(fig, v, L):
             assert agrees(e.x, want.x, scale), (frame, e.impact.label, "x", e.x, want.x)
             assert agrees(e.t, want.t, scale), (frame, e.impact.label, "t", e.t, want.t)
             # the same event boosted by hand from the engine's S coordinates
-            direct = e.impact.event.boosted(math.atanh(frame_of(frame, v).velocity))
+            direct = e.impact.event.seen_from(math.atanh(frame_of(frame, v).velocity))
             assert agrees(direct.x, want.x, scale) and agrees(direct.t, want.t, scale)
             for got, exp in ((e.particle_velocity_before, want.particle_before),
                              (e.particle_velocity_after, want.particle_after),
@@ -618,7 +618,7 @@ def test_engine_worldlines_readable_at_every_impact_time_in_both_frames():
             for frame in ("rest", "moving"):
                 eta = frame_of(frame, v).rapidity
                 for impact in h.impacts:
-                    e = impact.event.boosted(eta)
+                    e = impact.event.seen_from(eta)
                     for name, _ in h.worldlines:
                         read = engine_worldline(fig, frame, name, v, L).event_at_time(e.t)
                         assert abs(read.t - e.t) <= 1e-12 * (L + abs(e.t))

@@ -56,12 +56,12 @@ def test_one_row_per_time_earliest_on_top_each_bar_the_exact_rod(name, v, which)
     tops = [ax.get_position().y0 for ax in rows]
     assert tops == sorted(tops, reverse=True)  # top to bottom
     for ax, t in zip(rows, sorted(times)):
-        left = h.worldline("rod_left").boosted(eta).event_at_time(t).x
-        right = h.worldline("rod_right").boosted(eta).event_at_time(t).x
+        left = h.worldline("rod_left").seen_from(eta).event_at_time(t).x
+        right = h.worldline("rod_right").seen_from(eta).event_at_time(t).x
         a, b = bar_ends(ax)
         assert a == pytest.approx(left, abs=AGREE * (1 + abs(t))) and b == pytest.approx(right, abs=AGREE * (1 + abs(t)))
         dots = drawn(ax, "particles").get_xdata()
-        want = [h.worldline(p).boosted(eta).event_at_time(t).x for p in ("A", "B") if h.worldline(p) is not None]
+        want = [h.worldline(p).seen_from(eta).event_at_time(t).x for p in ("A", "B") if h.worldline(p) is not None]
         assert np.allclose(dots, want, atol=AGREE * (1 + abs(t)), rtol=0)
         assert ax.get_xlim() == rows[0].get_xlim()  # one shared x axis
 
@@ -131,7 +131,7 @@ def test_update_strip_moves_the_bar_to_the_exact_rod_at_another_instant():
         update_strip(artists, strip_at(h, frame, t, 0.0), frame)
         eta = frame.rapidity
         a, b = bar_ends(ax)
-        assert a == pytest.approx(h.worldline("rod_left").boosted(eta).event_at_time(t).x, abs=1e-11)
-        assert b == pytest.approx(h.worldline("rod_right").boosted(eta).event_at_time(t).x, abs=1e-11)
+        assert a == pytest.approx(h.worldline("rod_left").seen_from(eta).event_at_time(t).x, abs=1e-11)
+        assert b == pytest.approx(h.worldline("rod_right").seen_from(eta).event_at_time(t).x, abs=1e-11)
         said = artists.readout.get_text()
         assert said.startswith("t\N{PRIME} = ") and said.endswith(" L in S\N{PRIME}"), said

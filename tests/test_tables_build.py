@@ -10,9 +10,9 @@ import pytest
 from rodparadox.handout.document import Cell, Table
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import moving_frame, rest_frame
-from rodparadox.numbers import MINUS, fraction, fraction_text
+from rodparadox.numbers import MINUS, fraction, fraction_text, impact_name
 from rodparadox.io.scenario import load
-from rodparadox.tables.build import events_table, hidden_table, impact_name, ledger_table, with_fraction
+from rodparadox.tables.build import events_table, hidden_table, ledger_table, with_fraction
 
 
 def history(name: str, v: float = 0.6):

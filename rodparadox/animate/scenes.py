@@ -21,7 +21,6 @@ The interface the real drawing keeps:
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from typing import Iterator, NamedTuple
 
@@ -32,7 +31,8 @@ from matplotlib.figure import Figure
 from rodparadox.animate.timeline import BoostTimeline, NowTimeline
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, sampling_tolerance
-from rodparadox.numbers import shown
+from rodparadox.physics.model import frame_velocity
+from rodparadox.numbers import impact_name, nice_number, shown
 from rodparadox.render.styles import STYLES
 
 _DPI = 100
@@ -174,7 +174,7 @@ class NowScene:
         longest = max(float(np.ptp(self.timeline.strip(self.history, int(k), p).x)) for k in ks) / self.L
         if longest >= LENS_BELOW * span:
             return 1.0
-        return _round_below(LENS_FILL * span / longest)
+        return nice_number(LENS_FILL * span / longest, "at_most")
 
     def update(self, k: int) -> list:
         from rodparadox.render.strip import update_strip
@@ -187,12 +187,6 @@ class NowScene:
             if motion.lens is not None:
                 moved += update_strip(motion.lens, _about_midpoint(shown_now), motion.frame, L)
         return moved
-
-
-def _round_below(value: float) -> float:
-    """The largest of 1, 2, 2.5, 5 times a power of ten not above `value` (> 0)."""
-    magnitude = 10.0 ** math.floor(math.log10(value))
-    return max(m * magnitude for m in (1, 2, 2.5, 5) if m * magnitude <= value * (1 + 1e-9))
 
 
 def _about_midpoint(strip):
@@ -213,7 +207,7 @@ def _offset_ticks(half: float) -> tuple[np.ndarray, float]:
     """The lens's ticks over -half..half: the midpoint and a round step each side of it; and the step."""
     from rodparadox.render.text import ticks_at
 
-    step = _round_below(0.9 * half)
+    step = nice_number(0.9 * half, "at_most")
     return ticks_at(-half, half, step), step
 
 
@@ -340,7 +334,7 @@ def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np
                                    style="italic", zorder=9, bbox=ground, animated=True)
                      for name, ink in inks.items() if not name.startswith("rod_")}
         dots = ax.plot([], [], **impact_marker(st), zorder=7, animated=True)[0]
-        labels = [ax.text(0, 0, render.impact_text(i.label), fontsize=1.1 * fs, va="center", zorder=9, bbox=ground,
+        labels = [ax.text(0, 0, impact_name(i.label, math_text=True), fontsize=1.1 * fs, va="center", zorder=9, bbox=ground,
                           animated=True) for i in history.impacts]
         figure.legend([h for h, _ in key], [text for _, text in key], loc="upper left",
                       bbox_to_anchor=((left + side + 0.3) / width, 1 - top / height), fontsize=fs,
@@ -351,21 +345,21 @@ def _boost(history: History, timeline: BoostTimeline, style: str) -> Iterator[np
         for frame in timeline.frames:
             canvas.restore_region(background)
             eta = frame.rapidity
-            points = {name: w.boosted(eta).sample(*timeline.t_window, tolerance) / L for name, w in history.worldlines}
+            points = {name: w.seen_from(eta).sample(*timeline.t_window, tolerance) / L for name, w in history.worldlines}
             for name, line in lines.items():
                 line.set_data(points[name][:, 0], points[name][:, 1])
             sheet.set_xy(np.concatenate([points["rod_left"], points["rod_right"][::-1]]))
             for (other, axis), line in axes_of.items():
-                u = render.relative_velocity(0.0 if other == "rest" else -v, frame.velocity)  # that frame, seen here
+                u = render.relative_velocity(frame_velocity(other, v), frame.velocity)  # that frame, seen here
                 dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
                 line.set_data([-reach * dx, reach * dx], [-reach * dt, reach * dt])
                 names[(other, axis)].set_position(_inside_end(dx, dt, (x0, x1, t0, t1)))
             for name, text in particles.items():  # beside the world-line, as high up as it is inside the panel
-                place = _letter_place(history.worldline(name).boosted(eta), L, (x0, x1, t0, t1))
+                place = _letter_place(history.worldline(name).seen_from(eta), L, (x0, x1, t0, t1))
                 text.set_visible(place is not None)
                 if place is not None:
                     text.set_position(place)
-            events = [i.event.boosted(eta) for i in history.impacts]
+            events = [i.event.seen_from(eta) for i in history.impacts]
             dots.set_data([e.x / L for e in events], [e.t / L for e in events])
             for text, e in zip(labels, events):
                 text.set_position((e.x / L + 0.025 * (x1 - x0), e.t / L))

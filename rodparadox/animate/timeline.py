@@ -112,7 +112,7 @@ def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) 
     left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
     at every instant."""
     eta = frame.rapidity
-    return tuple(material_worldline(history, float(sigma)).boosted(eta)
+    return tuple(material_worldline(history, float(sigma)).seen_from(eta)
                  for sigma in np.linspace(0.0, history.scenario.L, points))
 
 
@@ -126,11 +126,11 @@ def strip_at(history: History, frame: Frame, t: float, flash: float, points: int
     sigmas = np.linspace(0.0, history.scenario.L, len(material))
     x = np.array([w.event_at_time(t).x for w in material])
     rapidity = np.array([w.rapidity_at_time(t) for w in material])
-    particles = tuple((name, history.worldline(name).boosted(eta).event_at_time(t).x)
+    particles = tuple((name, history.worldline(name).seen_from(eta).event_at_time(t).x)
                       for name in ("A", "B") if history.worldline(name) is not None)
     lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
     return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
-                 tuple(i.event.boosted(eta).x for i in lit))
+                 tuple(i.event.seen_from(eta).x for i in lit))
 
 
 def flash_time(window: tuple[float, float], count: int) -> float:
@@ -231,7 +231,7 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
     """--frame in boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
     from rodparadox.errors import FrameError
-    from rodparadox.physics.frames import frame_of_velocity
+    from rodparadox.physics.frames import frame_of_velocity, named_frame
 
     spec = spec.strip()
     if spec == "both":
@@ -243,7 +243,7 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
     ends = []
     for part in (p.strip() for p in parts):
         if part in ("rest", "moving"):
-            ends.append(Frame(part, 0.0 if part == "rest" else -v))
+            ends.append(named_frame(part, v))
             continue
         try:
             ends.append(frame_of_velocity(float(part) + 0.0))

@@ -14,7 +14,7 @@ same blocks on paper and in LaTeX.
 Conventions (README, "The model"): c = 1; x and t are quoted as multiples of L
 (17/12 L), so they hold for any L; speeds as fractions of c; masses in M,
 energies in M c², momenta in M c. S′ moves at −v relative to S, so
-t′ = γ(t + v x) (derived in the answers from `Event.boosted`, never copied from
+t′ = γ(t + v x) (derived in the answers from `Event.seen_from`, never copied from
 the paper's appendix, which misprints the sign). A number is written as a
 fraction where a small-denominator one matches and its decimal never ends
 (`numbers.fraction_text`: 17/12, 15/17), else with PROSE_DIGITS significant
@@ -33,14 +33,14 @@ from rodparadox.tables import build as tables
 from rodparadox.handout.document import Block, Diagram, Handout, Heading, Paragraph, Question, Section, Strips
 from rodparadox.physics.engine import History, Impact, Turn, run
 from rodparadox.errors import RodParadoxError
-from rodparadox.physics.frames import (ONE_INSTANT, PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
+from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
                      rest_frame, time_window)
 from rodparadox.physics.ledger import initial_total, ledger_slice
-from rodparadox.io.ledger_report import ROUNDING_ZERO
-from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, shown
-from rodparadox.physics.rod import rod_on_slice, turn_corners, turn_interval
+from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, exact, fraction_text, impact_name, shown
+from rodparadox.physics.rod import rod_slice, turn_corners, turn_interval
 from rodparadox.physics.frames import time_order
-from rodparadox.tables.build import coordinates, impact_name
+from rodparadox.tables.build import coordinates
+from rodparadox.tolerances import ONE_INSTANT, PRINTED_ZERO
 
 #: significant digits of a number in running text (explanations, captions), and in a worked answer
 PROSE_DIGITS = 4
@@ -172,7 +172,7 @@ class _Reading:
 
     @staticmethod
     def x(impact: Impact, frame: Frame) -> float:
-        return impact.event.boosted(frame.rapidity).x
+        return impact.event.seen_from(frame.rapidity).x
 
     def length(self, value: float) -> float:
         """A coordinate or time as a multiple of L, rounding-sized values 0 (x′ = 0 of A₁ in Fig. 1 is 6e-17)."""
@@ -743,7 +743,7 @@ def _which_end_first(r: _Reading, frame: Frame) -> str:
     def change(end: str, turn: Turn, struck: bool, start: float, stop: float) -> str:
         """What one end does in one turn: jumps at its impact, or follows the hyperbola."""
         if struck:
-            before, after = (r.velocity(x + eta, frame) for x in _kink(h.worldline(f"rod_{end}").boosted(eta), start))
+            before, after = (r.velocity(x + eta, frame) for x in _kink(h.worldline(f"rod_{end}").seen_from(eta), start))
             return f"is struck by {_names(r.impacts_at(turn.pivot))} and {_direction(before, after)} at once"
         return _gradually(r.velocity(turn.rapidity_from, frame), r.velocity(turn.rapidity_stop, frame)) + \
             f" by {time} = {_in_l(r.length(stop))}"
@@ -890,7 +890,7 @@ _Asked = tuple[str, tuple[str, ...]]
 
 def _question_lorentz(r: _Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -> _Asked:
     """Transform one or two impacts from frame a to frame b: t_b = γ(t_a − w x_a), w the velocity of b relative to a
-    (`kinematics.Event.boosted`: x′ = γ(x − u t), t′ = γ(t − u x) for a frame of velocity u)."""
+    (`kinematics.Event.seen_from`: x′ = γ(x − u t), t′ = γ(t − u x) for a frame of velocity u)."""
     w = _relative(a, b)
     g = _gamma(w)
     xa, ta = coordinates(a)
@@ -989,7 +989,7 @@ def _question_velocity(r: _Reading, a: Frame, b: Frame) -> _Asked:
 def _whole_rod(r: _Reading, frame: Frame, t: float) -> bool:
     """Whether every material point of the rod has one velocity on the slice t of the frame (no turn crosses it)."""
     sigmas = [k * r.L / (WHOLE_ROD_POINTS - 1) for k in range(WHOLE_ROD_POINTS)]
-    rapidities = rod_on_slice(r.history, frame.rapidity, t, sigmas).rapidity
+    rapidities = rod_slice(r.history, frame.rapidity, t, sigmas).rapidity
     return float(max(rapidities) - min(rapidities)) <= SAME_RAPIDITY
 
 
@@ -1013,7 +1013,7 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     chosen = None
     for f in [b, a] + [f for f in r.frames if f not in (a, b)]:
         total = initial_total(h, f.rapidity)
-        zero = ROUNDING_ZERO * max(total.E, abs(total.p))  # a difference of totals below this is rounding
+        zero = PRINTED_ZERO * max(total.E, abs(total.p))  # a difference of totals below this is rounding
         for t in tables.hidden_instants(h, f):
             hidden = ledger_slice(h, f.rapidity, t).hidden
             if abs(hidden.p) > zero:
@@ -1027,7 +1027,7 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
     _, f, t = chosen
     s = ledger_slice(h, f.rapidity, t)
     total = initial_total(h, f.rapidity)
-    zero = ROUNDING_ZERO * max(total.E, abs(total.p))
+    zero = PRINTED_ZERO * max(total.E, abs(total.p))
     symbol, time = _frame_name(f), _time_of(f)
     whole = _whole_rod(r, f, t)
     bodies = dict(s.bodies)
@@ -1037,14 +1037,14 @@ def _question_hidden(r: _Reading, a: Frame, b: Frame) -> _Asked | None:
         if name not in bodies:
             continue
         m = h.scenario.particle(name).mass
-        u = r.velocity(h.worldline(name).boosted(f.rapidity).rapidity_at_time(t) + f.rapidity, f)
+        u = r.velocity(h.worldline(name).seen_from(f.rapidity).rapidity_at_time(t) + f.rapidity, f)
         known.append(f"{name} moves at {_velocity(u, ANSWER_DIGITS)}")
         p = 0.0 if abs(bodies[name].p) <= zero else bodies[name].p
         steps.append(f"{name}: {_n7(m)} × {_bracketed(u)}/√(1 − {_bracketed(u)}²) = {_n7(p)} M c.")
         terms.append(p)
     rod_p = 0.0 if abs(bodies["rod"].p) <= zero else bodies["rod"].p
     if whole:
-        u = math.tanh(rod_on_slice(h, f.rapidity, t, [0.5 * r.L]).rapidity[0])
+        u = math.tanh(rod_slice(h, f.rapidity, t, [0.5 * r.L]).rapidity[0])
         known.append(f"the rod moves as a whole at {_velocity(u, ANSWER_DIGITS)}")
         steps.append(f"The rod: 1 × {_bracketed(u)}/√(1 − {_bracketed(u)}²) = {_n7(rod_p)} M c.")
     else:
@@ -1268,7 +1268,7 @@ def _question_together(r: _Reading, b: Frame) -> _Asked | None:
     momenta = [_momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
                for i in c]
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
-              f"{_listed([_n7(p) + ' M c' for p in momenta])}, which cancel)" if abs(sum(momenta)) <= ROUNDING_ZERO * sum(
+              f"{_listed([_n7(p) + ' M c' for p in momenta])}, which cancel)" if abs(sum(momenta)) <= PRINTED_ZERO * sum(
                   abs(p) for p in momenta) else "")
     text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
             f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")

@@ -10,13 +10,11 @@ from __future__ import annotations
 import csv
 import io
 import json
-import math
 from typing import Any
 
 from rodparadox.physics.engine import History
-from rodparadox.errors import FrameError
-from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
-from rodparadox.numbers import exact
+from rodparadox.physics.frames import Frame, FrameView, check_below_c, sampling_tolerance, view
+from rodparadox.numbers import coordinate_format, exact, exact_signed, velocity_format
 from rodparadox.physics.kinematics import HyperbolicArc, Line, Segment
 
 FORMAT = "sears-paradox/1"
@@ -104,66 +102,7 @@ def to_csv(history: History, frames: tuple[Frame, ...]) -> str:
     return out.getvalue()
 
 
-def check_below_c(fv: FrameView) -> None:
-    """Refuse a frame in which a body's velocity rounds to c: written as 1.0 it would be a lie (a body at c).
-
-    A particle far heavier than the rod can throw it to a rapidity whose tanh, in a fast frame, is 1 in
-    double precision though the speed is below c (mass 1e9, v = 0.9999999, frame u = 0.9999999).
-    """
-    eta = fv.frame.rapidity
-    for e in fv.events:
-        i = e.impact
-        for body, phi, when in ((f"particle {i.particle}", i.particle_rapidity_before, "before"),
-                                (f"particle {i.particle}", i.particle_rapidity_after, "after"),
-                                ("rod", i.rod_rapidity_before, "before"), ("rod", i.rod_rapidity_after, "after")):
-            if abs(math.tanh(phi - eta)) == 1.0:
-                gap = 2.0 / (math.exp(min(2.0 * abs(phi - eta), 700.0)) + 1.0)  # 1 - |tanh|, without cancelling
-                raise FrameError(f"in frame {fv.frame.name} the {body}'s velocity {when} {i.label} is within "
-                                 f"{gap:.1e} of c, closer than double precision can write; choose a slower frame, "
-                                 f"a slower v or a lighter particle.")
-
-
 # --- the events table ---------------------------------------------------------------------------------
-
-#: significant digits of a coordinate, and of the largest velocity, in the events table
-TABLE_DIGITS = 7
-#: a coordinate smaller than this fraction of the table's largest is rounding, not position: double precision
-#: carries 16 digits, and the engine's events are exact to about 1e-9 relative at its bounds (README)
-ROUNDING = 1e-12
-
-
-def _plain_zero(text: str) -> str:
-    """A number's text without the sign of a zero: -0.000 is +0.000 (a value that rounds to zero has no sign)."""
-    mantissa = text.split("e")[0]
-    return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
-
-
-def coordinate_format(values: list[float]):
-    """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
-    kept so that the digits say the precision; rounding-sized values (ROUNDING) are 0."""
-    largest = max((abs(x) for x in values), default=0.0)
-
-    def text(x: float) -> str:
-        if abs(x) <= ROUNDING * largest:
-            return "+0"
-        return _plain_zero(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
-    return text
-
-
-def velocity_format(velocities: list[float]):
-    """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
-    the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
-    as many more decimals as keep it from rounding to 1 (check_below_c: none is 1)."""
-    largest = max((abs(u) for u in velocities), default=0.0)
-    decimals = TABLE_DIGITS - 1
-    if 0 < largest < 0.1:
-        decimals = TABLE_DIGITS - 2 - math.floor(math.log10(largest))
-
-    def text(u: float) -> str:
-        near_c = math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
-        return _plain_zero(f"{u + 0.0:+.{max(decimals, near_c)}f}")
-    return text
-
 
 def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     """A readable table of the impacts in each frame, for `sears-paradox events`.
@@ -199,7 +138,8 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     for f, fv in zip(frames, views):
         title = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name, "")
         lines += ["", f"frame {f.name}" + (f" ({title})" if title else "") +
-                  f": velocity {_signed(f.velocity)} relative to S; the rod first moves at {_signed(f.rod_velocity())}",
+                  f": velocity {exact_signed(f.velocity)} relative to S; the rod first moves at "
+                  f"{exact_signed(f.rod_velocity())}",
                   line(heads)]
         for e in fv.events:
             note = f"  simultaneous with {e.impact.simultaneous_with}" if e.impact.simultaneous_with else ""
@@ -207,8 +147,3 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
             lines.append(line(next(row)) + note)
     return "\n".join(lines) + "\n"
 
-
-def _signed(u: float) -> str:
-    """A velocity the user gave (or its negative), every digit, signed: +0.6, -0.9999999, +0."""
-    text = exact(u)
-    return text if text.startswith("-") else "+" + text

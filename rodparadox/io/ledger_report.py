@@ -16,6 +16,8 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, time_window
 from rodparadox.physics.rod import turn_interval
 from rodparadox.physics.ledger import EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice, turn_times
+from rodparadox.numbers import number_text
+from rodparadox.tolerances import PRINTED_ZERO
 
 FORMAT = "sears-paradox-ledger/1"
 #: slices drawn between the ends of a frame's time window when no --at times are given (plus every turn's start and
@@ -110,15 +112,6 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
     return out.getvalue()
 
 
-def number_text(x: float, zero_below: float = 0.0) -> str:
-    """Seven significant digits, no -0; a value below `zero_below` in size is rounding of a difference: 0."""
-    x = x + 0.0
-    if abs(x) < zero_below:
-        return "0"
-    text = f"{x:.7g}"
-    return "0" if float(text) == 0 else text
-
-
 def _frame_title(f: Frame) -> str:
     symbol = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name)
     return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {number_text(f.velocity)} relative to S"
@@ -133,10 +126,6 @@ def _table(rows: list[list[str]], left: int = 1) -> list[str]:
             for row in rows]
 
 
-#: a difference of totals below this fraction of the frame's kinetic scale is rounding, printed as 0
-ROUNDING_ZERO = 1e-12
-
-
 def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """For each frame: every impact with each body's (E, p) just before and after, the impulse, and the totals;
     then each --at slice."""
@@ -148,7 +137,7 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
         eta = f.rapidity
         total = initial_total(history, eta)
         # rest energies cancel exactly in a difference: its rounding is of the order of the kinetic energies and momenta
-        zero = ROUNDING_ZERO * max(total.T, abs(total.p), 1e-300)
+        zero = PRINTED_ZERO * max(total.T, abs(total.p), 1e-300)
 
         def num(x: float) -> str:
             return number_text(x, zero)

@@ -15,7 +15,7 @@ from typing import Any
 import yaml
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.model import PARTICLE_NAMES, Particle, Scenario, Timing, shown
+from rodparadox.physics.model import PARTICLE_NAMES, Particle, Scenario, Timing, described
 
 #: the largest scenario file read: a scenario is a few hundred bytes, and PyYAML reads about 100 kB a second
 MAX_FILE_BYTES = 100_000
@@ -118,9 +118,9 @@ class _Document:
                 out[key] = self._value(loader, value_node, where, schema[key])
             return out
         if isinstance(schema, dict):
-            shown = _shape(node) if not isinstance(node, yaml.ScalarNode) else repr(loader.construct_object(node))
+            got = _shape(node) if not isinstance(node, yaml.ScalarNode) else repr(loader.construct_object(node))
             raise ScenarioError(f"{path or 'the scenario'} must be a mapping of keys ({', '.join(schema)}), "
-                                f"got {shown}.", path, node.start_mark.line + 1 if path else None)
+                                f"got {got}.", path, node.start_mark.line + 1 if path else None)
         if not isinstance(node, yaml.ScalarNode):
             # every leaf of the schema is one number or word: a list or mapping is refused unbuilt, as an empty
             # one, so that the key's own check (model.py) words the sentence
@@ -219,7 +219,7 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
     for key in ("name", "description"):
         if key in data and not isinstance(data[key], str):
             value = data[key]
-            raise ScenarioError(f"{key} must be text, got {shown(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
+            raise ScenarioError(f"{key} must be text, got {described(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
                     v=data["v"], L=data.get("L", 1.0), particles=tuple(particles))
 

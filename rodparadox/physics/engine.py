@@ -28,17 +28,10 @@ from rodparadox.physics.collision import elastic
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
 from rodparadox.physics.model import Particle, Scenario
+from rodparadox.tolerances import DIFFERENCE_ROUNDING, SAME_EVENT, SIMULTANEITY_TOLERANCE, TIMING_MATCH, TURN_LINE_ROUNDING
 
-#: impacts at the two ends closer than this on the rod's own time axis (units of L) are one simultaneous impact (rule 5)
-SIMULTANEITY_TOLERANCE = 1e-10
 #: a scenario with more impacts than this is refused rather than run forever
 MAX_IMPACTS = 1000
-#: two events closer than this (units of L) are one: the rounding of a boost or a displacement, not a segment
-SAME_EVENT = 1e-12
-#: an impact within this (in rapidity) of a turn's last line completes the turn: Fig. 2's A1 and B2 lie exactly on it
-TURN_LINE_ROUNDING = 1e-12
-#: how far rounding moves a difference of terms, relative to the terms: a thousand ulps of double precision
-ROUNDING = 1e3 * 2.2e-16
 
 WORLDLINE_NAMES = ("A", "B", "rod_left", "rod_right")
 
@@ -164,16 +157,16 @@ def _start_from_timing(scenario: Scenario, p: Particle, starts: dict[str, Event]
     alone = _simulate(without, {other.name: starts[other.name]})
     reference = next(i for i in alone.impacts if i.particle == other.name)
     eta = math.atanh(scenario.frame_velocity(timing.frame))
-    end_line = alone.worldline(f"rod_{p.end}").boosted(eta)
-    target_time = reference.event.boosted(eta).t + timing.delay * scenario.L
-    target = end_line.event_at_time(target_time).boosted(-eta)
+    end_line = alone.worldline(f"rod_{p.end}").seen_from(eta)
+    target_time = reference.event.seen_from(eta).t + timing.delay * scenario.L
+    target = end_line.event_at_time(target_time).seen_from(-eta)
     start = Event(target.x - math.tanh(_particle_rapidity(scenario, p)) * target.t, 0.0)
 
     history = _simulate(scenario, {**starts, p.name: start})
     first = {name: next((i for i in history.impacts if i.particle == name), None) for name in (p.name, other.name)}
     scale = scenario.L + abs(target.t) + abs(target.x)
-    lands = first[p.name] is not None and _distance(first[p.name].event, target) <= 1e-9 * scale
-    reference_kept = first[other.name] is not None and _distance(first[other.name].event, reference.event) <= 1e-9 * scale
+    lands = first[p.name] is not None and _distance(first[p.name].event, target) <= TIMING_MATCH * scale
+    reference_kept = first[other.name] is not None and _distance(first[other.name].event, reference.event) <= TIMING_MATCH * scale
     order = list(history.impacts)
     not_first = lands and reference_kept and (order.index(first[p.name]) > order.index(first[other.name])
                                               or first[p.name].simultaneous_with == first[other.name].label)
@@ -401,7 +394,7 @@ def _hit_while_turning(arc: HyperbolicArc, far_start: Event, L: float,
         phi = psi + s * a
         # c comes from a difference of terms that may be far larger than L (high speeds, late impacts):
         # its rounding, divided by dc/dphi = sinh(a), bounds phi's
-        rounding = max(TURN_LINE_ROUNDING, ROUNDING * (abs(terms[0]) + abs(terms[1])) / L / max(math.sinh(a), 1e-300))
+        rounding = max(TURN_LINE_ROUNDING, DIFFERENCE_ROUNDING * (abs(terms[0]) + abs(terms[1])) / L / max(math.sinh(a), 1e-300))
         if not s * (phi - arc.phi_start) > min(0.1 * TURN_LINE_ROUNDING, rounding):
             return None
         if state.since is not None and arc.point(phi).t < state.since.t - SAME_EVENT * L:
@@ -429,14 +422,14 @@ def _hits_after_turn(theta: float, left: Event, right: Event, particles: dict, b
         w = math.tanh(state.rapidity - theta)
         if not sign * w > 0:
             continue  # moving away from its end, or with it
-        here = (state.since or state.start).boosted(theta)
-        end_x = end_event.boosted(theta).x
+        here = (state.since or state.start).seen_from(theta)
+        end_x = end_event.seen_from(theta).x
         t = here.t + (end_x - here.x) / w
         if bounded and t < start_time - tolerance:
             continue
         if state.since is not None and t < here.t - tolerance:
             continue
-        candidates.append((t, name, Event(end_x, t).boosted(-theta)))
+        candidates.append((t, name, Event(end_x, t).seen_from(-theta)))
     if not candidates:
         return []
     candidates.sort(key=lambda c: c[0])

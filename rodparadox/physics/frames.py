@@ -1,5 +1,8 @@
-"""A history seen from one frame: events, velocities and world-lines in that frame's coordinates. Pure.
+"""Frames, and a history seen from one: events, velocities and world-lines in that frame's coordinates. Pure.
 
+The frame conventions live here, once: `rest` is S, `moving` is the paper's S'
+of velocity -v (`model.frame_velocity`), any other frame is its velocity u
+relative to S, bounded by FASTEST_FRAME; velocities add by `relative_velocity`.
 Shared by `export` (numbers) and `render` (pictures), so both show the same
 events, over the same time window, sampled the same way.
 """
@@ -14,9 +17,10 @@ import numpy as np
 
 from rodparadox.physics.engine import WORLDLINE_NAMES, History, Impact
 from rodparadox.errors import FrameError
-from rodparadox.physics.kinematics import SAMPLING_TOLERANCE, Event, Segment
-from rodparadox.physics.model import FASTEST
+from rodparadox.physics.kinematics import Event, Segment
+from rodparadox.physics.model import FASTEST, FRAME_NAMES, frame_velocity
 from rodparadox.numbers import exact, shown
+from rodparadox.tolerances import ONE_INSTANT, SAMPLING_TOLERANCE
 
 #: one panel per frame, lettered (a), (b), ...: at most eight in one figure
 PANEL_LETTERS = "abcdefgh"
@@ -40,14 +44,21 @@ def relative_velocity(u: float, w: float) -> float:
     return (u - w) / (1.0 - u * w)
 
 
+def named_frame(name: str, v: float) -> "Frame":
+    """`rest` (S) or `moving` (S', of velocity -v relative to S: `model.frame_velocity`), for the speed v."""
+    if name not in FRAME_NAMES:
+        raise ValueError(f"a named frame is one of {', '.join(FRAME_NAMES)}, got {name!r}")
+    return Frame(name, frame_velocity(name, v))
+
+
 def rest_frame() -> "Frame":
     """S: the frame in which the rod is at rest before any impact."""
-    return Frame("rest", 0.0)
+    return named_frame("rest", 0.0)
 
 
 def moving_frame(v: float) -> "Frame":
     """S': the paper's moving frame, of velocity -v relative to S (the rod moves at +v in it)."""
-    return Frame("moving", -v)
+    return named_frame("moving", v)
 
 
 def frame_of_velocity(u: float) -> "Frame":
@@ -60,8 +71,9 @@ def frame_of_velocity(u: float) -> "Frame":
 class Frame:
     """An inertial frame by its velocity relative to S: `rest` is S, `moving` is S' (velocity -v).
 
-    Any |velocity| < 1 is a frame; a velocity the user gives goes through `check_velocity` (or
-    `frame_of_velocity`), which bounds it where double precision still places the events.
+    Any |velocity| < 1 is a frame (a Lorentz frame moves slower than light, as a scenario's timing frame may);
+    a frame the user asks to see goes through `check_velocity` (or `frame_of_velocity`), which bounds it by
+    FASTEST_FRAME, where double precision still places the events and writes every velocity below c.
     """
 
     name: str
@@ -111,7 +123,7 @@ def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
     for item in (part.strip() for part in spec.split(",")):
         named = {"rest": ("rest",), "moving": ("moving",), "both": ("rest", "moving")}.get(item)
         if named is not None:
-            asked = [rest_frame() if name == "rest" else moving_frame(v) for name in named]
+            asked = [named_frame(name, v) for name in named]
         else:
             try:
                 u = float(item) + 0.0  # -0 is 0
@@ -159,12 +171,6 @@ class FrameView:
         return out
 
 
-#: two impacts closer than this in a frame's time, relative to L plus the largest |t|, are at one instant of it:
-#: boosting puts an ulp or two between impacts on one line of the frame, and the engine places events to
-#: about 1e-9 relative at its bounds (README, "Scenario files")
-ONE_INSTANT = 1e-9
-
-
 def time_order(times: Sequence[float], scale: float) -> list[int]:
     """Indices of `times` (given in the rod's own order) in the order of a frame's time: times within
     ONE_INSTANT * `scale` of each other are one instant, and keep the rod's own order (B₁ before A₁ in Fig. 2's
@@ -192,14 +198,14 @@ def time_window(history: History, frame: Frame) -> tuple[float, float]:
     anything happens and after everything has settled.
     """
     eta, L = frame.rapidity, history.scenario.L
-    changes = [i.event.boosted(eta).t for i in history.impacts]
+    changes = [i.event.seen_from(eta).t for i in history.impacts]
     for name in WORLDLINE_NAMES:
         worldline = history.worldline(name)
         if worldline is not None:
-            changes += [t for s in worldline.boosted(eta).segments for t in (s.start.t, s.end.t)]
+            changes += [t for s in worldline.seen_from(eta).segments for t in (s.start.t, s.end.t)]
     first, last = min(changes), max(changes)
-    at_start = [e.boosted(eta).t for _, e in history.starts]
-    at_start += [Event(sign * L / 2, 0.0).boosted(eta).t for sign in (-1, 1)]
+    at_start = [e.seen_from(eta).t for _, e in history.starts]
+    at_start += [Event(sign * L / 2, 0.0).seen_from(eta).t for sign in (-1, 1)]
     lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)
     return first - lead, last + lead
 
@@ -209,14 +215,33 @@ def view(history: History, frame: Frame) -> FrameView:
     t_lo, t_hi = time_window(history, frame)
     events = []
     for i in history.impacts:
-        e = i.event.boosted(eta)
+        e = i.event.seen_from(eta)
         events.append(EventView(i, e.x, e.t, math.tanh(i.particle_rapidity_before - eta),
                                 math.tanh(i.particle_rapidity_after - eta), math.tanh(i.rod_rapidity_before - eta),
                                 math.tanh(i.rod_rapidity_after - eta)))
-    segments = tuple((name, history.worldline(name).boosted(eta).pieces(t_lo, t_hi))
+    segments = tuple((name, history.worldline(name).seen_from(eta).pieces(t_lo, t_hi))
                      for name in WORLDLINE_NAMES if history.worldline(name) is not None)
     return FrameView(frame, tuple(events), (t_lo, t_hi), segments)
 
 
 def sampling_tolerance(history: History) -> float:
     return SAMPLING_TOLERANCE * history.scenario.L
+
+
+def check_below_c(fv: FrameView) -> None:
+    """Refuse a frame in which a body's velocity rounds to c: written as 1.0 it would be a lie (a body at c).
+
+    A particle far heavier than the rod can throw it to a rapidity whose tanh, in a fast frame, is 1 in
+    double precision though the speed is below c (mass 1e9, v = 0.9999999, frame u = 0.9999999).
+    """
+    eta = fv.frame.rapidity
+    for e in fv.events:
+        i = e.impact
+        for body, phi, when in ((f"particle {i.particle}", i.particle_rapidity_before, "before"),
+                                (f"particle {i.particle}", i.particle_rapidity_after, "after"),
+                                ("rod", i.rod_rapidity_before, "before"), ("rod", i.rod_rapidity_after, "after")):
+            if abs(math.tanh(phi - eta)) == 1.0:
+                gap = 2.0 / (math.exp(min(2.0 * abs(phi - eta), 700.0)) + 1.0)  # 1 - |tanh|, without cancelling
+                raise FrameError(f"in frame {fv.frame.name} the {body}'s velocity {when} {i.label} is within "
+                                 f"{gap:.1e} of c, closer than double precision can write; choose a slower frame, "
+                                 f"a slower v or a lighter particle.")

@@ -13,8 +13,7 @@ from typing import Union
 
 import numpy as np
 
-#: default drawing tolerance: a sampled polyline stays this close to the true curve, in units of L
-SAMPLING_TOLERANCE = 1e-4
+from rodparadox.tolerances import PROPER_TIME_TICK
 
 
 @dataclass(frozen=True)
@@ -24,8 +23,9 @@ class Event:
     x: float
     t: float
 
-    def boosted(self, frame_rapidity: float) -> "Event":
-        """Coordinates in a frame moving at tanh(frame_rapidity) relative to this one.
+    def seen_from(self, frame_rapidity: float) -> "Event":
+        """The same event in the coordinates of a frame moving at tanh(frame_rapidity) relative to this one's
+        (a change of frame, not a motion: the event stays where it is).
 
         x' = g(x - u t), t' = g(t - u x); with u = -v this is the paper's
         x' = g(x + v t), t' = g(t + v x) (its printed t' = g(t - v x) is a misprint).
@@ -55,8 +55,9 @@ class Line:
 
     rapidity_at_end = rapidity_at_start
 
-    def boosted(self, frame_rapidity: float) -> "Line":
-        return Line(self.start.boosted(frame_rapidity), self.end.boosted(frame_rapidity))
+    def seen_from(self, frame_rapidity: float) -> "Line":
+        """The same piece in the coordinates of the frame of rapidity `frame_rapidity` relative to this one's."""
+        return Line(self.start.seen_from(frame_rapidity), self.end.seen_from(frame_rapidity))
 
     def event_at_time(self, t: float) -> Event:
         f = (t - self.start.t) / (self.end.t - self.start.t)
@@ -107,10 +108,11 @@ class HyperbolicArc:
     def end(self) -> Event:
         return self.point(self.phi_end)
 
-    def boosted(self, frame_rapidity: float) -> "HyperbolicArc":
-        """A boost moves the centre and shifts every angle by -frame_rapidity; d and side stay."""
+    def seen_from(self, frame_rapidity: float) -> "HyperbolicArc":
+        """The same arc in the frame of rapidity `frame_rapidity`: the centre seen from it, every angle shifted by
+        -frame_rapidity; d and side stay."""
         return HyperbolicArc(
-            self.centre.boosted(frame_rapidity),
+            self.centre.seen_from(frame_rapidity),
             self.radius,
             self.side,
             self.phi_start - frame_rapidity,
@@ -183,11 +185,12 @@ class WorldLine:
     def last(self) -> Event:
         return self.segments[-1].end if self.segments else self.origin
 
-    def boosted(self, frame_rapidity: float) -> "WorldLine":
+    def seen_from(self, frame_rapidity: float) -> "WorldLine":
+        """The same world-line in the coordinates of the frame of rapidity `frame_rapidity` relative to this one's."""
         return WorldLine(
-            self.origin.boosted(frame_rapidity),
+            self.origin.seen_from(frame_rapidity),
             self.rapidity_before - frame_rapidity,
-            tuple(s.boosted(frame_rapidity) for s in self.segments),
+            tuple(s.seen_from(frame_rapidity) for s in self.segments),
             self.rapidity_after - frame_rapidity,
         )
 
@@ -268,7 +271,7 @@ def proper_time_events(worldline: WorldLine, step: float, t_lo: float, t_hi: flo
     out = []
     for start, piece in zip(starts, pieces):
         lo, hi = start - zero, start - zero + _proper_duration(piece)
-        for k in range(math.ceil(lo / step - 1e-12), math.floor(hi / step + 1e-12) + 1):
+        for k in range(math.ceil(lo / step - PROPER_TIME_TICK), math.floor(hi / step + PROPER_TIME_TICK) + 1):
             event = _at_proper_time(piece, k * step - lo)
             if t_lo <= event.t <= t_hi and not (out and out[-1][0] == k * step):
                 out.append((k * step, event))

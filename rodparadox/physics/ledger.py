@@ -24,6 +24,7 @@ from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import time_order
 from rodparadox.physics.kinematics import HyperbolicArc, Line
 from rodparadox.physics.rod import material_worldline, turn_interval
+from rodparadox.tolerances import SAME_INSTANT
 
 
 @dataclass(frozen=True)
@@ -56,8 +57,6 @@ class EnergyMomentum:
 
 
 ZERO = EnergyMomentum(0.0, 0.0, 0.0)
-#: two times closer than this (relative to L + |t|) are one instant: the rounding of boosting an event twice
-SAME_INSTANT = 1e-12
 
 
 @dataclass(frozen=True)
@@ -112,16 +111,16 @@ def particle_on_slice(history: History, name: str, frame_rapidity: float, t: flo
     if here:
         rapidity = here[-1].particle_rapidity_after if after else here[0].particle_rapidity_before
         return EnergyMomentum.of(mass, rapidity - frame_rapidity)
-    w = history.worldline(name).boosted(frame_rapidity)
+    w = history.worldline(name).seen_from(frame_rapidity)
     return EnergyMomentum.of(mass, w.rapidity_at_time(t))
 
 
-def rod_on_slice(history: History, frame_rapidity: float, t: float) -> EnergyMomentum:
+def rod_kinetic(history: History, frame_rapidity: float, t: float) -> EnergyMomentum:
     """The rod's kinetic (E, p) on the slice t of the frame, exactly (closed form on each piece of [0, L])."""
     L = history.scenario.L
     cuts = {0.0, L}
     for turn in history.turns:
-        pivot = turn.pivot.boosted(frame_rapidity)
+        pivot = turn.pivot.seen_from(frame_rapidity)
         for rapidity in (turn.rapidity_from, turn.rapidity_stop):
             sinh = math.sinh(rapidity - frame_rapidity)
             if sinh == 0.0:
@@ -134,7 +133,7 @@ def rod_on_slice(history: History, frame_rapidity: float, t: float) -> EnergyMom
     for lo, hi in zip(cuts, cuts[1:]):
         if hi - lo <= 0.0:
             continue
-        w = material_worldline(history, 0.5 * (lo + hi)).boosted(frame_rapidity)
+        w = material_worldline(history, 0.5 * (lo + hi)).seen_from(frame_rapidity)
         piece = w.piece_at_time(t)
         if isinstance(piece, HyperbolicArc) and piece.radius > 0:
             dT, dp = _across_arc(piece, t, lo, hi, L)
@@ -178,7 +177,7 @@ def ledger_slice(history: History, frame_rapidity: float, t: float) -> Slice:
     """Each body's kinetic (E, p) on the slice t of the frame (particles just after any impact at t), and the hidden part."""
     bodies = [(p.name, particle_on_slice(history, p.name, frame_rapidity, t)) for p in sorted(history.scenario.particles,
                                                                                                key=lambda p: p.name)]
-    bodies.append(("rod", rod_on_slice(history, frame_rapidity, t)))
+    bodies.append(("rod", rod_kinetic(history, frame_rapidity, t)))
     kinetic = ZERO
     for _, em in bodies:
         kinetic += em
@@ -193,7 +192,7 @@ def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry
     names = sorted(p.name for p in history.scenario.particles)
     for i in history.impacts:
         t = i.event.time_in(frame_rapidity)
-        rod = rod_on_slice(history, frame_rapidity, t)
+        rod = rod_kinetic(history, frame_rapidity, t)
         before = {n: particle_on_slice(history, n, frame_rapidity, t, after=False) for n in names}
         after = {n: particle_on_slice(history, n, frame_rapidity, t, after=True) for n in names}
         mass = history.scenario.particle(i.particle).mass

@@ -20,16 +20,27 @@ PARTICLE_NAMES = ("A", "B")
 SLOWEST, FASTEST = 1e-6, 0.9999999
 #: the largest gap or timing delay, in units of L
 MAX_SPAN = 1e6
+#: the frames named by a word: S, where the rod is at rest before any impact, and the paper's S'
 FRAME_NAMES = ("rest", "moving")
 #: the longest scenario name: it starts every figure title and file name
 MAX_NAME_LENGTH = 200
+
+
+def frame_velocity(frame: str | float, v: float) -> float:
+    """Velocity relative to S of a frame: `rest` is S (0); `moving` is the paper's S', of velocity -v, in which
+    the rod first moves at +v (the one place this convention is written); a number is the velocity itself."""
+    if frame == "rest":
+        return 0.0
+    if frame == "moving":
+        return -v
+    return float(frame)
 
 
 def _check_number(value: Any, key: str, *, low: float | None = None, high: float | None = None,
                   low_open: bool = True, high_open: bool = True, allowed: str, hint: str = "") -> float:
     """Return `value` as a float, or raise a ScenarioError naming `key` and what is allowed."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ScenarioError(f"{key} must be {allowed}, got {shown(value)}.", key)
+        raise ScenarioError(f"{key} must be {allowed}, got {described(value)}.", key)
     try:
         value = float(value)
     except OverflowError:
@@ -56,7 +67,7 @@ class Timing:
 
     def __post_init__(self) -> None:
         if self.particle not in PARTICLE_NAMES:
-            raise ScenarioError(f"{self.key}.particle must be A or B, got {shown(self.particle)}.", f"{self.key}.particle")
+            raise ScenarioError(f"{self.key}.particle must be A or B, got {described(self.particle)}.", f"{self.key}.particle")
         if isinstance(self.frame, str):
             if self.frame not in FRAME_NAMES:
                 raise ScenarioError(
@@ -156,12 +167,8 @@ class Scenario:
         return self.v if particle.speed is None else particle.speed
 
     def frame_velocity(self, frame: str | float) -> float:
-        """Velocity relative to S of a named frame: rest = S, moving = S' (velocity -v)."""
-        if frame == "rest":
-            return 0.0
-        if frame == "moving":
-            return -self.v
-        return float(frame)
+        """Velocity relative to S of a frame of this scenario: rest, moving (S', -v) or a velocity (`frame_velocity`)."""
+        return frame_velocity(frame, self.v)
 
     def with_overrides(self, *, v: float | None = None, L: float | None = None) -> "Scenario":
         """The same scenario with command-line values; a bad value names its option."""
@@ -173,7 +180,7 @@ class Scenario:
             raise e.located(f"option --{bad}", None) if bad else e
 
 
-def shown(value: Any) -> str:
+def described(value: Any) -> str:
     """A YAML value as the user wrote it, for an error message."""
     if isinstance(value, bool):
         return ("yes/true" if value else "no/false") + " (a boolean)"
@@ -189,7 +196,7 @@ def shown(value: Any) -> str:
 def _check_text(value: Any, key: str, *, newlines: bool) -> None:
     """Text that is drawn and printed: no control characters (tab, NUL, escape, ...), nor newlines in a name."""
     if not isinstance(value, str):
-        raise ScenarioError(f"{key} must be text, got {shown(value)}.", key)
+        raise ScenarioError(f"{key} must be text, got {described(value)}.", key)
     bad = next((c for c in value if unicodedata.category(c) == "Cc" and not (newlines and c == "\n")), None)
     if bad is not None:
         what = {"\t": "a tab", "\n": "a line break", "\r": "a carriage return", "\0": "a NUL"}.get(bad, "a control character")

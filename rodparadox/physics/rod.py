@@ -15,8 +15,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rodparadox.physics.engine import SAME_EVENT, History, Turn
+from rodparadox.physics.engine import History, Turn
 from rodparadox.physics.kinematics import Event, Line, Segment, WorldLine
+from rodparadox.numbers import nice_number
+from rodparadox.tolerances import SAME_EVENT
 
 
 def material_worldline(history: History, sigma: float) -> WorldLine:
@@ -59,12 +61,12 @@ class RodSlice:
         return np.tanh(self.rapidity)
 
 
-def rod_on_slice(history: History, frame_rapidity: float, t: float, sigmas) -> RodSlice:
+def rod_slice(history: History, frame_rapidity: float, t: float, sigmas) -> RodSlice:
     """Where the material points `sigmas` cross the slice t of the frame, and their rapidities there."""
     sigmas = np.asarray(sigmas, dtype=float)
     xs, rapidities = np.empty(len(sigmas)), np.empty(len(sigmas))
     for k, sigma in enumerate(sigmas):
-        w = material_worldline(history, float(sigma)).boosted(frame_rapidity)
+        w = material_worldline(history, float(sigma)).seen_from(frame_rapidity)
         xs[k] = w.event_at_time(t).x
         rapidities[k] = w.rapidity_at_time(t)
     return RodSlice(frame_rapidity, t, sigmas, xs, rapidities)
@@ -142,14 +144,13 @@ def material_lines(history: History, frame_rapidity: float, count: int, t_lo: fl
     out = []
     for k in range(1, count + 1):
         sigma = k * L / (count + 1)
-        out.append((sigma, material_worldline(history, sigma).boosted(frame_rapidity).sample(t_lo, t_hi, tolerance)))
+        out.append((sigma, material_worldline(history, sigma).seen_from(frame_rapidity).sample(t_lo, t_hi, tolerance)))
     return out
 
 
 def clock_step(span: float, ticks: int = 10) -> float:
-    """A round proper-time step (1, 2, 2.5 or 5 times a power of ten) giving about `ticks` clock ticks over a time
-    `span`: a figure passes its longest panel's span, so that a body at rest in that frame gets no more than about
-    `ticks` ticks, and uses the one step in every panel, as proper time is the same in every frame."""
-    raw = span / ticks
-    magnitude = 10.0 ** math.floor(math.log10(raw))
-    return next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))
+    """A nice proper-time step (`numbers.nice_number`: 1, 2, 2.5 or 5 times a power of ten) giving about `ticks`
+    clock ticks over a time `span`: a figure passes its longest panel's span, so that a body at rest in that frame
+    gets no more than about `ticks` ticks, and uses the one step in every panel, as proper time is the same in every
+    frame."""
+    return nice_number(span / ticks, "at_least")

@@ -45,7 +45,7 @@ _HOME = {
                     "rodparadox.render.strip"),
     "LABEL_REACH": "rodparadox.render.labels",
     **dict.fromkeys(("LAYERS", "LEGEND", "Layer", "LayerArtists", "Options", "PanelContext"), "rodparadox.render.layers"),
-    **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol", "impact_text",
+    **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol",
                      "impact_text_size", "text_size", "text_size_cache_info"), "rodparadox.render.text"),
 }
 

@@ -24,6 +24,7 @@ from rodparadox.render.styles import FORMATS, STYLES, Style
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of
 from rodparadox.render.panel import draw_panel
+from rodparadox.tolerances import FIT_SLACK
 
 # metadata that would make two runs differ (dates, versions) is left out
 FIGURE_METADATA = {
@@ -31,8 +32,6 @@ FIGURE_METADATA = {
     "pdf": {"Creator": None, "Producer": None, "CreationDate": None, "ModDate": None},
     "png": {"Software": None},
 }
-#: a target may be this much smaller than the layout (points) before the diagram is said not to fit: rounding
-_FIT_SLACK = 1e-6
 
 
 @contextmanager
@@ -106,7 +105,7 @@ def draw_into(target: Figure | SubFigure, history: History, frames: Sequence[Fra
     with style_context(style) as st:
         builder = _Builder(history, frames, st, options)
         layout = builder.lay_out(Page(width, height, height))
-        if layout.width > width + _FIT_SLACK or layout.height > height + _FIT_SLACK:
+        if layout.width > width + FIT_SLACK or layout.height > height + FIT_SLACK:
             raise ValueError(f"the diagram needs at least {layout.width / 72:.2f} x {layout.height / 72:.2f} in; "
                              f"the target is {width / 72:.2f} x {height / 72:.2f} in.")
         return builder.render(target, layout, width, height)

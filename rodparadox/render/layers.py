@@ -28,15 +28,14 @@ from rodparadox.physics import rod
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.physics.kinematics import Event, HyperbolicArc
-from rodparadox.numbers import shown
+from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.labels import Label
-from rodparadox.render.text import coordinate_names, frame_symbol, impact_text, impact_text_size
+from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
+from rodparadox.tolerances import SAME_LINE
 
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16
-#: two impacts share one line of simultaneity when its intercepts agree to this fraction (rounding of a boost)
-SAME_LINE = 1e-9
 
 
 class Options(NamedTuple):
@@ -226,7 +225,7 @@ class RodNow(Layer):
     def draw(self, ax, panel):
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
-        lines = [(a.boosted(eta), b.boosted(eta)) for a, b in rod.now_lines(panel.history)]
+        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in rod.now_lines(panel.history)]
         drawn, segments = [], []
         for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
             segment = np.array([[a.x, a.t], [b.x, b.t]]) / panel.L
@@ -252,11 +251,11 @@ class Clocks(Layer):
         t_lo, t_hi = panel.view.t_range
         # the same events in every panel: counted in S (tau = 0 at t = 0 there), then boosted
         x0, x1, t0, t1 = (value * L for value in panel.box)
-        corners = [Event(x, t).boosted(-eta).t for x in (x0, x1) for t in (t0, t1)]
+        corners = [Event(x, t).seen_from(-eta).t for x in (x0, x1) for t in (t0, t1)]
         drawn = []
         for name, worldline in panel.history.worldlines:
             ink = st.rod if name.startswith("rod_") else st.particles[name]
-            marks = [e.boosted(eta) for _, e in kinematics.proper_time_events(
+            marks = [e.seen_from(eta) for _, e in kinematics.proper_time_events(
                 worldline, panel.clock_step, min(corners), max(corners))]
             # within the frame's time window, where the world-lines are drawn
             marks = np.array([[e.x, e.t] for e in marks if t_lo <= e.t <= t_hi and x0 <= e.x <= x1]).reshape(-1, 2) / L
@@ -484,7 +483,7 @@ class Impacts(Layer):
         for label, end, x, t in panel.events():
             marker, = ax.plot([x], [t], **impact_marker(st), zorder=7, gid=f"{letter}-impact-{label}")
             markers.append(marker)
-            labels.append(Label(f"{letter}-impact-label-{label}", impact_text(label), ((x, t),),
+            labels.append(Label(f"{letter}-impact-label-{label}", impact_name(label, math_text=True), ((x, t),),
                                 0.0 if end == "right" else 180.0, st.impact_colour, fs["impact"],
                                 avoid_radius=st.impact_size / 2 + 1.0,
                                 box_size=impact_text_size(label, fs["impact"])[:2]))

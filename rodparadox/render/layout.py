@@ -11,6 +11,7 @@ import numpy as np
 
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
+from rodparadox.numbers import nice_number
 from rodparadox.render.styles import Style
 from rodparadox.render.text import approximate_size, panel_title, suptitle, tick_text, ticks_at
 
@@ -74,18 +75,11 @@ def fit_aspect(box: list[float], low: float, high: float) -> None:
 
 # --- tick steps -----------------------------------------------------------------------------------------
 
-def next_step(step: float) -> float:
-    """The next nice tick step above `step`: 1, 2, 2.5, 5, 10 times a power of ten."""
-    magnitude = 10.0 ** math.floor(math.log10(step) + 1e-9)
-    return next(k * magnitude for k in (2, 2.5, 5, 10, 20) if k * magnitude > step * (1 + 1e-9))
-
-
 def tick_step(box: Sequence[float]) -> float:
-    """One tick step for both axes (equal scales): about five ticks on the shorter side, at most ten on the longer."""
+    """One nice tick step for both axes (equal scales): about five ticks on the shorter side, at most ten on the
+    longer."""
     sides = sorted((box[1] - box[0], box[3] - box[2]))
-    raw = max(sides[1] / 10.0, sides[0] / 5.0)
-    magnitude = 10.0 ** math.floor(math.log10(raw))
-    return next(m * magnitude for m in (1, 2, 2.5, 5, 10) if m * magnitude >= raw * (1 - 1e-9))
+    return nice_number(max(sides[1] / 10.0, sides[0] / 5.0), "at_least")
 
 
 class Metrics:
@@ -93,7 +87,7 @@ class Metrics:
 
     def __init__(self, style: Style, fs: dict[str, float]):
         self.fs = fs
-        self.tick_len = 6.0 if style.name == "slides" else 3.5
+        self.tick_len = style.tick_length
         self.tick_pad, self.label_pad, self.gap, self.right, self.row_gap = 3.5, 4.0, 6.0, 10.0, 6.0
         self.label_h = approximate_size("$x_u/L$", fs["label"])[1]  # the tallest axis label
         self.tick_h = approximate_size("0123456789", fs["tick"])[1]
@@ -174,8 +168,8 @@ def readable_steps(p: Panel, steps: tuple[float, float], m: Metrics) -> tuple[fl
     scale = p.height / (p.box[3] - p.box[2])  # points per unit of L, both axes
 
     def grown(step: float, lo: float, hi: float, room) -> float:
-        while step * scale < room(step) and len(ticks_at(lo, hi, next_step(step))) >= 2:
-            step = next_step(step)
+        while step * scale < room(step) and len(ticks_at(lo, hi, nice_number(step, "above"))) >= 2:
+            step = nice_number(step, "above")
         return step
 
     x_step, t_step = steps

@@ -22,14 +22,10 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import PANEL_LETTERS, Frame
 from rodparadox.physics.ledger import ZERO, impact_entries, initial_total, ledger_slice
 from rodparadox.io.ledger_report import slice_times
-from rodparadox.numbers import shown
+from rodparadox.numbers import impact_name, shown
 from rodparadox.render import axis_label, coordinate_names, frame_symbol, style_context
 from rodparadox.render.styles import Style
-
-#: where a time is one impact's instant: the rounding of boosting an event twice
-_SAME_INSTANT = 1e-12
-#: print style draws both particles in black: B gets a dash-dot of its own here, where no label names the curves
-_PRINT_B_DASHES = (0, (6.0, 1.8, 1.5, 1.8))
+from rodparadox.tolerances import SAME_INSTANT
 
 
 def _series(history: History, frame: Frame):
@@ -41,11 +37,11 @@ def _series(history: History, frame: Frame):
     scale = history.scenario.L
     times, rows = [], []
     for t in slice_times(history, frame):
-        if times and t - times[-1] <= _SAME_INSTANT * (scale + abs(t)):
+        if times and t - times[-1] <= SAME_INSTANT * (scale + abs(t)):
             continue  # one instant, boosted twice (two impacts simultaneous in this frame)
         s = ledger_slice(history, eta, t)
         bodies = dict(s.bodies)
-        here = [e for e in entries if abs(e.t - t) <= _SAME_INSTANT * (scale + abs(t))]
+        here = [e for e in entries if abs(e.t - t) <= SAME_INSTANT * (scale + abs(t))]
         if here:
             before = dict(bodies)
             for e in here:  # each struck particle as it was just before (the others are unchanged at this instant)
@@ -69,14 +65,6 @@ def draw(history: History, frames: Sequence[Frame], style: str = "default") -> F
         return _draw(history, tuple(frames), st)
 
 
-def _impact_plain(label: str) -> str:
-    """B1 -> B₁ as plain text (subscript digits): mathtext would cost milliseconds per label to lay out."""
-    return label.rstrip("0123456789") + label[len(label.rstrip("0123456789")):].translate(_SUBSCRIPTS)
-
-
-_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
     """Laid out in points from the type size (no layout engine: fast, and the same bytes on every save)."""
     fs = st.font_size
@@ -97,11 +85,8 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
                 fontsize=fs * 1.25, gid="title")
     L = s.L
     names = sorted(p.name for p in s.particles)
-    particle_inks = dict(st.particles)
-    if st.name == "print" and "B" in particle_inks:
-        particle_inks["B"] = particle_inks["B"]._replace(dashes=_PRINT_B_DASHES)
-    hidden_fill = {"facecolor": st.sheet, "edgecolor": "#888888" if st.name == "print" else "none",
-                   "hatch": "////" if st.name == "print" else None, "linewidth": 0.0}
+    particle_inks = dict(st.ledger_particles)
+    hidden_fill = {"facecolor": st.sheet, "edgecolor": st.hidden_edge, "hatch": st.hidden_hatch, "linewidth": 0.0}
     total_ink = {"color": "#000000", "linewidth": 0.7 * st.rod.width / 1.7, "linestyle": (0, (1.0, 1.5))}
     kinetic_ink = {"color": "#000000", "linewidth": st.rod.width * 1.3}
     for k, frame in enumerate(frames):
@@ -141,14 +126,15 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
                 ax.tick_params(labelbottom=False)
                 instants: list[list] = []  # impacts at one instant of this frame, side by side above it
                 for e in entries:
-                    if instants and abs(e.t - instants[-1][0].t) <= _SAME_INSTANT * (L + abs(e.t)):
+                    if instants and abs(e.t - instants[-1][0].t) <= SAME_INSTANT * (L + abs(e.t)):
                         instants[-1].append(e)
                     else:
                         instants.append([e])
                 for group in instants:
                     for k, e in enumerate(group):
                         # above the panel, over its frame line: no curve runs there
-                        ax.annotate(_impact_plain(e.impact.label), (e.t / L, 1.0), xycoords=("data", "axes fraction"),
+                        # plain text (subscript digits): mathtext would cost milliseconds per label to lay out
+                        ax.annotate(impact_name(e.impact.label), (e.t / L, 1.0), xycoords=("data", "axes fraction"),
                                     xytext=((k - (len(group) - 1) / 2) * fs * 1.6, 2), textcoords="offset points",
                                     ha="center", va="bottom", fontsize=fs, gid=f"{letter}-label-{e.impact.label}",
                                     zorder=5, style="italic")

@@ -205,7 +205,8 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     (ValueError, naming the size needed).
     """
     from rodparadox.render.diagram import style_context
-    from rodparadox.render.layout import font_sizes, next_step
+    from rodparadox.numbers import nice_number
+    from rodparadox.render.layout import font_sizes
     from rodparadox.render.text import approximate_size, axis_label, ticks_at
 
     if not times:
@@ -234,9 +235,9 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
         lo, hi = lo - margin, hi + margin
-        step = next_step(10.0 ** np.floor(np.log10((hi - lo) / 10)))
+        step = nice_number(10.0 ** np.floor(np.log10((hi - lo) / 10)), "above")
         while (hi - lo) / step > max(2.0, axes_w / (3.0 * approximate_size("−0.00", fs["tick"])[0])):
-            step = next_step(step)
+            step = nice_number(step, "above")
         ticks = ticks_at(lo, hi, step)
         rows: list[Axes] = []
         y = height - top
@@ -301,11 +302,11 @@ class _StillsRoom(NamedTuple):
 
 def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[list[str], list[str]]:
     """Each row's time (t′ = 1.25 L) and the impacts at that instant (mathtext), or an empty note."""
-    from rodparadox.render.text import impact_text
+    from rodparadox.numbers import impact_name
 
     clock = coordinate_names(frame)[1]
     labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
-    notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_text(f) for f in s.flashing)
+    notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_name(f, math_text=True) for f in s.flashing)
              if s.flashing else "" for s in strips]
     return labels, notes
 

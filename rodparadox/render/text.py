@@ -15,7 +15,8 @@ from matplotlib.textpath import text_to_path
 
 from rodparadox.physics.frames import Frame, FrameView, frame_symbol
 from rodparadox.physics.model import Scenario
-from rodparadox.numbers import MINUS, SCIENTIFIC_ABOVE, shown
+from rodparadox.numbers import MINUS, SCIENTIFIC_ABOVE, impact_parts, shown, shown_signed
+from rodparadox.tolerances import AT_REST, STEP_ROUNDING
 
 
 def coordinate_names(frame: Frame) -> tuple[str, str]:
@@ -28,36 +29,26 @@ def axis_label(name: str) -> str:
     return f"{name[:-1]}/L$" if name.endswith("$") else f"{name}/L"
 
 
-def impact_text(label: str) -> str:
-    """An impact's label in mathtext: B1 -> $B_1$."""
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
-    return f"${m.group(1)}_{{{m.group(2)}}}$" if m else label
-
-
 def impact_text_size(label: str, size: float) -> tuple[float, float, float]:
-    """A box at least as large as `impact_text(label)` draws, from plain glyph metrics (no mathtext parse).
+    """A box at least as large as `impact_name(label, math_text=True)` draws, from plain glyph metrics (no
+    mathtext parse).
 
     The letter in italics, then the digits at 0.7 of the size, then a tenth of
     the size to spare; height: the letter's plus the subscript's drop. It is a
     few per cent larger than mathtext's own box in every style (tested), which
     is safe for placing the label: the drawn text lies inside it.
     """
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
-    letter, digits = (m.group(1), m.group(2)) if m else (label, "")
+    letter, digits = impact_parts(label)
     w_letter, h_letter, _ = text_size(letter, size, italic=True)
     w_digits = text_size(digits, 0.7 * size)[0] if digits else 0.0
     return w_letter + w_digits + 0.1 * size, h_letter + 0.22 * size, 0.22 * size
 
 
-def _signed(value: float) -> str:
-    return ("+" if value > 0 else "") + shown(value, 4)
-
-
 def _velocity_phrase(before: float, after: float) -> str:
     """The rod's velocity in a panel's frame, before the first impact and after the last."""
     def at(u: float) -> str:
-        return "at rest" if abs(u) < 5e-13 else f"at {_signed(u)}"
-    if abs(before - after) < 5e-13:
+        return "at rest" if abs(u) < AT_REST else f"at {shown_signed(u, 4)}"
+    if abs(before - after) < AT_REST:
         return f"rod {at(before)} before and after"
     return f"rod first {at(before)}, finally {at(after)}"
 
@@ -102,7 +93,7 @@ def suptitle(scenario: Scenario, width: float, size: float) -> str:
 # --- ticks ------------------------------------------------------------------------------------------
 
 def ticks_at(lo: float, hi: float, step: float) -> np.ndarray:
-    k = np.arange(math.ceil(lo / step - 1e-9), math.floor(hi / step + 1e-9) + 1)
+    k = np.arange(math.ceil(lo / step - STEP_ROUNDING), math.floor(hi / step + STEP_ROUNDING) + 1)
     return k * step
 
 
@@ -110,7 +101,7 @@ def tick_text(value: float, step: float) -> str:
     """A tick label with as many decimals as the step has (0.25 -> 2), a real minus sign, no -0; 2×10⁶ for steps of 10⁵ on."""
     if step >= SCIENTIFIC_ABOVE / 10:
         return shown(value, 3)
-    decimals = next(d for d in range(12) if abs(round(step, d) - step) <= 1e-9 * step)
+    decimals = next(d for d in range(12) if abs(round(step, d) - step) <= STEP_ROUNDING * step)
     text = f"{value:.{decimals}f}"
     if float(text) == 0:
         text = "0" if decimals == 0 else f"{0:.{decimals}f}"

@@ -1,7 +1,7 @@
 """The events and the ledger as `document.Table`s: the numbers a handout prints, built once. Pure.
 
 The events table has the columns `sears-paradox events` prints, with its digits
-(`export.coordinate_format`, `export.velocity_format`); the ledger table has,
+(`numbers.coordinate_format`, `numbers.velocity_format`); the ledger table has,
 per impact, the particle's, the rod's and the hidden (E, p) just before and
 after (as `sears-paradox ledger` prints them); the hidden table has the hidden
 part on the slices between impacts where it is not zero. A worksheet's copy
@@ -12,23 +12,15 @@ which say where the numbers asked for are taken.
 
 from __future__ import annotations
 
-import re
 from typing import Sequence
 
 from rodparadox.handout.document import Cell, Table
 from rodparadox.physics.engine import History
-from rodparadox.io.export import check_below_c, coordinate_format, velocity_format
-from rodparadox.physics.frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
+from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
 from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, turn_times
-from rodparadox.io.ledger_report import ROUNDING_ZERO, number_text
-from rodparadox.numbers import MINUS, exact, fraction_text
+from rodparadox.numbers import MINUS, coordinate_format, exact, fraction_text, impact_name, number_text, velocity_format
 from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
-
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-def impact_name(label: str) -> str:
-    """An impact's label as the figures write it: B1 -> B₁."""
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", label)
-    return m.group(1) + m.group(2).translate(_SUBSCRIPT) if m else label
+from rodparadox.tolerances import ONE_INSTANT, PRINTED_ZERO
 
 
 def coordinates(frame: Frame) -> tuple[str, str]:
@@ -74,9 +66,9 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
 
 
 def _zero_below(history: History, frame: Frame) -> float:
-    """Differences of totals below this are rounding (ledger_report.ROUNDING_ZERO of the frame's kinetic scale)."""
+    """Differences of totals below this are rounding (PRINTED_ZERO of the frame's kinetic scale)."""
     total = initial_total(history, frame.rapidity)
-    return ROUNDING_ZERO * max(total.T, abs(total.p), 1e-300)
+    return PRINTED_ZERO * max(total.T, abs(total.p), 1e-300)
 
 
 def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
