@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from rodparadox.tables import build as tables
-from rodparadox.handout.document import Diagram, Handout, Heading, Paragraph, Question, Section, Strips
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, Question, Section, Strips
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import paper_frames, time_window
 from rodparadox.io.scenario import load
@@ -55,7 +55,7 @@ def section(name: str, v: float = 0.6, worksheet: bool = False, strips: bool = T
     history = run(load(name))
     rest, moving = paper_frames(v)
     blocks = [Heading(f"{name}: the paper's Fig. {name[-1]} at v = {v}"), Paragraph(SETUP.get(name, SETUP["fig1"])),
-              Diagram(name, history, (rest, moving),
+              DiagramBlock(name, history, (rest, moving),
                       f"The history of {name} in S (a) and in S′ (b). Dotted: lines of simultaneity of S; "
                       f"dash-dotted: lines of simultaneity of S′, through every impact."),
               Paragraph("In S′ the first two impacts share t′ = 17/12 L, yet the rod is struck by B first in its "

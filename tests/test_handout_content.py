@@ -14,7 +14,7 @@ import pytest
 
 from rodparadox.handout import build as handout
 from rodparadox.tables import build as tables
-from rodparadox.handout.document import Diagram, Handout, Heading, Paragraph, Question, Strips, Table
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, Question, Strips, Table
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
 from rodparadox.physics.rod import rod_slice
@@ -223,7 +223,7 @@ def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
     h = history("fig2", 0.6)
     section = handout.build([("fig2", h)]).sections[0]
     kinds = [type(b) for b in section.blocks]
-    assert kinds[:3] == [Heading, Paragraph, Diagram]
+    assert kinds[:3] == [Heading, Paragraph, DiagramBlock]
     assert section.blocks[0].text.startswith("fig2 — The paper's Fig. 2: impacts simultaneous in the moving frame S′")
     diagram = section.blocks[2]
     assert diagram.name == "fig2_diagram" and diagram.frames == paper_frames(0.6) and diagram.history == h
@@ -302,7 +302,7 @@ def test_questions_are_numbered_from_one_and_the_same_on_every_build():
 def test_items_may_carry_their_own_frames_and_moving_means_each_scenarios_own_s_prime():
     a, b = history("fig1", 0.6), history("fig2", 0.8)
     doc = handout.build([("a", a), ("b", b)], frames=(rest_frame(), moving_frame(0.6)))
-    diagrams = section_blocks(doc, Diagram)
+    diagrams = section_blocks(doc, DiagramBlock)
     assert [d.frames[1].velocity for d in diagrams] == [-0.6, -0.8]
     doc = handout.build([("a", a, (rest_frame(), moving_frame(0.6), frame_of_velocity(0.3)))])
     assert [s.name for s in section_blocks(doc, Strips)] == ["a_strips_rest", "a_strips_moving", "a_strips_u0.3"]
@@ -545,5 +545,5 @@ def test_a_third_frame_is_named_the_frame_u_in_running_text():
     text = explanation_text_of(h, frames)
     assert "in the frame u = 0.3" in text and "In u = 0.3" not in text
     doc = handout.build([("single", h, frames)])
-    caption = next(b for b in section_blocks(doc, Diagram)).caption
+    caption = next(b for b in section_blocks(doc, DiagramBlock)).caption
     assert "(c) in the frame u = 0.3, moving at +0.3 c relative to S" in caption

@@ -14,7 +14,7 @@ import sys
 import numpy as np
 import pytest
 
-from rodparadox.handout.document import Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import frame_of_velocity, frame_symbol, frame_word, paper_frames, sampling_tolerance, view
 from rodparadox.handout.tex import data_files, file_stem, number, tex_files
@@ -36,7 +36,7 @@ def section(name: str, worksheet: bool, first: bool = True) -> tuple[Section, li
     frames = paper_frames(V)
     blocks = [] if first else [PageBreak()]
     blocks += [Heading(f"{name}: the rod struck at both ends"), Paragraph(UNICODE),
-              Diagram("diagram", history, frames, "The rod in S and in S′: B₁ and A₁ on one line of t′.")]
+              DiagramBlock("diagram", history, frames, "The rod in S and in S′: B₁ and A₁ on one line of t′.")]
     key = []
     for frame in frames:
         blocks.append(Heading(f"In frame {frame_symbol(frame)}", 2))
@@ -83,7 +83,7 @@ def test_the_folder_holds_every_table_figure_and_world_line(worksheet):
     h, files = worksheet
     expected = {"handout.tex", "README.txt"}
     for s in h.sections:
-        history = next(b.history for b in s.blocks if isinstance(b, Diagram))
+        history = next(b.history for b in s.blocks if isinstance(b, DiagramBlock))
         expected |= {f"{s.name}_diagram.pdf", f"{s.name}_strips_rest.pdf", f"{s.name}_strips_moving.pdf"}
         for frame in paper_frames(V):
             word = frame_word(frame)
@@ -123,7 +123,7 @@ def test_paper_and_style_are_checked_and_chosen(worksheet):
 def test_every_world_line_reads_back_to_the_exact_points(worksheet):
     h, files = worksheet
     for s in h.sections:
-        history = next(b.history for b in s.blocks if isinstance(b, Diagram))
+        history = next(b.history for b in s.blocks if isinstance(b, DiagramBlock))
         for frame in paper_frames(V):
             points = view(history, frame).worldline_points(sampling_tolerance(history))
             assert set(points) == {"A", "B", "rod_left", "rod_right"}
@@ -139,7 +139,7 @@ def test_every_world_line_reads_back_to_the_exact_points(worksheet):
 def test_the_events_files_hold_each_frames_coordinates(worksheet):
     h, files = worksheet
     for s in h.sections:
-        history = next(b.history for b in s.blocks if isinstance(b, Diagram))
+        history = next(b.history for b in s.blocks if isinstance(b, DiagramBlock))
         rest = {e.impact.label: (e.x, e.t) for e in view(history, paper_frames(V)[0]).events}
         for frame in paper_frames(V):
             lines = files[f"{s.name}_{frame_word(frame)}_events.dat"].decode().splitlines()
@@ -169,7 +169,7 @@ def test_numbers_are_repr_exact_without_negative_zero():
 def test_a_frame_of_any_velocity_gets_a_file_name_graphicx_reads():
     history = run(load("fig2").with_overrides(v=V))
     frames = (paper_frames(V)[0], frame_of_velocity(0.3), frame_of_velocity(-0.25))
-    h = Handout("t", (Section("fig2", "fig2", (Diagram("diagram", history, frames, "c"),)),))
+    h = Handout("t", (Section("fig2", "fig2", (DiagramBlock("diagram", history, frames, "c"),)),))
     names = set(data_files(h))
     assert {"fig2_u0p3_A.dat", "fig2_u-0p25_rod_right.dat", "fig2_rest_events.dat"} <= names
     assert len(names) == 3 * 5
@@ -229,7 +229,7 @@ def test_handout_tex_sets_every_block_in_order(worksheet):
     assert "fontspec" not in tex
     # each figure and table where its block is, in the blocks' order
     refs = re.findall(r"\\(?:includegraphics\[[^\]]*\]|input)\{([^}]+)\}", tex)
-    shown = [b for b in h.blocks() if isinstance(b, (Table, Diagram, Strips))]
+    shown = [b for b in h.blocks() if isinstance(b, (Table, DiagramBlock, Strips))]
     assert len(refs) == len(shown)
     for ref, block in zip(refs, shown):
         assert ref in files and ref.endswith(".tex" if isinstance(block, Table) else ".pdf")

@@ -30,7 +30,7 @@ from functools import cached_property
 from typing import Sequence
 
 from rodparadox.tables import build as tables
-from rodparadox.handout.document import Block, Diagram, Handout, Heading, Paragraph, Question, Section, Strips
+from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Question, Section, Strips
 from rodparadox.physics.engine import History, Impact, Turn, run
 from rodparadox.errors import RodParadoxError
 from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_symbol, frame_word, moving_frame, paper_frames, relative_velocity,
@@ -1331,7 +1331,7 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
     the questions again)."""
     blocks: list[Block] = [Heading(heading(history)), Paragraph(setup_text(history)),
-                           Diagram(f"{stem}_diagram", history, frames, diagram_caption(history, frames)),
+                           DiagramBlock(f"{stem}_diagram", history, frames, diagram_caption(history, frames)),
                            Heading("What the diagram shows", 2)]
     blocks += explanation(history, frames)
     blocks.append(Heading("The rod at successive instants", 2))

@@ -82,8 +82,9 @@ class Table:
 
 
 @dataclass(frozen=True)
-class Diagram:
-    """The two-frame (or more) Minkowski diagram of a history, as `plot` draws it, full text width."""
+class DiagramBlock:
+    """A place in the document for the two-frame (or more) Minkowski diagram of a history, as `plot` draws it, full
+    text width (the drawn diagram is `render.Diagram`)."""
 
     name: str
     history: History
@@ -117,7 +118,7 @@ class PageBreak:
     """Start a new page here."""
 
 
-Block = Union[Heading, Paragraph, Table, Diagram, Strips, Question, PageBreak]
+Block = Union[Heading, Paragraph, Table, DiagramBlock, Strips, Question, PageBreak]
 
 
 @dataclass(frozen=True)

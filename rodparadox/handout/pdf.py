@@ -47,7 +47,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from rodparadox import render
-from rodparadox.handout.document import (PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Strips, Table)
+from rodparadox.handout.document import (PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Strips, Table)
 from rodparadox.render.diagram import FIGURE_METADATA
 from rodparadox.render.styles import STYLES, Style
 
@@ -625,7 +625,7 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
         return Break()
     caption = wrap(words_of(block.caption), t.caption, pages.text_width)
     room = pages.text_height - 0.5 * t.body - len(caption) * 1.3 * t.caption
-    if isinstance(block, Diagram):
+    if isinstance(block, DiagramBlock):
         _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name)
 
         def draw_diagram(target, block=block):

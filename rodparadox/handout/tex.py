@@ -26,7 +26,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from rodparadox.handout.document import PAPERS, Block, Diagram, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.handout.document import PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
 from rodparadox.render.styles import STYLES
@@ -76,7 +76,7 @@ def _content_key(block: Block) -> tuple:
     """What makes two blocks' files the same: a table's fragment, a figure's history, frames and times."""
     if isinstance(block, Table):
         return ("table", to_latex(block))
-    if isinstance(block, Diagram):
+    if isinstance(block, DiagramBlock):
         return ("diagram", id(block.history), block.frames)
     assert isinstance(block, Strips)
     return ("strips", id(block.history), block.frame, tuple(block.times))
@@ -113,13 +113,13 @@ def _place(handout: Handout) -> list[_Placed]:
     for section in handout.sections:
         for block in section.blocks:
             stem = None
-            if isinstance(block, (Table, Diagram, Strips)):
+            if isinstance(block, (Table, DiagramBlock, Strips)):
                 stem = claim(file_stem(_prefixed(section, block.name)), _content_key(block), False)
             placed.append(_Placed(block, stem, False))
     in_sections = [p for p in placed if p.stem is not None]
     for block in handout.answer_key:
         stem = None
-        if isinstance(block, (Table, Diagram, Strips)):
+        if isinstance(block, (Table, DiagramBlock, Strips)):
             origin = next((p.stem for p in in_sections if _same_origin(p.block, block)), None)
             stem = claim(origin or file_stem(block.name), _content_key(block), True)
         placed.append(_Placed(block, stem, True))
@@ -190,7 +190,7 @@ def _block(p: _Placed, worksheet: bool) -> str:
         return latex_text(b.text) + "\n"
     if isinstance(b, Table):
         return _table(p.stem, b)
-    if isinstance(b, (Diagram, Strips)):
+    if isinstance(b, (DiagramBlock, Strips)):
         return _figure(p.stem, b.caption)
     if isinstance(b, Question):
         return _question(b, worksheet, p.in_answer_key)
@@ -222,12 +222,12 @@ def text_width_in(paper: str) -> float:
     return PAPERS[paper][0] - 2 * MARGIN_MM / 25.4
 
 
-def figure_pdf(block: Diagram | Strips, paper: str, style: str) -> bytes:
+def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
     """A figure block as PDF bytes: the diagram as `plot` draws it, or the strips as `animate` draws them, at the
     width of the text so their type prints at its size."""
     from rodparadox import render
 
-    if isinstance(block, Diagram):
+    if isinstance(block, DiagramBlock):
         figure = render.draw(block.history, block.frames, style)
     else:
         from matplotlib.figure import Figure
@@ -254,7 +254,7 @@ def events_dat(history: History, frame: Frame) -> str:
 def _shown_frames(section: Section) -> list[tuple[str, History, Frame]]:
     """The (file prefix, history, frame) of each frame the section's diagrams show, each once: the prefix is the
     section's name, or the diagram's where the section draws more than one history."""
-    diagrams = [b for b in section.blocks if isinstance(b, Diagram)]
+    diagrams = [b for b in section.blocks if isinstance(b, DiagramBlock)]
     several = len({id(d.history) for d in diagrams}) > 1
     out, seen = [], set()
     for d in diagrams:
@@ -334,7 +334,7 @@ def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict
         name = f"{p.stem}.tex" if isinstance(p.block, Table) else f"{p.stem}.pdf"
         if isinstance(p.block, Table):
             text.setdefault(name, to_latex(p.block))
-        elif isinstance(p.block, (Diagram, Strips)) and name not in figures:
+        elif isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
             figures[name] = figure_pdf(p.block, paper, style)
     text.update(data_files(handout))
     text["README.txt"] = readme(handout)

@@ -13,7 +13,7 @@ import json
 from typing import Any
 
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, FrameView, check_below_c, sampling_tolerance, view
+from rodparadox.physics.frames import Frame, FrameView, check_below_c, frame_heading, sampling_tolerance, view
 from rodparadox.numbers import coordinate_format, exact, exact_signed, velocity_format
 from rodparadox.physics.kinematics import HyperbolicArc, Line, Segment
 
@@ -136,9 +136,7 @@ def to_table(history: History, frames: tuple[Frame, ...]) -> str:
     lines = [f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)}   (c = 1; x and t in the unit L is given in)"]
     row = iter(rows)
     for f, fv in zip(frames, views):
-        title = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name, "")
-        lines += ["", f"frame {f.name}" + (f" ({title})" if title else "") +
-                  f": velocity {exact_signed(f.velocity)} relative to S; the rod first moves at "
+        lines += ["", frame_heading(f) + f": velocity {exact_signed(f.velocity)} relative to S; the rod first moves at "
                   f"{exact_signed(f.rod_velocity())}",
                   line(heads)]
         for e in fv.events:

@@ -13,11 +13,11 @@ import json
 from typing import Any, Sequence
 
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, time_window
+from rodparadox.physics.frames import Frame, frame_heading, time_window
 from rodparadox.physics.rod import turn_interval
-from rodparadox.physics.ledger import EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice, turn_times
+from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice,
+                                      rounding_zero, turn_times)
 from rodparadox.numbers import number_text
-from rodparadox.tolerances import PRINTED_ZERO
 
 FORMAT = "sears-paradox-ledger/1"
 #: slices drawn between the ends of a frame's time window when no --at times are given (plus every turn's start and
@@ -113,8 +113,7 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
 
 
 def _frame_title(f: Frame) -> str:
-    symbol = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(f.name)
-    return f"frame {f.name}" + (f" ({symbol})" if symbol else "") + f": velocity {number_text(f.velocity)} relative to S"
+    return frame_heading(f) + f": velocity {number_text(f.velocity)} relative to S"
 
 
 def _table(rows: list[list[str]], left: int = 1) -> list[str]:
@@ -136,8 +135,7 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
     for f in frames:
         eta = f.rapidity
         total = initial_total(history, eta)
-        # rest energies cancel exactly in a difference: its rounding is of the order of the kinetic energies and momenta
-        zero = PRINTED_ZERO * max(total.T, abs(total.p), 1e-300)
+        zero = rounding_zero(total)
 
         def num(x: float) -> str:
             return number_text(x, zero)

@@ -97,6 +97,13 @@ def frame_symbol(frame: "Frame") -> str:
     return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
 
 
+def frame_heading(frame: "Frame") -> str:
+    """The frame as the text tables head it (ASCII): `frame rest (S, the rod's rest frame)`, `frame moving (S',
+    where the rod first moves at +v)`, `frame u=0.3`."""
+    about = {"rest": "S, the rod's rest frame", "moving": "S', where the rod first moves at +v"}.get(frame.name)
+    return f"frame {frame.name}" + (f" ({about})" if about else "")
+
+
 def frame_word(frame: "Frame") -> str:
     """The frame in a file name: rest, moving, or u and every digit of its velocity (u0.3, u-0.5)."""
     return frame.name if frame.name in ("rest", "moving") else "u" + exact(frame.velocity)

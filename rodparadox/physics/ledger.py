@@ -24,7 +24,7 @@ from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import time_order
 from rodparadox.physics.kinematics import HyperbolicArc, Line
 from rodparadox.physics.rod import material_worldline, turn_interval
-from rodparadox.tolerances import SAME_INSTANT
+from rodparadox.tolerances import PRINTED_ZERO, SAME_INSTANT
 
 
 @dataclass(frozen=True)
@@ -97,6 +97,13 @@ def initial_total(history: History, frame_rapidity: float) -> EnergyMomentum:
         r = (1.0 if p.name == "A" else -1.0) * math.atanh(s.speed(p))
         total += EnergyMomentum.of(p.mass, r - frame_rapidity)
     return total + EnergyMomentum.of(1.0, -frame_rapidity)
+
+
+def rounding_zero(total: EnergyMomentum) -> float:
+    """A difference of totals (the hidden part, an impulse) smaller than this, in a frame whose total before the
+    first impact is `total`, is rounding: PRINTED_ZERO of the frame's kinetic scale, since rest energies cancel
+    exactly in a difference and its rounding is of the order of the kinetic energies and momenta."""
+    return PRINTED_ZERO * max(total.T, abs(total.p), 1e-300)
 
 
 def particle_on_slice(history: History, name: str, frame_rapidity: float, t: float, after: bool = True) -> EnergyMomentum:

@@ -17,10 +17,10 @@ from typing import Sequence
 from rodparadox.handout.document import Cell, Table
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
-from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, turn_times
+from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, rounding_zero, turn_times
 from rodparadox.numbers import MINUS, coordinate_format, exact, fraction_text, impact_name, number_text, velocity_format
 from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
-from rodparadox.tolerances import ONE_INSTANT, PRINTED_ZERO
+from rodparadox.tolerances import ONE_INSTANT
 
 
 def coordinates(frame: Frame) -> tuple[str, str]:
@@ -66,9 +66,8 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
 
 
 def _zero_below(history: History, frame: Frame) -> float:
-    """Differences of totals below this are rounding (PRINTED_ZERO of the frame's kinetic scale)."""
-    total = initial_total(history, frame.rapidity)
-    return PRINTED_ZERO * max(total.T, abs(total.p), 1e-300)
+    """Differences of totals below this are rounding (`ledger.rounding_zero`)."""
+    return rounding_zero(initial_total(history, frame.rapidity))
 
 
 def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
