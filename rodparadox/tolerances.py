@@ -32,8 +32,8 @@ TIMING_MATCH = 1e-9
 #: 1e-9 relative at its bounds (README, "Scenario files"), so impacts meant to be simultaneous may differ by that
 ONE_INSTANT = 1e-9
 #: one event's time, computed twice (the event boosted, and a world-line through it boosted), agrees to this,
-#: relative to L + |t|: a few ulps. Narrower than ONE_INSTANT, because it tells an impact's own instant from a
-#: slice just beside it (the ledger just before and just after an impact), not two impacts from each other
+#: relative to L + |t|: a few ulps. The ledger needs this, not ONE_INSTANT: it takes the (E, p) between two
+#: impacts, which may be far closer than 1e-9 relative (fig1 at v = 1e-6: 1e-6 L apart at t' = 5e5 L in S')
 SAME_INSTANT = 1e-12
 #: two impacts share one drawn line of simultaneity when its intercepts agree to this fraction (rounding of a boost)
 SAME_LINE = 1e-9

@@ -16,7 +16,9 @@ from hypothesis import strategies as st
 
 from rodparadox.physics.engine import run
 from rodparadox.errors import FrameError, ScenarioError
-from rodparadox.physics.frames import MAX_PANELS, Frame, parse_frames, view
+from rodparadox.physics.frames import (FASTEST_FRAME, MAX_PANELS, Frame, check_velocity, frame_heading, moving_frame,
+                                      named_frame, parse_frames, rest_frame, view)
+from rodparadox.physics.model import FASTEST, Timing, frame_velocity
 from rodparadox.physics.kinematics import Line
 from rodparadox.io.scenario import builtin_names, load
 
@@ -149,3 +151,40 @@ def test_every_velocity_asked_for_is_one_panel(items):
             assert f.name == {0.0: "rest", -v: "moving"}[f.velocity]
         else:
             assert f.name.startswith("u=") and float(f.name[2:]) == f.velocity
+
+
+# --- the frame conventions, written once -----------------------------------------------------------------------
+
+@pytest.mark.parametrize("v", [1e-6, 0.6, 0.9999999])
+def test_S_prime_moves_at_minus_v_relative_to_S_wherever_a_frame_is_named(v):
+    """`model.frame_velocity` is the one place S' = -v is written: every way of naming a frame agrees with it."""
+    assert frame_velocity("rest", v) == 0.0 and frame_velocity("moving", v) == -v and frame_velocity(0.25, v) == 0.25
+    assert named_frame("rest", v) == rest_frame() == Frame("rest", 0.0)
+    assert named_frame("moving", v) == moving_frame(v) == Frame("moving", -v)
+    assert parse_frames("both", v) == (Frame("rest", 0.0), Frame("moving", -v))
+    assert moving_frame(v).rod_velocity() == v  # the rod first moves at +v in S'
+    with pytest.raises(ValueError, match="a named frame is one of rest, moving"):
+        named_frame("both", v)
+
+
+def test_a_frame_shown_is_bounded_by_the_fastest_v_and_any_frame_by_c():
+    """A frame the user asks to see is bounded by FASTEST_FRAME (double precision places its events and writes its
+    velocities below c); a Lorentz frame as such, and a scenario's timing frame, only by c."""
+    assert FASTEST_FRAME == FASTEST
+    assert check_velocity(-FASTEST_FRAME) == -FASTEST_FRAME
+    with pytest.raises(FrameError):
+        check_velocity(0.99999995)
+    assert Frame("u=0.99999995", 0.99999995).velocity == 0.99999995
+    assert Timing("B", 0.99999995).frame == 0.99999995
+    for u in (1.0, -1.0):
+        with pytest.raises(FrameError, match="-1 < u < 1"):
+            Frame("u", u)
+        with pytest.raises(ScenarioError, match="-1 < u < 1"):
+            Timing("B", u)
+
+
+def test_a_frame_heads_a_text_table_with_its_name_and_what_it_is():
+    assert frame_heading(rest_frame()) == "frame rest (S, the rod's rest frame)"
+    assert frame_heading(moving_frame(0.6)) == "frame moving (S', where the rod first moves at +v)"
+    assert frame_heading(Frame("u=0.3", 0.3)) == "frame u=0.3"
+

@@ -1,4 +1,5 @@
-"""How numbers are written (`rodparadox.numbers`): exactly in names, readably in figures."""
+"""How numbers are written (`rodparadox.numbers`): exactly in names, readably in figures, aligned in tables; nice
+steps; impact labels."""
 
 from __future__ import annotations
 
@@ -8,7 +9,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from rodparadox.numbers import exact, shown
+import math
+
+from rodparadox.numbers import (coordinate_format, exact, exact_signed, impact_name, impact_parts, nice_number,
+                                number_text, shown, shown_signed, velocity_format)
 
 _SUPERSCRIPTS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻"
 
@@ -54,3 +58,54 @@ def test_a_speed_below_1_is_never_drawn_as_1(u):
 def test_an_exact_number_gives_back_the_float(value):
     text = exact(value)
     assert float(text) == value and not text.endswith(".0") and text != "-0" and not text.startswith("-0.0e")
+
+
+# --- nice numbers: the one 1, 2, 2.5, 5 step of ticks, clocks and scale bars ------------------------------------
+
+@pytest.mark.parametrize("value, at_least, at_most, above", [
+    (0.37, 0.5, 0.25, 0.5), (1.0, 1.0, 1.0, 2.0), (2.4, 2.5, 2.0, 2.5), (2.5, 2.5, 2.5, 5.0), (7.0, 10.0, 5.0, 10.0),
+    (0.0031, 0.005, 0.0025, 0.005), (3e6, 5e6, 2.5e6, 5e6),
+])
+def test_a_nice_number_is_1_2_2_5_or_5_times_a_power_of_ten_on_the_side_asked(value, at_least, at_most, above):
+    assert nice_number(value) == pytest.approx(at_least) and nice_number(value, "at_least") == nice_number(value)
+    assert nice_number(value, "at_most") == pytest.approx(at_most)
+    assert nice_number(value, "above") == pytest.approx(above)
+
+
+@given(st.floats(min_value=1e-12, max_value=1e12))
+def test_nice_numbers_bracket_the_value_and_are_nice(value):
+    up, down, above = nice_number(value), nice_number(value, "at_most"), nice_number(value, "above")
+    assert down <= value * (1 + 1e-9) and up >= value * (1 - 1e-9) and above > value
+    for nice in (up, down, above):
+        mantissa = nice / 10.0 ** math.floor(math.log10(nice) + 1e-9)
+        assert any(mantissa == pytest.approx(m) for m in (1, 2, 2.5, 5, 10))
+
+
+def test_a_nice_number_needs_a_side():
+    with pytest.raises(ValueError, match="at_least, at_most or above"):
+        nice_number(1.0, "nearest")
+
+
+# --- impact labels ---------------------------------------------------------------------------------------------
+
+def test_an_impact_label_is_written_one_way_in_plain_text_and_in_mathtext():
+    assert impact_parts("B12") == ("B", "12") and impact_parts("rod") == ("rod", "")
+    assert impact_name("B1") == "B₁" and impact_name("A12") == "A₁₂" and impact_name("rod") == "rod"
+    assert impact_name("B1", math_text=True) == "$B_{1}$" and impact_name("rod", math_text=True) == "rod"
+
+
+# --- signed numbers and numbers in tables ----------------------------------------------------------------------
+
+def test_signed_numbers_show_their_sign_exactly_or_as_drawn():
+    assert [exact_signed(u) for u in (0.6, -0.9999999, 0.0, -0.0)] == ["+0.6", "-0.9999999", "+0", "+0"]
+    assert [shown_signed(u, 4) for u in (0.6, -0.6, 0.0, 0.123456)] == ["+0.6", "\N{MINUS SIGN}0.6", "0", "+0.1235"]
+
+
+def test_table_numbers_keep_their_digits_and_write_rounding_as_zero():
+    coordinate = coordinate_format([0.5, -1.25, 1e-14])
+    assert [coordinate(x) for x in (0.5, -1.25, 1e-14, -1e-14)] == ["+0.5000000", "-1.250000", "+0", "+0"]
+    velocity = velocity_format([0.6, -0.9999999])
+    assert [velocity(u) for u in (0.6, -0.9999999, -0.0)] == ["+0.600000", "-0.999999900", "+0.000000"]
+    assert [number_text(x) for x in (17 / 12, -0.0, 1e-20)] == ["1.416667", "0", "1e-20"]
+    assert number_text(1e-13, zero_below=1e-12) == "0" and number_text(-1e-13) == "-1e-13"
+
