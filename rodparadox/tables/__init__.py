@@ -3,5 +3,6 @@
   build    the events, ledger and hidden tables (`Table` of `Cell`s), built once from a history
   formats  a table as a GitHub pipe table or a booktabs/siunitx LaTeX fragment
 
-Imports `physics`, `io` and the base modules.
+Imports `physics` and the base modules (numbers, tolerances); for now also the `Table` and `Cell` of
+`handout.document`, which belong here.
 """
