@@ -12,6 +12,7 @@ prints. The parts come from the modules beside this one:
   strips            the rod at successive instants: which instants, and their caption
   worksheet         which questions a worksheet asks (`worksheet_frames`, `worksheet_rod` build them)
 
+
 Every sentence is generated from the computed history; a question about
 another speed runs the engine again. `pdf` and `tex` set the same blocks on
 paper and in LaTeX.
@@ -37,6 +38,9 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
+
+
+# --- the title and the headings ---------------------------------------------------------------------------------
 
 def _speed(history: History) -> str:
     """v = 0.6, or v = 0.6, L = 2."""
@@ -68,6 +72,8 @@ def _table_unit(L: float) -> str:
 
 
 def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
+    """The frame's events, ledger and hidden tables (`tables.build`), each after the sentence that says how to read it;
+    `blank`: a worksheet's copies, their numbers left to fill in."""
     symbol, time = frame_name(frame), time_name(frame)
     x = coordinates(frame)[0]
     blocks: list[Block] = [

@@ -22,6 +22,7 @@ from rodparadox.physics.frames import (ONE_INSTANT, PANEL_LETTERS, Frame, frame_
 from rodparadox.physics.ledger import ledger_slice
 from rodparadox.tables.build import impact_name
 
+
 # --- the set-up ------------------------------------------------------------------------------------------------
 
 def _timing_frame(frame: str | float) -> str:
@@ -276,7 +277,8 @@ def _why(r: Reading) -> str:
         motions = []
         for f in r.frames:
             u = r.rod_velocities(f)
-            steps = [f"{pushed(u[k], u[k + 1])} ({impact_names(c)})" for k, c in enumerate(collisions) if u[k + 1] != u[k]]
+            steps = [f"{pushed(u[k], u[k + 1])} ({impact_names(c)})" for k, c in enumerate(collisions)
+                     if u[k + 1] != u[k]]
             backwards = "" if any(a * b < 0 for a in u for b in u) else ", never moving backwards"
             motions.append(f"in {frame_name(f)} it {listed(steps)}{backwards}")
         text = "; ".join(motions)

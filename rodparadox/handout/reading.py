@@ -28,7 +28,8 @@ SAME_RAPIDITY = 1e-9
 @dataclass(frozen=True)
 class Reading:
     """A history and the frames shown, with what the text needs computed once: each impact's coordinates in each
-    frame, the instants at which impacts coincide, the rod's collisions in its own order, velocities."""
+    frame, the instants at which impacts coincide, the rod's collisions in its own order, the impacts that started
+    each turn, velocities."""
 
     history: History
     frames: tuple[Frame, ...]

@@ -92,7 +92,8 @@ def in_c_approx(u: float) -> str:
     """+15/17 c ≈ +0.8823529 c, or +0.5076923 c."""
     exact_text = fraction_text(u + 0.0)
     if exact_text:
-        return f"{signed_numeral(u)} c ≈ {signed_numeral(u, ANSWER_DIGITS).replace(exact_text, shown(abs(u), ANSWER_DIGITS))} c"
+        decimal = signed_numeral(u, ANSWER_DIGITS).replace(exact_text, shown(abs(u), ANSWER_DIGITS))
+        return f"{signed_numeral(u)} c ≈ {decimal} c"
     return in_c(u, ANSWER_DIGITS)
 
 

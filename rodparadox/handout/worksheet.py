@@ -19,6 +19,7 @@ from rodparadox.handout.worksheet_rod import (question_at_rest, question_hidden,
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 
+
 def questions(history: History, frames: Sequence[Frame]) -> tuple[Question, ...]:
     """Five to eight questions on the scenario, numbered from 1, each with a worked answer computed by the tool:
     read an event off the panels; a Lorentz transformation; velocity addition; the hidden momentum on a slice;

@@ -107,8 +107,9 @@ def question_lorentz(r: Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -
         x, t = r.length(r.x(i, a)), r.length(r.t(i, a))
         inner = t - w * x
         times.append(g * inner)
-        steps.append(f"{impact_name(i.label)}: {tb} = {answer_numeral(g)} × ({answer_numeral(t)} {sign} {W} × {bracketed(x)}) L = "
-                     f"{answer_numeral(g)} × {bracketed(inner) if inner < 0 else answer_numeral(inner)} L = {in_l_approx(g * inner)}.")
+        steps.append(f"{impact_name(i.label)}: {tb} = {answer_numeral(g)} × ({answer_numeral(t)} {sign} {W} × "
+                     f"{bracketed(x)}) L = {answer_numeral(g)} × "
+                     f"{bracketed(inner) if inner < 0 else answer_numeral(inner)} L = {in_l_approx(g * inner)}.")
     if len(pair) == 1:
         i = pair[0]
         x, t = r.length(r.x(i, a)), r.length(r.t(i, a))
@@ -139,7 +140,8 @@ def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
     """The rod's velocity after a collision (or a particle's, if the rod never changes) in b, by velocity addition."""
     w = _relative(a, b)
     A, B = frame_name(a), frame_name(b)
-    candidates = [(f"After {impact_names(c)} the rod moves at {in_c(r.velocity(c[-1].rod_rapidity_after, a), ANSWER_DIGITS)}"
+    candidates = [(f"After {impact_names(c)} the rod moves at "
+                    f"{in_c(r.velocity(c[-1].rod_rapidity_after, a), ANSWER_DIGITS)}"
                    f" in {A}.", f"the rod's velocity after {impact_names(c)}", r.velocity(c[-1].rod_rapidity_after, a))
                   for c in r.collisions]
     candidates = [c for c in candidates if c[2] != 0.0]
@@ -154,8 +156,9 @@ def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
     result = relative_velocity(u, w)
     answer = [f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so a velocity u in {A} is "
               f"(u − w)/(1 − u w) in {B}.",
-              f"({signed_numeral(u, ANSWER_DIGITS)} − ({signed_numeral(w, ANSWER_DIGITS)}))/(1 − ({signed_numeral(u, ANSWER_DIGITS)}) × "
-              f"({signed_numeral(w, ANSWER_DIGITS)})) = {bracketed(u - w)}/{bracketed(1 - u * w)} = "
+              f"({signed_numeral(u, ANSWER_DIGITS)} − ({signed_numeral(w, ANSWER_DIGITS)}))/"
+              f"(1 − ({signed_numeral(u, ANSWER_DIGITS)}) × ({signed_numeral(w, ANSWER_DIGITS)})) = "
+              f"{bracketed(u - w)}/{bracketed(1 - u * w)} = "
               f"{in_c_approx(result)}{' (at rest)' if result == 0.0 else ''}."]
     if abs(u - w) >= 1.0:
         answer.append(f"Adding velocities as Galileo did would give {in_c(u - w, ANSWER_DIGITS)}, faster than "

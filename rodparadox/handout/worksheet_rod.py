@@ -78,7 +78,8 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
         u = r.velocity(h.worldline(name).boosted(f.rapidity).rapidity_at_time(t) + f.rapidity, f)
         known.append(f"{name} moves at {in_c(u, ANSWER_DIGITS)}")
         p = 0.0 if abs(bodies[name].p) <= zero else bodies[name].p
-        steps.append(f"{name}: {answer_numeral(m)} × {bracketed(u)}/√(1 − {bracketed(u)}²) = {answer_numeral(p)} M c.")
+        steps.append(f"{name}: {answer_numeral(m)} × {bracketed(u)}/√(1 − {bracketed(u)}²) = "
+                     f"{answer_numeral(p)} M c.")
         terms.append(p)
     rod_p = 0.0 if abs(bodies["rod"].p) <= zero else bodies["rod"].p
     if whole:
@@ -92,8 +93,9 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
     terms.append(rod_p)
     kinetic = sum(terms)
     hidden = total.p - kinetic
-    steps.append(f"All the bodies' momentum on the slice: {' + '.join(summand(q) for q in terms)} = {answer_numeral(kinetic)} "
-                 f"M c. Hidden: {answer_numeral(total.p)} − {summand(kinetic)} = {numeral_approx(hidden)} M c.")
+    steps.append(f"All the bodies' momentum on the slice: {' + '.join(summand(q) for q in terms)} = "
+                 f"{answer_numeral(kinetic)} M c. Hidden: {answer_numeral(total.p)} − {summand(kinetic)} = "
+                 f"{numeral_approx(hidden)} M c.")
     where = ("this slice of " + symbol + " cuts across a turn, the rod's rigid response to an impact, so part of the "
              "impulse already given sits in the stress and has not yet reached the motion of the rod's material "
              "points" if not whole else
@@ -126,10 +128,13 @@ def question_stopped_turn(r: Reading) -> Asked | None:
             f"moving in S at that instant, and how does that compare with the rod's velocity after {name}? (During a "
             f"turn about the event P the far end moves on the hyperbola (x − x_P)² − (t − t_P)² = L², whose velocity "
             f"at (x, t) is (t − t_P)/(x − x_P).)")
-    answer = (f"P is {impact_names(at_pivot)}, at x = {in_l(r.length(P.x), ANSWER_DIGITS)}, t = {in_l(r.length(P.t), ANSWER_DIGITS)}; "
+    answer = (f"P is {impact_names(at_pivot)}, at x = {in_l(r.length(P.x), ANSWER_DIGITS)}, "
+              f"t = {in_l(r.length(P.t), ANSWER_DIGITS)}; "
               f"{stop} is at x = {in_l(r.length(E.x), ANSWER_DIGITS)}, t = {in_l(r.length(E.t), ANSWER_DIGITS)}.",
-              f"{stop} is on the hyperbola: {bracketed(dx)}² − {bracketed(dt)}² = {answer_numeral(dx * dx - dt * dt)} (in L²).",
-              f"The {far} end's velocity there: {answer_numeral(dt)}/{bracketed(dx)} = {in_c(u_far, ANSWER_DIGITS)} in {S}, "
+              f"{stop} is on the hyperbola: {bracketed(dx)}² − {bracketed(dt)}² = "
+              f"{answer_numeral(dx * dx - dt * dt)} (in L²).",
+              f"The {far} end's velocity there: {answer_numeral(dt)}/{bracketed(dx)} = "
+              f"{in_c(u_far, ANSWER_DIGITS)} in {S}, "
               f"while the rod's momentum moves at {in_c(u_rod, ANSWER_DIGITS)} after {name}: the {far} end had "
               f"not caught up when {stop} struck, so the rod never moved as a whole at "
               f"{in_c(u_rod, ANSWER_DIGITS)}.")
@@ -177,7 +182,8 @@ def question_single(r: Reading) -> Asked | None:
             f"{far} end follows only gradually, on the hyperbola of radius L about {struck}. How long after {struck}, "
             f"in S, does the {far} end reach {in_c(u, ANSWER_DIGITS)}? How far has the struck end moved by then?")
     answer = (f"On that hyperbola t − t_P = L sinh φ and the velocity is tanh φ; it reaches |u| = "
-              f"{answer_numeral(abs(u))} where sinh φ = γ|u| = {answer_numeral(g)} × {answer_numeral(abs(u))} = {answer_numeral(delay)}.",
+              f"{answer_numeral(abs(u))} where sinh φ = γ|u| = {answer_numeral(g)} × {answer_numeral(abs(u))} = "
+              f"{answer_numeral(delay)}.",
               f"So the {far} end takes {in_l_approx(delay)} of S's time. Meanwhile the struck end, moving at "
               f"{in_c(u, ANSWER_DIGITS)} from the impact on, moves {in_l_approx(abs(u) * delay)} to the "
               f"{'right' if u > 0 else 'left'}; the rod then has "
@@ -235,8 +241,8 @@ def question_together(r: Reading, b: Frame) -> Asked | None:
     momenta = [momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
                for i in c]
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
-              f"{listed([answer_numeral(p) + ' M c' for p in momenta])}, which cancel)" if abs(sum(momenta)) <= ROUNDING_ZERO * sum(
-                  abs(p) for p in momenta) else "")
+              f"{listed([answer_numeral(p) + ' M c' for p in momenta])}, which cancel)"
+              if abs(sum(momenta)) <= ROUNDING_ZERO * sum(abs(p) for p in momenta) else "")
     text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
             f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
     answer = (f"{in_c(u_rod, ANSWER_DIGITS)}, as before and after: the rod takes {impact_names(c)} together, on one line "
