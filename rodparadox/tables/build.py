@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from rodparadox.handout.document import Cell, Table
+from rodparadox.tables.table import Cell, Table
 from rodparadox.physics.engine import History
 from rodparadox.io.export import check_below_c, coordinate_format, velocity_format
 from rodparadox.physics.frames import ONE_INSTANT, Frame, frame_symbol, frame_word, time_order, view
