@@ -1,4 +1,4 @@
-"""What an animation's frames show (README, "The paradox in motion"), checked on the drawn artists and on the
+"""What an animation's images show (README, "The paradox in motion"), checked on the drawn artists and on the
 pixels against the exact world-lines (the engine's, boosted; and hand formulas for `single`), never against
 the drawing's own output: the now-line at each frame's instant, the bar from the rod's left end to its right
 end, the bar's colours the material points' velocities through the colour scale, the lens, boost mode's axes."""
@@ -13,13 +13,15 @@ import pytest
 from matplotlib.colors import Normalize
 
 from rodparadox import render
-from rodparadox.animate.scenes import LENS_BELOW, NowScene, frames_of
-from rodparadox.animate.timeline import colour_scale, timeline
+from rodparadox.animate.now_scene import LENS_BELOW, NowScene
+from rodparadox.animate.scenes import images_of
+from rodparadox.animate.timeline import timeline
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.render.strip import PRINT_RAMP, colour_map
 from rodparadox.physics.rod import material_worldline
 from rodparadox.io.scenario import load
+from rodparadox.render.colour_scale import colour_scale
 
 #: drawn coordinates against exact ones, in units of L: rounding only
 AGREE = 1e-12
@@ -117,7 +119,7 @@ def test_the_bar_colours_are_the_material_points_velocities_through_the_colour_s
 
 
 def test_the_now_line_and_the_bar_colour_are_where_they_should_be_in_the_pixels():
-    """End to end: in the RGB frame, the now-line's red row is where panel (a)'s transform puts t, and the
+    """End to end: in the RGB image, the now-line's red row is where panel (a)'s transform puts t, and the
     pixel in the middle of the bar is the colour of the velocity of the material point there."""
     v = 0.6
     h = history("fig2", v)
@@ -127,7 +129,7 @@ def test_the_now_line_and_the_bar_colour_are_where_they_should_be_in_the_pixels(
     with render.style_context("default"):
         s = NowScene(h, line, "default")
         s.canvas.draw()
-        images = list(frames_of(h, frames, "now", "default", line))
+        images = list(images_of(h, frames, "now", "default", line))
         height = images[0].shape[0]
         for k in (1, 3):
             s.update(k)
@@ -182,11 +184,11 @@ def test_the_print_colour_map_reads_in_grey_its_lightness_runs_one_way():
     assert lightness[0] - lightness[-1] > 60 and PRINT_RAMP[0] > 0  # never white: the page is white
 
 
-def test_boost_frames_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
+def test_boost_images_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
     """In the frame of velocity u, S's t axis (x = 0 of S) has slope dx/dt = -u and S''s (velocity -v) the
     relative velocity (-v - u)/(1 + v u) (velocity addition): read from the pixels' colours is too loose, so the drawn lines'
-    direction is checked, at the first, middle and last frame."""
-    import rodparadox.animate.scenes as drawing
+    direction is checked, at the first, middle and last image."""
+    import rodparadox.animate.boost_scene as drawing
 
     v = 0.6
     h = history("fig2", v)
@@ -196,7 +198,7 @@ def test_boost_frames_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
     original = drawing._inside_end
     drawing._inside_end = lambda dx, dt, box: captured.append((dx, dt)) or original(dx, dt, box)
     try:
-        images = list(frames_of(h, (start, end), "boost", "default", line))
+        images = list(images_of(h, (start, end), "boost", "default", line))
     finally:
         drawing._inside_end = original
     assert len(images) == 5 and len({i.shape for i in images}) == 1
