@@ -225,3 +225,33 @@ def test_two_processes_give_byte_identical_gif_and_png_in_both_modes(tmp_path):
                            capture_output=True, timeout=300)
         out[seed] = {p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
     assert len(out["1"]) == 4 and out["1"] == out["2"]
+
+
+def test_boost_draws_plots_layers_on_the_exact_world_lines_of_each_instant():
+    """Boost mode's world-sheet, world-lines and impact markers are `plot`'s layers (their gids), drawn anew at each
+    instant (the last instant's taken away), on the exact world-lines boosted into the frame of the instant."""
+    from rodparadox.animate.boost_scene import BoostScene
+
+    v = 0.6
+    h = history("fig2", v)
+    line = timeline(h, (Frame("rest", 0.0), Frame("moving", -v)), "boost", 5)
+    L = h.scenario.L
+    with render.style_context("default"):
+        s = BoostScene(h, line, "default")
+        for k in (0, 2, 4):
+            drawn = {a.get_gid(): a for a in s.update(k) if a.get_gid()}
+            want = {"boost-sheet", "boost-A", "boost-B", "boost-rod_left", "boost-rod_right",
+                    *(f"boost-impact-{i.label}" for i in h.impacts)}
+            assert want <= set(drawn)
+            in_axes = [a.get_gid() for a in (*s.ax.lines, *s.ax.patches, *s.ax.artists) if a.get_gid()]
+            assert sorted(in_axes) == sorted(set(in_axes))  # one of each: the last instant's were taken away
+            eta = line.frames[k].rapidity
+            for name in ("A", "rod_left", "rod_right"):
+                xs, ts = drawn[f"boost-{name}"].get_data()
+                exact = h.worldline(name).boosted(eta)
+                for x, t in list(zip(xs, ts))[::7]:
+                    assert x == pytest.approx(exact.event_at_time(t * L).x / L, abs=AGREE * (1 + abs(x)))
+            for i in h.impacts:
+                e = i.event.boosted(eta)
+                xs, ts = drawn[f"boost-impact-{i.label}"].get_data()
+                assert (xs[0], ts[0]) == pytest.approx((e.x / L, e.t / L), abs=AGREE)

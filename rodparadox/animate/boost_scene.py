@@ -1,27 +1,41 @@
 """Boost mode (README, "Animating"): one panel over fixed axes whose frame runs smoothly from one velocity to
 another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
 module only after every input has been checked.
+
+The world-sheet, the world-lines of the particles and of the rod's ends, and the impacts' markers are `plot`'s
+own layers (`render.layers`), drawn into the panel in the frame of each instant, so they look as in `plot`'s
+panels. Boost mode's own are what `plot` draws otherwise: the axes of both S and S' (plot's `OtherAxes` draws only
+the other frame's, in another ink), and the letters and impact labels at fixed offsets on a white ground (plot
+places them with its label placer, which would move them from instant to instant).
 """
 
 from __future__ import annotations
 
+import math
 from typing import Iterator
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from rodparadox.animate.images import blitted, dpi
 from rodparadox.animate.timeline import BoostTimeline
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, sampling_tolerance
 from rodparadox.numbers import shown
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame, sampling_tolerance, view
+from rodparadox.render.layers import Impacts, Options, PanelContext, Particle, RodEnds, WorldSheet, line_kwargs
+from rodparadox.render.layout import font_sizes
 from rodparadox.render.styles import STYLES
-
 
 #: boost mode's figure, inches: the page's (or slide's) width, and at most its height; the panel is square, the
 #: key to its right
 _BOOST_SIZE = {"default": (7.0, 6.0), "print": (7.0, 6.0), "slides": (13.33, 7.5)}
+#: plot's layers drawn at each instant: the world-sheet (under the axes of S and S'), then the bodies (the
+#: particles under the rod's ends), then the impacts' markers (over the bodies)
+SHEET, BODIES, IMPACTS = WorldSheet(), (Particle("A"), Particle("B"), RodEnds()), Impacts()
+#: the layers' options: none of plot's extras
+OPTIONS = Options()
 
 
 def boost_images(history: History, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:
@@ -38,28 +52,22 @@ class BoostScene:
     """Boost mode's figure: one panel over fixed axes (equal scales: light at 45 degrees); `update(k)` redraws in
     the frame of instant k the world-lines, the rod's world-sheet, the impacts and the axes of S and S' (tilted,
     through the shared origin; S's in the ink of its lines of simultaneity, S''s in theirs, as `plot` draws them),
-    and returns the artists it moved, in drawing order. A key to the right names every line; the title names the
+    and returns the artists it drew, in drawing order. A key to the right names every line; the title names the
     frame of the instant. Build it inside `render.style_context(style)`."""
 
     def __init__(self, history: History, timeline: BoostTimeline, style: str):
-        from matplotlib.lines import Line2D
-        from matplotlib.patches import Polygon
-
         from rodparadox import render
-        from rodparadox.render.layers import impact_marker, line_kwargs
 
         self.history, self.timeline = history, timeline
-        st = STYLES[style]
-        L = history.scenario.L
+        self.style = st = STYLES[style]
         fs = st.font_size
         big = 1.35 * fs  # the axes' names and the particles' letters: read from the back of a lecture hall
         ground = {"boxstyle": "round,pad=0.12", "facecolor": "white", "edgecolor": "none", "alpha": 0.85}
-        inks = {name: (st.rod if name.startswith("rod_") else st.particles[name]) for name, _ in history.worldlines}
         axis_inks = {"rest": st.rest_simultaneity, "moving": st.moving_simultaneity}
         axis_inks = {frame: ink._replace(width=1.3 * ink.width) for frame, ink in axis_inks.items()}
         key = [(Line2D([], [], **line_kwargs(st.rod)), "rod")]
-        key += [(Line2D([], [], **line_kwargs(inks[name])), f"particle {name}") for name in ("A", "B") if name in inks]
-        key += [(Line2D([], [], **impact_marker(st)), "impact"),
+        key += [entry for entry in (layer.legend_entry(st, history, OPTIONS) for layer in BODIES[:2]) if entry]
+        key += [IMPACTS.legend_entry(st, history, OPTIONS),
                 (Line2D([], [], **line_kwargs(axis_inks["rest"])), "axes of S"),
                 (Line2D([], [], **line_kwargs(axis_inks["moving"])), "axes of S\N{PRIME}")]
         key_width = (3.4 * fs + max(render.text_size(text, fs)[0] for _, text in key)) / 72  # inches
@@ -70,6 +78,7 @@ class BoostScene:
         self.figure = figure = Figure(figsize=(width, height), dpi=dpi(style))
         self.canvas = FigureCanvasAgg(figure)
         self.ax = ax = figure.add_axes((left / width, bottom / height, side / width, side / height))
+        L = history.scenario.L
         (x0, x1), (t0, t1) = (np.array(timeline.x_window) / L), (np.array(timeline.t_window) / L)
         span = 1.04 * max(x1 - x0, t1 - t0)  # a square panel with equal scales: the shorter side widened
         (x0, x1), (t0, t1) = [(0.5 * (a + b) - span / 2, 0.5 * (a + b) + span / 2) for a, b in ((x0, x1), (t0, t1))]
@@ -81,40 +90,49 @@ class BoostScene:
         ax.tick_params(labelsize=fs)
         self.title = ax.set_title("", fontsize=1.2 * fs, loc="left", pad=0.6 * fs)
         self.title.set_animated(True)
-        self.tolerance = sampling_tolerance(history)
-        self.sheet = ax.add_patch(Polygon(np.zeros((3, 2)), closed=True, facecolor=st.sheet, edgecolor="none",
-                                          zorder=1, animated=True))
-        self.lines = {name: ax.plot([], [], **line_kwargs(ink), zorder=4, animated=True)[0]
-                      for name, ink in inks.items()}
         self.axes_of = {(frame, axis): ax.plot([], [], **line_kwargs(axis_inks[frame]), zorder=2, animated=True)[0]
                         for frame in ("rest", "moving") for axis in ("x", "t")}
         self.names = {(frame, axis): ax.text(0, 0, axis + ("\N{PRIME}" if frame == "moving" else ""), ha="center",
                                              va="center", color=axis_inks[frame].colour, fontsize=big, style="italic",
                                              zorder=9, bbox=ground, animated=True)
                       for frame, axis in self.axes_of}
-        self.particles = {name: ax.text(0, 0, name, ha="left", va="center", color=ink.colour, fontsize=big,
-                                        style="italic", zorder=9, bbox=ground, animated=True)
-                          for name, ink in inks.items() if not name.startswith("rod_")}
-        self.dots = ax.plot([], [], **impact_marker(st), zorder=7, animated=True)[0]
+        self.particles = {name: ax.text(0, 0, name, ha="left", va="center", color=st.particles[name].colour,
+                                        fontsize=big, style="italic", zorder=9, bbox=ground, animated=True)
+                          for name, _ in history.worldlines if not name.startswith("rod_")}
         self.labels = [ax.text(0, 0, render.impact_text(i.label), fontsize=1.1 * fs, va="center", zorder=9,
                                bbox=ground, animated=True) for i in history.impacts]
         figure.legend([h for h, _ in key], [text for _, text in key], loc="upper left",
                       bbox_to_anchor=((left + side + 0.3) / width, 1 - top / height), fontsize=fs,
                       handlelength=2.6, labelspacing=0.7, borderaxespad=0.0)
         self.reach = 2.0 * max(abs(x0), abs(x1), abs(t0), abs(t1))  # the axes run past the panel's every side
+        self.font_sizes = font_sizes(st)
+        self.layered: tuple = ()  # what the layers drew at the last instant, taken away at the next
+
+    def panel(self, frame: Frame) -> PanelContext:
+        """The panel as plot's layers see it, in `frame`: its world-lines sampled over the whole boost's time
+        window (the axes stay still while they move)."""
+        history, L = self.history, self.history.scenario.L
+        tolerance = sampling_tolerance(history)
+        points = {name: w.boosted(frame.rapidity).sample(*self.timeline.t_window, tolerance) / L
+                  for name, w in history.worldlines}
+        # no layer drawn here has ticks or clocks: their steps are not needed
+        return PanelContext(history, self.style, OPTIONS, self.font_sizes, "boost", view(history, frame), points,
+                            self.box, (math.nan, math.nan), math.nan)
 
     def update(self, k: int) -> tuple:
         from rodparadox import render
 
         history, L, v = self.history, self.history.scenario.L, self.history.scenario.v
-        box, reach = self.box, self.reach
+        box, reach, ax = self.box, self.reach, self.ax
         frame = self.timeline.frames[k]
         eta = frame.rapidity
-        points = {name: w.boosted(eta).sample(*self.timeline.t_window, self.tolerance) / L
-                  for name, w in history.worldlines}
-        for name, line in self.lines.items():
-            line.set_data(points[name][:, 0], points[name][:, 1])
-        self.sheet.set_xy(np.concatenate([points["rod_left"], points["rod_right"][::-1]]))
+        for artist in self.layered:
+            artist.remove()
+        panel = self.panel(frame)
+        sheet = SHEET.draw(ax, panel).artists
+        bodies = tuple(artist for layer in BODIES for artist in layer.draw(ax, panel).artists)
+        impacts = IMPACTS.draw(ax, panel).artists
+        self.layered = (*sheet, *bodies, *impacts)
         for (other, axis), line in self.axes_of.items():
             u = render.relative_velocity(0.0 if other == "rest" else -v, frame.velocity)  # that frame, seen here
             dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
@@ -125,13 +143,11 @@ class BoostScene:
             text.set_visible(place is not None)
             if place is not None:
                 text.set_position(place)
-        events = [i.event.boosted(eta) for i in history.impacts]
-        self.dots.set_data([e.x / L for e in events], [e.t / L for e in events])
-        for text, e in zip(self.labels, events):
-            text.set_position((e.x / L + 0.025 * (box[1] - box[0]), e.t / L))
+        for text, e in zip(self.labels, panel.events()):
+            text.set_position((e[2] + 0.025 * (box[1] - box[0]), e[3]))
         self.title.set_text(_boost_title(frame))
-        return (self.sheet, *self.axes_of.values(), *self.lines.values(), self.dots, *self.labels,
-                *self.names.values(), *self.particles.values(), self.title)
+        return (*sheet, *self.axes_of.values(), *bodies, *impacts, *self.labels, *self.names.values(),
+                *self.particles.values(), self.title)
 
 
 def _letter_place(worldline, L: float, box) -> tuple[float, float] | None:
