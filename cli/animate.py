@@ -1,7 +1,7 @@
 """`sears-paradox animate`: the paradox in motion, as a GIF, an MP4 or numbered PNG stills.
 
 Thin: parse the options, plan and check through `sears_paradox_cli.planning`, `rodparadox.animate.timeline` and
-`rodparadox.animate.encoders`, then draw (matplotlib only from here on) and stream the frames to the file.
+`rodparadox.animate.encoders`, then draw (matplotlib only from here on) and stream the images to the file.
 """
 
 from __future__ import annotations
@@ -55,25 +55,25 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     Example: sears-paradox animate fig2 --fps 10 --seconds 2
     """
     from sears_paradox_cli import planning as planned
-    from rodparadox.animate.timeline import frame_count, timeline
+    from rodparadox.animate.timeline import image_count, timeline
     from rodparadox.animate.encoders import check_fps, require_ffmpeg
 
     job = planned.plan_animation(scenario, v=v, L=L, frame=frame, mode=mode, fmt=fmt, output=output, style=style)
     check_fps(job.fmt, fps)
-    count = frame_count(seconds, fps)
+    count = image_count(seconds, fps)
     if job.fmt == "mp4":
         require_ffmpeg()
     history = run_scenario(job.scenario, job.name)
     planned.prepare_animation(job, output)
     line = timeline(history, job.frames, mode, count)
 
-    from rodparadox.animate.scenes import frames_of  # matplotlib: only now, after every input has been checked
-    from rodparadox.animate.encoders import write_frames
+    from rodparadox.animate.scenes import images_of  # matplotlib: only now, after every input has been checked
+    from rodparadox.animate.encoders import write_images
 
-    drawn = frames_of(history, job.frames, mode, style, line)
+    drawn = images_of(history, job.frames, mode, style, line)
     with click.progressbar(drawn, length=count, label=str(job.path), file=sys.stderr,
                            hidden=not _is_terminal(sys.stderr)) as bar:
-        written = write_frames(job.path, job.fmt, fps, bar, name=job.stem)
+        written = write_images(job.path, job.fmt, fps, bar, name=job.stem)
     if not quiet:
         shown = f"{job.path}/" if job.fmt == "png" else str(job.path)
         emit(shown if written else f"{shown} (unchanged)")

@@ -7,6 +7,7 @@ rod's interior, frames and the energy-momentum ledger (README, "The model").
   engine      runs a scenario: impacts, the rigid response (turns), the order of impacts -> `History`
   rod         inside the rod: material points, the rod on a slice, its own lines of simultaneity
   frames      a history seen from one frame; the frame conventions (S' = -v, velocity addition)
+  snapshot    one frame's space at one instant: the rod's material points, the particles, the impacts then
   ledger      each body's energy and momentum on a slice of any frame, the hidden part
 
 Imports only `rodparadox.errors`, `rodparadox.numbers` and `rodparadox.tolerances` from outside.

@@ -24,6 +24,7 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   diagram  `draw` (a Figure the layout sizes), `draw_into` (a Figure or SubFigure the caller sized), bytes
   styles   the three styles as plain data (inks, dashes, rcParams, sizes): no matplotlib
   ledger_figure  the ledger as a figure (momentum and energy against each frame's time)
+  colour_scale  which velocity each colour of a strip means, in one frame (pure: no matplotlib)
   strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
            particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
            block of stills, the rod at successive instants
