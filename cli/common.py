@@ -14,7 +14,7 @@ import click
 from rodparadox.errors import RodParadoxError
 
 from . import words
-from .words import worded
+from .words import option, worded
 
 
 class BadInput(click.ClickException):
@@ -140,14 +140,15 @@ def checked_frame_velocity(u: float | None) -> float | None:
 
 
 # --- the options the commands share ----------------------------------------------------------------
-# Each declared once; where commands word an option differently, the command gives its own help (and metavar).
+# Each declared once, named as `words` names it in messages; where commands word an option differently, the
+# command gives its own help (and metavar).
 
 scenario_argument = click.argument("scenario", metavar="SCENARIO")
 scenarios_argument = click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
-v_option = click.option("--v", "v", type=float, metavar="V",
+v_option = click.option(option("v"), "v", type=float, metavar="V",
                         help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
-L_option = click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
-frame_velocity_option = click.option("--frame-velocity", "frame_velocity", type=float, metavar="U",
+L_option = click.option(option("L"), "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
+frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=float, metavar="U",
                                      help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
 quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")
@@ -164,18 +165,18 @@ def scenario_options(several: bool = False):
 
 def frame_option(help: str, metavar: str = "rest|moving|both|U"):
     """--frame: the frames (panels) to show, read by `planning.frames_of` (or by the command's own reader)."""
-    return click.option("--frame", "frame", default="both", show_default=True, metavar=metavar, help=help)
+    return click.option(option("frame"), "frame", default="both", show_default=True, metavar=metavar, help=help)
 
 
 def format_option(help: str, **kind):
     """--format, as `fmt`: a command's own list of formats (`kind`: a click type, a default, a metavar)."""
-    return click.option("--format", "fmt", help=help, **kind)
+    return click.option(option("format"), "fmt", help=help, **kind)
 
 
 def output_option(help: str, metavar: str = "PATH", default: str | None = None):
     """-o/--output: where the command writes (`None`: the planner's default folder; "-": standard output)."""
-    return click.option("-o", "--output", "output", metavar=metavar, default=default, show_default=default is not None,
-                        help=help)
+    return click.option(option("output"), "--output", "output", metavar=metavar, default=default,
+                        show_default=default is not None, help=help)
 
 
 def style_option(names: tuple[str, ...] | None = None, default: str = "default",

@@ -31,7 +31,8 @@ DEFAULT_FOLDER = "outputs"
 
 def frame_suffix(frames: Sequence[Frame]) -> str:
     """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`."""
-    name = "_".join(frame_word(f) for f in frames).replace("rest_moving", "both")  # each frame appears once, so at most one `both`
+    name = "_".join(frame_word(f) for f in frames)
+    name = name.replace("rest_moving", "both")  # each frame appears once, so at most one `both`
     return "" if name == "both" else f"_{name}"
 
 

@@ -59,8 +59,8 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time}
     described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
-    jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
-                        extras=[short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else []))
+    named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
+    jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
     histories = [run_scenario(job.scenario, job.name) for job in jobs]
     planned.prepare(jobs, described, output)
 
