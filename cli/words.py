@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from rodparadox.errors import ChoiceSentence, FrameError, OptionError, ScenarioError
+from rodparadox.errors import ChoiceError, FrameError, OptionError, ScenarioError
 
 #: every choice the library or the command line names, by its option
 OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--frame-velocity", "output": "-o",
@@ -30,7 +30,7 @@ def subject(choice: str) -> str:
 
 def worded(error: Exception) -> str:
     """A library error as the command line says it: a choice's facts in the options' names, else its own sentence."""
-    if isinstance(error, ChoiceSentence):
+    if isinstance(error, ChoiceError):
         return error.sentence(option, subject)
     return str(error)
 

@@ -43,7 +43,7 @@ class FrameError(ValueError, RodParadoxError):
     """A frame velocity outside the bounds double precision can place events in (frames.check_velocity)."""
 
 
-class ChoiceSentence:
+class ChoiceError(RodParadoxError):
     """An error about one of the caller's choices (a frame rate, a format ...), kept as facts and told in one sentence.
 
     `what` is the choice, by the name of the library's parameter (fps, seconds, frame, mode, format); `value`
@@ -81,20 +81,20 @@ class _Named(dict):
         return self.name(choice)
 
 
-class OptionError(ChoiceSentence, ValueError, RodParadoxError):
+class OptionError(ChoiceError, ValueError):
     """A choice the caller made that cannot be used as given (a format, a frame rate, the frames of a boost): keeps
-    which choice, its value and what is allowed (`ChoiceSentence`)."""
+    which choice, its value and what is allowed (`ChoiceError`)."""
 
-    def __init__(self, what: str, value: Any, allowed: Any = None, template: str = ChoiceSentence.MUST_BE,
+    def __init__(self, what: str, value: Any, allowed: Any = None, template: str = ChoiceError.MUST_BE,
                  **facts: Any):
         self._keep(what, value, allowed, template, facts)
         super().__init__(str(self))
 
 
-class ToolMissing(ChoiceSentence, RuntimeError, RodParadoxError):
+class ToolMissing(ChoiceError, RuntimeError):
     """A program the caller's choice needs (ffmpeg for MP4) is not installed: the environment, not the input, so
     the command line exits 1. Keeps the program (`tool`), the choice that needs it and its value
-    (`ChoiceSentence`), and says how to install it."""
+    (`ChoiceError`), and says how to install it."""
 
     def __init__(self, tool: str, what: str, value: Any, template: str, **facts: Any):
         self.tool = tool
