@@ -188,16 +188,17 @@ def test_boost_ends_read_names_and_velocities(spec, ends):
 
 
 @pytest.mark.parametrize("spec, message", [
-    ("rest", "option --frame: in boost mode give the frames to boost between as A..B (each rest, moving or a "
+    ("rest", "frame: in boost mode give the frames to boost between as A..B (each rest, moving or a "
              "velocity U relative to S), e.g. rest..moving, got 'rest'."),
-    ("rest..rest", "option --frame: rest..rest boosts from a frame to itself; give two different frames."),
-    ("rest..fast", "option --frame: each end of A..B must be rest, moving or a velocity U relative to S; not a "
+    ("rest..rest", "frame: rest..rest boosts from a frame to itself; give two different frames."),
+    ("rest..fast", "frame: each end of A..B must be rest, moving or a velocity U relative to S; not a "
                    "velocity: 'fast'."),
 ])
 def test_boost_ends_refuse_in_one_sentence(spec, message):
+    """The facts (which choice, what value) and the library's sentence; the command line's: test_animate_cli."""
     with pytest.raises(OptionError) as e:
         boost_ends(spec, 0.6)
-    assert str(e.value) == message
+    assert str(e.value) == message and (e.value.what, e.value.value) == ("frame", spec)
 
 
 @pytest.mark.parametrize("seconds, fps, count", [(6, 25, 150), (2, 10, 20), (0.1, 20, 2), (120, 25, 3000),
@@ -206,20 +207,21 @@ def test_image_count_is_seconds_times_fps(seconds, fps, count):
     assert image_count(seconds, fps) == count
 
 
-@pytest.mark.parametrize("seconds, fps, message", [
-    (6, 0, "option --fps must be a whole number of frames per second above 0, got 0."),
-    (-1, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got -1."),
-    (0, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got 0."),
-    (121, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got 121."),
-    (float("nan"), 25, "option --seconds must be a duration above 0 and at most 120 seconds, got nan."),
-    (0.01, 25, "--seconds 0.01 at --fps 25 gives 0 frames; an animation needs at least 2."),
-    (100, 50, f"--seconds 100 at --fps 50 gives 5000 frames; at most {MAX_IMAGES} are drawn, so lower one of "
-              f"them."),
+@pytest.mark.parametrize("seconds, fps, what, message", [
+    (6, 0, "fps", "fps must be a whole number of frames per second above 0, got 0."),
+    (-1, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got -1."),
+    (0, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got 0."),
+    (121, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got 121."),
+    (float("nan"), 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got nan."),
+    (0.01, 25, "seconds", "seconds 0.01 at fps 25 gives 0 frames; an animation needs at least 2."),
+    (100, 50, "seconds", f"seconds 100 at fps 50 gives 5000 frames; at most {MAX_IMAGES} are drawn, so lower one "
+                         f"of them."),
 ])
-def test_image_count_refuses_in_one_sentence(seconds, fps, message):
+def test_image_count_refuses_in_one_sentence(seconds, fps, what, message):
+    """The facts and the library's sentence; the command line's (`option --fps`): test_animate_cli."""
     with pytest.raises(OptionError) as e:
         image_count(seconds, fps)
-    assert str(e.value) == message
+    assert str(e.value) == message and e.value.what == what
 
 
 def test_now_images_show_the_diagram_with_a_moving_now_line_and_are_reproducible():

@@ -109,12 +109,13 @@ def test_the_palette_is_every_colour_when_there_are_few_and_stays_within_256():
 def test_gif_refuses_a_rate_it_cannot_store(fps):
     with pytest.raises(OptionError) as e:
         video.check_fps("gif", fps)
+    assert (e.value.what, e.value.value) == ("fps", fps)  # the command line's sentence: test_animate_cli
     if fps <= 0:
-        assert str(e.value) == f"option --fps must be a whole number of frames per second above 0, got {fps}."
+        assert str(e.value) == f"fps must be a whole number of frames per second above 0, got {fps}."
     else:
-        assert str(e.value) == (f"option --fps: a GIF stores frame durations in hundredths of a second, so only "
+        assert str(e.value) == (f"fps: a GIF stores frame durations in hundredths of a second, so only "
                                 f"1, 2, 4, 5, 10, 20, 25, 50 frames per second are exact, got {fps}; choose one of "
-                                f"them or --format mp4.")
+                                f"them or format mp4.")
 
 
 def test_gif_and_png_are_byte_identical_twice_and_an_unchanged_file_is_left_alone(tmp_path):
@@ -252,7 +253,8 @@ def test_mp4_without_any_ffmpeg_is_one_sentence_naming_both_ways(tmp_path, monke
     assert video.find_ffmpeg() is None
     with pytest.raises(ToolMissing) as e:
         video.open_sink(tmp_path / "a.mp4", "mp4", 25)
-    assert str(e.value) == ("--format mp4 needs ffmpeg, which was found neither on the PATH nor in the "
+    assert (e.value.tool, e.value.what, e.value.value) == ("ffmpeg", "format", "mp4")  # worded: test_animate_cli
+    assert str(e.value) == ("format mp4 needs ffmpeg, which was found neither on the PATH nor in the "
                             "imageio-ffmpeg package; install one of them: apt-get install ffmpeg, or pip install "
                             "'sears-paradox[video]'.")
     assert list(tmp_path.iterdir()) == []

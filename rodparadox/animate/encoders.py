@@ -43,11 +43,11 @@ _HOLD_LEVEL = 1
 def check_fps(fmt: str, fps: int) -> int:
     """The rate, in images per second, for a format: a positive integer; for a GIF one whose 100/fps is an integer."""
     if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
-        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+        raise OptionError("fps", fps, "a whole number of frames per second above 0")
     if fmt == "gif" and fps not in GIF_FPS:
-        raise OptionError(f"option --fps: a GIF stores frame durations in hundredths of a second, so only "
-                          f"{', '.join(map(str, GIF_FPS))} frames per second are exact, got {fps}; "
-                          f"choose one of them or --format mp4.")
+        raise OptionError("fps", fps, GIF_FPS, "{what}: a GIF stores frame durations in hundredths of a second, so "
+                          "only {choices} frames per second are exact, got {value}; choose one of them or {format} "
+                          "mp4.")
     return fps
 
 
@@ -72,9 +72,9 @@ def require_ffmpeg() -> str:
     """ffmpeg's path, or one sentence naming both ways to get it."""
     exe = find_ffmpeg()
     if exe is None:
-        raise ToolMissing("--format mp4 needs ffmpeg, which was found neither on the PATH nor in the imageio-ffmpeg "
-                          "package; install one of them: apt-get install ffmpeg, or pip install "
-                          "'sears-paradox[video]'.")
+        raise ToolMissing("ffmpeg", "format", "mp4", "{format} {value} needs {tool}, which was found neither on the "
+                          "PATH nor in the imageio-ffmpeg package; install one of them: apt-get install ffmpeg, or "
+                          "pip install 'sears-paradox[video]'.")
     return exe
 
 
@@ -367,7 +367,7 @@ def open_sink(path: str | os.PathLike, fmt: str, fps: int, size: tuple[int, int]
         return Mp4Sink(Path(path), fps, size)
     if fmt == "png":
         return PngSink(Path(path), fps, size, name=name)
-    raise OptionError(f"option --format must be one of {', '.join(FORMATS)}, got {fmt!r}.")
+    raise OptionError("format", fmt, FORMATS)
 
 
 def write_images(path: str | os.PathLike, fmt: str, fps: int, images: Iterable[np.ndarray], *,

@@ -40,17 +40,17 @@ FLASH_FRACTION = 0.02
 def image_count(seconds: float, fps: int) -> int:
     """round(seconds * fps) images, checked: 0 < seconds <= MAX_SECONDS, at least 2 and at most MAX_IMAGES."""
     if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
-        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+        raise OptionError("fps", fps, "a whole number of frames per second above 0")
     if not (isinstance(seconds, (int, float)) and math.isfinite(seconds) and 0 < seconds <= MAX_SECONDS):
-        raise OptionError(f"option --seconds must be a duration above 0 and at most {MAX_SECONDS:g} seconds, "
-                          f"got {seconds!r}.")
+        raise OptionError("seconds", seconds, f"a duration above 0 and at most {MAX_SECONDS:g} seconds")
     count = round(seconds * fps)
     if count < 2:
-        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frame{'s' if count != 1 else ''}; "
-                          f"an animation needs at least 2.")
+        raise OptionError("seconds", seconds, 2, "{seconds} {value:g} at {fps} {fps_value} gives {count} "
+                          "frame{plural}; an animation needs at least {allowed}.", fps_value=fps, count=count,
+                          plural="s" if count != 1 else "")
     if count > MAX_IMAGES:
-        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frames; at most {MAX_IMAGES} are "
-                          f"drawn, so lower one of them.")
+        raise OptionError("seconds", seconds, MAX_IMAGES, "{seconds} {value:g} at {fps} {fps_value} gives {count} "
+                          "frames; at most {allowed} are drawn, so lower one of them.", fps_value=fps, count=count)
     return count
 
 
@@ -140,7 +140,7 @@ def boost_velocities(v_from: float, v_to: float, count: int) -> np.ndarray:
 
 
 def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
-    """--frame in boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
+    """The frames of boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
     from rodparadox.errors import FrameError
     from rodparadox.physics.frames import frame_of_velocity
@@ -150,8 +150,8 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
         spec = "rest..moving"
     parts = spec.split("..")
     if len(parts) != 2:
-        raise OptionError(f"option --frame: in boost mode give the frames to boost between as A..B (each rest, "
-                          f"moving or a velocity U relative to S), e.g. rest..moving, got {spec!r}.")
+        raise OptionError("frame", spec, template="{what}: in boost mode give the frames to boost between as A..B "
+                          "(each rest, moving or a velocity U relative to S), e.g. rest..moving, got {value!r}.")
     ends = []
     for part in (p.strip() for p in parts):
         if part in ("rest", "moving"):
@@ -161,10 +161,11 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
             ends.append(frame_of_velocity(float(part) + 0.0))
         except (ValueError, FrameError) as e:
             reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
-            raise OptionError(f"option --frame: each end of A..B must be rest, moving or a velocity U relative "
-                              f"to S; {reason}".rstrip(".") + ".") from None
+            raise OptionError("frame", spec, template="{what}: each end of A..B must be rest, moving or a velocity "
+                              "U relative to S; {reason}.", end=part, reason=reason.rstrip(".")) from None
     if ends[0].velocity == ends[1].velocity:
-        raise OptionError(f"option --frame: {spec} boosts from a frame to itself; give two different frames.")
+        raise OptionError("frame", spec, template="{what}: {value} boosts from a frame to itself; give two "
+                          "different frames.")
     return ends[0], ends[1]
 
 
@@ -205,4 +206,4 @@ def timeline(history: History, frames: tuple[Frame, ...], mode: str, count: int)
         return now_timeline(history, frames, count)
     if mode == "boost":
         return boost_timeline(history, frames[0], frames[1], count)
-    raise OptionError(f"option --mode must be one of {', '.join(MODES)}, got {mode!r}.")
+    raise OptionError("mode", mode, MODES)

@@ -12,7 +12,7 @@ simultaneity of S and of S'. Every artist carries a gid (`a-rod_left`,
 
 Importing the package loads no matplotlib: each name below is looked up in its module on first use
 (`render.draw`, `from rodparadox.render import draw`), so `render.styles`, which the command line's
---help reads, stays light.
+help reads, stays light.
 
 The package, its imports running one way (text <- layout, labels <- layers <- panel <- diagram):
   text     what the panels say (frame names, titles, tick labels) and text sizes in points, without a renderer

@@ -1,4 +1,4 @@
-"""The figure styles of `sears-paradox plot`: plain data, no matplotlib import (the CLI's --help reads the names).
+"""The figure styles of `sears-paradox plot`: plain data, no matplotlib import (the CLI's help reads the names).
 
 Each style says how every element of a diagram is drawn (its colour, line
 width and dash pattern) and what rcParams `render` sets while it draws and
@@ -57,9 +57,9 @@ class Style(NamedTuple):
     light_cone: Ink
     hyperbola: Ink
     grid: Ink
-    rod_interior: Ink  # --rod-lines: material world-lines inside the rod
-    rod_now: Ink  # --rod-now: the rod's own lines of simultaneity, drawn across the rod only
-    clock_size: float  # --proper-time: diameter of a clock tick (a hollow circle in the world-line's colour), points
+    rod_interior: Ink  # Options.rod_lines: material world-lines inside the rod
+    rod_now: Ink  # Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only
+    clock_size: float  # Options.proper_time: diameter of a clock tick (a hollow circle in the world-line's colour), points
     rc: Mapping[str, Any]  # rcParams set while drawing and saving
 
 

@@ -133,7 +133,7 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
 
 def slices_table(history: History, frame: Frame, times: Sequence[float], blank: bool = False) -> Table:
     """Each body's kinetic (E, p), the kinetic total and the hidden part on the slices t = `times` of the frame (the
-    `--at` slices of `sears-paradox ledger`), a row per body, the time on the first row of each slice."""
+    slices `sears-paradox ledger` is asked for), a row per body, the time on the first row of each slice."""
     zero = _zero_below(history, frame)
     rows = []
     for t in times:
@@ -162,7 +162,7 @@ def events_tables(history: History, frames: Sequence[Frame]) -> tuple[Table, ...
 
 def ledger_tables(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> tuple[Table, ...]:
     """`sears-paradox ledger` as tables: for each frame the ledger per impact, the hidden part between impacts
-    where it is not zero, and the --at slices if any."""
+    where it is not zero, and the slices at `at` if any."""
     out: list[Table] = []
     for f in frames:
         out.append(ledger_table(history, f))
