@@ -13,6 +13,9 @@ import click
 
 from rodparadox.errors import RodParadoxError
 
+from . import words
+from .words import option, worded
+
 
 class BadInput(click.ClickException):
     """A scenario, option or path the user must fix: one sentence, exit status 2."""
@@ -31,8 +34,9 @@ BROKEN_PIPE_STATUS = 141
 
 
 def reports_errors(command):
-    """The CLI edge: any library error (`RodParadoxError`) becomes its one sentence and exit status 2 (a failed
-    write or a missing tool such as ffmpeg: 1), no traceback; a reader that closed standard output ends the command quietly."""
+    """The CLI edge: any library error (`RodParadoxError`) becomes its one sentence, in the options' names
+    (`words.worded`), and exit status 2 (a failed write or a missing tool such as ffmpeg: 1), no traceback; a
+    reader that closed standard output ends the command quietly."""
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
         from rodparadox.errors import ToolMissing, WriteFailed
@@ -40,14 +44,23 @@ def reports_errors(command):
         try:
             return command(*args, **kwargs)
         except (WriteFailed, ToolMissing) as e:
-            raise EnvironmentFailure(str(e)) from None
+            raise EnvironmentFailure(worded(e)) from None
         except RodParadoxError as e:
-            raise BadInput(str(e)) from None
+            raise BadInput(worded(e)) from None
         except BrokenPipeError:
             _quiet_exit()
         except RecursionError:  # a safety net: the YAML reader bounds nesting (scenario.MAX_DEPTH) before this
             raise BadInput("the input is nested too deeply to read; write it flat.") from None
     return wrapper
+
+
+def report(written, quiet: bool) -> None:
+    """Print each path of `written` (path, changed), `PATH (unchanged)` for a file left alone because it already
+    held these bytes; nothing with -q. `written` may be lazy (each file written as it is reached): it is read to
+    the end either way."""
+    for path, changed in written:
+        if not quiet:
+            emit(str(path) if changed else f"{path} (unchanged)")
 
 
 def emit(text: str, nl: bool = True) -> None:
@@ -83,7 +96,7 @@ def stdout_to_devnull() -> None:
 def checked_output(output: str | None) -> str | None:
     """-o: an empty name is refused here, as every empty value is (it would mean the current folder)."""
     if output is not None and not output.strip():
-        raise BadInput(f"option -o must name a file or folder, got {output!r}.")
+        raise words.empty_output(output)
     return output
 
 
@@ -91,7 +104,17 @@ def load_scenario(name: str, v: float | None, L: float | None):
     """A built-in scenario or YAML file, with the command line's --v and --L."""
     from rodparadox.io.scenario import load
 
-    return load(name).with_overrides(v=v, L=L)
+    return with_options(load(name), v, L)
+
+
+def with_options(scenario, v: float | None, L: float | None):
+    """The scenario with the command line's --v and --L; a bad value is said as its option's."""
+    from rodparadox.errors import ScenarioError
+
+    try:
+        return scenario.with_overrides(v=v, L=L)
+    except ScenarioError as e:
+        raise words.scenario_option_error(e, [k for k, value in (("v", v), ("L", L)) if value is not None]) from None
 
 
 def run_scenario(scenario, source: str):
@@ -113,23 +136,54 @@ def checked_frame_velocity(u: float | None) -> float | None:
     try:
         return None if u is None else check_velocity(u)
     except FrameError as e:
-        raise BadInput(f"option --frame-velocity: {e}") from None
+        raise words.frame_error(e, "frame_velocity", u) from None
 
+
+# --- the options the commands share ----------------------------------------------------------------
+# Each declared once, named as `words` names it in messages; where commands word an option differently, the
+# command gives its own help (and metavar).
 
 scenario_argument = click.argument("scenario", metavar="SCENARIO")
-v_option = click.option("--v", "v", type=float, metavar="V",
+scenarios_argument = click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
+v_option = click.option(option("v"), "v", type=float, metavar="V",
                         help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
-L_option = click.option("--L", "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
-frame_velocity_option = click.option("--frame-velocity", "frame_velocity", type=float, metavar="U",
+L_option = click.option(option("L"), "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
+frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=float, metavar="U",
                                      help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
 quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")
 
 
-def style_option(command):
-    """--style, as every drawing command takes it (the names come from `rodparadox.render.styles`, which imports nothing)."""
-    from rodparadox.render.styles import STYLE_NAMES
+def scenario_options(several: bool = False):
+    """SCENARIO (or SCENARIO... with `several`), then --v and --L: how every command begins."""
+    def decorate(command):
+        for declare in (L_option, v_option, scenarios_argument if several else scenario_argument):
+            command = declare(command)
+        return command
+    return decorate
 
-    return click.option("--style", "style", type=click.Choice(STYLE_NAMES), default="default", show_default=True,
-                        help="default: colour, colour-blind safe; print: black and white, serif; "
-                             "slides: large type.")(command)
+
+def frame_option(help: str, metavar: str = "rest|moving|both|U"):
+    """--frame: the frames (panels) to show, read by `planning.frames_of` (or by the command's own reader)."""
+    return click.option(option("frame"), "frame", default="both", show_default=True, metavar=metavar, help=help)
+
+
+def format_option(help: str, **kind):
+    """--format, as `fmt`: a command's own list of formats (`kind`: a click type, a default, a metavar)."""
+    return click.option(option("format"), "fmt", help=help, **kind)
+
+
+def output_option(help: str, metavar: str = "PATH", default: str | None = None):
+    """-o/--output: where the command writes (`None`: the planner's default folder; "-": standard output)."""
+    return click.option(option("output"), "--output", "output", metavar=metavar, default=default,
+                        show_default=default is not None, help=help)
+
+
+def style_option(names: tuple[str, ...] | None = None, default: str = "default",
+                 help: str = "default: colour, colour-blind safe; print: black and white, serif; slides: large type."):
+    """--style, as every drawing command takes it (the names come from `rodparadox.render.styles`, which imports
+    nothing); a command that prints by default (handout) gives its own order, default and help."""
+    if names is None:
+        from rodparadox.render.styles import STYLE_NAMES as names
+
+    return click.option("--style", "style", type=click.Choice(names), default=default, show_default=True, help=help)

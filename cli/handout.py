@@ -6,30 +6,37 @@ Thin: parse the options, plan and check through `sears_paradox_cli.planning`, bu
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import click
 
-from .common import L_option, emit, quiet_option, reports_errors, run_scenario, v_option
+from rodparadox.errors import OptionError
+
+from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
+                     scenario_options, style_option)
+
+#: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
+HANDOUT_FORMATS = ("pdf", "tex")
+#: handouts are photocopied in black and white
+HANDOUT_STYLE = "print"
+PAPER_NAMES = ("a4", "letter")
+HANDOUT_PAPER = "a4"
 
 
 @click.command()
-@click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
-@v_option
-@L_option
-@click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
-              help="The frames shown, as plot's --frame (e.g. both,0.3).")
-@click.option("--paper", "paper", type=click.Choice(("a4", "letter"), case_sensitive=False), default="a4",
+@scenario_options(several=True)
+@frame_option("The frames shown, as plot's --frame (e.g. both,0.3).")
+@click.option("--paper", "paper", type=click.Choice(PAPER_NAMES, case_sensitive=False), default=HANDOUT_PAPER,
               show_default=True, help="The paper size.")
 @click.option("--worksheet", is_flag=True,
               help="A worksheet: the tables' numbers left blank to fill in, questions, and an answer key at the end.")
-@click.option("--format", "fmt", type=click.Choice(("pdf", "tex"), case_sensitive=False), default="pdf",
-              show_default=True,
-              help="pdf: one document to print; tex: a folder with handout.tex (pdflatex), the figures as PDF, the "
-                   "tables as .tex fragments and the world-lines as .dat files for pgfplots.")
-@click.option("--style", "style", type=click.Choice(("print", "default", "slides")), default="print",
-              show_default=True, help="print: black and white, for photocopies; default: colour; slides: large type.")
-@click.option("-o", "--output", "output", metavar="PATH", default=None,
-              help="pdf: a folder (it must exist) or a file name .pdf; tex: the folder of the pieces (created if "
-                   "missing). [default: outputs/, created if missing]")
+@format_option("pdf: one document to print; tex: a folder with handout.tex (pdflatex), the figures as PDF, the "
+               "tables as .tex fragments and the world-lines as .dat files for pgfplots.",
+               type=click.Choice(HANDOUT_FORMATS, case_sensitive=False), default="pdf", show_default=True)
+@style_option(("print", "default", "slides"), HANDOUT_STYLE,
+              "print: black and white, for photocopies; default: colour; slides: large type.")
+@output_option("pdf: a folder (it must exist) or a file name .pdf; tex: the folder of the pieces (created if "
+               "missing). [default: outputs/, created if missing]")
 @quiet_option
 @reports_errors
 def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, paper: str, worksheet: bool,
@@ -48,10 +55,14 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     """
     from sears_paradox_cli import planning as planned
 
-    job = planned.plan_handout(scenarios, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
-                               paper=paper.lower(), worksheet=worksheet)
+    paper = paper.lower()
+    described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
+                                folders={"tex": "the LaTeX pieces"}, folder_in_folder=True, check=_check_output,
+                                together=True, default_style=HANDOUT_STYLE)
+    [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
+                         extras=[paper] if paper != HANDOUT_PAPER else [])
     histories = [run_scenario(s, name) for s, name in zip(job.scenarios, job.names)]
-    planned.prepare_handout(job, output)
+    planned.prepare([job], described, output)
 
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
@@ -60,11 +71,15 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 
-        written = [(job.path, write_atomic(job.path, to_pdf(document, paper.lower(), style)))]
+        report([(job.path, write_atomic(job.path, to_pdf(document, paper, style)))], quiet)
     else:
         from rodparadox.handout.tex import tex_files
 
-        written = write_folder(job.path, tex_files(document, paper.lower(), style))
-    if not quiet:
-        for path, changed in written:
-            emit(str(path) if changed else f"{path} (unchanged)")
+        report(write_folder(job.path, tex_files(document, paper, style)), quiet)
+
+
+def _check_output(output: str, fmt: str, suffix: str) -> None:
+    """-o against the format: tex writes a folder, which a name ending in .pdf cannot be."""
+    if fmt == "tex" and suffix == "pdf" and not Path(output).is_dir():
+        raise OptionError("output", output, template="{what} names {value!r} but {format} is tex, which writes a "
+                                                     "folder; name the folder.")

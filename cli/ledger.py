@@ -15,8 +15,11 @@ import click
 
 from rodparadox.render.styles import FORMATS as FIGURE_FORMATS
 
-from .common import (BadInput, L_option, emit, load_scenario, quiet_option, reports_errors, run_scenario, style_option,
-                     v_option)
+from rodparadox.errors import OptionError
+
+from . import words
+from .common import (emit, format_option, frame_option, load_scenario, output_option, quiet_option, report,
+                     reports_errors, run_scenario, scenario_options, style_option)
 
 TABLE_FORMATS = ("text", "json", "csv", "markdown", "latex")
 _EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv", "md": "markdown", "markdown": "markdown",
@@ -34,8 +37,7 @@ def _times(spec: str | None) -> tuple[float, ...] | None:
         except ValueError:
             t = math.nan
         if not math.isfinite(t):
-            raise BadInput(f"option --at must be one or more times (numbers, in the unit L is given in), "
-                           f"comma-separated, got {item!r}.")
+            raise OptionError("at", item, "one or more times (numbers, in the unit L is given in), comma-separated")
         out.append(t)
     return tuple(out)
 
@@ -48,8 +50,8 @@ def _kind(fmt: str | None, output: str | None) -> str:
             return "table"
         if all(item in FIGURE_FORMATS for item in items):
             return "figure"
-        raise BadInput(f"option --format must be one of {', '.join(TABLE_FORMATS)}, or one or more of "
-                       f"{', '.join(FIGURE_FORMATS)} comma-separated, got {fmt!r}.")
+        raise OptionError("format", fmt, f"one of {', '.join(TABLE_FORMATS)}, or one or more of "
+                                         f"{', '.join(FIGURE_FORMATS)} comma-separated")
     if output is None or output == "-":
         return "table"
     suffix = Path(output).suffix.lstrip(".").lower()
@@ -57,27 +59,22 @@ def _kind(fmt: str | None, output: str | None) -> str:
         return "table"
     if suffix in FIGURE_FORMATS or Path(output).is_dir():
         return "figure"
-    raise BadInput(f"option -o: cannot tell the format of {output!r} from its extension; name it "
-                   f".txt, .json, .csv, .md, .tex, .svg, .pdf or .png, or give --format.")
+    raise words.unknown_extension(output, ".txt, .json, .csv, .md, .tex, .svg, .pdf or .png,")
 
 
 @click.command()
-@click.argument("scenario", metavar="SCENARIO")
-@v_option
-@L_option
-@click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
-              help="The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
-                   "gives several (e.g. both,0.3).")
+@scenario_options()
+@frame_option("The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
+              "gives several (e.g. both,0.3).")
 @click.option("--at", "at", default=None, metavar="T1,T2,...",
               help="Also give each body's (E, p) at these times of each frame (a table), in the unit L is "
                    "given in. [json and csv without --at: a dense sampling]")
-@click.option("--format", "fmt", default=None, metavar="text|json|csv|markdown|latex|svg,pdf,png",
-              help="A table (text, json, csv; markdown: pipe tables; latex: a booktabs/siunitx fragment) or a figure "
-                   "(svg, pdf, png). [default: the extension of -o, else text]")
-@click.option("-o", "--output", "output", metavar="PATH", default=None,
-              help="Tables: a file ('-' or none: standard output). Figures: a folder (it must exist) or a file name. "
-                   "[figures: outputs/, created if missing]")
-@style_option
+@format_option("A table (text, json, csv; markdown: pipe tables; latex: a booktabs/siunitx fragment) or a figure "
+               "(svg, pdf, png). [default: the extension of -o, else text]", default=None,
+               metavar="text|json|csv|markdown|latex|svg,pdf,png")
+@output_option("Tables: a file ('-' or none: standard output). Figures: a folder (it must exist) or a file name. "
+               "[figures: outputs/, created if missing]")
+@style_option()
 @quiet_option
 @reports_errors
 def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str | None, fmt: str | None,
@@ -94,14 +91,14 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     from rodparadox.io.output import check_target, write_atomic
 
     if output is not None and not output.strip():
-        raise BadInput(f"option -o must name a file or folder, got {output!r}.")
+        raise words.empty_output(output)
     times = _times(at)
     if _kind(fmt, output) == "table":
         fmt = (fmt or _EXTENSIONS.get(Path(output or "-").suffix.lstrip(".").lower(), "text")).strip().lower()
         if output not in (None, "-"):
             suffix = Path(output).suffix.lstrip(".").lower()
             if suffix in _EXTENSIONS and _EXTENSIONS[suffix] != fmt:
-                raise BadInput(f"option -o names {output!r} but --format is {fmt}; make them agree.")
+                raise words.output_disagrees(output, fmt)
             check_target(output)
         s = load_scenario(scenario, v, L)
         frames = planned.frames_of(frame, s.v)
@@ -114,25 +111,21 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         if output in (None, "-"):
             emit(text, nl=False)
             return
-        written = write_atomic(output, text.encode("utf-8"))
-        if not quiet:
-            emit(output if written else f"{output} (unchanged)")
+        report([(output, write_atomic(output, text.encode("utf-8")))], quiet)
         return
 
     if times is not None:
-        raise BadInput(f"option --at selects the slices of a table ({', '.join(TABLE_FORMATS)}); a figure shows every "
-                       f"instant.")
-    jobs = planned.plan([scenario], v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, kind="ledger",
-                        allowed=FIGURE_FORMATS, default_format="svg")
+        raise OptionError("at", at, TABLE_FORMATS, "{what} selects the slices of a table ({choices}); a figure shows "
+                                                   "every instant.")
+    described = planned.Outputs(formats=FIGURE_FORMATS, default="svg", kind="ledger")  # as plot's, named _ledger
+    jobs = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style)
     histories = [run_scenario(job.scenario, job.name) for job in jobs]
-    planned.prepare(jobs, output)
+    planned.prepare(jobs, described, output)
 
     from rodparadox import render
     from rodparadox.render import ledger_figure  # matplotlib: only now, after every input has been checked
 
     for history, job in zip(histories, jobs):
-        figure = ledger_figure.draw(history, job.frames, style)
-        for f, path in job.paths.items():
-            written = write_atomic(path, render.figure_bytes(figure, f, style))
-            if not quiet:
-                emit(str(path) if written else f"{path} (unchanged)")
+        figure = ledger_figure.draw(history, job.frames[0], style)
+        report(((path, write_atomic(path, render.figure_bytes(figure, f, style))) for f, path in job.paths.items()),
+               quiet)

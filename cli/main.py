@@ -14,9 +14,9 @@ import click
 
 from rodparadox import __version__
 
-from . import common
-from .common import (BadInput, L_option, checked_frame_velocity, checked_output, emit, frame_velocity_option,
-                     load_scenario, quiet_option, reports_errors, run_scenario, scenario_argument, v_option)
+from . import common, words
+from .common import (checked_frame_velocity, checked_output, emit, format_option, frame_velocity_option, load_scenario,
+                     output_option, quiet_option, report, reports_errors, run_scenario, scenario_options)
 from .animate import animate  # imports matplotlib only when it runs
 from .handout import handout
 from .ledger import ledger
@@ -85,14 +85,11 @@ def list_scenarios() -> None:
 
 
 @main.command()
-@scenario_argument
-@v_option
-@L_option
+@scenario_options()
 @frame_velocity_option
-@click.option("--format", "fmt", type=click.Choice(EVENTS_FORMATS, case_sensitive=False), default="text",
-              show_default=True,
-              help="text: aligned columns; markdown: a pipe table per frame; latex: a booktabs/siunitx fragment "
-                   "to \\input.")
+@format_option("text: aligned columns; markdown: a pipe table per frame; latex: a booktabs/siunitx fragment "
+               "to \\input.", type=click.Choice(EVENTS_FORMATS, case_sensitive=False), default="text",
+               show_default=True)
 @reports_errors
 def events(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str) -> None:
     """Print the impacts in the rest frame S and the moving frame S' (and U if given).
@@ -115,15 +112,12 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
 
 @main.command()
-@scenario_argument
-@v_option
-@L_option
+@scenario_options()
 @frame_velocity_option
-@click.option("--format", "fmt", type=click.Choice(EXPORT_FORMATS), default=None,
-              help="json: the documented contract (README); csv: one row per event and world-line point. "
-                   "[default: the extension of -o FILE, else json]")
-@click.option("-o", "--output", "output", metavar="PATH", default="-", show_default=True,
-              help="File to write ('-' for standard output); written atomically, left untouched if unchanged.")
+@format_option("json: the documented contract (README); csv: one row per event and world-line point. "
+               "[default: the extension of -o FILE, else json]", type=click.Choice(EXPORT_FORMATS), default=None)
+@output_option("File to write ('-' for standard output); written atomically, left untouched if unchanged.",
+               default="-")
 @quiet_option
 @reports_errors
 def export(scenario: str, v: float | None, L: float | None, frame_velocity: float | None, fmt: str | None,
@@ -147,9 +141,7 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
     if output == "-":
         emit(text, nl=False)
         return
-    written = write_atomic(output, text.encode("utf-8"))
-    if not quiet:
-        emit(output if written else f"{output} (unchanged)")
+    report([(output, write_atomic(output, text.encode("utf-8")))], quiet)
 
 
 def export_format(output: str, fmt: str | None) -> str:
@@ -159,11 +151,10 @@ def export_format(output: str, fmt: str | None) -> str:
     suffix = Path(output).suffix.lstrip(".").lower()
     if fmt is None:
         if suffix not in EXPORT_FORMATS:
-            raise BadInput(f"option -o: cannot tell the format of {output!r} from its extension; "
-                           f"name it .{', .'.join(EXPORT_FORMATS)} or give --format.")
+            raise words.unknown_extension(output, f".{', .'.join(EXPORT_FORMATS)}")
         return suffix
     if suffix in EXPORT_FORMATS and suffix != fmt:
-        raise BadInput(f"option -o names {output!r} but --format is {fmt}; make them agree.")
+        raise words.output_disagrees(output, fmt)
     return fmt
 
 

@@ -11,25 +11,22 @@ import click
 
 from rodparadox.render.styles import FORMATS
 
-from .common import L_option, emit, quiet_option, reports_errors, run_scenario, style_option, v_option
+from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
+                     scenario_options, style_option)
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
            ("rod_now", "now"), ("proper_time", "clocks"))
 
 
 @click.command()
-@click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
-@v_option
-@L_option
-@click.option("--frame", "frame", default="both", show_default=True, metavar="rest|moving|both|U",
-              help="Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
-                   "a comma-separated list gives several (e.g. both,0.3).")
-@click.option("--format", "fmt", default=None, metavar="svg,pdf,png",
-              help="One or more formats, comma-separated. [default: svg, or the extension of -o FILE]")
-@click.option("-o", "--output", "output", metavar="PATH_OR_DIR", default=None,
-              help="A folder to write into (it must exist), or a file name for one scenario in one format. "
-                   "[default: outputs/, created if missing]")
-@style_option
+@scenario_options(several=True)
+@frame_option("Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
+              "a comma-separated list gives several (e.g. both,0.3).")
+@format_option("One or more formats, comma-separated. [default: svg, or the extension of -o FILE]", default=None,
+               metavar="svg,pdf,png")
+@output_option("A folder to write into (it must exist), or a file name for one scenario in one format. "
+               "[default: outputs/, created if missing]", metavar="PATH_OR_DIR")
+@style_option()
 @click.option("--other-axes", is_flag=True, help="Draw the other frame's x and t axes, tilted, on each panel.")
 @click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
@@ -61,21 +58,17 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time}
-    jobs = planned.plan(scenarios, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
-                        extras=[short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else []),
-                        allowed=FORMATS,
-                        default_format="svg")
+    described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
+    named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
+    jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
     histories = [run_scenario(job.scenario, job.name) for job in jobs]
-    planned.prepare(jobs, output)
+    planned.prepare(jobs, described, output)
 
     from rodparadox import render  # matplotlib: only now, after every input has been checked
     from rodparadox.io.output import write_atomic
 
     options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
-    figures = [render.draw(history, job.frames, style, options) for history, job in zip(histories, jobs)]
-    for figure, job in zip(figures, jobs):
-        for f, path in job.paths.items():
-            written = write_atomic(path, render.figure_bytes(figure, f, style))
-            if not quiet:
-                emit(str(path) if written else f"{path} (unchanged)")
+    figures = [render.draw(history, job.frames[0], style, options) for history, job in zip(histories, jobs)]
+    report(((path, write_atomic(path, render.figure_bytes(figure, f, style)))
+            for figure, job in zip(figures, jobs) for f, path in job.paths.items()), quiet)

@@ -1,18 +1,18 @@
 """Benchmark of `sears-paradox animate` (run on demand, not collected by pytest):
 
-    python tests/benchmark_animate.py [--repeat 5] [--memory-frames 600] [--skip-speed] [--skip-memory]
+    python tests/benchmark_animate.py [--repeat 5] [--memory-images 600] [--skip-speed] [--skip-memory]
 
-1. Speed: `sears-paradox animate fig2 --fps 20 --seconds 6` (a GIF of 120 frames) as a whole process,
-   against a bare matplotlib script (a separate process) that draws the same artists frame by frame:
+1. Speed: `sears-paradox animate fig2 --fps 20 --seconds 6` (a GIF of 120 images) as a whole process,
+   against a bare matplotlib script (a separate process) that draws the same artists image by image:
    the same figure size and dpi, the diagram's lines, fills, texts, titles, ticks and legend, the two
-   strips' axes and colour bars, and per frame the same now-lines, bars (a LineCollection with the same
+   strips' axes and colour bars, and per image the same now-lines, bars (a LineCollection with the same
    segments and colours) and their outlines, particle dots and letters, flashes and readouts, and the lens
    (the magnified strip) where the tool draws one, from numbers saved beforehand,
    with `FuncAnimation(...).save(..., writer=PillowWriter(fps=20))`; no scenario, no engine, no layout.
    Interleaved, so drifts in machine load hit both alike. Target: the tool at most 0.5 of the bare
    script's median wall time.
 2. Memory: the peak resident set size (ru_maxrss from wait4, which covers the process and the children it
-   waited for, such as ffmpeg) of `animate fig2` with 600 frames (`--fps 25 --seconds 24`), as a GIF, as PNG
+   waited for, such as ffmpeg) of `animate fig2` with 600 images (`--fps 25 --seconds 24`), as a GIF, as PNG
    stills, and as an MP4 when ffmpeg is there. Target: under 1 GiB each.
 
 It prints the ratios of median wall-clock times (the target), of the best (minimum) wall times and of median
@@ -32,7 +32,7 @@ import tempfile
 import time
 from pathlib import Path
 
-#: the animation measured: fig2, 120 frames at 20 frames per second, a GIF
+#: the animation measured: fig2, 120 images at 20 per second, a GIF
 FPS, SECONDS = 20, 6
 
 BARE_SCRIPT = r'''
@@ -99,7 +99,7 @@ def update(k):
     for now, t in nows:
         now.set_ydata([t[k], t[k]])
     for s, bar, outline, dots, names, flash, readout in moving:
-        f = s["frames"][k]
+        f = s["images"][k]
         x = f["x"]
         bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
         bar.set_array(f["colours"])
@@ -128,14 +128,14 @@ def command() -> list[str]:
 
 
 def scene_data(path: Path) -> None:
-    """Save what `animate fig2` draws (the diagram, the strips' axes, and every frame's moving artists, with the
+    """Save what `animate fig2` draws (the diagram, the strips' axes, and every image's moving artists, with the
     same figure size and dpi) for the bare script."""
     from matplotlib.colors import to_hex
     from matplotlib.patches import Polygon
 
     from rodparadox import render
-    from rodparadox.animate.scenes import NowScene
-    from rodparadox.animate.timeline import frame_count, timeline
+    from rodparadox.animate.now_scene import NowScene
+    from rodparadox.animate.timeline import image_count, timeline
     from rodparadox.physics.engine import run
     from rodparadox.physics.frames import paper_frames
     from rodparadox.render.strip import COLOUR_BAR_LABEL, COLOUR_MAPS
@@ -144,7 +144,7 @@ def scene_data(path: Path) -> None:
 
     scenario = load("fig2")
     history = run(scenario)
-    count = frame_count(SECONDS, FPS)
+    count = image_count(SECONDS, FPS)
     line = timeline(history, paper_frames(scenario.v), "now", count)
     rc = {k: v for k, v in STYLES["default"].rc.items() if isinstance(v, (str, int, float, bool))}
     rc["font.family"] = list(STYLES["default"].rc["font.family"])
@@ -215,14 +215,14 @@ def scene_data(path: Path) -> None:
                 "dot_size": strip.dots.get_markersize(), "star_size": strip.flash.get_markersize(),
                 "flash_colour": to_hex(strip.flash.get_color()), "letter_y": strip.letter_y,
                 "size": strip.names[0].get_fontsize(), "readout": strip.readout is not None,
-                "names": [(t.get_text(), to_hex(t.get_color())) for t in strip.names], "frames": []})
+                "names": [(t.get_text(), to_hex(t.get_color())) for t in strip.names], "images": []})
         for k in range(count):
             scene.update(k)
             for m, now in zip(scene.panels, data["nows"]):
                 now["t"].append(float(m.now.get_ydata()[0]))
             for (strip, _), record in zip(strips, data["strips"]):
                 segments = strip.bar.get_segments()
-                record["frames"].append({
+                record["images"].append({
                     "x": [float(s[0][0]) for s in segments] + [float(segments[-1][-1][0])],
                     "colours": list(map(float, strip.bar.get_array())),
                     "particles": list(map(float, strip.dots.get_xdata())),
@@ -265,10 +265,10 @@ def speed(args, work: Path) -> None:
     cpu = {k: statistics.median(t[1] for t in v) for k, v in runs.items()}
     from PIL import Image
 
-    frames = {k: Image.open(work / "out" / f"{k}.gif").n_frames for k in runs}
+    images = {k: Image.open(work / "out" / f"{k}.gif").n_frames for k in runs}
     sizes = {k: (work / "out" / f"{k}.gif").stat().st_size for k in runs}
-    print(f"speed: sears-paradox animate fig2 --fps {FPS} --seconds {SECONDS} (GIF, {frames['tool']} frames) against a bare matplotlib script "
-          f"(FuncAnimation.save with PillowWriter, {frames['bare']} frames, same size and dpi); target <= 0.50:")
+    print(f"speed: sears-paradox animate fig2 --fps {FPS} --seconds {SECONDS} (GIF, {images['tool']} images) against a bare matplotlib script "
+          f"(FuncAnimation.save with PillowWriter, {images['bare']} images, same size and dpi); target <= 0.50:")
     print(f"    median wall {wall['tool']:.2f} s / {wall['bare']:.2f} s = {wall['tool'] / wall['bare']:.2f}; "
           f"best wall {best['tool']:.2f} s / {best['bare']:.2f} s = {best['tool'] / best['bare']:.2f}; "
           f"median CPU {cpu['tool']:.2f} s / {cpu['bare']:.2f} s = {cpu['tool'] / cpu['bare']:.2f}")
@@ -280,10 +280,10 @@ def memory(args, work: Path) -> None:
     from rodparadox.animate.encoders import find_ffmpeg
 
     fps = 25
-    seconds = args.memory_frames / fps
+    seconds = args.memory_images / fps
     formats = ["gif", "png"] + (["mp4"] if find_ffmpeg() else [])
     print(f"memory: peak resident set size of animate fig2 --fps {fps} --seconds {seconds:g} "
-          f"({args.memory_frames} frames), whole process (and ffmpeg); target < 1 GiB:")
+          f"({args.memory_images} images), whole process (and ffmpeg); target < 1 GiB:")
     for fmt in formats:
         out = f"out/memory_{fmt}" + ("" if fmt == "png" else f".{fmt}")
         wall, _, peak = measured(command() + ["animate", "fig2", "--fps", str(fps), "--seconds", f"{seconds:g}",
@@ -296,7 +296,7 @@ def memory(args, work: Path) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5, help="interleaved runs of each speed variant (median kept)")
-    parser.add_argument("--memory-frames", type=int, default=600, help="frames of the memory measurement")
+    parser.add_argument("--memory-images", type=int, default=600, help="images of the memory measurement")
     parser.add_argument("--skip-speed", action="store_true")
     parser.add_argument("--skip-memory", action="store_true")
     args = parser.parse_args()

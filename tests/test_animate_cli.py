@@ -9,6 +9,8 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
+from rodparadox.animate.encoders import check_fps, open_sink
+from rodparadox.animate.timeline import boost_ends, image_count, timeline
 from sears_paradox_cli.main import main
 
 #: a short animation: 4 frames
@@ -124,6 +126,45 @@ def test_bad_input_is_one_sentence_exit_2_and_writes_nothing(here, args, message
     if message is not None:
         assert said == message
     assert list(here.iterdir()) == []
+
+
+def _refusal(call):
+    from rodparadox.errors import RodParadoxError
+
+    with pytest.raises(RodParadoxError) as e:
+        call()
+    return e.value
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: image_count(6, 0), "option --fps must be a whole number of frames per second above 0, got 0."),
+    (lambda: image_count(-1, 25), "option --seconds must be a duration above 0 and at most 120 seconds, got -1."),
+    (lambda: image_count(0, 25), "option --seconds must be a duration above 0 and at most 120 seconds, got 0."),
+    (lambda: image_count(121, 25), "option --seconds must be a duration above 0 and at most 120 seconds, got 121."),
+    (lambda: image_count(float("nan"), 25), "option --seconds must be a duration above 0 and at most 120 seconds, "
+                                            "got nan."),
+    (lambda: image_count(0.01, 25), "--seconds 0.01 at --fps 25 gives 0 frames; an animation needs at least 2."),
+    (lambda: image_count(100, 50), "--seconds 100 at --fps 50 gives 5000 frames; at most 3000 are drawn, so lower "
+                                   "one of them."),
+    (lambda: boost_ends("rest", 0.6), "option --frame: in boost mode give the frames to boost between as A..B (each "
+                                      "rest, moving or a velocity U relative to S), e.g. rest..moving, got 'rest'."),
+    (lambda: boost_ends("rest..rest", 0.6), "option --frame: rest..rest boosts from a frame to itself; give two "
+                                            "different frames."),
+    (lambda: boost_ends("rest..fast", 0.6), "option --frame: each end of A..B must be rest, moving or a velocity U "
+                                            "relative to S; not a velocity: 'fast'."),
+    (lambda: check_fps("gif", 0), "option --fps must be a whole number of frames per second above 0, got 0."),
+    (lambda: check_fps("gif", -5), "option --fps must be a whole number of frames per second above 0, got -5."),
+    *[(lambda fps=fps: check_fps("gif", fps),
+       f"option --fps: a GIF stores frame durations in hundredths of a second, so only 1, 2, 4, 5, 10, 20, 25, 50 "
+       f"frames per second are exact, got {fps}; choose one of them or --format mp4.") for fps in (3, 30, 60)],
+    (lambda: timeline(None, (), "sideways", 2), "option --mode must be one of now, boost, got 'sideways'."),
+    (lambda: open_sink("a.webm", "webm", 25), "option --format must be one of gif, mp4, png, got 'webm'."),
+])
+def test_the_librarys_refusals_are_worded_with_the_options_names(call, message):
+    """The library keeps the facts (test_animation, test_video); `words` names the options, as the user reads it."""
+    from sears_paradox_cli.words import worded
+
+    assert worded(_refusal(call)) == message
 
 
 def test_a_file_as_the_stills_folder_is_refused(here):

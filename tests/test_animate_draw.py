@@ -1,4 +1,4 @@
-"""What an animation's frames show (README, "The paradox in motion"), checked on the drawn artists and on the
+"""What an animation's images show (README, "The paradox in motion"), checked on the drawn artists and on the
 pixels against the exact world-lines (the engine's, boosted; and hand formulas for `single`), never against
 the drawing's own output: the now-line at each frame's instant, the bar from the rod's left end to its right
 end, the bar's colours the material points' velocities through the colour scale, the lens, boost mode's axes."""
@@ -13,13 +13,15 @@ import pytest
 from matplotlib.colors import Normalize
 
 from rodparadox import render
-from rodparadox.animate.scenes import LENS_BELOW, NowScene, frames_of
-from rodparadox.animate.timeline import colour_scale, timeline
+from rodparadox.animate.now_scene import LENS_BELOW, NowScene
+from rodparadox.animate.scenes import images_of
+from rodparadox.animate.timeline import timeline
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.render.strip import PRINT_RAMP, colour_map
 from rodparadox.physics.rod import material_worldline
 from rodparadox.io.scenario import load
+from rodparadox.render.colour_scale import colour_scale
 
 #: drawn coordinates against exact ones, in units of L: rounding only
 AGREE = 1e-12
@@ -117,7 +119,7 @@ def test_the_bar_colours_are_the_material_points_velocities_through_the_colour_s
 
 
 def test_the_now_line_and_the_bar_colour_are_where_they_should_be_in_the_pixels():
-    """End to end: in the RGB frame, the now-line's red row is where panel (a)'s transform puts t, and the
+    """End to end: in the RGB image, the now-line's red row is where panel (a)'s transform puts t, and the
     pixel in the middle of the bar is the colour of the velocity of the material point there."""
     v = 0.6
     h = history("fig2", v)
@@ -127,7 +129,7 @@ def test_the_now_line_and_the_bar_colour_are_where_they_should_be_in_the_pixels(
     with render.style_context("default"):
         s = NowScene(h, line, "default")
         s.canvas.draw()
-        images = list(frames_of(h, frames, "now", "default", line))
+        images = list(images_of(h, frames, "now", "default", line))
         height = images[0].shape[0]
         for k in (1, 3):
             s.update(k)
@@ -182,11 +184,11 @@ def test_the_print_colour_map_reads_in_grey_its_lightness_runs_one_way():
     assert lightness[0] - lightness[-1] > 60 and PRINT_RAMP[0] > 0  # never white: the page is white
 
 
-def test_boost_frames_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
+def test_boost_images_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
     """In the frame of velocity u, S's t axis (x = 0 of S) has slope dx/dt = -u and S''s (velocity -v) the
     relative velocity (-v - u)/(1 + v u) (velocity addition): read from the pixels' colours is too loose, so the drawn lines'
-    direction is checked, at the first, middle and last frame."""
-    import rodparadox.animate.scenes as drawing
+    direction is checked, at the first, middle and last image."""
+    import rodparadox.animate.boost_scene as drawing
 
     v = 0.6
     h = history("fig2", v)
@@ -196,7 +198,7 @@ def test_boost_frames_show_the_axes_of_S_and_S_prime_at_the_frame_velocity():
     original = drawing._inside_end
     drawing._inside_end = lambda dx, dt, box: captured.append((dx, dt)) or original(dx, dt, box)
     try:
-        images = list(frames_of(h, (start, end), "boost", "default", line))
+        images = list(images_of(h, (start, end), "boost", "default", line))
     finally:
         drawing._inside_end = original
     assert len(images) == 5 and len({i.shape for i in images}) == 1
@@ -223,3 +225,33 @@ def test_two_processes_give_byte_identical_gif_and_png_in_both_modes(tmp_path):
                            capture_output=True, timeout=300)
         out[seed] = {p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
     assert len(out["1"]) == 4 and out["1"] == out["2"]
+
+
+def test_boost_draws_plots_layers_on_the_exact_world_lines_of_each_instant():
+    """Boost mode's world-sheet, world-lines and impact markers are `plot`'s layers (their gids), drawn anew at each
+    instant (the last instant's taken away), on the exact world-lines boosted into the frame of the instant."""
+    from rodparadox.animate.boost_scene import BoostScene
+
+    v = 0.6
+    h = history("fig2", v)
+    line = timeline(h, (Frame("rest", 0.0), Frame("moving", -v)), "boost", 5)
+    L = h.scenario.L
+    with render.style_context("default"):
+        s = BoostScene(h, line, "default")
+        for k in (0, 2, 4):
+            drawn = {a.get_gid(): a for a in s.update(k) if a.get_gid()}
+            want = {"boost-sheet", "boost-A", "boost-B", "boost-rod_left", "boost-rod_right",
+                    *(f"boost-impact-{i.label}" for i in h.impacts)}
+            assert want <= set(drawn)
+            in_axes = [a.get_gid() for a in (*s.ax.lines, *s.ax.patches, *s.ax.artists) if a.get_gid()]
+            assert sorted(in_axes) == sorted(set(in_axes))  # one of each: the last instant's were taken away
+            eta = line.frames[k].rapidity
+            for name in ("A", "rod_left", "rod_right"):
+                xs, ts = drawn[f"boost-{name}"].get_data()
+                exact = h.worldline(name).seen_from(eta)
+                for x, t in list(zip(xs, ts))[::7]:
+                    assert x == pytest.approx(exact.event_at_time(t * L).x / L, abs=AGREE * (1 + abs(x)))
+            for i in h.impacts:
+                e = i.event.seen_from(eta)
+                xs, ts = drawn[f"boost-impact-{i.label}"].get_data()
+                assert (xs[0], ts[0]) == pytest.approx((e.x / L, e.t / L), abs=AGREE)

@@ -7,14 +7,16 @@ import math
 import numpy as np
 import pytest
 
-from rodparadox.animate.timeline import (FLASH_FRACTION, MAX_FRAMES, boost_ends, boost_timeline, boost_velocities,
-                                  colour_scale, frame_count, now_timeline, now_times, strip_at)
+from rodparadox.animate.timeline import (FLASH_FRACTION, MAX_IMAGES, boost_ends, boost_timeline, boost_velocities,
+                                         image_count, now_timeline, now_times)
 from rodparadox.physics.engine import run
 from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.physics.kinematics import Event
 from rodparadox.physics.rod import material_worldline
+from rodparadox.physics.snapshot import strip_at
 from rodparadox.io.scenario import load
+from rodparadox.render.colour_scale import colour_scale
 
 #: a position or time computed two ways (engine world-line, material world-line, hand formula) agrees to
 #: this, in units of L: a few hundred ulps of the coordinates involved (up to about 10 L)
@@ -186,51 +188,53 @@ def test_boost_ends_read_names_and_velocities(spec, ends):
 
 
 @pytest.mark.parametrize("spec, message", [
-    ("rest", "option --frame: in boost mode give the frames to boost between as A..B (each rest, moving or a "
+    ("rest", "frame: in boost mode give the frames to boost between as A..B (each rest, moving or a "
              "velocity U relative to S), e.g. rest..moving, got 'rest'."),
-    ("rest..rest", "option --frame: rest..rest boosts from a frame to itself; give two different frames."),
-    ("rest..fast", "option --frame: each end of A..B must be rest, moving or a velocity U relative to S; not a "
+    ("rest..rest", "frame: rest..rest boosts from a frame to itself; give two different frames."),
+    ("rest..fast", "frame: each end of A..B must be rest, moving or a velocity U relative to S; not a "
                    "velocity: 'fast'."),
 ])
 def test_boost_ends_refuse_in_one_sentence(spec, message):
+    """The facts (which choice, what value) and the library's sentence; the command line's: test_animate_cli."""
     with pytest.raises(OptionError) as e:
         boost_ends(spec, 0.6)
-    assert str(e.value) == message
+    assert str(e.value) == message and (e.value.what, e.value.value) == ("frame", spec)
 
 
 @pytest.mark.parametrize("seconds, fps, count", [(6, 25, 150), (2, 10, 20), (0.1, 20, 2), (120, 25, 3000),
                                                  (1.02, 50, 51)])
-def test_frame_count_is_seconds_times_fps(seconds, fps, count):
-    assert frame_count(seconds, fps) == count
+def test_image_count_is_seconds_times_fps(seconds, fps, count):
+    assert image_count(seconds, fps) == count
 
 
-@pytest.mark.parametrize("seconds, fps, message", [
-    (6, 0, "option --fps must be a whole number of frames per second above 0, got 0."),
-    (-1, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got -1."),
-    (0, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got 0."),
-    (121, 25, "option --seconds must be a duration above 0 and at most 120 seconds, got 121."),
-    (float("nan"), 25, "option --seconds must be a duration above 0 and at most 120 seconds, got nan."),
-    (0.01, 25, "--seconds 0.01 at --fps 25 gives 0 frames; an animation needs at least 2."),
-    (100, 50, f"--seconds 100 at --fps 50 gives 5000 frames; at most {MAX_FRAMES} are drawn, so lower one of "
-              f"them."),
+@pytest.mark.parametrize("seconds, fps, what, message", [
+    (6, 0, "fps", "fps must be a whole number of frames per second above 0, got 0."),
+    (-1, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got -1."),
+    (0, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got 0."),
+    (121, 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got 121."),
+    (float("nan"), 25, "seconds", "seconds must be a duration above 0 and at most 120 seconds, got nan."),
+    (0.01, 25, "seconds", "seconds 0.01 at fps 25 gives 0 frames; an animation needs at least 2."),
+    (100, 50, "seconds", f"seconds 100 at fps 50 gives 5000 frames; at most {MAX_IMAGES} are drawn, so lower one "
+                         f"of them."),
 ])
-def test_frame_count_refuses_in_one_sentence(seconds, fps, message):
+def test_image_count_refuses_in_one_sentence(seconds, fps, what, message):
+    """The facts and the library's sentence; the command line's (`option --fps`): test_animate_cli."""
     with pytest.raises(OptionError) as e:
-        frame_count(seconds, fps)
-    assert str(e.value) == message
+        image_count(seconds, fps)
+    assert str(e.value) == message and e.value.what == what
 
 
-def test_now_frames_show_the_diagram_with_a_moving_now_line_and_are_reproducible():
-    """The drawing: every frame the same size; the now-line's colour (#CC0033) appears on a row of pixels that climbs
-    from frame to frame (t grows upward); two runs give identical pixels."""
-    from rodparadox.animate.scenes import frames_of
+def test_now_images_show_the_diagram_with_a_moving_now_line_and_are_reproducible():
+    """The drawing: every image the same size; the now-line's colour (#CC0033) appears on a row of pixels that climbs
+    from image to image (t grows upward); two runs give identical pixels."""
+    from rodparadox.animate.scenes import images_of
     from rodparadox.animate.timeline import timeline as make_timeline
 
     h = run(load("fig2"))
     frames = paper_frames(0.6)
     line = make_timeline(h, frames, "now", 4)
-    first = list(frames_of(h, frames, "now", "default", line))
-    again = list(frames_of(h, frames, "now", "default", line))
+    first = list(images_of(h, frames, "now", "default", line))
+    again = list(images_of(h, frames, "now", "default", line))
     assert len(first) == 4 and len({f.shape for f in first}) == 1
     assert all(np.array_equal(a, b) for a, b in zip(first, again))
     rows = []

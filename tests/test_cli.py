@@ -257,6 +257,24 @@ def test_bad_input_is_one_sentence_and_exit_2(args, message):
     assert error_of(*args).startswith(message)
 
 
+@pytest.mark.parametrize("option, value, message", [
+    ("--v", "1.0", "option --v: v must be a number with 0 < v < 1 (units of c), got 1."),
+    ("--v", "0.0", "option --v: v must be a number with 0 < v < 1 (units of c), got 0."),
+    ("--v", "-0.5", "option --v: v must be a number with 0 < v < 1 (units of c), got -0.5."),
+    ("--v", "nan", "option --v: v must be a number with 0 < v < 1 (units of c), got nan."),
+    ("--v", "1e-9", "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the impacts, "
+                    "got 1e-09."),
+    ("--v", "0.99999999", "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the "
+                          "impacts, got 0.99999999."),
+    ("--L", "0.0", "option --L: L must be a positive length (the rod's proper length), got 0."),
+    ("--L", "inf", "option --L: L must be a positive length (the rod's proper length), got inf."),
+])
+@pytest.mark.parametrize("command", ["events", "export"])
+def test_bad_overrides_name_the_option(command, option, value, message):
+    """The library's error keeps the key (test_scenario); the command line names it as its option."""
+    assert error_of(command, "fig1", option, value) == message
+
+
 def test_bad_scenario_file_names_file_key_and_line(tmp_path):
     bad = tmp_path / "my.yaml"
     bad.write_text("v: 0.6\nparticles:\n  A: {gap: 0.5, spead: 0.3}\n")

@@ -1,6 +1,7 @@
-"""What a handout and a worksheet say (`rodparadox.handout.build`), checked against hand derivations, never against the
-code's own output: Fig. 2 and Fig. 1 at v = 0.6 in closed form (the numbers are derived in the comments), the
-worksheet's answers against an independent numpy computation from the events, and the shape of the document."""
+"""What a handout and a worksheet say (`rodparadox.handout`: build, narrative, strips, worksheet), checked against
+hand derivations, never against the code's own output: Fig. 2 and Fig. 1 at v = 0.6 in closed form (the numbers are
+derived in the comments), the worksheet's answers against an independent numpy computation from the events, and the
+shape of the document."""
 
 from __future__ import annotations
 
@@ -12,7 +13,10 @@ import sys
 import numpy as np
 import pytest
 
-from rodparadox.handout import build as handout
+from rodparadox.handout.build import build
+from rodparadox.handout.narrative import explanation, setup_text
+from rodparadox.handout.strips import strip_times, strips_caption
+from rodparadox.handout.worksheet import questions
 from rodparadox.tables import build as tables
 from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, Question, Strips, Table
 from rodparadox.physics.engine import run
@@ -51,7 +55,7 @@ def section_blocks(doc: Handout, kind) -> list:
 
 
 def explanation_text(name: str, v: float) -> str:
-    return " ".join(p.text for p in handout.explanation(history(name, v), paper_frames(v)))
+    return " ".join(p.text for p in explanation(history(name, v), paper_frames(v)))
 
 
 def sentences(text: str) -> list[str]:
@@ -150,7 +154,7 @@ def test_the_built_in_scenarios_zig_zag_as_the_readme_says():
 @pytest.mark.parametrize("name", builtin_names())
 def test_the_setup_paragraph_names_each_particles_mass_speed_end_and_start(name):
     h = history(name)
-    text = handout.setup_text(h)
+    text = setup_text(h)
     s = h.scenario
     assert f"L = {s.L:g}" in text and f"v = {s.v:g}" in text and "at rest in S" in text and "S′" in text
     for p in s.particles:
@@ -170,7 +174,7 @@ def test_the_setup_paragraph_names_each_particles_mass_speed_end_and_start(name)
 def test_the_setup_paragraph_of_fig2_places_a_as_the_paper_does():
     # the paper's (12): x_A = -g L (1 + v^2) + v t, so at t = 0 A is at -1.25 * 1.36 = -1.7 L: 1.2 L from the
     # left end at -L/2
-    assert "so at t = 0 it is 1.2 L from that end" in handout.setup_text(history("fig2", 0.6))
+    assert "so at t = 0 it is 1.2 L from that end" in setup_text(history("fig2", 0.6))
 
 
 # --- strips ---------------------------------------------------------------------------------------------------
@@ -180,7 +184,7 @@ def test_the_setup_paragraph_of_fig2_places_a_as_the_paper_does():
 def test_strips_show_six_to_eight_instants_in_the_window_earliest_first(name, v):
     h = history(name, v)
     for f in paper_frames(v):
-        times = handout.strip_times(h, f)
+        times = strip_times(h, f)
         lo, hi = time_window(h, f)
         assert 6 <= len(times) <= 8
         assert list(times) == sorted(times) and len(set(times)) == len(times)
@@ -196,11 +200,11 @@ def test_the_strips_caption_of_fig2_says_the_left_end_moves_first_in_s_prime():
     # t' = 1.25 (5/6 - 0.3) = 2/3 L, before B1 at 17/12 L; it slows from +0.6 to 0 until 17/12 L
     h = history("fig2", 0.6)
     moving = paper_frames(0.6)[1]
-    caption = handout.strips_caption(h, moving, handout.strip_times(h, moving))
+    caption = strips_caption(h, moving, strip_times(h, moving))
     assert "The left end moves first, at t′ = 2/3 L: before B₁ strikes the right end (at 17/12 L)" in caption
     assert "from +0.6 c to rest by t′ = 17/12 L" in caption
     rest = paper_frames(0.6)[0]
-    caption = handout.strips_caption(h, rest, handout.strip_times(h, rest))
+    caption = strips_caption(h, rest, strip_times(h, rest))
     assert "Both ends start to change velocity at t = 5/6 L" in caption
     assert "the right end is struck by B₁ and starts moving left at 0.6 c at once" in caption
 
@@ -209,19 +213,19 @@ def test_the_strips_caption_of_fig2_says_the_left_end_moves_first_in_s_prime():
 
 def test_a_handout_has_a_section_per_scenario_in_order_and_a_title_naming_them():
     items = [(n, history(n, 0.6)) for n in ("fig1", "fig2", "single")]
-    doc = handout.build(items)
+    doc = build(items)
     assert doc.title == "The Sears paradox: fig1, fig2 and single at v = 0.6"
     assert [s.name for s in doc.sections] == ["fig1", "fig2", "single"]
     assert not doc.worksheet and doc.answer_key == ()
     assert not any(isinstance(b, Question) for b in doc.blocks())
-    assert handout.build([("fig2", history("fig2", 0.6))]).title == "The Sears paradox: fig2 at v = 0.6"
-    assert handout.build([("a", history("fig1", 0.6)), ("b", history("fig2", 0.8))]).title == \
+    assert build([("fig2", history("fig2", 0.6))]).title == "The Sears paradox: fig2 at v = 0.6"
+    assert build([("a", history("fig1", 0.6)), ("b", history("fig2", 0.8))]).title == \
         "The Sears paradox: a at v = 0.6 and b at v = 0.8"
 
 
 def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
     h = history("fig2", 0.6)
-    section = handout.build([("fig2", h)]).sections[0]
+    section = build([("fig2", h)]).sections[0]
     kinds = [type(b) for b in section.blocks]
     assert kinds[:3] == [Heading, Paragraph, DiagramBlock]
     assert section.blocks[0].text.startswith("fig2 — The paper's Fig. 2: impacts simultaneous in the moving frame S′")
@@ -244,7 +248,7 @@ def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
 
 def test_where_the_hidden_part_is_zero_in_a_frame_a_sentence_says_so():
     # Fig. 1 in S: both impulses at once on the rod's own line (constant t), no turn: nothing is ever hidden
-    section = handout.build([("fig1", history("fig1", 0.6))]).sections[0]
+    section = build([("fig1", history("fig1", 0.6))]).sections[0]
     names = [b.name for b in section.blocks if isinstance(b, Table)]
     assert "hidden_rest" not in names and "hidden_moving" in names
     assert any(isinstance(b, Paragraph) and b.text.startswith("In S the hidden part is zero on every slice")
@@ -258,7 +262,7 @@ def numeric(cell_text: str) -> bool:
 @pytest.mark.parametrize("name", builtin_names())
 def test_a_worksheet_leaves_every_number_blank_and_its_answer_key_fills_them(name):
     h = history(name, 0.6)
-    doc = handout.build([(name, h)], worksheet=True)
+    doc = build([(name, h)], worksheet=True)
     assert doc.worksheet
     in_section = section_blocks(doc, Table)
     assert in_section
@@ -284,27 +288,27 @@ def test_a_worksheet_leaves_every_number_blank_and_its_answer_key_fills_them(nam
 
 def test_the_handout_tables_are_the_same_numbers_filled():
     h = history("fig2", 0.6)
-    plain = section_blocks(handout.build([("fig2", h)]), Table)
-    sheet = section_blocks(handout.build([("fig2", h)], worksheet=True), Table)
+    plain = section_blocks(build([("fig2", h)]), Table)
+    sheet = section_blocks(build([("fig2", h)], worksheet=True), Table)
     assert plain == [t.filled() for t in sheet]
     assert not any(t.has_blanks for t in plain)
 
 
 def test_questions_are_numbered_from_one_and_the_same_on_every_build():
     h = history("fig2", 0.6)
-    asked = handout.questions(h, paper_frames(0.6))
+    asked = questions(h, paper_frames(0.6))
     assert [q.number for q in asked] == list(range(1, len(asked) + 1))
-    assert asked == handout.questions(history("fig2", 0.6), paper_frames(0.6))
-    assert handout.build([("fig2", h)], worksheet=True) == handout.build([("fig2", history("fig2", 0.6))],
+    assert asked == questions(history("fig2", 0.6), paper_frames(0.6))
+    assert build([("fig2", h)], worksheet=True) == build([("fig2", history("fig2", 0.6))],
                                                                          worksheet=True)
 
 
 def test_items_may_carry_their_own_frames_and_moving_means_each_scenarios_own_s_prime():
     a, b = history("fig1", 0.6), history("fig2", 0.8)
-    doc = handout.build([("a", a), ("b", b)], frames=(rest_frame(), moving_frame(0.6)))
+    doc = build([("a", a), ("b", b)], frames=(rest_frame(), moving_frame(0.6)))
     diagrams = section_blocks(doc, DiagramBlock)
     assert [d.frames[1].velocity for d in diagrams] == [-0.6, -0.8]
-    doc = handout.build([("a", a, (rest_frame(), moving_frame(0.6), frame_of_velocity(0.3)))])
+    doc = build([("a", a, (rest_frame(), moving_frame(0.6), frame_of_velocity(0.3)))])
     assert [s.name for s in section_blocks(doc, Strips)] == ["a_strips_rest", "a_strips_moving", "a_strips_u0.3"]
 
 
@@ -435,7 +439,7 @@ class Independent:
 @pytest.mark.parametrize("name", builtin_names())
 def test_every_number_in_a_worked_answer_is_an_independent_computation(name, v):
     h = history(name, v)
-    asked = handout.questions(h, paper_frames(v))
+    asked = questions(h, paper_frames(v))
     assert 5 <= len(asked) <= 8
     allowed = Independent().scenario(h, v)
     for q in asked:
@@ -457,7 +461,7 @@ def answer_of(asked, starts: str) -> str:
 
 
 def test_fig2_worked_answers_against_the_hand_derivation():
-    asked = handout.questions(history("fig2", 0.6), paper_frames(0.6))
+    asked = questions(history("fig2", 0.6), paper_frames(0.6))
     # the Lorentz transformation: g = 1.25, t' = g(t + 0.6 x): B1 1.25 (5/6 + 0.3) = 17/12, A1 1.25 (19/12 - 0.45)
     # = 17/12; simultaneous in S', 3/4 L apart in S
     lorentz = answer_of(asked, "In S, B₁ strikes at x = 0.5 L, t = 5/6 L; A₁ strikes at x = −0.75 L, t = 19/12 L")
@@ -478,7 +482,7 @@ def test_fig2_worked_answers_against_the_hand_derivation():
 
 
 def test_fig1_worked_answers_against_the_hand_derivation():
-    asked = handout.questions(history("fig1", 0.6), paper_frames(0.6))
+    asked = questions(history("fig1", 0.6), paper_frames(0.6))
     lorentz = answer_of(asked, "In S, A₁ strikes at x = −0.5 L, t = 5/6 L; B₁ strikes at x = 0.5 L, t = 5/6 L")
     # t'_A1 = 1.25 (5/6 - 0.3) = 2/3, t'_B1 = 17/12: 3/4 L apart
     assert "= 2/3 L" in lorentz and "= 17/12 L" in lorentz and "in S′ B₁ comes 0.75 L after A₁" in lorentz
@@ -492,7 +496,7 @@ def test_fig1_worked_answers_against_the_hand_derivation():
 def test_a_stopped_turns_answer_is_the_far_ends_velocity_from_the_two_events():
     # while_turning at v = 0.6: B1 at (1/2, 5/6), A1 0.3 L later in S at the left end, on the hyperbola about B1
     # of radius L: dt = 0.3, dx = -sqrt(1 + 0.09) = -1.044031, velocity dt/dx = -0.2873479 (not -0.6)
-    asked = handout.questions(history("while_turning", 0.6), paper_frames(0.6))
+    asked = questions(history("while_turning", 0.6), paper_frames(0.6))
     answer = answer_of(asked, "A₁ strikes the left end while the rod is still turning from B₁")
     dx = -math.sqrt(1.09)
     assert f"0.3/({dx:.7g}) = {0.3 / dx:.7g} c in S".replace("-", "−") in answer
@@ -501,7 +505,7 @@ def test_a_stopped_turns_answer_is_the_far_ends_velocity_from_the_two_events():
 def test_a_single_particles_answer_is_g_v_l():
     # single at v = 0.6: the left end follows on the hyperbola about B1 and reaches -0.6 after t - t_P = g v L
     # = 0.75 L, while the struck end moves 0.6 * 0.75 = 0.45 L to the left
-    asked = handout.questions(history("single", 0.6), paper_frames(0.6))
+    asked = questions(history("single", 0.6), paper_frames(0.6))
     answer = answer_of(asked, "B₁ gives the rod's momentum the velocity −0.6 c")
     assert "takes 0.75 L of S's time" in answer and "moves 0.45 L to the left" in answer
 
@@ -530,13 +534,13 @@ def test_a_re_strike_on_one_rod_line_is_told_as_such_and_turns_keep_their_own_ca
     assert "B₁ and B₂ happen at one event" in text
     assert "still turning from B₁:" in text  # the turn B1 started, not B2, which came after it
     # L = 2: the text gives multiples of L, the tables the unit L is given in
-    assert "the tables give them in the unit L is given in, L = 2" in handout.setup_text(h)
+    assert "the tables give them in the unit L is given in, L = 2" in setup_text(h)
     # the timing frame given as a velocity
-    assert "in the time of the frame of velocity +0.3 c relative to S" in handout.setup_text(h)
+    assert "in the time of the frame of velocity +0.3 c relative to S" in setup_text(h)
 
 
 def explanation_text_of(h, frames) -> str:
-    return " ".join(p.text for p in handout.explanation(h, frames))
+    return " ".join(p.text for p in explanation(h, frames))
 
 
 def test_a_third_frame_is_named_the_frame_u_in_running_text():
@@ -544,6 +548,6 @@ def test_a_third_frame_is_named_the_frame_u_in_running_text():
     h = history("single", 0.6)
     text = explanation_text_of(h, frames)
     assert "in the frame u = 0.3" in text and "In u = 0.3" not in text
-    doc = handout.build([("single", h, frames)])
+    doc = build([("single", h, frames)])
     caption = next(b for b in section_blocks(doc, DiagramBlock)).caption
     assert "(c) in the frame u = 0.3, moving at +0.3 c relative to S" in caption

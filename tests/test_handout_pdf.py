@@ -25,7 +25,8 @@ from rodparadox.tables import build as tables
 from rodparadox.handout.document import Cell, Handout, Heading, PageBreak, Paragraph, Question, Section, Table
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import paper_frames
-from rodparadox.handout.pdf import MARGIN, TextRuns, Type, page_figures, to_pdf
+from rodparadox.handout.pdf import page_figures, to_pdf
+from rodparadox.handout.pdf_text import MARGIN, TextRuns, Type
 from rodparadox.io.scenario import load
 from rodparadox.render.styles import STYLES
 

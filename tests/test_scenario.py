@@ -72,20 +72,21 @@ def test_overrides_replace_v_and_L_and_keep_the_rest():
 
 
 @pytest.mark.parametrize("option, value, message", [
-    ("v", 1.0, "option --v: v must be a number with 0 < v < 1 (units of c), got 1."),
-    ("v", 0.0, "option --v: v must be a number with 0 < v < 1 (units of c), got 0."),
-    ("v", -0.5, "option --v: v must be a number with 0 < v < 1 (units of c), got -0.5."),
-    ("v", math.nan, "option --v: v must be a number with 0 < v < 1 (units of c), got nan."),
-    ("v", 1e-9, "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the impacts, got 1e-09."),
-    ("v", 0.99999999, "option --v: v must be between 1e-06 and 0.9999999 for double precision to place the impacts, "
+    ("v", 1.0, "v must be a number with 0 < v < 1 (units of c), got 1."),
+    ("v", 0.0, "v must be a number with 0 < v < 1 (units of c), got 0."),
+    ("v", -0.5, "v must be a number with 0 < v < 1 (units of c), got -0.5."),
+    ("v", math.nan, "v must be a number with 0 < v < 1 (units of c), got nan."),
+    ("v", 1e-9, "v must be between 1e-06 and 0.9999999 for double precision to place the impacts, got 1e-09."),
+    ("v", 0.99999999, "v must be between 1e-06 and 0.9999999 for double precision to place the impacts, "
                       "got 0.99999999."),
-    ("L", 0.0, "option --L: L must be a positive length (the rod's proper length), got 0."),
-    ("L", math.inf, "option --L: L must be a positive length (the rod's proper length), got inf."),
+    ("L", 0.0, "L must be a positive length (the rod's proper length), got 0."),
+    ("L", math.inf, "L must be a positive length (the rod's proper length), got inf."),
 ])
-def test_bad_overrides_name_the_option(option, value, message):
+def test_bad_overrides_name_their_key(option, value, message):
+    """The key and the library's sentence; the command line names the option (test_cli)."""
     with pytest.raises(ScenarioError) as info:
         load("fig1").with_overrides(**{option: value})
-    assert str(info.value) == message
+    assert str(info.value) == message and info.value.key == option
 
 
 @pytest.mark.parametrize("text, message", [

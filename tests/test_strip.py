@@ -9,10 +9,11 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from rodparadox.animate.timeline import colour_scale, strip_at
 from rodparadox.physics.engine import run
 from rodparadox.physics.frames import Frame, time_window
+from rodparadox.physics.snapshot import strip_at
 from rodparadox.render import draw_strips_into, style_context
+from rodparadox.render.colour_scale import colour_scale
 from rodparadox.render.strip import COLOUR_BAR_LABEL, draw_strip, update_strip
 from rodparadox.io.scenario import load
 

@@ -1,14 +1,14 @@
-"""Writing an animation's frames to files: GIF, MP4 or numbered PNG stills (README, "Animating"). No matplotlib.
+"""Writing an animation's images to files: GIF, MP4 or numbered PNG stills (README, "Animating"). No matplotlib.
 
-A frame is an RGB uint8 numpy array of shape (H, W, 3); every frame of one
+An image is an RGB uint8 numpy array of shape (H, W, 3); every image of one
 animation has the same size. `open_sink(path, fmt, fps)` gives a sink:
-`sink.add(frame)` for each frame, then `sink.close()`, which returns True if
+`sink.add(image)` for each image, then `sink.close()`, which returns True if
 the file (or any still) was written and False if it already held exactly
 these bytes and was left untouched; `sink.abort()` (or leaving a `with` block
 by an exception) throws away what was made, leaving no file behind.
-`write_frames(path, fmt, fps, frames)` does all three for an iterable.
+`write_images(path, fmt, fps, images)` does all three for an iterable.
 
-Every format is deterministic: the same frames give the same bytes (GIF and
+Every format is deterministic: the same images give the same bytes (GIF and
 PNG on any machine, MP4 with the same ffmpeg). Files are written atomically
 through `output.write_atomic`; stills are written one by one as they come,
 each atomically.
@@ -32,22 +32,22 @@ from rodparadox.errors import OptionError, ToolMissing, WriteFailed
 from rodparadox.io.output import check_folder as check_output_folder, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
-#: frame rates a GIF stores exactly: it keeps each frame's duration in hundredths of a second
+#: rates (images per second) a GIF stores exactly: it keeps each image's duration in hundredths of a second
 GIF_FPS = (1, 2, 4, 5, 10, 20, 25, 50)
 #: the colours of a GIF's one palette
 GIF_COLOURS = 256
-#: zlib level for frames a GIF holds between its two passes: fast, and a diagram still shrinks 20-fold or more
+#: zlib level for images a GIF holds between its two passes: fast, and a diagram still shrinks 20-fold or more
 _HOLD_LEVEL = 1
 
 
 def check_fps(fmt: str, fps: int) -> int:
-    """The frame rate for a format: a positive integer; for a GIF one whose 100/fps is an integer."""
+    """The rate, in images per second, for a format: a positive integer; for a GIF one whose 100/fps is an integer."""
     if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
-        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+        raise OptionError("fps", fps, "a whole number of frames per second above 0")
     if fmt == "gif" and fps not in GIF_FPS:
-        raise OptionError(f"option --fps: a GIF stores frame durations in hundredths of a second, so only "
-                          f"{', '.join(map(str, GIF_FPS))} frames per second are exact, got {fps}; "
-                          f"choose one of them or --format mp4.")
+        raise OptionError("fps", fps, GIF_FPS, "{what}: a GIF stores frame durations in hundredths of a second, so "
+                          "only {choices} frames per second are exact, got {value}; choose one of them or {format} "
+                          "mp4.")
     return fps
 
 
@@ -72,16 +72,16 @@ def require_ffmpeg() -> str:
     """ffmpeg's path, or one sentence naming both ways to get it."""
     exe = find_ffmpeg()
     if exe is None:
-        raise ToolMissing("--format mp4 needs ffmpeg, which was found neither on the PATH nor in the imageio-ffmpeg "
-                          "package; install one of them: apt-get install ffmpeg, or pip install "
-                          "'sears-paradox[video]'.")
+        raise ToolMissing("ffmpeg", "format", "mp4", "{format} {value} needs {tool}, which was found neither on the "
+                          "PATH nor in the imageio-ffmpeg package; install one of them: apt-get install ffmpeg, or "
+                          "pip install 'sears-paradox[video]'.")
     return exe
 
 
 def ffmpeg_command(exe: str, width: int, height: int, fps: int, target: str) -> list[str]:
-    """Raw RGB frames on standard input to H.264 (yuv420p, sizes padded to even with white) in an MP4 at `target`.
+    """Raw RGB images on standard input to H.264 (yuv420p, sizes padded to even with white) in an MP4 at `target`.
 
-    One thread and the bitexact flags, no metadata: the same frames give the same bytes with the same ffmpeg.
+    One thread and the bitexact flags, no metadata: the same images give the same bytes with the same ffmpeg.
     """
     return [exe, "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
             "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{width}x{height}", "-r", str(fps), "-i", "-",
@@ -94,24 +94,24 @@ def ffmpeg_command(exe: str, width: int, height: int, fps: int, target: str) -> 
 # --- sinks -----------------------------------------------------------------------------------------
 
 class _Sink:
-    """What every sink shares: the frame size, checked on every frame; `with` aborts on an exception."""
+    """What every sink shares: the image size, checked on every image; `with` aborts on an exception."""
 
     def __init__(self, path: Path, fps: int, size: tuple[int, int] | None):
         self.path, self.fps, self.size, self.count = Path(path), fps, size, 0
         self._done = False
 
-    def _check(self, frame: np.ndarray) -> np.ndarray:
-        frame = np.asarray(frame)
-        if frame.dtype != np.uint8 or frame.ndim != 3 or frame.shape[2] != 3:
-            raise ValueError(f"a frame must be an (H, W, 3) uint8 array, got {frame.dtype} of shape {frame.shape}")
+    def _check(self, image: np.ndarray) -> np.ndarray:
+        image = np.asarray(image)
+        if image.dtype != np.uint8 or image.ndim != 3 or image.shape[2] != 3:
+            raise ValueError(f"an image must be an (H, W, 3) uint8 array, got {image.dtype} of shape {image.shape}")
         if self.size is None:
-            self.size = (frame.shape[1], frame.shape[0])
-        elif (frame.shape[1], frame.shape[0]) != tuple(self.size):
-            raise ValueError(f"frame {self.count} is {frame.shape[1]}x{frame.shape[0]}, the animation "
+            self.size = (image.shape[1], image.shape[0])
+        elif (image.shape[1], image.shape[0]) != tuple(self.size):
+            raise ValueError(f"image {self.count} is {image.shape[1]}x{image.shape[0]}, the animation "
                              f"{self.size[0]}x{self.size[1]}")
-        return frame
+        return image
 
-    def add(self, frame: np.ndarray) -> None:
+    def add(self, image: np.ndarray) -> None:
         raise NotImplementedError
 
     def close(self) -> bool:
@@ -129,14 +129,14 @@ class _Sink:
 
 
 class GifSink(_Sink):
-    """A looping GIF, every frame 100/fps hundredths of a second, one palette for the whole animation.
+    """A looping GIF, every image 100/fps hundredths of a second, one palette for the whole animation.
 
-    Two passes, so that one palette fits every frame and no colour flickers: of each frame only the
-    rectangle that changed since the frame before is held, zlib-compressed, while the colours of all frames
-    are counted (the first frame's every pixel, then each frame's changed pixels: the counts of the frame
+    Two passes, so that one palette fits every image and no colour flickers: of each image only the
+    rectangle that changed since the image before is held, zlib-compressed, while the colours of all images
+    are counted (the first image's every pixel, then each image's changed pixels: the counts of the image
     before, less the colours that left, plus those that came); `close` chooses the palette (`palette_of`),
-    maps each frame to it (nearest colour, no dither) and writes only the rectangle whose palette entries
-    changed since the frame before. Memory: the compressed rectangles, the colour counts, and two frames
+    maps each image to it (nearest colour, no dither) and writes only the rectangle whose palette entries
+    changed since the image before. Memory: the compressed rectangles, the colour counts, and two images
     at a time.
     """
 
@@ -145,13 +145,13 @@ class GifSink(_Sink):
         super().__init__(path, fps, size)
         self._held: list[tuple[tuple[int, int, int, int], bytes]] = []
         self._colours = np.empty(0, dtype=np.uint32)  # every colour seen, sorted
-        self._counts = np.empty(0, dtype=np.int64)  # its pixels over every frame so far
-        self._current = np.empty(0, dtype=np.int64)  # its pixels in the last frame
-        self._previous: np.ndarray | None = None  # the last frame, packed
+        self._counts = np.empty(0, dtype=np.int64)  # its pixels over every image so far
+        self._current = np.empty(0, dtype=np.int64)  # its pixels in the last image
+        self._previous: np.ndarray | None = None  # the last image, packed
 
-    def add(self, frame: np.ndarray) -> None:
-        frame = self._check(frame)
-        packed = pack(frame)
+    def add(self, image: np.ndarray) -> None:
+        image = self._check(image)
+        packed = pack(image)
         if self._previous is None:
             self._count(packed.ravel(), +1)
             box = (0, 0, packed.shape[1], packed.shape[0])
@@ -166,12 +166,12 @@ class GifSink(_Sink):
                 box = (0, 0, 0, 0)
         self._counts += self._current
         x0, y0, x1, y1 = box
-        self._held.append((box, zlib.compress(np.ascontiguousarray(frame[y0:y1, x0:x1]).tobytes(), _HOLD_LEVEL)))
+        self._held.append((box, zlib.compress(np.ascontiguousarray(image[y0:y1, x0:x1]).tobytes(), _HOLD_LEVEL)))
         self._previous = packed
         self.count += 1
 
     def _count(self, pixels: np.ndarray, sign: int) -> None:
-        """Add (sign +1) or remove (-1) these pixels (packed colours) from the last frame's colour counts."""
+        """Add (sign +1) or remove (-1) these pixels (packed colours) from the last image's colour counts."""
         colours, counts = np.unique(pixels, return_counts=True)
         new = np.setdiff1d(colours, self._colours, assume_unique=True)
         if len(new):
@@ -185,14 +185,14 @@ class GifSink(_Sink):
         self._current[np.searchsorted(self._colours, colours)] += sign * counts
 
     def encode(self) -> bytes:
-        """The GIF's bytes (after every frame was added)."""
+        """The GIF's bytes (after every image was added)."""
         from PIL import GifImagePlugin, Image
 
         if not self._held:
-            raise ValueError("an animation needs at least one frame")
+            raise ValueError("an animation needs at least one image")
         width, height = self.size
         palette = palette_of(self._colours, self._counts)
-        lookup = np.zeros(1 << 24, dtype=np.uint8)  # 0xRRGGBB -> palette index: 16 MiB, a gather per frame
+        lookup = np.zeros(1 << 24, dtype=np.uint8)  # 0xRRGGBB -> palette index: 16 MiB, a gather per image
         lookup[self._colours] = nearest_entries(self._colours, palette)
         table = np.zeros((GIF_COLOURS, 3), dtype=np.uint8)
         table[:len(palette)] = palette
@@ -204,14 +204,14 @@ class GifSink(_Sink):
         for (x0, y0, x1, y1), held in self._held:
             if x1 > x0:
                 crop = np.frombuffer(zlib.decompress(held), dtype=np.uint8).reshape(y1 - y0, x1 - x0, 3)
-                index = index.copy()  # `previous` keeps the frame before
+                index = index.copy()  # `previous` keeps the image before
                 index[y0:y1, x0:x1] = lookup[pack(crop)]
             box = _changed_box(previous, index)
             previous = index
             x0, y0, x1, y1 = box
             crop = Image.frombytes("P", (x1 - x0, y1 - y0), np.ascontiguousarray(index[y0:y1, x0:x1]).tobytes())
             crop.putpalette(table.tobytes())
-            # disposal 1: keep the frame, the next one paints only what changed
+            # disposal 1: keep the image, the next one paints only what changed
             for chunk in GifImagePlugin.getdata(crop, (x0, y0), duration=1000 // self.fps, disposal=1):
                 out.write(chunk)
         out.write(b";")
@@ -230,7 +230,7 @@ class GifSink(_Sink):
 
 
 class Mp4Sink(_Sink):
-    """H.264 in an MP4 through ffmpeg: frames streamed to its standard input, written to a temporary folder,
+    """H.264 in an MP4 through ffmpeg: images streamed to its standard input, written to a temporary folder,
     then moved into place by `write_atomic` (so an unchanged file is left alone)."""
 
     def __init__(self, path: Path, fps: int, size: tuple[int, int] | None = None, ffmpeg: str | None = None):
@@ -249,12 +249,12 @@ class Mp4Sink(_Sink):
         self._process = subprocess.Popen(ffmpeg_command(self._exe, width, height, self.fps, self._target),
                                          stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=self._errors)
 
-    def add(self, frame: np.ndarray) -> None:
-        frame = self._check(frame)
+    def add(self, image: np.ndarray) -> None:
+        image = self._check(image)
         if self._process is None:
             self._start()
         try:
-            self._process.stdin.write(np.ascontiguousarray(frame).tobytes())
+            self._process.stdin.write(np.ascontiguousarray(image).tobytes())
         except BrokenPipeError:
             self._fail()
         self.count += 1
@@ -269,7 +269,7 @@ class Mp4Sink(_Sink):
 
     def close(self) -> bool:
         if self._process is None:
-            raise ValueError("an animation needs at least one frame")
+            raise ValueError("an animation needs at least one image")
         try:
             self._process.stdin.close()
         except BrokenPipeError:
@@ -307,7 +307,7 @@ class PngSink(_Sink):
     """Numbered stills FOLDER/NAME_0000.png, NAME_0001.png, ..., each written atomically as it comes.
 
     `path` is the folder; it is created if missing (its parent must exist). A still that already holds
-    the same bytes is left untouched. At `close`, stills of this NAME numbered beyond the last frame (left by
+    the same bytes is left untouched. At `close`, stills of this NAME numbered beyond the last image (left by
     an earlier, longer run) are removed, so the folder holds exactly this animation. An interrupted run
     leaves the stills written so far, each whole.
     """
@@ -322,16 +322,16 @@ class PngSink(_Sink):
     def still(self, k: int) -> Path:
         return self.path / f"{self.name}_{k:04d}.png"
 
-    def add(self, frame: np.ndarray) -> None:
-        frame = self._check(frame)
+    def add(self, image: np.ndarray) -> None:
+        image = self._check(image)
         if self.count == 0:
             self.path.mkdir(exist_ok=True)
-        self.changed |= write_atomic(self.still(self.count), png_bytes(frame))
+        self.changed |= write_atomic(self.still(self.count), png_bytes(image))
         self.count += 1
 
     def close(self) -> bool:
         if self.count == 0:
-            raise ValueError("an animation needs at least one frame")
+            raise ValueError("an animation needs at least one image")
         pattern = re.compile(re.escape(self.name) + r"_(\d{4,})\.png")
         for old in sorted(self.path.iterdir()):
             match = pattern.fullmatch(old.name)
@@ -347,44 +347,44 @@ def check_folder(folder: str | os.PathLike) -> Path:
     return check_output_folder(folder, "the stills")
 
 
-def png_bytes(frame: np.ndarray) -> bytes:
+def png_bytes(image: np.ndarray) -> bytes:
     """One still: a PNG with no time or text chunk, compressed at a fixed level, so the same pixels give the
     same bytes."""
     from PIL import Image
 
     out = io.BytesIO()
-    Image.fromarray(np.ascontiguousarray(frame), "RGB").save(out, "PNG", optimize=False, compress_level=6)
+    Image.fromarray(np.ascontiguousarray(image), "RGB").save(out, "PNG", optimize=False, compress_level=6)
     return out.getvalue()
 
 
 def open_sink(path: str | os.PathLike, fmt: str, fps: int, size: tuple[int, int] | None = None, *,
               name: str | None = None):
     """A sink for `fmt` (gif, mp4: a file; png: a folder of stills NAME_0000.png ...); `size` (W, H) or taken
-    from the first frame."""
+    from the first image."""
     if fmt == "gif":
         return GifSink(Path(path), fps, size)
     if fmt == "mp4":
         return Mp4Sink(Path(path), fps, size)
     if fmt == "png":
         return PngSink(Path(path), fps, size, name=name)
-    raise OptionError(f"option --format must be one of {', '.join(FORMATS)}, got {fmt!r}.")
+    raise OptionError("format", fmt, FORMATS)
 
 
-def write_frames(path: str | os.PathLike, fmt: str, fps: int, frames: Iterable[np.ndarray], *,
+def write_images(path: str | os.PathLike, fmt: str, fps: int, images: Iterable[np.ndarray], *,
                  name: str | None = None) -> bool:
-    """Every frame into one sink; True if written, False if unchanged. Leaves no file on any exception."""
+    """Every image into one sink; True if written, False if unchanged. Leaves no file on any exception."""
     sink = open_sink(path, fmt, fps, name=name)
     with sink:
-        for frame in frames:
-            sink.add(frame)
+        for image in images:
+            sink.add(image)
         return sink.close()
 
 
 # --- palettes --------------------------------------------------------------------------------------
 
-def pack(frame: np.ndarray) -> np.ndarray:
-    """Each pixel's colour as one integer 0xRRGGBB, in the frame's shape (H, W)."""
-    f = frame.astype(np.uint32)
+def pack(image: np.ndarray) -> np.ndarray:
+    """Each pixel's colour as one integer 0xRRGGBB, in the image's shape (H, W)."""
+    f = image.astype(np.uint32)
     return (f[..., 0] << 16) | (f[..., 1] << 8) | f[..., 2]
 
 
@@ -457,8 +457,8 @@ def nearest_entries(colours: np.ndarray, palette: np.ndarray) -> np.ndarray:
 
 
 def _changed_box(previous: np.ndarray | None, index: np.ndarray) -> tuple[int, int, int, int]:
-    """(x0, y0, x1, y1): the rectangle where `index` differs from `previous`; the whole frame for the first, one
-    pixel for an identical frame (a GIF frame cannot be empty, and each frame must be there to keep its time)."""
+    """(x0, y0, x1, y1): the rectangle where `index` differs from `previous`; the whole image for the first, one
+    pixel for an identical image (a GIF image cannot be empty, and each image must be there to keep its time)."""
     if previous is None:
         return 0, 0, index.shape[1], index.shape[0]
     changed = previous != index

@@ -4,11 +4,13 @@ Two modes:
 
 * **now**: each panel is one frame; its line of simultaneity sweeps up its
   time window (`frames.time_window`, the same as `plot`'s) and a strip under
-  it shows the frame's space at that instant (`strip_at`).
+  it shows the frame's space at that instant (`physics.snapshot.strip_at`,
+  coloured on `render.colour_scale`).
 * **boost**: one panel whose frame runs smoothly from one velocity to another
   (`boost_velocities`), over one fixed window that holds every frame's.
 
-The drawing reads a `NowTimeline` or `BoostTimeline` and nothing else.
+The timeline runs over an animation's images: `image_count` of them, each one instant. (A "frame" here is
+always a Lorentz frame.) The drawing reads a `NowTimeline` or `BoostTimeline` and nothing else.
 """
 
 from __future__ import annotations
@@ -23,40 +25,37 @@ from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, sampling_tolerance, time_window, view
 from rodparadox.numbers import exact
 from rodparadox.physics.kinematics import WorldLine
-from rodparadox.physics.rod import material_worldline
+from rodparadox.physics.snapshot import Strip, material_points, strip_at
+from rodparadox.render.colour_scale import ColourScale, colour_scale
 
 MODES = ("now", "boost")
-#: the longest animation, and the most frames one may have: enough for two minutes at 25 fps
+#: the longest animation, and the most images one may have: enough for two minutes at 25 images per second
 MAX_SECONDS = 120.0
-MAX_FRAMES = 3000
-#: material points along the strip's bar: enough that the colour varies smoothly along it
-STRIP_POINTS = 96
+MAX_IMAGES = 3000
 #: an impact flashes while the panel's time is within this fraction of its window of the impact's time
-#: (or half a frame's step, if that is longer, so that every impact flashes in at least one frame)
+#: (or half an image's step, if that is longer, so that every impact flashes in at least one image)
 FLASH_FRACTION = 0.02
-#: the colour scale's half-range when the rod never changes velocity in a frame (every point at the centre)
-STILL_BOUND = 0.1
 
 
-def frame_count(seconds: float, fps: int) -> int:
-    """round(seconds * fps) frames, checked: 0 < seconds <= MAX_SECONDS, at least 2 and at most MAX_FRAMES."""
+def image_count(seconds: float, fps: int) -> int:
+    """round(seconds * fps) images, checked: 0 < seconds <= MAX_SECONDS, at least 2 and at most MAX_IMAGES."""
     if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
-        raise OptionError(f"option --fps must be a whole number of frames per second above 0, got {fps!r}.")
+        raise OptionError("fps", fps, "a whole number of frames per second above 0")
     if not (isinstance(seconds, (int, float)) and math.isfinite(seconds) and 0 < seconds <= MAX_SECONDS):
-        raise OptionError(f"option --seconds must be a duration above 0 and at most {MAX_SECONDS:g} seconds, "
-                          f"got {seconds!r}.")
+        raise OptionError("seconds", seconds, f"a duration above 0 and at most {MAX_SECONDS:g} seconds")
     count = round(seconds * fps)
     if count < 2:
-        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frame{'s' if count != 1 else ''}; "
-                          f"an animation needs at least 2.")
-    if count > MAX_FRAMES:
-        raise OptionError(f"--seconds {seconds:g} at --fps {fps} gives {count} frames; at most {MAX_FRAMES} are "
-                          f"drawn, so lower one of them.")
+        raise OptionError("seconds", seconds, 2, "{seconds} {value:g} at {fps} {fps_value} gives {count} "
+                          "frame{plural}; an animation needs at least {allowed}.", fps_value=fps, count=count,
+                          plural="s" if count != 1 else "")
+    if count > MAX_IMAGES:
+        raise OptionError("seconds", seconds, MAX_IMAGES, "{seconds} {value:g} at {fps} {fps_value} gives {count} "
+                          "frames; at most {allowed} are drawn, so lower one of them.", fps_value=fps, count=count)
     return count
 
 
 def sweep(count: int) -> np.ndarray:
-    """The lock-step parameter s of each of `count` frames: evenly from 0 (first frame) to 1 (last)."""
+    """The lock-step parameter s of each of `count` images: evenly from 0 (first image) to 1 (last)."""
     return np.linspace(0.0, 1.0, count)
 
 
@@ -87,98 +86,11 @@ def now_times(history: History, frames: tuple[Frame, ...], count: int) -> np.nda
     return out
 
 
-@dataclass(frozen=True)
-class Strip:
-    """The frame's space at the instant t: the rod as a bar, its material points' velocities, the particles, and
-    the impacts that flash now. Positions and velocities in the frame's coordinates (units of L, c = 1).
-
-    `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
-    (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
-    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t, and
-    `flash_x` where each of them is (the impact's x in the frame, not the rod's now).
-    """
-
-    t: float
-    sigma: np.ndarray
-    x: np.ndarray
-    velocity: np.ndarray
-    particles: tuple[tuple[str, float], ...]
-    flashing: tuple[str, ...]
-    flash_x: tuple[float, ...] = ()
-
-
-def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
-    """The exact world-lines, in `frame`, of `points` material points evenly spaced in proper distance from the
-    left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
-    at every instant."""
-    eta = frame.rapidity
-    return tuple(material_worldline(history, float(sigma)).seen_from(eta)
-                 for sigma in np.linspace(0.0, history.scenario.L, points))
-
-
-def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS,
-             material: tuple[WorldLine, ...] | None = None) -> Strip:
-    """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
-    the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
-    eta = frame.rapidity
-    if material is None:
-        material = material_points(history, frame, points)
-    sigmas = np.linspace(0.0, history.scenario.L, len(material))
-    x = np.array([w.event_at_time(t).x for w in material])
-    rapidity = np.array([w.rapidity_at_time(t) for w in material])
-    particles = tuple((name, history.worldline(name).seen_from(eta).event_at_time(t).x)
-                      for name in ("A", "B") if history.worldline(name) is not None)
-    lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
-    return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
-                 tuple(i.event.seen_from(eta).x for i in lit))
-
-
 def flash_time(window: tuple[float, float], count: int) -> float:
-    """How long before and after its instant an impact flashes: FLASH_FRACTION of the window, or half a frame's
-    step if longer, so that every impact flashes in at least one frame."""
+    """How long before and after its instant an impact flashes: FLASH_FRACTION of the window, or half an image's
+    step if longer, so that every impact flashes in at least one image."""
     span = window[1] - window[0]
     return max(FLASH_FRACTION * span, 0.5 * span / max(count - 1, 1))
-
-
-@dataclass(frozen=True)
-class ColourScale:
-    """The strip's diverging colour scale: `centre` (the frame's initial rod velocity) +- `bound`; `shown` is the
-    part a colour bar shows, from the slowest to the fastest velocity any material point takes (never past c,
-    which centre +- bound can be: 0.6 +- 0.6 in Fig. 2's S′)."""
-
-    centre: float
-    bound: float
-    shown: tuple[float, float] | None = None
-
-    @property
-    def limits(self) -> tuple[float, float]:
-        return self.centre - self.bound, self.centre + self.bound
-
-
-def rod_rapidities(history: History) -> tuple[float, ...]:
-    """Every rapidity, in S, a material point of the rod takes at the start or end of a piece of its world-line.
-
-    A point's rapidity is 0 before the first turn, runs monotonically from `rapidity_from` to `rapidity_stop`
-    during each turn, stays there between turns, and is `final_rapidity` after the last: so the extremes of
-    every point's rapidity over the whole history are among these. (A turn's `rapidity_to`, the rod's
-    dynamical rapidity, is not: a stopped turn never reaches it.)
-    """
-    values = [0.0, history.final_rapidity]
-    for turn in history.turns:
-        values += [turn.rapidity_from, turn.rapidity_stop]
-    return tuple(values)
-
-
-def colour_scale(history: History, frame: Frame) -> ColourScale:
-    """Centred on the rod's velocity in `frame` before any impact; bound the largest distance from it of any
-    material point's velocity over the whole history, so the colours mean the same at every instant."""
-    centre = frame.rod_velocity()
-    eta = frame.rapidity
-    velocities = [math.tanh(r - eta) for r in rod_rapidities(history)]
-    bound = max(abs(u - centre) for u in velocities)
-    if bound <= 0:
-        return ColourScale(centre, STILL_BOUND)
-    return ColourScale(centre, bound, (min(velocities), max(velocities)))
 
 
 @dataclass(frozen=True)
@@ -228,7 +140,7 @@ def boost_velocities(v_from: float, v_to: float, count: int) -> np.ndarray:
 
 
 def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
-    """--frame in boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
+    """The frames of boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
     from rodparadox.errors import FrameError
     from rodparadox.physics.frames import frame_of_velocity, named_frame
@@ -238,8 +150,8 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
         spec = "rest..moving"
     parts = spec.split("..")
     if len(parts) != 2:
-        raise OptionError(f"option --frame: in boost mode give the frames to boost between as A..B (each rest, "
-                          f"moving or a velocity U relative to S), e.g. rest..moving, got {spec!r}.")
+        raise OptionError("frame", spec, template="{what}: in boost mode give the frames to boost between as A..B "
+                          "(each rest, moving or a velocity U relative to S), e.g. rest..moving, got {value!r}.")
     ends = []
     for part in (p.strip() for p in parts):
         if part in ("rest", "moving"):
@@ -249,10 +161,11 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
             ends.append(frame_of_velocity(float(part) + 0.0))
         except (ValueError, FrameError) as e:
             reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
-            raise OptionError(f"option --frame: each end of A..B must be rest, moving or a velocity U relative "
-                              f"to S; {reason}".rstrip(".") + ".") from None
+            raise OptionError("frame", spec, template="{what}: each end of A..B must be rest, moving or a velocity "
+                              "U relative to S; {reason}.", end=part, reason=reason.rstrip(".")) from None
     if ends[0].velocity == ends[1].velocity:
-        raise OptionError(f"option --frame: {spec} boosts from a frame to itself; give two different frames.")
+        raise OptionError("frame", spec, template="{what}: {value} boosts from a frame to itself; give two "
+                          "different frames.")
     return ends[0], ends[1]
 
 
@@ -288,9 +201,9 @@ def boost_timeline(history: History, start: Frame, end: Frame, count: int) -> Bo
 
 
 def timeline(history: History, frames: tuple[Frame, ...], mode: str, count: int) -> NowTimeline | BoostTimeline:
-    """The timeline of `count` frames: now mode over the panels `frames`, boost mode from frames[0] to frames[1]."""
+    """The timeline of `count` images: now mode over the panels `frames`, boost mode from frames[0] to frames[1]."""
     if mode == "now":
         return now_timeline(history, frames, count)
     if mode == "boost":
         return boost_timeline(history, frames[0], frames[1], count)
-    raise OptionError(f"option --mode must be one of {', '.join(MODES)}, got {mode!r}.")
+    raise OptionError("mode", mode, MODES)

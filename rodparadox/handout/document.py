@@ -1,14 +1,14 @@
 """A handout as frozen blocks: what it says, not how it is set. Pure, no drawing, no LaTeX.
 
-`handout` builds these from a scenario's history; `handout_pdf` sets them on
-pages with matplotlib and `handout_tex` writes them as LaTeX, so the PDF and
+`handout.build` builds these from a scenario's history; `handout.pdf` sets them
+on pages with matplotlib and `handout.tex` writes them as LaTeX, so the PDF and
 the LaTeX say the same words and show the same numbers.
 
 Text is plain Unicode (B₁, t′, γ, −, ×), one paragraph per `Paragraph`; a
-renderer wraps it. Numbers in tables are cells of text as they should be
-printed; a cell marked `blank` is one a worksheet leaves empty (ruled) for the
-student to fill in, and the answer key prints the same table with every cell
-filled.
+renderer wraps it. A table is a `tables.table.Table` of `Cell`s (re-exported
+here), cells of text as they should be printed; a cell marked `blank` is one a
+worksheet leaves empty (ruled) for the student to fill in, and the answer key
+prints the same table with every cell filled.
 """
 
 from __future__ import annotations
@@ -18,11 +18,10 @@ from typing import Union
 
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
+from rodparadox.tables.table import ALIGNS, Cell, Table  # noqa: F401 (a handout's tables: re-exported)
 
 #: paper sizes in inches (width, height): ISO A4 (210 x 297 mm) and US Letter
 PAPERS = {"a4": (210 / 25.4, 297 / 25.4), "letter": (8.5, 11.0)}
-#: what a column holds: text flush left, text flush right, or numbers aligned at the decimal point
-ALIGNS = ("l", "r", "n")
 
 
 @dataclass(frozen=True)
@@ -42,43 +41,6 @@ class Paragraph:
     """One paragraph of running text."""
 
     text: str
-
-
-@dataclass(frozen=True)
-class Cell:
-    """A table cell: its text, and whether a worksheet leaves it blank for the student."""
-
-    text: str
-    blank: bool = False
-
-
-@dataclass(frozen=True)
-class Table:
-    """A table: `name` is stable and file-safe (`events_rest`, `ledger_moving`), used for the LaTeX fragment's
-    file name; `align` has one letter of ALIGNS per column; `notes` are lines printed under the table."""
-
-    name: str
-    caption: str
-    header: tuple[str, ...]
-    rows: tuple[tuple[Cell, ...], ...]
-    align: str
-    notes: tuple[str, ...] = ()
-
-    def __post_init__(self) -> None:
-        if len(self.align) != len(self.header) or any(a not in ALIGNS for a in self.align):
-            raise ValueError(f"table {self.name}: align {self.align!r} must have one of {ALIGNS} per column")
-        for row in self.rows:
-            if len(row) != len(self.header):
-                raise ValueError(f"table {self.name}: a row has {len(row)} cells for {len(self.header)} columns")
-
-    @property
-    def has_blanks(self) -> bool:
-        return any(c.blank for row in self.rows for c in row)
-
-    def filled(self) -> "Table":
-        """The same table with every cell filled: the answer key's copy of a worksheet's table."""
-        rows = tuple(tuple(Cell(c.text) for c in row) for row in self.rows)
-        return Table(self.name, self.caption, self.header, rows, self.align, self.notes)
 
 
 @dataclass(frozen=True)

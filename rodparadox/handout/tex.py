@@ -30,7 +30,7 @@ from rodparadox.handout.document import PAPERS, Block, DiagramBlock, Handout, He
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
 from rodparadox.render.styles import STYLES
-from rodparadox.tables.build import latex_text, to_latex
+from rodparadox.tables.formats import latex_text, to_latex
 
 #: the margin on every side of the page; the figures of the strips are drawn at the width this leaves
 MARGIN_MM = 20.0

@@ -20,13 +20,13 @@ from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impac
 from rodparadox.numbers import number_text
 
 FORMAT = "sears-paradox-ledger/1"
-#: slices drawn between the ends of a frame's time window when no --at times are given (plus every turn's start and
+#: slices drawn between the ends of a frame's time window when no times are given (plus every turn's start and
 #: end and every impact): enough for a smooth curve at print size
 DENSE_SLICES = 240
 
 
 def slice_times(history: History, frame: Frame, at: Sequence[float] | None = None) -> tuple[float, ...]:
-    """The --at times as given, or a dense sampling of the frame's time window with every turn's start and end and
+    """The times `at` as given, or a dense sampling of the frame's time window with every turn's start and end and
     every impact's instant."""
     if at is not None:
         return tuple(at)
@@ -127,7 +127,7 @@ def _table(rows: list[list[str]], left: int = 1) -> list[str]:
 
 def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """For each frame: every impact with each body's (E, p) just before and after, the impulse, and the totals;
-    then each --at slice."""
+    then each slice at the times asked for."""
     s = history.scenario
     names = sorted(p.name for p in s.particles)
     lines = [f"{s.name}: v = {s.v:.10g}, L = {s.L:.10g}; E in M c^2, p in M c (M the rod's mass, c = 1), "

@@ -8,6 +8,7 @@ rod's interior, frames and the energy-momentum ledger (README, "The model").
   rod         inside the rod: material points, the rod on a slice, its own lines of simultaneity
   frames      frames (named, or by velocity, bounded by FASTEST_FRAME; velocity addition) and a history seen
               from one
+  snapshot    one frame's space at one instant: the rod's material points, the particles, the impacts then
   ledger      each body's energy and momentum on a slice of any frame, the hidden part
 
 Imports only `rodparadox.errors`, `rodparadox.numbers` and `rodparadox.tolerances` from outside.

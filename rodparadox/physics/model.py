@@ -171,13 +171,9 @@ class Scenario:
         return frame_velocity(frame, self.v)
 
     def with_overrides(self, *, v: float | None = None, L: float | None = None) -> "Scenario":
-        """The same scenario with command-line values; a bad value names its option."""
-        changes = {k: val for k, val in (("v", v), ("L", L)) if val is not None}
-        try:
-            return replace(self, **changes)
-        except ScenarioError as e:
-            bad = e.key if e.key in changes else None
-            raise e.located(f"option --{bad}", None) if bad else e
+        """The same scenario with other values of v and L (None keeps the scenario's); a bad value's error has its
+        key, v or L, so that a caller can say where the value came from."""
+        return replace(self, **{k: val for k, val in (("v", v), ("L", L)) if val is not None})
 
 
 def described(value: Any) -> str:

@@ -12,7 +12,7 @@ simultaneity of S and of S'. Every artist carries a gid (`a-rod_left`,
 
 Importing the package loads no matplotlib: each name below is looked up in its module on first use
 (`render.draw`, `from rodparadox.render import draw`), so `render.styles`, which the command line's
---help reads, stays light.
+help reads, stays light.
 
 The package, its imports running one way (text <- layout, labels <- layers <- panel <- diagram):
   text     what the panels say (frame names, titles, tick labels) and text sizes in points, without a renderer
@@ -24,6 +24,7 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   diagram  `draw` (a Figure the layout sizes), `draw_into` (a Figure or SubFigure the caller sized), bytes
   styles   the three styles as plain data (inks, dashes, rcParams, sizes): no matplotlib
   ledger_figure  the ledger as a figure (momentum and energy against each frame's time)
+  colour_scale  which velocity each colour of a strip means, in one frame (pure: no matplotlib)
   strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
            particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
            block of stills, the rod at successive instants

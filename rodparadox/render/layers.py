@@ -191,7 +191,7 @@ class WorldSheet(Layer):
 
 @dataclass(frozen=True)
 class MaterialLines(Layer):
-    """--rod-lines: world-lines of material points inside the rod (README, "Inside the rod")."""
+    """Options.rod_lines: world-lines of material points inside the rod (README, "Inside the rod")."""
 
     name = "rod-lines"
 
@@ -215,7 +215,7 @@ class MaterialLines(Layer):
 
 @dataclass(frozen=True)
 class RodNow(Layer):
-    """--rod-now: the rod's own lines of simultaneity, drawn across the rod only."""
+    """Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only."""
 
     name = "rod-now"
 
@@ -239,7 +239,7 @@ class RodNow(Layer):
 
 @dataclass(frozen=True)
 class Clocks(Layer):
-    """--proper-time: ticks of equal proper time on every world-line, the same events in every panel."""
+    """Options.proper_time: ticks of equal proper time on every world-line, the same events in every panel."""
 
     name = "clocks"
 
@@ -362,7 +362,7 @@ class Simultaneity(Layer):
 
 @dataclass(frozen=True)
 class OtherAxes(Layer):
-    """--other-axes: the other paper frame's x and t axes through the shared origin, tilted, each named at its end."""
+    """Options.other_axes: the other paper frame's x and t axes through the shared origin, tilted, each named at its end."""
 
     name = "other-axes"
     label_rank = 1
@@ -396,7 +396,7 @@ class OtherAxes(Layer):
 
 @dataclass(frozen=True)
 class LightCones(Layer):
-    """--light-cones: short arms of every impact's light cone."""
+    """Options.light_cones: short arms of every impact's light cone."""
 
     name = "light-cones"
 
@@ -424,7 +424,7 @@ class LightCones(Layer):
 
 @dataclass(frozen=True)
 class Hyperbolae(Layer):
-    """--hyperbolae: calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin, k a multiple of the t step."""
+    """Options.hyperbolae: calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin, k a multiple of the t step."""
 
     name = "hyperbolae"
 

@@ -2,7 +2,7 @@
 
 The rod is a bar from its left end to its right end, coloured along its length by the velocity of its
 material points (a diverging scale centred on the frame's rod velocity before any impact,
-`animation.ColourScale`); the particles are labelled dots; an impact at (or, in an animation, near) the
+`render.colour_scale`); the particles are labelled dots; an impact at (or, in an animation, near) the
 instant is a star. Positions are the frame's x in units of L, on the caller's x scale.
 
 Two ways in:
@@ -30,10 +30,11 @@ from matplotlib.figure import Figure, SubFigure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from rodparadox.animate.timeline import ColourScale, Strip, colour_scale, strip_at
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
+from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import shown
+from rodparadox.render.colour_scale import ColourScale, colour_scale
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.render.text import coordinate_names, frame_symbol
 
@@ -197,7 +198,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
     of L, named with the frame's coordinate, e.g. x′/L); each row is labelled with its time (t′ = 1.25 L)
     and marks the impacts at exactly that instant; one colour bar under the block serves every row (the
-    scale of the whole history, `animation.colour_scale`, so a colour is the same velocity in every row and
+    scale of the whole history, `render.colour_scale`, so a colour is the same velocity in every row and
     in the animation). Fills the target (a Figure or SubFigure the caller has sized).
 
     Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid

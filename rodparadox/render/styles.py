@@ -1,4 +1,4 @@
-"""The styles of every figure, animation and handout: plain data, no matplotlib import (the CLI's --help reads the
+"""The styles of every figure, animation and handout: plain data, no matplotlib import (the CLI's help reads the
 names).
 
 Each style says how every element of a diagram is drawn (its colour, line
@@ -63,9 +63,9 @@ class Style(NamedTuple):
     light_cone: Ink
     hyperbola: Ink
     grid: Ink
-    rod_interior: Ink  # --rod-lines: material world-lines inside the rod
-    rod_now: Ink  # --rod-now: the rod's own lines of simultaneity, drawn across the rod only
-    clock_size: float  # --proper-time: diameter of a clock tick (a hollow circle in the world-line's colour), points
+    rod_interior: Ink  # Options.rod_lines: material world-lines inside the rod
+    rod_now: Ink  # Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only
+    clock_size: float  # Options.proper_time: diameter of a clock tick (a hollow circle in the world-line's colour), points
     tick_length: float  # points: the tick marks of a diagram's axes
     ledger_particles: Mapping[str, Ink]  # the particles' curves in the ledger figure, where no label names them
     hidden_edge: str  # the edge of the ledger figure's shaded hidden part ("none": no edge)

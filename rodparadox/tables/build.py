@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from rodparadox.handout.document import Cell, Table
+from rodparadox.tables.table import Cell, Table
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
 from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, rounding_zero, turn_times
@@ -124,7 +124,7 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
 
 def slices_table(history: History, frame: Frame, times: Sequence[float], blank: bool = False) -> Table:
     """Each body's kinetic (E, p), the kinetic total and the hidden part on the slices t = `times` of the frame (the
-    `--at` slices of `sears-paradox ledger`), a row per body, the time on the first row of each slice."""
+    slices `sears-paradox ledger` is asked for), a row per body, the time on the first row of each slice."""
     zero = _zero_below(history, frame)
     rows = []
     for t in times:
@@ -153,7 +153,7 @@ def events_tables(history: History, frames: Sequence[Frame]) -> tuple[Table, ...
 
 def ledger_tables(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> tuple[Table, ...]:
     """`sears-paradox ledger` as tables: for each frame the ledger per impact, the hidden part between impacts
-    where it is not zero, and the --at slices if any."""
+    where it is not zero, and the slices at `at` if any."""
     out: list[Table] = []
     for f in frames:
         out.append(ledger_table(history, f))

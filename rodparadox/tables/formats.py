@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from rodparadox.handout.document import Cell, Table
+from rodparadox.tables.table import Cell, Table
 
 # --- plain Unicode text to LaTeX ------------------------------------------------------------------------
 

@@ -1,0 +1,276 @@
+"""A worksheet's questions on what the rod does, asked where the scenario shows it, with their worked answers:
+the momentum hidden in the rod's stress on a slice, a turn stopped by an impact, the whole rod at rest in a moving
+frame, the far end following a single impact, momentum conserved in a collision, impacts taken together, and a
+zig-zag. Pure; each returns an `Asked` (`worksheet_frames`), or None where the scenario has nothing to ask.
+"""
+
+from __future__ import annotations
+
+import math
+
+from rodparadox.handout.reading import SAME_RAPIDITY, Reading, zigzags
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, frame_name, impact_names, in_c, in_l,
+                                      in_l_approx, listed, numeral_approx, pushed, summand, time_name)
+from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
+from rodparadox.physics.engine import Impact
+from rodparadox.physics.frames import Frame, rest_frame
+from rodparadox.physics.ledger import initial_total, ledger_slice
+from rodparadox.physics.rod import rod_slice
+from rodparadox.tables import build as tables
+from rodparadox.numbers import impact_name
+from rodparadox.tolerances import PRINTED_ZERO
+
+#: the rod's material points sampled to tell whether it moves as a whole on a slice (not turning there)
+WHOLE_ROD_POINTS = 9
+
+
+def _whole_rod(r: Reading, frame: Frame, t: float) -> bool:
+    """Whether every material point of the rod has one velocity on the slice t of the frame (no turn crosses it)."""
+    sigmas = [k * r.L / (WHOLE_ROD_POINTS - 1) for k in range(WHOLE_ROD_POINTS)]
+    rapidities = rod_slice(r.history, frame.rapidity, t, sigmas).rapidity
+    return float(max(rapidities) - min(rapidities)) <= SAME_RAPIDITY
+
+
+def _between(r: Reading, frame: Frame, t: float) -> str:
+    """after A₁ and before B₁; before B₁; after B₂, the last impact."""
+    impacts = [i for _, g in r.instants(frame) for i in g]
+    before = [i for i in impacts if r.t(i, frame) < t]
+    after = [i for i in impacts if r.t(i, frame) > t]
+    if before and after:
+        return f"after {impact_name(before[-1].label)} and before {impact_name(after[0].label)}"
+    if after:
+        return f"before {impact_name(after[0].label)}, the first impact in {frame_name(frame)}"
+    return f"after {impact_name(before[-1].label)}, the last impact in {frame_name(frame)}"
+
+
+def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
+    """The hidden momentum on a slice between two changes: total before the first impact less every body's kinetic
+    momentum on the slice. A slice where the rod moves as a whole is preferred (the student can compute the rod's
+    momentum), then the largest hidden momentum; frame b first."""
+    h = r.history
+    chosen = None
+    for f in [b, a] + [f for f in r.frames if f not in (a, b)]:
+        total = initial_total(h, f.rapidity)
+        zero = PRINTED_ZERO * max(total.E, abs(total.p))  # a difference of totals below this is rounding
+        for t in tables.hidden_instants(h, f):
+            hidden = ledger_slice(h, f.rapidity, t).hidden
+            if abs(hidden.p) > zero:
+                key = (not _whole_rod(r, f, t), -abs(hidden.p))
+                if chosen is None or key < chosen[0]:
+                    chosen = (key, f, t)
+        if chosen is not None:
+            break
+    if chosen is None:
+        return None
+    _, f, t = chosen
+    s = ledger_slice(h, f.rapidity, t)
+    total = initial_total(h, f.rapidity)
+    zero = PRINTED_ZERO * max(total.E, abs(total.p))
+    symbol, time = frame_name(f), time_name(f)
+    whole = _whole_rod(r, f, t)
+    bodies = dict(s.bodies)
+    steps = ["A body of mass m moving at u has momentum m u/√(1 − u²) (c = 1)."]
+    known, terms = [], []
+    for name in ("A", "B"):
+        if name not in bodies:
+            continue
+        m = h.scenario.particle(name).mass
+        u = r.velocity(h.worldline(name).seen_from(f.rapidity).rapidity_at_time(t) + f.rapidity, f)
+        known.append(f"{name} moves at {in_c(u, ANSWER_DIGITS)}")
+        p = 0.0 if abs(bodies[name].p) <= zero else bodies[name].p
+        steps.append(f"{name}: {answer_numeral(m)} × {bracketed(u)}/√(1 − {bracketed(u)}²) = "
+                     f"{answer_numeral(p)} M c.")
+        terms.append(p)
+    rod_p = 0.0 if abs(bodies["rod"].p) <= zero else bodies["rod"].p
+    if whole:
+        u = math.tanh(rod_slice(h, f.rapidity, t, [0.5 * r.L]).rapidity[0])
+        known.append(f"the rod moves as a whole at {in_c(u, ANSWER_DIGITS)}")
+        steps.append(f"The rod: 1 × {bracketed(u)}/√(1 − {bracketed(u)}²) = {answer_numeral(rod_p)} M c.")
+    else:
+        known.append(f"the rod is turning: the momentum of its material points, added up along it as the ledger "
+                     f"does, is {answer_numeral(rod_p)} M c")
+        steps.append(f"The rod: {answer_numeral(rod_p)} M c, as given.")
+    terms.append(rod_p)
+    kinetic = sum(terms)
+    hidden = total.p - kinetic
+    steps.append(f"All the bodies' momentum on the slice: {' + '.join(summand(q) for q in terms)} = "
+                 f"{answer_numeral(kinetic)} M c. Hidden: {answer_numeral(total.p)} − {summand(kinetic)} = "
+                 f"{numeral_approx(hidden)} M c.")
+    where = ("this slice of " + symbol + " cuts across a turn, the rod's rigid response to an impact, so part of the "
+             "impulse already given sits in the stress and has not yet reached the motion of the rod's material "
+             "points" if not whole else
+             "this slice of " + symbol + " falls between two impacts the rod takes together on its own line of "
+             "simultaneity: the impulse of the first sits in the stress until the second arrives")
+    steps.append(f"It is carried by the stress in the rod: {where}. (The hidden energy on the slice is "
+                 f"{numeral_approx(s.hidden.E)} M c².)")
+    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol} ({_between(r, f, t)}), "
+            f"{listed(known)}. Before the first impact the bodies' total momentum in {symbol} was "
+            f"{answer_numeral(total.p)} M c. How much momentum is hidden on this slice, and where is it?")
+    return text, tuple(steps)
+
+
+def question_stopped_turn(r: Reading) -> Asked | None:
+    """A turn stopped by an impact: the far end's velocity there, from the two events, against the rod's."""
+    h = r.history
+    turn = next((t for t in h.turns if not t.completed), None)
+    if turn is None:
+        return None
+    stopper = next(i for i in h.impacts if i.label == turn.stopped_by)
+    cause = r.turn_cause(turn)
+    far = "left" if turn.pivot_end == "right" else "right"
+    P, E = turn.pivot, stopper.event
+    at_pivot = [i for i in cause if i in r.impacts_at(P)] or r.impacts_at(P)
+    dx, dt = r.length(E.x - P.x), r.length(E.t - P.t)
+    u_far = dt / dx  # on the hyperbola (x − x_P)² − (t − t_P)² = L² the velocity is (t − t_P)/(x − x_P)
+    u_rod = r.velocity(turn.rapidity_to, rest_frame())
+    S, name, stop = "S", impact_names(cause), impact_name(stopper.label)
+    text = (f"{stop} strikes the {far} end while the rod is still turning from {name}. How fast is the {far} end "
+            f"moving in S at that instant, and how does that compare with the rod's velocity after {name}? (During a "
+            f"turn about the event P the far end moves on the hyperbola (x − x_P)² − (t − t_P)² = L², whose velocity "
+            f"at (x, t) is (t − t_P)/(x − x_P).)")
+    answer = (f"P is {impact_names(at_pivot)}, at x = {in_l(r.length(P.x), ANSWER_DIGITS)}, "
+              f"t = {in_l(r.length(P.t), ANSWER_DIGITS)}; "
+              f"{stop} is at x = {in_l(r.length(E.x), ANSWER_DIGITS)}, t = {in_l(r.length(E.t), ANSWER_DIGITS)}.",
+              f"{stop} is on the hyperbola: {bracketed(dx)}² − {bracketed(dt)}² = "
+              f"{answer_numeral(dx * dx - dt * dt)} (in L²).",
+              f"The {far} end's velocity there: {answer_numeral(dt)}/{bracketed(dx)} = "
+              f"{in_c(u_far, ANSWER_DIGITS)} in {S}, "
+              f"while the rod's momentum moves at {in_c(u_rod, ANSWER_DIGITS)} after {name}: the {far} end had "
+              f"not caught up when {stop} struck, so the rod never moved as a whole at "
+              f"{in_c(u_rod, ANSWER_DIGITS)}.")
+    return text, answer
+
+
+def question_at_rest(r: Reading) -> Asked | None:
+    """A moving frame in which the whole rod stands still for an instant or a while: when, and how long it is."""
+    for f in (f for f in r.frames if f.name != "rest"):
+        rests = r.rests(f)
+        if not rests:
+            continue
+        turn, end, next_start, _ = rests[0]
+        symbol, time = frame_name(f), time_name(f)
+        u0 = r.rod_velocities(f)[0]
+        if next_start is None:
+            when = f"from {time} = {in_l_approx(r.length(end))} on"
+        elif r.same_time(next_start, end):
+            when = f"at the one instant {time} = {in_l_approx(r.length(end))}"
+        else:
+            when = f"from {time} = {in_l_approx(r.length(end))} to {in_l_approx(r.length(next_start))}"
+        text = (f"The whole rod comes to rest in {symbol}. When, and how long is it then, measured in {symbol}? How "
+                f"long is it in {symbol} before it is first struck?")
+        answer = (f"It is at rest {when}: the turn that {impact_names(r.turn_cause(turn))} started ends on a line of "
+                  f"constant {time}, so every point of the rod reaches velocity 0 in {symbol} at once.",
+                  f"At rest in {symbol}, it has its full proper length L there. Before it is struck it moves at "
+                  f"{in_c(u0, ANSWER_DIGITS)} in {symbol}, contracted to L √(1 − u²) = L √(1 − {bracketed(u0)}²) "
+                  f"= {in_l_approx(1.0 / gamma(u0))}.")
+        return text, answer
+    return None
+
+
+def question_single(r: Reading) -> Asked | None:
+    """One particle: how long the far end takes to follow, and how far the struck end moves meanwhile, in S."""
+    h = r.history
+    if len(h.scenario.particles) != 1 or not h.turns or not h.turns[0].completed:
+        return None
+    turn = h.turns[0]
+    struck = impact_name(r.turn_cause(turn)[-1].label)
+    far = "left" if turn.pivot_end == "right" else "right"
+    u = r.velocity(turn.rapidity_to, rest_frame())
+    g = gamma(u)
+    delay = abs(u) * g  # the far end's hyperbola about the impact reaches velocity u at t − t_P = L sinh φ = γ|u| L
+    text = (f"{struck} gives the rod's momentum the velocity {in_c(u, ANSWER_DIGITS)} in S at once, but the "
+            f"{far} end follows only gradually, on the hyperbola of radius L about {struck}. How long after {struck}, "
+            f"in S, does the {far} end reach {in_c(u, ANSWER_DIGITS)}? How far has the struck end moved by then?")
+    answer = (f"On that hyperbola t − t_P = L sinh φ and the velocity is tanh φ; it reaches |u| = "
+              f"{answer_numeral(abs(u))} where sinh φ = γ|u| = {answer_numeral(g)} × {answer_numeral(abs(u))} = "
+              f"{answer_numeral(delay)}.",
+              f"So the {far} end takes {in_l_approx(delay)} of S's time. Meanwhile the struck end, moving at "
+              f"{in_c(u, ANSWER_DIGITS)} from the impact on, moves {in_l_approx(abs(u) * delay)} to the "
+              f"{'right' if u > 0 else 'left'}; the rod then has "
+              f"its moving length L/γ = {in_l_approx(1.0 / g)} in S.")
+    return text, answer
+
+
+def _s_table(r: Reading) -> str:
+    """Where the student finds velocities in S: the events table of S, if S is shown."""
+    return " (the events table of S)" if any(f.name == "rest" for f in r.frames) else ""
+
+
+def question_momentum(r: Reading, collision: tuple[Impact, ...] | None = None) -> Asked:
+    """Momentum in S before and after a collision (the first, or the one given), from the velocities."""
+    h = r.history
+    s = h.scenario
+    rest = rest_frame()
+    c = collision or r.collisions[0]
+    rows, before, after = [], 0.0, 0.0
+    for i in c:
+        m = s.particle(i.particle).mass
+        ub, ua = r.velocity(i.particle_rapidity_before, rest), r.velocity(i.particle_rapidity_after, rest)
+        pb, pa = momentum(m, ub), momentum(m, ua)
+        before, after = before + pb, after + pa
+        rows.append(f"{i.particle} ({answer_numeral(m)} M): {in_c(ub, ANSWER_DIGITS)} → {in_c(ua, ANSWER_DIGITS)}, "
+                    f"p = {answer_numeral(pb)} → {answer_numeral(pa)} M c")
+    ub, ua = r.velocity(c[0].rod_rapidity_before, rest), r.velocity(c[-1].rod_rapidity_after, rest)
+    pb, pa = momentum(1.0, ub), momentum(1.0, ua)
+    rows.append(f"the rod (M): {in_c(ub, ANSWER_DIGITS)} → {in_c(ua, ANSWER_DIGITS)}, p = {answer_numeral(pb)} → "
+                f"{answer_numeral(pa)} M c")
+    why = ua != ub and len(c) > 1
+    text = (f"Using the velocities in S just before and just after {impact_names(c)}{_s_table(r)}, check that "
+            f"momentum is conserved in S." + (" Why does the rod move off?" if why else ""))
+    answer = ["p = m u/√(1 − u²). " + "; ".join(rows) + ".",
+              f"Before: {answer_numeral(before + pb)} M c; after: {answer_numeral(after + pa)} M c: the same."]
+    if why:
+        answer.append("The particles' momenta do not cancel before the impacts (the heavier one carries more), so the "
+                      "rod carries the difference after them.")
+    return text, tuple(answer)
+
+
+def question_together(r: Reading, b: Frame) -> Asked | None:
+    """Impacts the rod takes together, without changing velocity, at different times of frame b: why it moves on."""
+    h = r.history
+    c = next((c for c in r.collisions if len(c) > 1 and
+              abs(c[-1].rod_rapidity_after - c[0].rod_rapidity_before) <= SAME_RAPIDITY), None)
+    if c is None:
+        return None
+    ordered = sorted(c, key=lambda i: r.t(i, b))
+    first, last = ordered[0], ordered[-1]
+    if r.same_time(r.t(first, b), r.t(last, b)):
+        return None
+    symbol = frame_name(b)
+    u_rod = r.velocity(c[0].rod_rapidity_before, b)
+    momenta = [momentum(h.scenario.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest_frame()))
+               for i in c]
+    cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
+              f"{listed([answer_numeral(p) + ' M c' for p in momenta])}, which cancel)"
+              if abs(sum(momenta)) <= PRINTED_ZERO * sum(abs(p) for p in momenta) else "")
+    text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
+            f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
+    answer = (f"{in_c(u_rod, ANSWER_DIGITS)}, as before and after: the rod takes {impact_names(c)} together, on one line "
+              f"of its own simultaneity, and there the impulses cancel{cancel}.",
+              f"Between the two impacts in {symbol} the momentum {first.particle} has given up is held by the stress "
+              f"in the rod: the hidden part of the ledger, which the question on hidden momentum computes.")
+    return text, answer
+
+
+def question_zigzag(r: Reading) -> Asked | None:
+    """Where the rod zig-zags: its motion in S from the events table, and why a particle strikes twice."""
+    h = r.history
+    if not zigzags([0.0] + [c[-1].rod_rapidity_after for c in r.collisions]):
+        return None
+    rest = rest_frame()
+    u = r.rod_velocities(rest)
+    steps = [f"after {impact_names(c)} (t = {in_l(r.length(r.t(c[0], rest)), ANSWER_DIGITS)}) "
+             f"{in_c(u[k + 1], ANSWER_DIGITS)}: it {pushed(u[k], u[k + 1])}" for k, c in enumerate(r.collisions)]
+    text = (f"From the rod's velocities in S{_s_table(r)}: in which direction is the rod driven after each impact? "
+            f"Why is it struck more than once by the same particle?")
+    answer = [f"Its velocity in S is 0 before {impact_names(r.collisions[0])}; " + "; ".join(steps) + "."]
+    repeat = next((i for i in h.impacts if any(p.particle == i.particle for p in h.impacts[:h.impacts.index(i)])), None)
+    if repeat is not None:
+        previous = next(p for p in reversed(h.impacts[:h.impacts.index(repeat)]) if p.particle == repeat.particle)
+        answer.append(f"After {impact_name(previous.label)}, {repeat.particle} moves at "
+                      f"{in_c(r.velocity(repeat.particle_rapidity_before, rest), ANSWER_DIGITS)} while the rod, "
+                      f"driven the other way since, moves at "
+                      f"{in_c(r.velocity(repeat.rod_rapidity_before, rest), ANSWER_DIGITS)}: its {repeat.end} end "
+                      f"closes on {repeat.particle} again, at {impact_name(repeat.label)}. The impulses do not cancel "
+                      f"because the rod takes them one at a time.")
+    return text, tuple(answer)

@@ -1,0 +1,81 @@
+"""One frame's space at one instant: where the rod's material points are and how fast they move, where the
+particles are, and which impacts happen then (README, "The paradox in motion"). Pure.
+
+What a strip draws (`render.strip`) and an animation's now mode sweeps (`animate.timeline`): `strip_at(history,
+frame, t, flash)` reads it off the exact world-lines, boosted into the frame; `material_points` builds those
+world-lines once, for a caller that reads many instants of one frame.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from rodparadox.physics.engine import History
+from rodparadox.physics.frames import Frame
+from rodparadox.physics.kinematics import WorldLine
+from rodparadox.physics.rod import material_worldline
+
+#: material points along the strip's bar: enough that the colour varies smoothly along it
+STRIP_POINTS = 96
+
+
+@dataclass(frozen=True)
+class Strip:
+    """The frame's space at the instant t: the rod as a bar, its material points' velocities, the particles, and
+    the impacts that flash now. Positions and velocities in the frame's coordinates (units of L, c = 1).
+
+    `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
+    (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
+    each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t, and
+    `flash_x` where each of them is (the impact's x in the frame, not the rod's now).
+    """
+
+    t: float
+    sigma: np.ndarray
+    x: np.ndarray
+    velocity: np.ndarray
+    particles: tuple[tuple[str, float], ...]
+    flashing: tuple[str, ...]
+    flash_x: tuple[float, ...] = ()
+
+
+def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
+    """The exact world-lines, in `frame`, of `points` material points evenly spaced in proper distance from the
+    left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
+    at every instant."""
+    eta = frame.rapidity
+    return tuple(material_worldline(history, float(sigma)).seen_from(eta)
+                 for sigma in np.linspace(0.0, history.scenario.L, points))
+
+
+def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS,
+             material: tuple[WorldLine, ...] | None = None) -> Strip:
+    """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
+    the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
+    eta = frame.rapidity
+    if material is None:
+        material = material_points(history, frame, points)
+    sigmas = np.linspace(0.0, history.scenario.L, len(material))
+    x = np.array([w.event_at_time(t).x for w in material])
+    rapidity = np.array([w.rapidity_at_time(t) for w in material])
+    particles = tuple((name, history.worldline(name).seen_from(eta).event_at_time(t).x)
+                      for name in ("A", "B") if history.worldline(name) is not None)
+    lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
+    return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
+                 tuple(i.event.seen_from(eta).x for i in lit))
+
+
+def rod_rapidities(history: History) -> tuple[float, ...]:
+    """Every rapidity, in S, a material point of the rod takes at the start or end of a piece of its world-line.
+
+    A point's rapidity is 0 before the first turn, runs monotonically from `rapidity_from` to `rapidity_stop`
+    during each turn, stays there between turns, and is `final_rapidity` after the last: so the extremes of
+    every point's rapidity over the whole history are among these. (A turn's `rapidity_to`, the rod's
+    dynamical rapidity, is not: a stopped turn never reaches it.)
+    """
+    values = [0.0, history.final_rapidity]
+    for turn in history.turns:
+        values += [turn.rapidity_from, turn.rapidity_stop]
+    return tuple(values)

@@ -1,0 +1,77 @@
+"""The same command gives the same bytes, across processes: one pair of processes checks every kind of output.
+
+Two fresh interpreters with different hash seeds (dict and set orders, font caches and import order differ
+between them) run side by side; each writes every kind of file the tool writes -- plot's SVG, PDF and PNG,
+the ledger's figure and tables, an animation as GIF and as PNG stills in both modes, a handout and a
+worksheet as PDF, a handout's LaTeX folder -- and the two trees of files must be equal byte for byte.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+#: what each process runs, in one interpreter: every output kind, small enough to stay fast
+COMMANDS = (
+    ["plot", "fig2", "--format", "svg,pdf,png", "-o", "."],
+    ["plot", "while_turning", "--v", "0.95", "--style", "print", "--rod-lines", "5", "--rod-now",
+     "--proper-time", "--frame", "both,0.3", "--format", "svg,pdf", "-o", "."],
+    ["ledger", "fig2", "--format", "svg,pdf,png", "-o", "."],
+    ["ledger", "fig2", "--format", "json", "-o", "ledger.json"],
+    ["ledger", "fig2", "--format", "latex", "-o", "ledger.tex"],
+    ["export", "fig2", "--format", "csv", "-o", "fig2.csv"],
+    ["animate", "fig2", "--fps", "4", "--seconds", "0.75", "-o", "a.gif"],
+    ["animate", "while_turning", "--v", "0.95", "--mode", "boost", "--style", "print", "--fps", "4",
+     "--seconds", "0.75", "--format", "png", "-o", "stills"],
+    ["handout", "fig2", "--worksheet", "-o", "."],
+    ["handout", "fig1", "--format", "tex", "-o", "tex"],
+)
+
+_SCRIPT = """
+import json, sys
+from sears_paradox_cli.main import main
+for args in json.loads(sys.argv[1]):
+    try:
+        main(args)
+    except SystemExit as e:
+        if e.code:
+            raise
+"""
+
+
+def _files(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+@pytest.fixture(scope="module")
+def two_runs(tmp_path_factory) -> tuple[dict[str, bytes], dict[str, bytes]]:
+    import json
+
+    runs = []
+    for seed in ("1", "2"):
+        folder = tmp_path_factory.mktemp(f"seed{seed}")
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        runs.append((folder, subprocess.Popen([sys.executable, "-c", _SCRIPT, json.dumps(COMMANDS)], cwd=folder,
+                                              env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)))
+    for folder, process in runs:
+        out, err = process.communicate(timeout=600)
+        assert process.returncode == 0, err.decode()
+    return tuple(_files(folder) for folder, _ in runs)
+
+
+def test_every_output_kind_is_written(two_runs):
+    names = set(two_runs[0])
+    suffixes = {Path(n).suffix for n in names}
+    assert suffixes >= {".svg", ".pdf", ".png", ".json", ".tex", ".csv", ".gif", ".dat"}
+    assert {"fig2.svg", "fig2_ledger.png", "a.gif", "fig2_worksheet.pdf", "tex/handout.tex"} <= names
+    assert sum(n.startswith("stills/") for n in names) == 3  # round(0.75 s * 4 fps) stills
+
+
+def test_two_processes_with_other_hash_seeds_give_the_same_bytes(two_runs):
+    first, second = two_runs
+    assert set(first) == set(second)
+    assert [name for name in first if first[name] != second[name]] == []
