@@ -69,6 +69,6 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
-    figures = [render.draw(history, job.frames[0], style, options) for history, job in zip(histories, jobs)]
+    figures = [render.draw(history, job.frames[0], style, options).figure for history, job in zip(histories, jobs)]
     report(((path, write_atomic(path, render.figure_bytes(figure, f, style)))
             for figure, job in zip(figures, jobs) for f, path in job.paths.items()), quiet)

@@ -38,7 +38,7 @@ def main() -> None:
     history, frames = run(load("fig2")), paper_frames(0.6)
     sheet, notes = handout("fig2"), handout("fig2", worksheet=True)
     jobs = {
-        "plot": lambda: render.figure_bytes(render.draw(history, frames, "print"), "pdf", "print"),
+        "plot": lambda: render.figure_bytes(render.draw(history, frames, "print").figure, "pdf", "print"),
         "handout": lambda: to_pdf(sheet),
         "worksheet": lambda: to_pdf(notes),
     }

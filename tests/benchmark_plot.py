@@ -87,7 +87,7 @@ def figure_data(path: Path) -> None:
     from rodparadox.io.scenario import load
 
     scenario = load("fig2")
-    figure = render.draw(run(scenario), paper_frames(scenario.v))
+    figure = render.draw(run(scenario), paper_frames(scenario.v)).figure
     data = {"size": list(figure.get_size_inches()), "axes": [],
             "title": figure.texts[0].get_text() if figure.texts else "",
             "legend": [t.get_text() for t in figure.legends[0].get_texts()]}

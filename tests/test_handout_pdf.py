@@ -345,7 +345,7 @@ def test_a_worksheet_question_has_ruled_lines_and_the_answer_key_its_worked_answ
 def test_natural_size_is_the_size_draw_gives_on_the_style_s_page(style):
     history, frames = run(load("fig2")), paper_frames(0.6)
     st = STYLES[style]
-    figure = render.draw(history, frames, style)
+    figure = render.draw(history, frames, style).figure
     size = render.natural_size(history, frames, st.max_width * 72, st.max_height * 72, style)
     assert size == pytest.approx((figure.bbox.width, figure.bbox.height), abs=1e-6)
     width, height = render.natural_size(history, frames, 400.0, 1000.0, style)  # a narrower page bounds it

@@ -23,7 +23,7 @@ INSIDE = render.Options(rod_lines=5, rod_now=True, proper_time=True)
 
 def drawn(name: str, v: float = 0.6, style: str = "default", options=INSIDE):
     h = run(load(name).with_overrides(v=v))
-    return h, render.draw(h, paper_frames(h.scenario.v), style, options)
+    return h, render.draw(h, paper_frames(h.scenario.v), style, options).figure
 
 
 def lines_of(fig, pattern: str) -> dict[str, np.ndarray]:

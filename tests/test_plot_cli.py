@@ -356,7 +356,7 @@ def test_readme_figures_are_what_the_tool_draws_now():
         path = ROOT / "outputs" / "readme" / f"{name}.svg"
         assert f"outputs/readme/{name}.svg" in section
         scenario = load(name)
-        drawn = render.figure_bytes(render.draw(simulate(scenario), paper_frames(scenario.v)), "svg")
+        drawn = render.figure_bytes(render.draw(simulate(scenario), paper_frames(scenario.v)).figure, "svg")
         committed = path.read_bytes()
         if made_with == ["matplotlib", matplotlib.__version__]:
             assert drawn == committed, f"{path} is out of date: run `make readme-figures`"

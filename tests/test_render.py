@@ -43,7 +43,7 @@ def history(name: str, v: float | None = None, L: float | None = None):
 @lru_cache(maxsize=None)
 def figure(name: str, v: float = 0.6, style: str = "default", options: render.Options = render.Options(), L=None):
     h = history(name, v, L)
-    return render.draw(h, paper_frames(h.scenario.v), style, options)
+    return render.draw(h, paper_frames(h.scenario.v), style, options).figure
 
 
 def artist(fig, gid: str):
@@ -253,7 +253,7 @@ def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_
 def test_a_frame_of_any_velocity_gets_its_own_panel():
     """Title and slopes against constants; the marker's place against `frames.view` (wiring)."""
     h = history("fig2", 0.6)
-    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=0.3", 0.3)))
+    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=0.3", 0.3))).figure
     c = panels(fig)["b"]
     assert title_of(c) == "(b) frame u = 0.3: rod at \N{MINUS SIGN}0.3 before and after"
     assert c.get_xlabel() == "$x_u/L$"
@@ -269,7 +269,7 @@ def test_a_frame_of_any_velocity_gets_its_own_panel():
 def test_a_frame_of_speed_close_to_1_and_v_close_to_1_are_never_rounded_to_1_and_0_has_no_sign():
     v = 0.9999999  # the fastest v a scenario takes
     h = history("fig2", v)
-    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=-0", -0.0), Frame("u=-0.9999999", -0.9999999)))
+    fig = render.draw(h, (Frame("rest", 0.0), Frame("u=-0", -0.0), Frame("u=-0.9999999", -0.9999999))).figure
     assert artist(fig, "title").get_text().startswith("fig2, $v = 0.9999999$")
     assert title_of(panels(fig)["b"]) == "(b) frame u = 0: rod at rest before and after"
     assert title_of(panels(fig)["c"]) == "(c) frame u = \N{MINUS SIGN}0.9999999: rod at +0.9999999 before and after"
@@ -292,10 +292,10 @@ def test_more_frames_than_panel_letters_are_refused_not_dropped():
     h = history("fig2", 0.6)
     frames = [Frame(f"u={k / 10}", k / 10) for k in range(len(render.PANEL_LETTERS) + 1)]
     with pytest.raises(ValueError, match="1 to 8 frames"):
-        render.draw(h, frames)
+        render.draw(h, frames).figure
     with pytest.raises(ValueError, match="1 to 8 frames"):
-        render.draw(h, [])
-    fig = render.draw(h, frames[:-1])
+        render.draw(h, []).figure
+    fig = render.draw(h, frames[:-1]).figure
     assert sorted(panels(fig)) == list(render.PANEL_LETTERS)
 
 
@@ -310,7 +310,7 @@ def test_a_dollar_in_a_scenarios_name_or_description_is_drawn_as_a_dollar(tmp_pa
     """The title is mathtext (for v): the user's $ are escaped there, and measured as plain dollar signs."""
     h = _dollar_scenario(tmp_path)
     assert (h.scenario.name, h.scenario.description) == ("a$b", "costs $5 or \\$6; more")
-    fig = render.draw(h, paper_frames(0.6), style)
+    fig = render.draw(h, paper_frames(0.6), style).figure
     title = artist(fig, "title").get_text()
     assert title == r"a\$b, $v = 0.6$: costs \$5 or \\$6"
     _renderer(fig, style)  # matplotlib parses the title as mathtext: it must parse
@@ -340,7 +340,7 @@ def _drawn_texts(fig) -> list[str]:
 def test_tiny_speeds_are_drawn_as_powers_of_ten_never_as_e_notation(tmp_path, style):
     """Issue 6.15: the title of v = 1.0e-6 read "v = 1e − 06"."""
     h = _scenario_file(tmp_path, "tiny", 1.0e-6)
-    fig = render.draw(h, paper_frames(h.scenario.v), style)
+    fig = render.draw(h, paper_frames(h.scenario.v), style).figure
     assert artist(fig, "title").get_text().startswith("tiny, $v = 1{\\times}10^{-6}$")
     assert title_of(panels(fig)["b"]) == "(b) frame S\N{PRIME}: rod at +1\N{MULTIPLICATION SIGN}10⁻⁶ before and after"
     assert not [t for t in _drawn_texts(fig) if re.search(r"\de[-+\N{MINUS SIGN}]?\d", t)]
@@ -357,7 +357,7 @@ def test_a_long_name_is_cut_with_an_ellipsis_and_nothing_leaves_the_figure(tmp_p
     name = "".join(f"word{k} " for k in range(100)).strip()[:200]
     h = _scenario_file(tmp_path, name, 0.6)
     fig = render.draw(h, [{"rest": Frame("rest", 0.0), "moving": Frame("moving", -0.6)}.get(f) or Frame(f"u={f}", f)
-                          for f in frames], style)
+                          for f in frames], style).figure
     title = artist(fig, "title")
     head, _, rest = title.get_text().partition("\N{HORIZONTAL ELLIPSIS}")
     assert rest == ", $v = 0.6$" and len(head) > 20 and name.startswith(head)
@@ -484,7 +484,7 @@ def _layout_problems(fig, style, renderer=None) -> list:
 def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v, count, style):
     """Issue 6.2: --frame both,0.3,0.9 was 14.5 in wide, 8 panels 30 in; x' ticks ran together at v = 0.9999999."""
     h = history(name, v)
-    fig = render.draw(h, frames_of(LAYOUT_FRAMES[:count], v), style)
+    fig = render.draw(h, frames_of(LAYOUT_FRAMES[:count], v), style).figure
     width, height = fig.get_size_inches()
     page = STYLES[style]
     assert width <= page.max_width + 1e-9
@@ -539,7 +539,7 @@ def test_every_impact_label_sits_by_its_marker_or_is_tied_to_it(name, v, style):
     except ScenarioError:
         pytest.skip(f"{name} is refused at v = {v}")
     for specs in (("rest", "moving"), ("rest", "moving", 0.3, 0.9)):
-        fig = render.draw(h, frames_of(specs, v), style)
+        fig = render.draw(h, frames_of(specs, v), style).figure
         assert _far_labels(fig, style) == [], specs
 
 
@@ -694,7 +694,7 @@ def test_every_preset_renders_to_svg_in_every_style_with_every_worldline_and_imp
     """The SVG (what `plot` writes by default) holds, in both panels, every world-line, impact and label by its id."""
     for name in builtin_names():
         h = history(name)
-        svg = render.figure_bytes(render.draw(h, paper_frames(h.scenario.v), style), "svg", style)
+        svg = render.figure_bytes(render.draw(h, paper_frames(h.scenario.v), style).figure, "svg", style)
         ids = {g.get("id") for g in ET.fromstring(svg).iter(f"{SVG}g")}
         particles = [p for p in ("A", "B") if h.worldline(p) is not None]
         assert particles, name
@@ -729,8 +729,8 @@ def test_pdf_and_png_have_the_figures_size_and_are_deterministic(fmt, style):
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_two_renderings_give_identical_bytes_without_dates_or_versions(fmt):
     h = history("fig2", 0.6)
-    one = render.figure_bytes(render.draw(h, paper_frames(0.6)), fmt)
-    two = render.figure_bytes(render.draw(h, paper_frames(0.6)), fmt)
+    one = render.figure_bytes(render.draw(h, paper_frames(0.6)).figure, fmt)
+    two = render.figure_bytes(render.draw(h, paper_frames(0.6)).figure, fmt)
     assert one == two
     if fmt != "png":
         for needle in (matplotlib.__version__.encode(), b"CreationDate", b"<dc:date>", b"Matplotlib v"):

@@ -74,7 +74,7 @@ class NowScene:
         st = STYLES[style]
         self.history, self.timeline, self.L = history, timeline, history.scenario.L
         L = self.L
-        figure = render.draw(history, timeline.frames, style)
+        figure = render.draw(history, timeline.frames, style).figure
         width, height = figure.get_size_inches()
         panels = [ax for ax in figure.axes if (ax.get_gid() or "").endswith("-axes")]
         rows = sorted({round(ax.get_position().y0, 6) for ax in panels}, reverse=True)

@@ -19,7 +19,6 @@ from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_symbol, moving_frame, rest_frame,
                                        time_order)
-from rodparadox.physics.ledger import ledger_slice
 from rodparadox.tolerances import ONE_INSTANT
 
 
@@ -257,7 +256,7 @@ def _why(r: Reading) -> str:
             first, last = times[0], times[-1]
             if still:
                 middle = 0.5 * (r.t(first, f) + r.t(last, f))
-                hidden = ledger_slice(h, f.rapidity, middle).hidden
+                hidden = h.energy_momentum(f.rapidity, middle).hidden
                 sentences.append(
                     f"In {frame_name(f)} {impact_name(first.label)} comes at {r.when([first], f)} and "
                     f"{impact_name(last.label)} only at {in_l(r.length(r.t(last, f)))}, yet the rod moves on at "
@@ -295,7 +294,7 @@ def _why(r: Reading) -> str:
                              f"{impact_names(collisions[k - 1])} the rod was driven at {in_c(u_rod)} in S while "
                              f"{i.particle}, since {impact_name(previous.label)}, {particle}: the rod's {i.end} end "
                              f"closed on {i.particle} again.")
-    for k, turn in enumerate(t for t in h.turns if not t.completed):
+    for k, turn in enumerate(t for t in h.rigid.turns if not t.completed):
         stopper = impact_name(turn.stopped_by)
         cause = impact_names(r.turn_cause(turn))
         far = "left" if turn.pivot_end == "right" else "right"
@@ -310,11 +309,11 @@ def _why(r: Reading) -> str:
         else:
             sentences.append(f"Likewise {stopper} strikes the {far} end while the rod is still turning from {cause}, "
                              f"when that end had got only to {reached}, on its way to {target}.")
-    if any(not t.completed for t in h.turns):
+    if any(not t.completed for t in h.rigid.turns):
         ranges = []
         for f in r.frames:
             speeds = [r.velocity(x, f) for x in [0.0, h.final_rapidity]
-                      + [y for t in h.turns for y in (t.rapidity_from, t.rapidity_stop)]]
+                      + [y for t in h.rigid.turns for y in (t.rapidity_from, t.rapidity_stop)]]
             ranges.append(f"from {in_c(min(speeds))} to {in_c(max(speeds))} in {frame_name(f)}")
         sentences.append("Because its turns are cut short, the rod's material only ever moves at velocities "
                          + listed(ranges) + ".")

@@ -110,13 +110,13 @@ class Reading:
         momentum no longer matches the line (engine: a turn starts where the rod's rapidity differs from the
         line's). Should the count ever differ, the impacts at each turn's pivot."""
         starting = [line for line in self.lines if line[-1].rod_rapidity_after != line[-1].line_rapidity]
-        if len(starting) == len(self.history.turns):
+        if len(starting) == len(self.history.rigid.turns):
             return tuple(starting)
-        return tuple(self.impacts_at(turn.pivot) for turn in self.history.turns)
+        return tuple(self.impacts_at(turn.pivot) for turn in self.history.rigid.turns)
 
     def turn_cause(self, turn: Turn) -> tuple[Impact, ...]:
         """The impacts that started the turn (one of `History.turns`)."""
-        return self.turn_causes[next(k for k, t in enumerate(self.history.turns) if t is turn)]
+        return self.turn_causes[next(k for k, t in enumerate(self.history.rigid.turns) if t is turn)]
 
     def rests(self, frame: Frame) -> list[tuple[Turn, float, float | None, Turn | None]]:
         """Each stretch of the frame's time in which the whole rod stands still in it after a turn that completes:
@@ -124,7 +124,7 @@ class Reading:
         a line of simultaneity of the frame, so every point reaches rest at one instant of it, at the rod's full
         length."""
         out = []
-        turns = self.history.turns
+        turns = self.history.rigid.turns
         for k, turn in enumerate(turns):
             if not turn.completed or abs(turn.rapidity_stop - frame.rapidity) > SAME_RAPIDITY:
                 continue

@@ -228,7 +228,7 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
     from rodparadox import render
 
     if isinstance(block, DiagramBlock):
-        figure = render.draw(block.history, block.frames, style)
+        figure = render.draw(block.history, block.frames, style).figure
     else:
         from matplotlib.figure import Figure
 

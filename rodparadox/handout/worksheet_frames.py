@@ -198,8 +198,8 @@ def question_other_speed(r: Reading, a: Frame, b: Frame) -> Asked | None:
                            f"{names[0]} in {frame_name(f)}")
         elif len(labels) == 2:
             out.append(f"the rod is struck {len(history.impacts)} times: {impact_names(history.impacts)}")
-        elif history.turns:
-            start, end = turn_interval(history.turns[0], 0.0)
+        elif history.rigid.turns:
+            start, end = turn_interval(history.rigid.turns[0], 0.0)
             out.append(f"the far end takes {in_l(reading.length(end - start), ANSWER_DIGITS)} of S's time to reach "
                        f"the rod's new velocity")
         final = reading.velocity(history.final_rapidity, rest_frame())

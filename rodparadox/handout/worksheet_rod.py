@@ -14,7 +14,6 @@ from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, 
 from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
 from rodparadox.physics.engine import Impact
 from rodparadox.physics.frames import Frame, rest_frame
-from rodparadox.physics.ledger import initial_total, ledger_slice
 from rodparadox.physics.rod import rod_slice
 from rodparadox.tables import build as tables
 from rodparadox.numbers import impact_name
@@ -50,10 +49,10 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
     h = r.history
     chosen = None
     for f in [b, a] + [f for f in r.frames if f not in (a, b)]:
-        total = initial_total(h, f.rapidity)
+        total = h.initial_total(f.rapidity)
         zero = PRINTED_ZERO * max(total.E, abs(total.p))  # a difference of totals below this is rounding
         for t in tables.hidden_instants(h, f):
-            hidden = ledger_slice(h, f.rapidity, t).hidden
+            hidden = h.energy_momentum(f.rapidity, t).hidden
             if abs(hidden.p) > zero:
                 key = (not _whole_rod(r, f, t), -abs(hidden.p))
                 if chosen is None or key < chosen[0]:
@@ -63,8 +62,8 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
     if chosen is None:
         return None
     _, f, t = chosen
-    s = ledger_slice(h, f.rapidity, t)
-    total = initial_total(h, f.rapidity)
+    s = h.energy_momentum(f.rapidity, t)
+    total = h.initial_total(f.rapidity)
     zero = PRINTED_ZERO * max(total.E, abs(total.p))
     symbol, time = frame_name(f), time_name(f)
     whole = _whole_rod(r, f, t)
@@ -112,7 +111,7 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
 def question_stopped_turn(r: Reading) -> Asked | None:
     """A turn stopped by an impact: the far end's velocity there, from the two events, against the rod's."""
     h = r.history
-    turn = next((t for t in h.turns if not t.completed), None)
+    turn = next((t for t in h.rigid.turns if not t.completed), None)
     if turn is None:
         return None
     stopper = next(i for i in h.impacts if i.label == turn.stopped_by)
@@ -170,9 +169,9 @@ def question_at_rest(r: Reading) -> Asked | None:
 def question_single(r: Reading) -> Asked | None:
     """One particle: how long the far end takes to follow, and how far the struck end moves meanwhile, in S."""
     h = r.history
-    if len(h.scenario.particles) != 1 or not h.turns or not h.turns[0].completed:
+    if len(h.scenario.particles) != 1 or not h.rigid.turns or not h.rigid.turns[0].completed:
         return None
-    turn = h.turns[0]
+    turn = h.rigid.turns[0]
     struck = impact_name(r.turn_cause(turn)[-1].label)
     far = "left" if turn.pivot_end == "right" else "right"
     u = r.velocity(turn.rapidity_to, rest_frame())

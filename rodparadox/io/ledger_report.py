@@ -15,8 +15,7 @@ from typing import Any, Sequence
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_heading, time_window
 from rodparadox.physics.rod import turn_interval
-from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, initial_total, ledger_slice,
-                                      rounding_zero, turn_times)
+from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, rounding_zero)
 from rodparadox.numbers import number_text
 
 FORMAT = "sears-paradox-ledger/1"
@@ -33,7 +32,7 @@ def slice_times(history: History, frame: Frame, at: Sequence[float] | None = Non
     lo, hi = time_window(history, frame)
     eta = frame.rapidity
     times = {lo + (hi - lo) * k / (DENSE_SLICES - 1) for k in range(DENSE_SLICES)}
-    times.update(t for t in turn_times(history, eta) if lo <= t <= hi)
+    times.update(t for t in history.rigid.turn_times(eta) if lo <= t <= hi)
     times.update(i.event.time_in(eta) for i in history.impacts)
     return tuple(sorted(times))
 
@@ -65,11 +64,11 @@ def document(history: History, frames: Sequence[Frame], at: Sequence[float] | No
         eta = f.rapidity
         out_frames[f.name] = {
             "velocity": f.velocity + 0.0,
-            "total": _em(initial_total(history, eta)),
+            "total": _em(history.initial_total(eta)),
             "turns": [{"pivot": turn.pivot_end, "start": lo + 0.0, "end": hi + 0.0}
-                      for turn in history.turns for lo, hi in [turn_interval(turn, eta)]],
+                      for turn in history.rigid.turns for lo, hi in [turn_interval(turn, eta)]],
             "impacts": [_impact(e) for e in impact_entries(history, eta)],
-            "slices": [_slice(ledger_slice(history, eta, t)) for t in slice_times(history, f, at)],
+            "slices": [_slice(history.energy_momentum(eta, t)) for t in slice_times(history, f, at)],
         }
     return {"format": FORMAT,
             "scenario": {"name": s.name, "v": s.v, "L": s.L,
@@ -105,7 +104,7 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
             writer.writerow([f.name, "impulse", label, t, e.impact.particle, repr(e.impulse.E + 0.0),
                              repr(e.impulse.p + 0.0)])
         for t in slice_times(history, f, at):
-            s = ledger_slice(history, eta, t)
+            s = history.energy_momentum(eta, t)
             for body, em in (*s.bodies, ("kinetic", s.kinetic), ("hidden", s.hidden)):
                 if body in names or body in ("rod", "kinetic", "hidden"):
                     writer.writerow([f.name, "slice", "", repr(t + 0.0), body, repr(em.E + 0.0), repr(em.p + 0.0)])
@@ -134,7 +133,7 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
              f"t in the unit L is given in"]
     for f in frames:
         eta = f.rapidity
-        total = initial_total(history, eta)
+        total = history.initial_total(eta)
         zero = rounding_zero(total)
 
         def num(x: float) -> str:
@@ -158,7 +157,7 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
         if at:
             rows = [["t"] + [f"{name} {q}" for name in names + ["rod", "kinetic", "hidden"] for q in ("E", "p")]]
             for t in at:
-                sl = ledger_slice(history, eta, t)
+                sl = history.energy_momentum(eta, t)
                 values = [em for _, em in sl.bodies] + [sl.kinetic, sl.hidden]
                 rows.append([number_text(t)] + [num(x) for em in values for x in (em.E, em.p)])
             lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", *_table(rows, left=0)]

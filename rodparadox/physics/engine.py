@@ -114,9 +114,44 @@ class History:
     turns: tuple[Turn, ...] = ()
     final_rapidity: float = 0.0
 
+    # The rod interface (physics.history.RodHistory), of which this rigid rod is the first implementation.
+    # Its interior and its ledger live in physics.rod and physics.ledger, which import this module: hence the
+    # imports inside the methods.
+
+    kind = "rigid"
+
     def worldline(self, name: str) -> WorldLine | None:
         """The world-line of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
         return dict(self.worldlines).get(name)
+
+    @property
+    def rigid(self):
+        """The rigid rod's own part of the interface: its turns and its own lines of simultaneity."""
+        from rodparadox.physics.rod import RigidTurns
+
+        return RigidTurns(self)
+
+    def material_worldline(self, sigma: float) -> WorldLine:
+        """The exact world-line in S of the material point at proper distance sigma from the left end."""
+        from rodparadox.physics.rod import material_worldline
+
+        return material_worldline(self, sigma)
+
+    def material_velocity(self, sigma: float, frame_rapidity: float, t: float) -> float:
+        """The velocity of material point sigma at the instant t of the frame of rapidity `frame_rapidity`."""
+        return math.tanh(self.material_worldline(sigma).seen_from(frame_rapidity).rapidity_at_time(t))
+
+    def energy_momentum(self, frame_rapidity: float, t: float):
+        """Each body's (E, p) on the slice t of the frame, their total and the hidden part (`ledger.Slice`)."""
+        from rodparadox.physics.ledger import ledger_slice
+
+        return ledger_slice(self, frame_rapidity, t)
+
+    def initial_total(self, frame_rapidity: float):
+        """The system's total (E, p) in the frame (`ledger.EnergyMomentum`)."""
+        from rodparadox.physics.ledger import initial_total
+
+        return initial_total(self, frame_rapidity)
 
 
 def run(scenario: Scenario) -> History:

@@ -220,4 +220,4 @@ def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry
 
 def turn_times(history: History, frame_rapidity: float) -> list[float]:
     """Every instant of the frame's time where a turn starts or ends."""
-    return sorted({t for turn in history.turns for t in turn_interval(turn, frame_rapidity)})
+    return history.rigid.turn_times(frame_rapidity)

@@ -144,7 +144,7 @@ def material_lines(history: History, frame_rapidity: float, count: int, t_lo: fl
     out = []
     for k in range(1, count + 1):
         sigma = k * L / (count + 1)
-        out.append((sigma, material_worldline(history, sigma).seen_from(frame_rapidity).sample(t_lo, t_hi, tolerance)))
+        out.append((sigma, history.material_worldline(sigma).seen_from(frame_rapidity).sample(t_lo, t_hi, tolerance)))
     return out
 
 
@@ -154,3 +154,24 @@ def clock_step(span: float, ticks: int = 10) -> float:
     gets no more than about `ticks` ticks, and uses the one step in every panel, as proper time is the same in every
     frame."""
     return nice_number(span / ticks, "at_least")
+
+
+@dataclass(frozen=True)
+class RigidTurns:
+    """The rigid rod's own part of the rod interface (`physics.history.RigidResponse`): its turns, its own lines
+    of simultaneity, and when each turn starts and ends in a frame. `History.rigid` gives it."""
+
+    history: History
+
+    @property
+    def turns(self) -> tuple[Turn, ...]:
+        return self.history.turns
+
+    def now_lines(self, per_turn: int = 4, between: int = 2) -> list[tuple[Event, Event]]:
+        return now_lines(self.history, per_turn, between)
+
+    def turn_interval(self, turn: Turn, frame_rapidity: float) -> tuple[float, float]:
+        return turn_interval(turn, frame_rapidity)
+
+    def turn_times(self, frame_rapidity: float) -> list[float]:
+        return sorted({t for turn in self.history.turns for t in turn_interval(turn, frame_rapidity)})

@@ -15,7 +15,6 @@ import numpy as np
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.kinematics import WorldLine
-from rodparadox.physics.rod import material_worldline
 
 #: material points along the strip's bar: enough that the colour varies smoothly along it
 STRIP_POINTS = 96
@@ -46,7 +45,7 @@ def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) 
     left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
     at every instant."""
     eta = frame.rapidity
-    return tuple(material_worldline(history, float(sigma)).seen_from(eta)
+    return tuple(history.material_worldline(float(sigma)).seen_from(eta)
                  for sigma in np.linspace(0.0, history.scenario.L, points))
 
 
@@ -76,6 +75,6 @@ def rod_rapidities(history: History) -> tuple[float, ...]:
     dynamical rapidity, is not: a stopped turn never reaches it.)
     """
     values = [0.0, history.final_rapidity]
-    for turn in history.turns:
+    for turn in history.rigid.turns:
         values += [turn.rapidity_from, turn.rapidity_stop]
     return tuple(values)

@@ -40,7 +40,7 @@ import importlib
 #: each public name, and the module of this package that defines it
 _HOME = {
     "PANEL_LETTERS": "rodparadox.physics.frames", "relative_velocity": "rodparadox.physics.frames",
-    **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_into", "figure_bytes", "natural_size", "style_context",
+    **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_into", "draw_panel_into", "figure_bytes", "natural_size", "style_context",
                      "FIGURE_METADATA"), "rodparadox.render.diagram"),
     **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
                     "rodparadox.render.strip"),

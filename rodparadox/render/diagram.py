@@ -22,7 +22,7 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import PANEL_LETTERS, Frame
 from rodparadox.render.styles import FORMATS, STYLES, Style
 from rodparadox.render.layers import Options, legend_entries
-from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of
+from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of, tick_step
 from rodparadox.render.panel import draw_panel
 from rodparadox.tolerances import FIT_SLACK
 
@@ -70,14 +70,43 @@ def _checked(frames: Sequence[Frame]) -> tuple[Frame, ...]:
     return tuple(frames)
 
 
-def draw(history: History, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Figure:
-    """The figure of a scenario's history: one panel per frame, side by side, in the given order."""
+def draw(history: History, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Diagram:
+    """The diagram of a scenario's history: one panel per frame, side by side, in the given order, in a new Figure
+    sized by the layout (`Diagram.figure`), with its panels and every layer's artists."""
     frames = _checked(frames)
     with style_context(style) as st:
         builder = _Builder(history, frames, st, options)
         layout = builder.lay_out(Page.of_style(st))
         figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
-        return builder.render(figure, layout, layout.width, layout.height).figure
+        return builder.render(figure, layout, layout.width, layout.height)
+
+
+def draw_panel_into(ax, history: History, frame: Frame, style: str = "default", options: Options = Options(),
+                    letter: str = "a") -> Mapping[str, tuple]:
+    """Draw one frame's panel of a history into a caller's Axes (as mplhep's functions do); returns its artists by
+    layer name (`layers.LAYERS`: `rod`, `particle-A`, `impacts`, ...), labels included.
+
+    The panel is the one `draw` makes for that frame: equal scales, ticks, axis names and title, every enabled
+    layer, labels placed clear of the lines. Its layout is computed for the Axes' size on its figure, which the
+    caller keeps; the legend and the figure's title are the caller's (`legend_entries` gives the handles). Draw
+    inside `style_context(style)` and save inside it too to get the style's fonts.
+    """
+    dpi = ax.get_figure(root=True).dpi
+    width, height = ax.bbox.width * 72 / dpi, ax.bbox.height * 72 / dpi  # the Axes' size in points
+    with style_context(style) as st:
+        builder = _Builder(history, (frame,), st, options)
+        metrics = builder.lay_out(Page(4 * width, 4 * height, height)).metrics  # type sizes and tick lengths
+        [p] = builder.panels
+        # the Axes is the panel: the data box padded to the Axes' shape (equal scales), ticks at one nice step
+        p.width, p.height = width, height
+        x0, x1, t0, t1 = p.data_box
+        spare = (width / height) * (t1 - t0) - (x1 - x0)
+        p.box = [x0 - spare / 2, x1 + spare / 2, t0, t1] if spare >= 0 else \
+            [x0, x1, t0 + spare * height / width / 2, t1 - spare * height / width / 2]
+        p.title_lines = metrics.wrap(p.title, width)
+        step = tick_step(p.box)
+        ax.set_gid(f"{letter}-axes")
+        return MappingProxyType(draw_panel(ax, p, (step, step), metrics, history, st, options, builder.clock_step))
 
 
 def natural_size(history: History, frames: Sequence[Frame], width: float, height: float, style: str = "default",

@@ -215,7 +215,8 @@ class MaterialLines(Layer):
 
 @dataclass(frozen=True)
 class RodNow(Layer):
-    """Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only."""
+    """Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only (a rigid rod's: a model
+    without them, `history.rigid` None, draws none)."""
 
     name = "rod-now"
 
@@ -223,9 +224,11 @@ class RodNow(Layer):
         return options.rod_now
 
     def draw(self, ax, panel):
+        if panel.history.rigid is None:
+            return LayerArtists()
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
-        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in rod.now_lines(panel.history)]
+        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.rigid.now_lines()]
         drawn, segments = [], []
         for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
             segment = np.array([[a.x, a.t], [b.x, b.t]]) / panel.L

@@ -20,7 +20,7 @@ from matplotlib.ticker import FuncFormatter
 
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import PANEL_LETTERS, Frame
-from rodparadox.physics.ledger import ZERO, impact_entries, initial_total, ledger_slice
+from rodparadox.physics.ledger import ZERO, impact_entries
 from rodparadox.io.ledger_report import slice_times
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render import axis_label, coordinate_names, frame_symbol, style_context
@@ -39,7 +39,7 @@ def _series(history: History, frame: Frame):
     for t in slice_times(history, frame):
         if times and t - times[-1] <= SAME_INSTANT * (scale + abs(t)):
             continue  # one instant, boosted twice (two impacts simultaneous in this frame)
-        s = ledger_slice(history, eta, t)
+        s = history.energy_momentum(eta, t)
         bodies = dict(s.bodies)
         here = [e for e in entries if abs(e.t - t) <= SAME_INSTANT * (scale + abs(t))]
         if here:
@@ -93,7 +93,7 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
         letter = PANEL_LETTERS[k]
         r, c = divmod(k, per_row)
         times, values, entries = _series(history, frame)
-        total = initial_total(history, frame.rapidity)
+        total = history.initial_total(frame.rapidity)
         t = times / L
         top = None
         x0 = gutter + c * (column_w + gutter + 14)

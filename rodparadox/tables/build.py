@@ -17,7 +17,7 @@ from typing import Sequence
 from rodparadox.tables.table import Cell, Table
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
-from rodparadox.physics.ledger import impact_entries, initial_total, ledger_slice, rounding_zero, turn_times
+from rodparadox.physics.ledger import impact_entries, rounding_zero
 from rodparadox.numbers import MINUS, coordinate_format, exact, fraction_text, impact_name, number_text, velocity_format
 from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 from rodparadox.tolerances import ONE_INSTANT
@@ -67,7 +67,7 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
 
 def _zero_below(history: History, frame: Frame) -> float:
     """Differences of totals below this are rounding (`ledger.rounding_zero`)."""
-    return rounding_zero(initial_total(history, frame.rapidity))
+    return rounding_zero(history.initial_total(frame.rapidity))
 
 
 def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
@@ -98,7 +98,7 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
 def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
     """The middle of each stretch of the frame's time between consecutive changes (impacts, a turn's start or end)."""
     eta = frame.rapidity
-    changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(turn_times(history, eta)))
+    changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(history.rigid.turn_times(eta)))
     scale = history.scenario.L + max((abs(t) for t in changes), default=0.0)
     return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > ONE_INSTANT * scale)
 
@@ -108,7 +108,7 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
     zero = _zero_below(history, frame)
     rows = []
     for t in hidden_instants(history, frame):
-        hidden = ledger_slice(history, frame.rapidity, t).hidden
+        hidden = history.energy_momentum(frame.rapidity, t).hidden
         E, p = number_text(hidden.E, zero), number_text(hidden.p, zero)
         if E == "0" and p == "0":
             continue
@@ -128,7 +128,7 @@ def slices_table(history: History, frame: Frame, times: Sequence[float], blank: 
     zero = _zero_below(history, frame)
     rows = []
     for t in times:
-        s = ledger_slice(history, frame.rapidity, t)
+        s = history.energy_momentum(frame.rapidity, t)
         named = [(f"particle {name}" if name != "rod" else "rod, kinetic", em) for name, em in s.bodies]
         named += [("kinetic total", s.kinetic), ("hidden", s.hidden)]
         for k, (body, em) in enumerate(named):
