@@ -63,7 +63,7 @@ FIT_SLACK = 1e-6
 
 #: a printed number below this fraction of its table's scale (the largest coordinate; a frame's kinetic energy
 #: and momentum for a difference of totals) is rounding, printed 0: double precision carries 16 digits, and the
-#: engine's events are exact to about 1e-9 relative at its bounds (README)
+#: engine's events are exact to about 1e-9 relative at its bounds (README, "Scenario files")
 PRINTED_ZERO = 1e-12
 #: a fraction stands for a float within this relative distance (the engine's rounding is about 1e-15 relative)
 FRACTION_MATCH = 1e-12

@@ -1,5 +1,5 @@
-"""Boost mode (README, "Animating"): one panel over fixed axes whose frame runs smoothly from one velocity to
-another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
+"""Boost mode (README, "The paradox in motion"): one panel over fixed axes whose frame runs smoothly from one
+velocity to another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
 module only after every input has been checked.
 
 The world-sheet, the world-lines of the particles and of the rod's ends, and the impacts' markers are `plot`'s

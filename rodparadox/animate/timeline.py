@@ -1,4 +1,5 @@
-"""The timeline of an animation: what each panel shows at each instant (README, "Animating"). Pure, no matplotlib.
+"""The timeline of an animation: what each panel shows at each instant (README, "The paradox
+in motion"). Pure, no matplotlib.
 
 Two modes:
 

@@ -1,4 +1,5 @@
-"""What a handout and a worksheet say, as `document` blocks (issue 9): `build`. Pure: no matplotlib, no LaTeX.
+"""What a handout and a worksheet say, as `document` blocks (README, "Teaching handouts"): `build`. Pure: no
+matplotlib, no LaTeX.
 
 `build` turns scenarios' histories into a `document.Handout`: per scenario a
 heading, a set-up paragraph, the diagram with its caption, an explanation, the
