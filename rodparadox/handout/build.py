@@ -32,11 +32,11 @@ from typing import Sequence
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
-from rodparadox.handout.words import frame_name, listed, time_name, with_primes
+from rodparadox.handout.words import listed, time_name, with_primes
 from rodparadox.handout.worksheet import questions
 from rodparadox.numbers import exact
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, frame_word, moving_frame, paper_frames
+from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
 

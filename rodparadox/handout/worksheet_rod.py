@@ -9,11 +9,11 @@ from __future__ import annotations
 import math
 
 from rodparadox.handout.reading import Reading, zigzags
-from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, frame_name, impact_names, in_c, in_l,
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, impact_names, in_c, in_l,
                                       in_l_approx, listed, numeral_approx, pushed, summand, time_name)
 from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
 from rodparadox.physics.engine import Impact
-from rodparadox.physics.frames import Frame, rest_frame
+from rodparadox.physics.frames import Frame, frame_name, rest_frame
 from rodparadox.physics.ledger import initial_total, ledger_slice
 from rodparadox.physics.rod import rod_slice
 from rodparadox.tables import build as tables

@@ -114,6 +114,12 @@ def frame_symbol(frame: "Frame") -> str:
     return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
 
 
+def frame_name(frame: "Frame") -> str:
+    """The frame in running text: S, S′, or "the frame u = 0.3" (a handout's sentences, a strip's readout)."""
+    symbol = frame_symbol(frame)
+    return symbol if frame.name in FRAME_NAMES else f"the frame {symbol}"
+
+
 def frame_heading(frame: "Frame") -> str:
     """The frame as the text tables head it (ASCII): `frame rest (S, the rod's rest frame)`, `frame moving (S',
     where the rod first moves at +v)`, `frame u=0.3`."""

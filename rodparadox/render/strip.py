@@ -31,12 +31,12 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame
+from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
 from rodparadox.render.styles import STYLES, Style
-from rodparadox.render.text import coordinate_names, frame_symbol
+from rodparadox.render.text import coordinate_names
 from rodparadox.tolerances import ONE_INSTANT, STEP_ROUNDING
 
 #: the print style's colour map (`Style.velocity_colour_map`): a grey ramp, light (slower) to dark (faster), whose
@@ -98,10 +98,8 @@ def readout_text(strip: Strip, frame: Frame, L: float) -> str:
     """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
     now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
-    symbol = frame_symbol(frame)
-    where = symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
     lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
-    return f"{clock} = {shown(strip.t / L, 4)} L in {where}{lit}"
+    return f"{clock} = {shown(strip.t / L, 4)} L in {frame_name(frame)}{lit}"
 
 
 def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
