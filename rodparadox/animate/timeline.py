@@ -1,4 +1,5 @@
-"""The timeline of an animation: what each panel shows at each instant (README, "Animating"). Pure, no matplotlib.
+"""The timeline of an animation: what each panel shows at each instant (README, "The paradox
+in motion"). Pure, no matplotlib.
 
 Two modes:
 
@@ -143,7 +144,7 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
     """The frames of boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
     from rodparadox.errors import FrameError
-    from rodparadox.physics.frames import frame_of_velocity, named_frame
+    from rodparadox.physics.frames import frame_of_word
 
     spec = spec.strip()
     if spec == "both":
@@ -154,15 +155,15 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
                           "(each rest, moving or a velocity U relative to S), e.g. rest..moving, got {value!r}.")
     ends = []
     for part in (p.strip() for p in parts):
-        if part in ("rest", "moving"):
-            ends.append(named_frame(part, v))
-            continue
         try:
-            ends.append(frame_of_velocity(float(part) + 0.0))
-        except (ValueError, FrameError) as e:
-            reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
+            end = frame_of_word(part, v)
+            reason = None if end is not None else f"not a velocity: {part!r}"
+        except FrameError as e:
+            reason = str(e)
+        if reason is not None:
             raise OptionError("frame", spec, template="{what}: each end of A..B must be rest, moving or a velocity "
-                              "U relative to S; {reason}.", end=part, reason=reason.rstrip(".")) from None
+                              "U relative to S; {reason}.", end=part, reason=reason.rstrip("."))
+        ends.append(end)
     if ends[0].velocity == ends[1].velocity:
         raise OptionError("frame", spec, template="{what}: {value} boosts from a frame to itself; give two "
                           "different frames.")
