@@ -1,0 +1,115 @@
+"""Extreme inputs (issue 15): the cost of a figure is bounded by what it shows, whatever v, L, gaps and masses;
+boost mode's axes stay readable at tiny v. Memory is measured through a cheap proxy: the points drawn."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from rodparadox import render
+from rodparadox.animate.timeline import boost_ends, timeline
+from rodparadox.io.scenario import load
+from rodparadox.physics import kinematics
+from rodparadox.physics.engine import run
+from rodparadox.physics.frames import paper_frames
+from rodparadox.physics.kinematics import Event, WorldLine
+
+
+def history(name, **overrides):
+    return run(load(name).with_overrides(**overrides))
+
+
+# --- 1: calibration hyperbolae -----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("v", [0.6, 0.99999, 0.9999999])
+def test_hyperbolae_are_sampled_inside_the_box_with_a_bounded_number_of_points(v):
+    """At v = 0.9999999 fig2's S' panel is 1e7 L wide; sampled to 1e-4 L over whole branches it took 16.9 GB.
+    Six radii x two families x two sides, each piece inside the box: a few hundred points each at most."""
+    diagram = render.draw(history("fig2", v=v), paper_frames(v), options=render.Options(hyperbolae=True))
+    total = 0
+    for letter, curves in diagram.artists["hyperbolae"].items():
+        ax = curves[0].axes
+        (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
+        slack = 1e-9 * max(x1 - x0, t1 - t0)
+        for curve in curves:
+            xs, ts = curve.get_data()
+            total += len(xs)
+            assert ((xs >= x0 - slack) & (xs <= x1 + slack) & (ts >= t0 - slack) & (ts <= t1 + slack)).all()
+            # still on its hyperbola t^2 - x^2 = +-k^2
+            k2 = abs(ts[0] ** 2 - xs[0] ** 2)
+            assert np.allclose(np.abs(ts ** 2 - xs ** 2), k2, rtol=1e-6, atol=1e-9 * max(x1 - x0, t1 - t0) ** 2)
+    assert 0 < total < 10_000
+
+
+# --- 2: clocks -----------------------------------------------------------------------------------------------
+
+def test_clock_ticks_are_sought_only_inside_the_window(monkeypatch):
+    """A clock at rest: tau = t. Ticks in the window [1e12, 1e12 + 10] at step 1 are the eleven events t = 1e12 + k,
+    found without walking the 1e12 ticks from t = 0 (which never ended)."""
+    calls = []
+    original = kinematics._at_proper_time
+    monkeypatch.setattr(kinematics, "_at_proper_time", lambda piece, tau: calls.append(tau) or original(piece, tau))
+    ticks = kinematics.proper_time_events(WorldLine(Event(0.0, 0.0), 0.0), 1.0, 1e12, 1e12 + 10)
+    assert [tau for tau, _ in ticks] == [1e12 + k for k in range(11)]
+    assert [(e.x, e.t) for _, e in ticks] == [(0.0, 1e12 + k) for k in range(11)]
+    assert len(calls) <= 11
+
+
+def test_clocks_of_a_far_slow_particle_are_few(tmp_path):
+    """B 1e6 L away at 1e-6 reaches the rod at t = 1e12 L: the clocks in the window, at most a dozen or so per
+    world-line and panel (the step is a tenth of the longest panel's time span)."""
+    scenario = tmp_path / "far.yaml"
+    scenario.write_text("name: far\nv: 0.6\nparticles:\n  A:\n    gap: 0.5\n"
+                        "  B:\n    gap: 1.0e+6\n    speed: 1.0e-6\n")
+    v = 0.6
+    diagram = render.draw(run(load(str(scenario))), paper_frames(v), options=render.Options(proper_time=True))
+    for letter, marks in diagram.artists["clocks"].items():
+        for mark in marks:
+            assert len(mark.get_xdata()) <= 25
+
+
+# --- 3: boost mode at tiny v ---------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("v", [1e-6, 1e-5])
+def test_boost_at_tiny_v_draws_real_times_and_no_offset(v):
+    """fig2 at v = 1e-6 happens near t = 5e5 L: the t ticks read 500000.0 and so on, no "+5e5" offset over the
+    title, and the frame is drawn without FreeType's raster overflow (axis names far outside are hidden)."""
+    from rodparadox.animate.boost_scene import BoostScene
+
+    h = history("fig2", v=v)
+    line = timeline(h, boost_ends("both", v), "boost", 4)
+    with render.style_context("default"):
+        scene = BoostScene(h, line, "default")
+        for k in range(4):
+            scene.update(k)
+            scene.canvas.draw()
+        t_labels = [t.get_text() for t in scene.ax.get_yticklabels() if t.get_text()]
+        assert scene.ax.yaxis.get_offset_text().get_text() == ""
+        assert scene.ax.xaxis.get_offset_text().get_text() == ""
+        centre = 0.5 / v  # the impacts lie near t = L / (2 v)
+        assert all(abs(float(text.replace("\N{MINUS SIGN}", "-")) - centre) < 5 for text in t_labels)
+        assert not any(name.get_visible() for (frame, axis), name in scene.names.items() if axis == "x")
+
+
+def test_boost_at_a_window_1e12_away_writes_each_tick_with_its_power_of_ten(tmp_path):
+    """Real values whose plain digits would not fit: each label its own 2×10¹¹ (as plot writes them)."""
+    from rodparadox.animate.boost_scene import BoostScene
+
+    scenario = tmp_path / "far.yaml"
+    scenario.write_text("name: far\nv: 0.6\nparticles:\n  A:\n    gap: 0.5\n"
+                        "  B:\n    gap: 1.0e+6\n    speed: 1.0e-6\n")
+    h = run(load(str(scenario)))
+    line = timeline(h, boost_ends("both", 0.6), "boost", 3)
+    with render.style_context("default"):
+        scene = BoostScene(h, line, "default")
+        scene.update(1)
+        scene.canvas.draw()
+        labels = [t.get_text() for t in scene.ax.get_yticklabels() if t.get_text()]
+        assert "1\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT ONE}\N{SUPERSCRIPT TWO}" in labels
+        # x labels do not touch: each narrower than the distance between ticks
+        renderer = scene.canvas.get_renderer()
+        boxes = sorted((t.get_window_extent(renderer) for t in scene.ax.get_xticklabels() if t.get_text()),
+                       key=lambda b: b.x0)
+        assert all(a.x1 < b.x0 for a, b in zip(boxes, boxes[1:]))
