@@ -113,3 +113,54 @@ def test_boost_at_a_window_1e12_away_writes_each_tick_with_its_power_of_ten(tmp_
         boxes = sorted((t.get_window_extent(renderer) for t in scene.ax.get_xticklabels() if t.get_text()),
                        key=lambda b: b.x0)
         assert all(a.x1 < b.x0 for a, b in zip(boxes, boxes[1:]))
+
+
+# --- 6: fractions and zeros at v = 0.9999999 seen from u = 0.9999999 ----------------------------------------------
+
+def test_a_fraction_is_written_only_where_the_match_means_something():
+    """17/12 and 15/17 (numbers of order 1, matched to 1e-15) stay fractions; 909999955/91 for a number near 1e7,
+    which FRACTION_MATCH (1e-12 of it: 1e-5) lets match some q <= 100 by chance once in sixteen, does not."""
+    from rodparadox.numbers import fraction_text
+
+    assert fraction_text(17 / 12) == "17/12"
+    assert fraction_text(-15 / 17) == "\N{MINUS SIGN}15/17"
+    assert fraction_text(909999955 / 91) is None
+    assert fraction_text(-949999953 / 95) is None
+    assert fraction_text(4250 / 3) == "4250/3"  # thirds of a thousand: one chance in a hundred million
+
+
+def test_events_tables_at_the_extreme_frame_carry_no_chance_fractions():
+    from click.testing import CliRunner
+    from sears_paradox_cli.main import main
+
+    for fmt in ("markdown", "latex"):
+        result = CliRunner().invoke(main, ["events", "fig2", "--v", "0.9999999", "--frame-velocity", "0.9999999",
+                                           "--format", fmt])
+        assert result.exit_code == 0, result.output
+        assert "/91" not in result.output and "/95" not in result.output
+
+
+def test_the_handout_reads_a_time_against_its_own_impacts_rounding():
+    """B₁ (B from x = L at speed v to the right end x = L/2) is at t = L/(2v); in the frame u = v,
+    t_u = g (t - v x) = g (1 - v^2) L / (2 v) = L / (2 g v) = 2.236e-4 L at v = 0.9999999: far above the rounding
+    of B₁'s own coordinates (1e-9 of about L, stretched by g (1 + v) ~ 4472), though below 1e-9 of A₁'s 1e7 L,
+    against which the handout read it as 0."""
+    from rodparadox.handout.reading import Reading
+    from rodparadox.physics.frames import frame_of_velocity
+
+    v = 0.9999999
+    g = 1 / math.sqrt(1 - v * v)
+    h = history("fig2", v=v)
+    frame = frame_of_velocity(v)
+    r = Reading(h, (frame,))
+    b1 = next(i for i in h.impacts if i.label == "B1")
+    assert r.length(r.t(b1, frame), [b1], frame) == pytest.approx(1 / (2 * g * v), rel=1e-5)
+    assert "2.236" in r.when([b1], frame)
+    from rodparadox.handout.narrative import _simultaneity
+    assert "(tᵤ = 0)" not in _simultaneity(r)
+    assert "/91" not in _simultaneity(r)
+    # the rounding-sized x' = 0 of A₁ in Fig. 1 (6e-17) is still 0
+    f1 = history("fig1", v=0.6)
+    r1 = Reading(f1, (frame_of_velocity(-0.6),))
+    a1 = next(i for i in f1.impacts if i.label == "A1")
+    assert abs(r1.x(a1, r1.frames[0])) < 1e-12 and r1.length(r1.x(a1, r1.frames[0]), [a1], r1.frames[0]) == 0.0
