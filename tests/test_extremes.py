@@ -164,3 +164,48 @@ def test_the_handout_reads_a_time_against_its_own_impacts_rounding():
     r1 = Reading(f1, (frame_of_velocity(-0.6),))
     a1 = next(i for i in f1.impacts if i.label == "A1")
     assert abs(r1.x(a1, r1.frames[0])) < 1e-12 and r1.length(r1.x(a1, r1.frames[0]), [a1], r1.frames[0]) == 0.0
+
+
+# --- 10: one scenario, one verdict --------------------------------------------------------------------------------
+
+HEAVY = ("name: heavy\nv: 0.9999999\nparticles:\n  A:\n    mass: 1.0e+9\n    gap: 0.5\n"
+         "  B:\n    mass: 1.0e-9\n    gap: 0.5\n")
+
+
+@pytest.mark.parametrize("command", [["events"], ["export"], ["plot"], ["ledger"], ["ledger", "--format", "text"],
+                                     ["animate"], ["animate", "--mode", "boost"], ["handout"]])
+def test_every_command_gives_the_heavy_scenario_the_same_verdict(tmp_path, monkeypatch, command):
+    """Mass 1e9 against 1e-9 at v = 0.9999999: B, struck together with A's blow, leaves at a rapidity whose tanh is
+    1.0 in double precision (its gap to c, 2 / (e^(2 phi) + 1), is about 2.5e-22). Every command refuses it with
+    the same sentence, exit 2, nothing written."""
+    from click.testing import CliRunner
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "heavy.yaml").write_text(HEAVY)
+    out = tmp_path / "out"
+    out.mkdir()
+    extra = [] if command[0] in ("events", "export") or "--format" in command else ["-o", str(out)]
+    result = CliRunner().invoke(main, [command[0], "heavy.yaml", *command[1:], *extra])
+    assert result.exit_code == 2, result.output
+    assert result.output.startswith("Error: in frame rest the particle B's velocity after B1 is within 2.5e-22 of c")
+    assert list(out.iterdir()) == []
+
+
+def test_the_ledger_keeps_the_rods_rest_energy_beside_a_particle_of_2e12():
+    """A of mass 1e9 at v = 0.9999999 (g = 2236.068: E = 2.236068e12) strikes the rod at rest in S: the rod's rest
+    energy 1 is no rounding of a difference and is printed 1, not 0."""
+    from rodparadox.io.ledger_report import to_text
+    from rodparadox.io.scenario import parse
+    from rodparadox.physics.frames import rest_frame
+    from rodparadox.tables.build import ledger_table
+
+    s = run(parse("name: heavyA\nv: 0.9999999\nparticles:\n  A:\n    mass: 1.0e+9\n    gap: 0.5\n", "heavyA.yaml", "heavyA"))
+    text = to_text(s, (rest_frame(),))
+    row = next(line for line in text.splitlines() if line.strip().startswith("rod, kinetic"))
+    assert row.split()[2:] == ["1", "0", "1", "0"]
+    before = next(line for line in text.splitlines() if line.strip().startswith("rod, dynamical"))
+    assert before.split()[2:4] == ["1", "0"]
+    table = ledger_table(s, rest_frame())
+    rod = next(row for row in table.rows if row[2].text == "rod")
+    assert rod[3].text == "1"

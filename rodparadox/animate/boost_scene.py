@@ -93,8 +93,8 @@ class BoostScene:
         for axis in (ax.xaxis, ax.yaxis):
             _real_tick_labels(axis)
         widest_t = max(text_size(label, fs)[0] for label in _tick_labels(ax.yaxis))
-        # the t labels, the tick and its pad, the axis name's pad and height, a margin: the room they need
-        grow = max(0.0, (widest_t + st.tick_length + 3.5 + 4.0 + 1.1 * fs + 2.0) / 72 - left)
+        # the t labels, the tick and its pad, the axis name's pad and the height of its letters: the room they need
+        grow = max(0.0, (widest_t + st.tick_length + 3.5 + 4.0 + 0.8 * 1.1 * fs) / 72 - left)
         if grow > 0.0:
             left, width = left + grow, width + grow
             figure.set_size_inches(width, height)
@@ -241,7 +241,7 @@ def _real_tick_labels(axis) -> None:
 def _thin_x_ticks(ax, length: float, fs: float) -> None:
     """Fewer x ticks where their labels (long: real places far from the origin) would touch on the axis's length
     (points); the locator is left alone where they fit."""
-    gap = 0.8 * fs
+    gap = 0.5 * fs  # labels closer than half an em run together
     lo, hi = sorted(ax.get_xlim())
     for bins in range(8, 0, -1):
         values = sorted(ax.xaxis.get_major_locator()())
