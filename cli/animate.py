@@ -66,7 +66,7 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     count = image_count(seconds, fps)
     if job.fmt == "mp4":
         require_ffmpeg()
-    history = run_scenario(job.scenario, job.name)
+    history = run_scenario(job.scenario, job.name, job.frames[0])
     planned.prepare([job], described, output)
     line = timeline(history, job.frames[0], mode, count)
 

@@ -117,15 +117,24 @@ def with_options(scenario, v: float | None, L: float | None):
         raise words.scenario_option_error(e, [k for k, value in (("v", v), ("L", L)) if value is not None]) from None
 
 
-def run_scenario(scenario, source: str):
-    """Run a scenario; `source` is the name or path the user gave, to start any error sentence."""
+def run_scenario(scenario, source: str, frames=()):
+    """Run a scenario; `source` is the name or path the user gave, to start any error sentence.
+
+    The one verdict every command gives a scenario: it runs, and in every frame the command shows (`frames`)
+    every velocity is below c in double precision (`frames.check_below_c`), so `plot`, `animate` and `ledger`
+    refuse what `events`, `export` and `handout` refuse. A boost's frames in between need no check: a body's
+    speed is largest at one of its ends."""
     from rodparadox.physics.engine import run
+    from rodparadox.physics.frames import check_below_c, view
     from rodparadox.errors import ScenarioError
 
     try:
-        return run(scenario)
+        history = run(scenario)
     except ScenarioError as e:  # the engine's sentence does not say which scenario: say it here
         raise BadInput(f"{source}: {e}") from None
+    for frame in frames:
+        check_below_c(view(history, frame))
+    return history
 
 
 def checked_frame_velocity(u: float | None) -> float | None:

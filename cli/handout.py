@@ -61,7 +61,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
                                 together=True, default_style=HANDOUT_STYLE)
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=[paper] if paper != HANDOUT_PAPER else [])
-    histories = [run_scenario(s, name) for s, name in zip(job.scenarios, job.names)]
+    histories = [run_scenario(s, name, frames) for s, name, frames in zip(job.scenarios, job.names, job.frames)]
     planned.prepare([job], described, output)
 
     from rodparadox.handout.build import build

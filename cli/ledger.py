@@ -107,7 +107,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         from rodparadox.tables import build as tables
 
         text = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
-                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](run_scenario(s, scenario),
+                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](run_scenario(s, scenario, frames),
                                                                                     frames, times)
         if output in (None, "-"):
             emit(text, nl=False)
@@ -120,7 +120,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
                                                    "every instant.")
     described = planned.Outputs(formats=FIGURE_FORMATS, default="svg", kind="ledger")  # as plot's, named _ledger
     jobs = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style)
-    histories = [run_scenario(job.scenario, job.name) for job in jobs]
+    histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
     from rodparadox import render

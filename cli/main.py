@@ -100,7 +100,7 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    history = run_scenario(s, scenario)
+    history = run_scenario(s, scenario, frames)
     if fmt == "text":
         from rodparadox.io.export import to_table
 
@@ -137,7 +137,7 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
         check_target(output)  # before the work: a missing folder is said at once
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    text = (to_json if fmt == "json" else to_csv)(run_scenario(s, scenario), frames)
+    text = (to_json if fmt == "json" else to_csv)(run_scenario(s, scenario, frames), frames)
     if output == "-":
         emit(text, nl=False)
         return

@@ -61,7 +61,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
-    histories = [run_scenario(job.scenario, job.name) for job in jobs]
+    histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
     from rodparadox import render  # matplotlib: only now, after every input has been checked

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import re
 
-from rodparadox.tolerances import FRACTION_MATCH, PRINTED_ZERO, STEP_ROUNDING
+from rodparadox.tolerances import FRACTION_CHANCE, FRACTION_MATCH, PRINTED_ZERO, STEP_ROUNDING
 
 MINUS = "\N{MINUS SIGN}"
 TIMES = "\N{MULTIPLICATION SIGN}"
@@ -166,7 +166,9 @@ FRACTION_DENOMINATOR = 100
 
 
 def fraction(value: float, largest_denominator: int = FRACTION_DENOMINATOR) -> tuple[int, int] | None:
-    """(p, q) with q > 1 if `value` is p/q to FRACTION_MATCH relative, q <= `largest_denominator` and the decimal
+    """(p, q) with q > 1 if `value` is p/q to FRACTION_MATCH relative, q <= `largest_denominator`, the match is
+    meaningful in double precision (a number that is no fraction would come that close to one with a chance
+    below FRACTION_CHANCE: a large number, matched to FRACTION_MATCH of its size, never is) and the decimal
     of p/q never ends (q has a prime factor other than 2 and 5: 17/12, 1/3), else None.
 
     A decimal that ends (5/4 = 1.25, 73/100 = 0.73) says everything already; 1.416667 does not say 17/12.
@@ -176,9 +178,15 @@ def fraction(value: float, largest_denominator: int = FRACTION_DENOMINATOR) -> t
     if not math.isfinite(value):
         return None
     f = Fraction(value).limit_denominator(largest_denominator)
-    if f.denominator == 1 or abs(value - f.numerator / f.denominator) > FRACTION_MATCH * max(abs(value), 1e-300):
+    match = FRACTION_MATCH * max(abs(value), 1e-300)  # how far rounding may have moved a number of this size
+    if f.denominator == 1 or abs(value - f.numerator / f.denominator) > match:
         return None
     q = f.denominator
+    # meaningful only if a number that is no fraction would seldom come this close to one: fractions with
+    # denominators up to q lie about 3 q^2 / pi^2 to a unit, so a chance match has probability about
+    # 2 match 3 q^2 / pi^2 (909999955/91 matched to 1e-12 of 1e7 would be one in sixteen)
+    if 2.0 * match * 3.0 * q * q / math.pi ** 2 > FRACTION_CHANCE:
+        return None
     for prime in (2, 5):
         while q % prime == 0:
             q //= prime

@@ -67,3 +67,6 @@ FIT_SLACK = 1e-6
 PRINTED_ZERO = 1e-12
 #: a fraction stands for a float within this relative distance (the engine's rounding is about 1e-15 relative)
 FRACTION_MATCH = 1e-12
+#: ... and only where a number that is no fraction would match one that well with at most this chance: with
+#: FRACTION_MATCH relative, numbers up to about 1e4 keep twelfths, but 909999955/91 for a t near 1e7 is refused
+FRACTION_CHANCE = 1e-6

@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.ticker import FuncFormatter, MaxNLocator, ScalarFormatter
 
 from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import BoostTimeline
@@ -28,6 +29,7 @@ from rodparadox.physics.model import frame_velocity
 from rodparadox.render.layers import Impacts, Options, PanelContext, Particle, RodEnds, WorldSheet, line_kwargs
 from rodparadox.render.layout import font_sizes
 from rodparadox.render.styles import STYLES
+from rodparadox.render.text import text_size, tick_text
 
 #: plot's layers drawn at each instant: the world-sheet (under the axes of S and S'), then the bodies (the
 #: particles under the rod's ends), then the impacts' markers (over the bodies)
@@ -83,6 +85,18 @@ class BoostScene:
         self.box = (x0, x1, t0, t1)
         ax.set_xlim(x0, x1)
         ax.set_ylim(t0, t1)
+        # real times and places on the ticks, never an offset (+5e4 over the title) or a shared power of ten: a
+        # boost at tiny v shows a window far from the origin; the figure widens for the t labels, x ticks thin out
+        for axis in (ax.xaxis, ax.yaxis):
+            _real_tick_labels(axis)
+        widest_t = max(text_size(label, fs)[0] for label in _tick_labels(ax.yaxis))
+        # the t labels, the tick and its pad, the axis name's pad and the height of its letters: the room they need
+        grow = max(0.0, (widest_t + st.tick_length + 3.5 + 4.0 + 0.8 * 1.1 * fs) / 72 - left)
+        if grow > 0.0:
+            left, width = left + grow, width + grow
+            figure.set_size_inches(width, height)
+            ax.set_position((left / width, bottom / height, side / width, side / height))
+        _thin_x_ticks(ax, side * 72, fs)
         ax.set_xlabel("x/L in the frame of the instant", fontsize=1.1 * fs)
         ax.set_ylabel("t/L", fontsize=1.1 * fs)
         ax.tick_params(labelsize=fs)
@@ -135,14 +149,20 @@ class BoostScene:
             u = render.relative_velocity(frame_velocity(other, v), frame.velocity)  # that frame, seen here
             dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
             line.set_data([-reach * dx, reach * dx], [-reach * dt, reach * dt])
-            self.names[(other, axis)].set_position(_inside_end(dx, dt, box))
+            end = _inside_end(dx, dt, box)  # None: the axis's positive half misses the panel (a window far away)
+            self.names[(other, axis)].set_visible(end is not None)
+            if end is not None:
+                self.names[(other, axis)].set_position(end)
         for name, text in self.particles.items():  # beside the world-line, as high up as it is inside the panel
             place = _letter_place(history.worldline(name).seen_from(eta), L, box)
             text.set_visible(place is not None)
             if place is not None:
                 text.set_position(place)
         for text, e in zip(self.labels, panel.events()):
-            text.set_position((e[2] + 0.025 * (box[1] - box[0]), e[3]))
+            place = (e[2] + 0.025 * (box[1] - box[0]), e[3])
+            # a text far outside the panel is not drawn: Agg's glyph rasteriser overflows at such coordinates
+            text.set_visible(_near(place, box))
+            text.set_position(place)
         self.title.set_text(_boost_title(frame))
         return (*sheet, *self.axes_of.values(), *bodies, *impacts, *self.labels, *self.names.values(),
                 *self.particles.values(), self.title)
@@ -170,16 +190,66 @@ def _boost_title(frame: Frame) -> str:
     return f"seen from the frame of velocity {shown(frame.velocity, 3)} relative to S"
 
 
-def _inside_end(dx: float, dt: float, box) -> tuple[float, float]:
+def _inside_end(dx: float, dt: float, box) -> tuple[float, float] | None:
     """Where the axis through the origin along (dx, dt), its positive direction (x: dx > 0, t: dt > 0), leaves
-    the box (x0, x1, t0, t1), pulled in by AXIS_NAME_AT: where the axis's name goes, at its positive end."""
+    the box (x0, x1, t0, t1), pulled in by AXIS_NAME_AT from where it enters the box (from the origin, if that is
+    inside): where the axis's name goes, at its positive end. None if its positive half misses the box."""
     x0, x1, t0, t1 = box
-    limits = [(t1 if dt > 0 else t0) / dt] if dt != 0 else []
-    limits += [(x1 if dx > 0 else x0) / dx] if dx != 0 else []
-    positive = [limit for limit in limits if limit > 0]
-    scale = AXIS_NAME_AT * min(positive) if positive else 0.0
+    lo, hi = 0.0, math.inf  # the positive half's parameters inside the box
+    for d, a, b in ((dt, t0, t1), (dx, x0, x1)):
+        if d == 0.0:
+            if not a <= 0.0 <= b:
+                return None
+            continue
+        s0, s1 = sorted((a / d, b / d))
+        lo, hi = max(lo, s0), min(hi, s1)
+    if not lo < hi:
+        return None
+    scale = lo + AXIS_NAME_AT * (hi - lo)
     return dx * scale, dt * scale
 
 
+def _near(place: tuple[float, float], box) -> bool:
+    """Whether a point lies within the box widened by its size each way: a text there may be seen."""
+    x0, x1, t0, t1 = box
+    return x0 - (x1 - x0) <= place[0] <= x1 + (x1 - x0) and t0 - (t1 - t0) <= place[1] <= t1 + (t1 - t0)
+
+
+def _tick_labels(axis) -> list[str]:
+    """The labels an axis will draw at its present limits, locator and formatter."""
+    lo, hi = sorted(axis.get_view_interval())
+    values = [value for value in axis.get_major_locator()() if lo <= value <= hi]
+    return axis.get_major_formatter().format_ticks(values) or [""]
+
+
+def _real_tick_labels(axis) -> None:
+    """Tick labels that are real coordinates, never an offset (matplotlib's "+5e4", printed over the title) or
+    a shared power of ten: plain numbers, or, past LONGEST_PLAIN_TICK characters, each its own 2.5×10¹¹ at
+    steps large enough for that (`render.text.tick_text`, as plot writes its ticks)."""
+    formatter = ScalarFormatter(useOffset=False)
+    formatter.set_scientific(False)
+    axis.set_major_formatter(formatter)
+    values = sorted(axis.get_major_locator()())
+    if len(values) >= 2 and max(map(len, _tick_labels(axis))) > LONGEST_PLAIN_TICK:
+        step = values[1] - values[0]
+        axis.set_major_formatter(FuncFormatter(lambda value, _pos: tick_text(value, step)))
+
+
+def _thin_x_ticks(ax, length: float, fs: float) -> None:
+    """Fewer x ticks where their labels (long: real places far from the origin) would touch on the axis's length
+    (points); the locator is left alone where they fit."""
+    gap = 0.5 * fs  # labels closer than half an em run together
+    lo, hi = sorted(ax.get_xlim())
+    for bins in range(8, 0, -1):
+        values = sorted(ax.xaxis.get_major_locator()())
+        widest = max(text_size(label, fs)[0] for label in _tick_labels(ax.xaxis))
+        if len(values) < 2 or widest + gap <= length * (values[1] - values[0]) / (hi - lo):
+            return
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=bins, steps=[1, 2, 2.5, 5, 10]))
+        _real_tick_labels(ax.xaxis)
+
+
+#: a tick label longer than this is written as a power of ten where its step allows
+LONGEST_PLAIN_TICK = 9
 #: an axis's name sits this fraction of the way from the origin to where the axis leaves the panel
 AXIS_NAME_AT = 0.86

@@ -167,9 +167,9 @@ def _simultaneity(r: Reading) -> str:
             for f in apart:
                 ordered = sorted(group, key=lambda i: r.t(i, f))
                 first, last = ordered[0], ordered[-1]
-                gap = r.length(r.t(last, f) - r.t(first, f))
+                gap = r.length(r.t(last, f) - r.t(first, f), [first, last], f)
                 details.append(f"in {frame_name(f)}, where {impact_name(first.label)} comes at {r.when([first], f)} "
-                               f"and {impact_name(last.label)} at {in_l(r.length(r.t(last, f)))}, {in_l(gap)} later")
+                               f"and {impact_name(last.label)} at {in_l(r.length(r.t(last, f), [last], f))}, {in_l(gap)} later")
             text += ". They are not simultaneous " + "; nor ".join(details)
         sentences.append(text + ".")
     if not groups:
@@ -180,7 +180,7 @@ def _simultaneity(r: Reading) -> str:
     for f in r.frames:
         steps = []
         for k, (t, group) in enumerate(r.instants(f)):
-            time = r.when(group, f) if k == 0 else in_l(r.length(t))
+            time = r.when(group, f) if k == 0 else in_l(r.length(t, group, f))
             steps.append(f"{impact_names(group)}{' together' if len(group) > 1 else ''} ({time})")
         orders.append(f"in {frame_name(f)} {', then '.join(steps)}")
     sentences.append("In each frame's own time the order is: " + "; ".join(orders) + ".")

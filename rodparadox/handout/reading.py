@@ -54,9 +54,20 @@ class Reading:
     def x(impact: Impact, frame: Frame) -> float:
         return impact.event.seen_from(frame.rapidity).x
 
-    def length(self, value: float) -> float:
-        """A coordinate or time as a multiple of L, rounding-sized values 0 (x′ = 0 of A₁ in Fig. 1 is 6e-17)."""
-        return 0.0 if abs(value) <= ONE_INSTANT * self.scale else value / self.L
+    def length(self, value: float, impacts: Sequence[Impact] = (), frame: Frame | None = None) -> float:
+        """A coordinate or time as a multiple of L, rounding-sized values 0 (x′ = 0 of A₁ in Fig. 1 is 6e-17).
+
+        Rounding is measured against the impacts the value was computed from, where given (`rounding`), else
+        against the whole history's `scale`: in a fast frame one impact may lie 1e7 L out while another's time is
+        2e-4 L, far above its own rounding."""
+        scale = self.rounding(impacts, frame) if impacts and frame is not None else self.scale
+        return 0.0 if abs(value) <= ONE_INSTANT * scale else value / self.L
+
+    def rounding(self, impacts: Sequence[Impact], frame: Frame) -> float:
+        """What the coordinates of these impacts in `frame` are exact relative to: L plus their S coordinates (the
+        engine places them to ONE_INSTANT of that), times the most a boost to the frame can stretch them."""
+        stretch = math.exp(abs(frame.rapidity))
+        return self.L + stretch * max(abs(i.event.x) + abs(i.event.t) for i in impacts)
 
     def same_time(self, a: float, b: float) -> bool:
         return abs(a - b) <= ONE_INSTANT * self.scale
@@ -145,7 +156,7 @@ class Reading:
         impacts the rod takes together but the frame at different instants."""
         times = sorted(self.t(i, frame) for i in impacts)
         distinct = [t for k, t in enumerate(times) if k == 0 or not self.same_time(times[k - 1], t)]
-        return f"{time_name(frame)} = " + listed([in_l(self.length(t), digits) for t in distinct])
+        return f"{time_name(frame)} = " + listed([in_l(self.length(t, impacts, frame), digits) for t in distinct])
 
     def at_instant(self, impact: Impact) -> str:
         """The label of the impact(s) at this impact's event: B₂, or A₁ and B₁ when the rod takes them together."""

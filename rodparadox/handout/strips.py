@@ -120,7 +120,7 @@ def _which_end_first(r: Reading, frame: Frame) -> str:
             before, after = (r.velocity(x + eta, frame) for x in _kink(h.worldline(f"rod_{end}").seen_from(eta), start))
             return f"is struck by {impact_names(r.impacts_at(turn.pivot))} and {_direction(before, after)} at once"
         return _gradually(r.velocity(turn.rapidity_from, frame), r.velocity(turn.rapidity_stop, frame)) + \
-            f" by {time} = {in_l(r.length(stop))}"
+            f" by {time} = {in_l(r.length(stop, r.impacts_at(turn.pivot), frame))}"
 
     def earliest(items: list) -> tuple:
         """The earliest change; among changes at one instant (to rounding), an impact's jump."""
@@ -134,19 +134,20 @@ def _which_end_first(r: Reading, frame: Frame) -> str:
         order.reverse()  # at one instant, the struck end first
     first = order[0]
     start, stop, turn, struck = firsts[first]
+    near = r.impacts_at(turn.pivot)  # what the times of this turn are computed from: their rounding's scale
     if len(order) > 1 and r.same_time(firsts[order[1]][0], start):
         other = order[1]
         o_start, o_stop, o_turn, o_struck = firsts[other]
-        return (f"Both ends start to change velocity at {time} = {in_l(r.length(start))}: the {first} end "
+        return (f"Both ends start to change velocity at {time} = {in_l(r.length(start, near, frame))}: the {first} end "
                 f"{change(first, turn, struck, start, stop)}; the {other} end {change(other, o_turn, o_struck, o_start, o_stop)}"
                 f". The shading shows the velocity spreading along the rod.")
-    text = f"The {first} end moves first, at {time} = {in_l(r.length(start))}: "
+    text = f"The {first} end moves first, at {time} = {in_l(r.length(start, near, frame))}: "
     if struck:
         text += "it " + change(first, turn, struck, start, stop)
     else:
         cause = r.turn_cause(turn)
         strike = "strike" if len(cause) > 1 else "strikes"
-        text += (f"before {impact_names(cause)} {strike} the {turn.pivot_end} end (at {in_l(r.length(turn.pivot.time_in(eta)))}"
+        text += (f"before {impact_names(cause)} {strike} the {turn.pivot_end} end (at {in_l(r.length(turn.pivot.time_in(eta), near, frame))}"
                  f"), it {change(first, turn, struck, start, stop)}, because the rod responds along its own line of "
                  f"simultaneity through {impact_names(cause)}, which reaches the {first} end earlier in {symbol}")
     if len(order) > 1:

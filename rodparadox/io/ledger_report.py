@@ -151,7 +151,9 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
                                 ("rod, dynamical", e.rod_dynamical_before, e.rod_dynamical_after),
                                 ("kinetic total", e.kinetic_before, e.kinetic_after),
                                 ("hidden", e.hidden_before, e.hidden_after)):
-                rows.append([label, num(b.E), num(b.p), num(a.E), num(a.p)])
+                # a body's E is at least its rest energy, never rounding: only differences (hidden) may be
+                energy = num if label == "hidden" else number_text
+                rows.append([label, energy(b.E), num(b.p), energy(a.E), num(a.p)])
             lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {number_text(e.t)}", *_table(rows),
                       f"  impulse to the rod: E {num(e.impulse.E)}, p {num(e.impulse.p)}"]
         if at:
@@ -159,6 +161,7 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
             for t in at:
                 sl = history.energy_momentum(eta, t)
                 values = [em for _, em in sl.bodies] + [sl.kinetic, sl.hidden]
-                rows.append([number_text(t)] + [num(x) for em in values for x in (em.E, em.p)])
+                rows.append([number_text(t)] + [text for k, em in enumerate(values) for text in
+                                                (number_text(em.E) if k < len(values) - 1 else num(em.E), num(em.p))])
             lines += ["", "  slices (each body's kinetic (E, p) at the frame's time t)", *_table(rows, left=0)]
     return "\n".join(lines) + "\n"

@@ -256,7 +256,9 @@ def proper_time_events(worldline: WorldLine, step: float, t_lo: float, t_hi: flo
     Proper time is counted from the world-line's event at t = 0 of its own
     coordinates: along a straight piece of rapidity r it runs dt / cosh r,
     along a hyperbolic arc of radius d it is d times the change of rapidity.
-    Returns (proper time, event) pairs in time order; a clock every `step`.
+    Returns (proper time, event) pairs in time order; a clock every `step`. Only
+    the ticks inside the window are reached, so the cost is the window's proper
+    time over `step`, however far the window lies from t = 0.
     """
     if not (step > 0 and t_hi > t_lo):
         return []
@@ -270,8 +272,13 @@ def proper_time_events(worldline: WorldLine, step: float, t_lo: float, t_hi: flo
                 if piece.start.t <= 0.0 <= piece.end.t)
     out = []
     for start, piece in zip(starts, pieces):
-        lo, hi = start - zero, start - zero + _proper_duration(piece)
-        for k in range(math.ceil(lo / step - PROPER_TIME_TICK), math.floor(hi / step + PROPER_TIME_TICK) + 1):
+        if piece.end.t < t_lo or piece.start.t > t_hi:
+            continue
+        lo = start - zero
+        # only the ticks inside the window: the pieces from t = 0 to a distant window may hold countless ticks
+        first = lo + _proper_duration_to(piece, max(t_lo, piece.start.t))
+        last = lo + _proper_duration_to(piece, min(t_hi, piece.end.t))
+        for k in range(math.ceil(first / step - PROPER_TIME_TICK), math.floor(last / step + PROPER_TIME_TICK) + 1):
             event = _at_proper_time(piece, k * step - lo)
             if t_lo <= event.t <= t_hi and not (out and out[-1][0] == k * step):
                 out.append((k * step, event))

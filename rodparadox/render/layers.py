@@ -34,6 +34,9 @@ from rodparadox.render.labels import Label
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
 
+#: calibration hyperbolae are sampled to this fraction of the panel's larger side (a few hundredths of a point on
+#: any page), so their cost follows what is drawn, not v or L; never finer than the world-lines' tolerance
+HYPERBOLA_SAMPLING = 1e-5
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16
 
@@ -253,13 +256,17 @@ class Clocks(Layer):
         st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
         # the same events in every panel: counted in S (tau = 0 at t = 0 there), then boosted
-        x0, x1, t0, t1 = (value * L for value in panel.box)
-        corners = [Event(x, t).seen_from(-eta).t for x in (x0, x1) for t in (t0, t1)]
+        x0, x1 = (value * L for value in panel.box[:2])
         drawn = []
         for name, worldline in panel.history.worldlines:
             ink = st.rod if name.startswith("rod_") else st.particles[name]
+            # the times in S at which this world-line enters and leaves the panel's window, a little widened for
+            # rounding: only ticks there are sought, so their number is bounded by the window, not by t = 0's distance
+            seen = worldline.seen_from(eta)
+            s_lo, s_hi = (seen.event_at_time(t).seen_from(-eta).t for t in (t_lo, t_hi))
+            slack = 1e-9 * (s_hi - s_lo + L)
             marks = [e.seen_from(eta) for _, e in kinematics.proper_time_events(
-                worldline, panel.clock_step, min(corners), max(corners))]
+                worldline, panel.clock_step, s_lo - slack, s_hi + slack)]
             # within the frame's time window, where the world-lines are drawn
             marks = np.array([[e.x, e.t] for e in marks if t_lo <= e.t <= t_hi and x0 <= e.x <= x1]).reshape(-1, 2) / L
             line, = ax.plot(marks[:, 0], marks[:, 1], **clock_marker(st, ink), zorder=6,
@@ -443,10 +450,18 @@ class Hyperbolae(Layer):
 
     @staticmethod
     def curves(panel: PanelContext) -> list[np.ndarray]:
-        """The branches that enter the panel, sampled within the drawing's tolerance."""
+        """The pieces of the branches inside the panel, sampled within the drawing's tolerance.
+
+        Only the part of each branch inside the box is sampled, to a tolerance
+        that is a fixed fraction of the box (never finer than the world-lines'):
+        the number of points is then bounded whatever v, L or the gaps make of
+        the box (a branch of radius k is within HYPERBOLA_SAMPLING of the
+        panel's size with some hundred points).
+        """
         x0, x1, t0, t1 = panel.box
         step = panel.steps[1]  # the t step is the finer
         reach = max(abs(x0), abs(x1), abs(t0), abs(t1))
+        tolerance = max(sampling_tolerance(panel.history) / panel.L, HYPERBOLA_SAMPLING * max(x1 - x0, t1 - t0))
         out = []
         for m in range(1, 7):
             k = m * step
@@ -454,23 +469,42 @@ class Hyperbolae(Layer):
                 break
             for swap in (False, True):  # x-branches (space-like), then t-branches (time-like)
                 for side in (1, -1):
-                    lo_c, hi_c = (x0, x1) if swap else (t0, t1)  # the coordinate that runs along the branch
-                    lo = math.asinh(max(min(lo_c / k, 1e6), -1e6))
-                    hi = math.asinh(max(min(hi_c / k, 1e6), -1e6))
-                    if side == -1:
-                        lo, hi = -hi, -lo
-                    arc = HyperbolicArc(Event(0.0, 0.0), k, side, lo, hi)
-                    points = arc.sample(sampling_tolerance(panel.history) / panel.L)
-                    if swap:
-                        points = points[:, ::-1]
-                    inside = ((points[:, 0] >= x0) & (points[:, 0] <= x1) & (points[:, 1] >= t0) & (points[:, 1] <= t1))
-                    if inside.any():
-                        out.append(points)
+                    along = (x0, x1) if swap else (t0, t1)  # the coordinate that runs along the branch
+                    across = (t0, t1) if swap else (x0, x1)  # the one that is side * k cosh(phi) on it
+                    for lo, hi in _branch_in_box(k, side, along, across):
+                        arc = HyperbolicArc(Event(0.0, 0.0), k, side, lo, hi)
+                        points = arc.sample(tolerance)
+                        if swap:
+                            points = points[:, ::-1]
+                        inside = ((points[:, 0] >= x0) & (points[:, 0] <= x1) & (points[:, 1] >= t0)
+                                  & (points[:, 1] <= t1))
+                        if inside.any():
+                            out.append(points)
         return out
 
     def legend_entry(self, style, history, options, clock_step=None):
         return line_handle(style.hyperbola), ("calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} "
                                               "x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}")
+
+
+def _branch_in_box(k: float, side: int, along: tuple[float, float], across: tuple[float, float]) -> list[tuple[float, float]]:
+    """The ranges of phi (increasing) where the branch side * k (cosh phi, sinh phi) (across, along; sinh runs along
+    the branch) lies within the box's two ranges: one range through the vertex, two beside it, or none."""
+    a_lo, a_hi = (along if side == 1 else (-along[1], -along[0]))  # side * range: k sinh(phi) lies in it
+    c_lo, c_hi = (across if side == 1 else (-across[1], -across[0]))  # and k cosh(phi) in this
+    if c_hi < k or a_hi < a_lo:
+        return []
+    lo = math.asinh(max(min(a_lo / k, 1e6), -1e6))
+    hi = math.asinh(max(min(a_hi / k, 1e6), -1e6))
+    outer = math.acosh(min(c_hi / k, 1e6))
+    inner = math.acosh(c_lo / k) if c_lo > k else 0.0
+    ranges = [(-outer, -inner), (inner, outer)] if inner > 0.0 else [(-outer, outer)]
+    out = []
+    for r_lo, r_hi in ranges:
+        a, b = max(lo, r_lo), min(hi, r_hi)
+        if a < b:
+            out.append((a, b))
+    return out
 
 
 @dataclass(frozen=True)

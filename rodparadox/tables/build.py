@@ -84,7 +84,9 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
         for k, (body, b, a) in enumerate(((f"particle {e.impact.particle}", e.particle_before, e.particle_after),
                                           ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
                                           ("hidden", e.hidden_before, e.hidden_after))):
-            values = [number_text(q, zero) for q in (b.E, b.p, a.E, a.p)]
+            # a body's E is at least its rest energy, never rounding: only differences (hidden) may be
+            below = zero if body == "hidden" else 0.0
+            values = [number_text(b.E, below), number_text(b.p, zero), number_text(a.E, below), number_text(a.p, zero)]
             # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
             rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0), Cell(body),
                          *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
@@ -133,7 +135,7 @@ def slices_table(history: History, frame: Frame, times: Sequence[float], blank: 
         named += [("kinetic total", s.kinetic), ("hidden", s.hidden)]
         for k, (body, em) in enumerate(named):
             time = with_fraction(number_text(t), t).replace("-", MINUS) if k == 0 else ""
-            values = [number_text(q, zero) for q in (em.E, em.p)]
+            values = [number_text(em.E, zero if body == "hidden" else 0.0), number_text(em.p, zero)]
             rows.append((Cell(time), Cell(body),
                          *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
     _, tn = coordinates(frame)
