@@ -159,7 +159,7 @@ def _simultaneity(r: Reading) -> str:
             text = (f"{impact_names(group)} lie on one line of simultaneity of "
                     + listed([f"{frame_name(f)} ({r.when(group, f)})" for f in together]))
             if not on_rod_line:
-                text += ", but not on one of the rod's own lines"
+                text += ", but the rod takes them one at a time, as collisions of their own"
         else:
             text = f"{impact_names(group)} lie on one line of the rod's own simultaneity"
         if apart:
@@ -274,10 +274,11 @@ def _why(r: Reading) -> str:
         sentences.append(f"The rod zig-zags: in its own order its velocity goes {', then '.join(ups)}, because it "
                          f"takes the impacts one at a time and each impulse acts alone.")
         motions = []
-        for f in r.frames:
-            u = r.rod_velocities(f)
-            steps = [f"{pushed(u[k], u[k + 1])} ({impact_names(c)})" for k, c in enumerate(collisions)
-                     if u[k + 1] != u[k]]
+        for f in r.frames:  # what the material does, turn by turn: a turn cut short never reaches the momentum's velocity
+            turns = r.turn_steps(f)
+            u = [turns[0][0]] + [after for _, after, _ in turns] if turns else list(r.rod_velocities(f))
+            steps = [f"{pushed(before, after)} ({impact_names(cause)})" for before, after, cause in turns
+                     if after != before]
             backwards = "" if any(a * b < 0 for a in u for b in u) else ", never moving backwards"
             motions.append(f"in {frame_name(f)} it {listed(steps)}{backwards}")
         text = "; ".join(motions)
@@ -287,11 +288,15 @@ def _why(r: Reading) -> str:
             previous = next((p for p in reversed(h.impacts[:h.impacts.index(i)]) if p.particle == i.particle), None)
             if previous is None:
                 continue
-            u_rod = r.velocity(i.rod_rapidity_before, rest)
+            # the struck end's own velocity just before the impact (a turn cut short leaves it short of the
+            # momentum's velocity)
+            sigma = 0.0 if i.end == "left" else h.scenario.L
+            u_end = h.material_velocity(sigma, 0.0, i.event.t - ONE_INSTANT * r.scale * 1e3)
+            u_end = 0.0 if abs(u_end) <= SAME_RAPIDITY else u_end
             u_particle = r.velocity(i.particle_rapidity_before, rest)
             particle = "stood still" if u_particle == 0.0 else f"moved at {in_c(u_particle)}"
             sentences.append(f"{i.particle} strikes again ({impact_name(i.label)}) because after "
-                             f"{impact_names(collisions[k - 1])} the rod was driven at {in_c(u_rod)} in S while "
+                             f"{impact_names(collisions[k - 1])} the rod's {i.end} end moved at {in_c(u_end)} in S while "
                              f"{i.particle}, since {impact_name(previous.label)}, {particle}: the rod's {i.end} end "
                              f"closed on {i.particle} again.")
     for k, turn in enumerate(t for t in h.rigid.turns if not t.completed):
