@@ -81,10 +81,12 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
                   f"{_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and of the "
                   f"rod just before and just after it."),
         tables.events_table(history, frame, blank),
-        Paragraph(f"The ledger in {symbol}: at each impact, the energy E and momentum p of the particle, of the rod "
-                  f"(its momentum's, which takes the whole impulse) and the hidden part (what the rod's stress "
-                  f"carries: the total before the first impact less every body's kinetic E and p on the slice "
-                  f"{time} = constant), just before and just after."),
+        Paragraph(f"The ledger in {symbol}: at each instant of {symbol} at which the rod is struck (impacts at one "
+                  f"instant taken together), the energy E and momentum p just before and just after of each "
+                  f"particle, of the rod's motion (its kinetic part, the sum over its material points on the slice "
+                  f"{time} = constant) and the hidden part (what the rod's stress carries), which add up to the "
+                  f"total, the same as before the first impact. Below them, apart, the rod's dynamical E and p, "
+                  f"those of its momentum, which takes each impulse at once: not a summand."),
         tables.ledger_table(history, frame, blank),
     ]
     hidden = tables.hidden_table(history, frame, blank)
