@@ -95,7 +95,7 @@ def diagram_caption(history: History, frames: Sequence[Frame]) -> str:
         f"the particles {listed(particles)} are dashed"
     impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
                f"The impacts are labelled {labels} in the order of the rod's own time. Through each impact run")
-    sentences = [f"{s.name} at v = {exact(s.v)}: {panels}.",
+    sentences = [f"At v = {exact(s.v)}: {panels}.",
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  f"its shaded world-sheet, and {dashed}.",
                  f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted)."]
