@@ -142,33 +142,40 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
 # --- the document ----------------------------------------------------------------------------------------------
 
 def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool,
-             with_speed: bool = False) -> tuple[Section, list[Block]]:
+             with_speed: bool = False, compare_v: float | None = None,
+             chosen: Sequence[int] | None = None) -> tuple[Section, list[Block]]:
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
-    the questions again)."""
+    the questions again). A worksheet asks and never tells before its key: the explanation, the caption's sentences
+    on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
+    key; the tables are left blank."""
+    caption = diagram_caption(history, frames, tell=not worksheet)
     blocks: list[Block] = [Heading(heading(history, with_speed)), Paragraph(setup_text(history)),
-                           DiagramBlock(f"{stem}_diagram", history, frames, diagram_caption(history, frames)),
-                           Heading("What the diagram shows", 2)]
-    blocks += explanation(history, frames)
-    blocks.append(Heading("The rod at successive instants", 2))
+                           DiagramBlock(f"{stem}_diagram", history, frames, caption)]
+    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames),
+                         Heading("The rod at successive instants", 2)]
     for f in frames:
         times = strip_times(history, f)
-        blocks.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
+        told.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
+    if not worksheet:
+        blocks += told
     blocks.append(Heading("The numbers", 2))
     for f in frames:
         blocks += _tables(history, f, worksheet)
     section_title = heading(history, with_speed=True)
     key: list[Block] = []
     if worksheet:
-        asked = questions(history, frames)
+        asked = questions(history, frames, compare_v, chosen)
         blocks.append(Heading("Questions", 2))
         blocks += asked
         key.append(Heading(section_title, 2))
         key += [b.filled() for b in blocks if hasattr(b, "filled")]
         key += asked
+        key += told
     return Section(stem, section_title, tuple(blocks)), key
 
 
-def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False) -> Handout:
+def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False,
+          compare_v: float | None = None, chosen: Sequence[int] | None = None) -> Handout:
     """The handout (or, with `worksheet`, the worksheet and its answer key) of each (stem, history) item, one
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
     scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames`."""
@@ -185,7 +192,7 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
     sections, key = [introduction()], []
     several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
-        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds)
+        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
         sections.append(section)
         key += answers
     answer_key = (Heading("Answer key"), *key) if worksheet else ()

@@ -84,8 +84,9 @@ def _frame_described(frame: Frame, v: float) -> str:
     return f"the frame {frame_symbol(frame)}, moving at {in_c(frame.velocity)} relative to S"
 
 
-def diagram_caption(history: History, frames: Sequence[Frame]) -> str:
-    """Which panel is which frame, how to read the lines of simultaneity, and which impacts share one."""
+def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True) -> str:
+    """Which panel is which frame, how to read the lines of simultaneity, and (`tell`; a worksheet asks it) which
+    impacts share one."""
     r = Reading(history, tuple(frames))
     s = history.scenario
     panels = "; ".join(f"({PANEL_LETTERS[k]}) in {_frame_described(f, s.v)}" for k, f in enumerate(frames))
@@ -99,6 +100,8 @@ def diagram_caption(history: History, frames: Sequence[Frame]) -> str:
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  f"its shaded world-sheet, and {dashed}.",
                  f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted)."]
+    if not tell:
+        return " ".join(sentences)
     styles = {"rest": "dotted", "moving": "dash-dotted"}
     shared = []
     for frame in (rest_frame(), moving_frame(s.v)):
