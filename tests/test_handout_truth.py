@@ -31,12 +31,12 @@ def _number(text: str) -> float:
     return float(text)
 
 
-def _material_range(h, frame_rapidity: float, n: int = 41) -> tuple[float, float]:
+def _material_range(h, frame_rapidity: float, n: int = 17) -> tuple[float, float]:
     """The least and greatest velocity in the frame of any material point, over a grid of the frame's time that
     spans every impact and well beyond (an independent reading: the world-lines, not the turns' bookkeeping)."""
     times = [i.event.time_in(frame_rapidity) for i in h.impacts]
     L = h.scenario.L
-    grid = np.concatenate([np.linspace(min(times) - 2 * L, max(times) + 4 * L, 601), times])
+    grid = np.concatenate([np.linspace(min(times) - 2 * L, max(times) + 4 * L, 241), times])
     us = [h.material_velocity(sigma, frame_rapidity, t) for sigma in np.linspace(0, L, n) for t in grid]
     return min(us), max(us)
 
