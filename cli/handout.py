@@ -30,6 +30,16 @@ HANDOUT_PAPER = "a4"
               show_default=True, help="The paper size.")
 @click.option("--worksheet", is_flag=True,
               help="A worksheet: the tables' numbers left blank to fill in, questions, and an answer key at the end.")
+@click.option("--questions", "chosen", default=None, metavar="1,3,5",
+              help="With --worksheet: which questions to ask, by their numbers in the full set, comma-separated; "
+                   "numbered from 1 again, the same in the worksheet and its key.")
+@click.option("--compare-v", "compare_v", type=float, default=None,
+              help="With --worksheet: the speed the 'another speed' question compares with (0 < v < 1, not the "
+                   "scenario's). [default: one of 0.8, 0.5, 0.9, 0.3 at least 0.15 from v]")
+@click.option("--key", "key", type=click.Choice(("inline", "separate"), case_sensitive=False), default="inline",
+              show_default=True,
+              help="With --worksheet: inline, the answer key at the end; separate, the key as its own PDF, "
+                   "NAME_worksheet_key.pdf beside the worksheet.")
 @format_option("pdf: one document to print; tex: a folder with handout.tex (pdflatex), the figures as PDF, the "
                "tables as .tex fragments and the world-lines as .dat files for pgfplots.",
                type=click.Choice(HANDOUT_FORMATS, case_sensitive=False), default="pdf", show_default=True)
@@ -40,7 +50,8 @@ HANDOUT_PAPER = "a4"
 @quiet_option
 @reports_errors
 def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, paper: str, worksheet: bool,
-            fmt: str, style: str, output: str | None, quiet: bool) -> None:
+            chosen: str | None, compare_v: float | None, key: str, fmt: str, style: str, output: str | None,
+            quiet: bool) -> None:
     """Write a teaching handout (or --worksheet) of each SCENARIO, one section each, computed at the speed given.
 
     Each section holds the setup, the two-frame diagram with an explanation
@@ -56,6 +67,8 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     from sears_paradox_cli import planning as planned
 
     paper = paper.lower()
+    key = key.lower()
+    numbers = _worksheet_options(worksheet, chosen, compare_v, key, fmt.lower())
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
                                 folders={"tex": "the LaTeX pieces"}, folder_in_folder=True, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
@@ -67,10 +80,23 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
 
-    document = build(list(zip(job.stems, histories, job.frames)), worksheet=worksheet)
+    document = build(list(zip(job.stems, histories, job.frames)), worksheet=worksheet, compare_v=compare_v,
+                     chosen=numbers)
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 
+        if key == "separate":
+            import dataclasses
+
+            from rodparadox.handout.document import Handout
+
+            sheet = dataclasses.replace(document, answer_key=())
+            answers = Handout(document.title + ": answer key", (), False, document.answer_key)
+            key_path = Path(job.path).with_name(Path(job.path).stem + "_key.pdf")
+            sheet_bytes, key_bytes = to_pdf(sheet, paper, style), to_pdf(answers, paper, style)
+            report([(job.path, write_atomic(job.path, sheet_bytes)), (key_path, write_atomic(key_path, key_bytes))],
+                   quiet)
+            return
         report([(job.path, write_atomic(job.path, to_pdf(document, paper, style)))], quiet)
     else:
         from rodparadox.handout.tex import tex_files
@@ -83,3 +109,28 @@ def _check_output(output: str, fmt: str, suffix: str) -> None:
     if fmt == "tex" and suffix == "pdf" and not Path(output).is_dir():
         raise OptionError("output", output, template="{what} names {value!r} but {format} is tex, which writes a "
                                                      "folder; name the folder.")
+
+
+def _worksheet_options(worksheet: bool, chosen: str | None, compare_v: float | None, key: str,
+                       fmt: str) -> tuple[int, ...] | None:
+    """--questions, --compare-v and --key: worksheet options, checked before anything is computed; the question
+    numbers asked (None: all)."""
+    for name, given in (("questions", chosen is not None), ("compare_v", compare_v is not None),
+                        ("key", key != "inline")):
+        if given and not worksheet:
+            raise OptionError(name, {"questions": chosen, "compare_v": compare_v, "key": key}[name],
+                              template="{what} is for a worksheet; add --worksheet.")
+    if key == "separate" and fmt != "pdf":
+        raise OptionError("key", key, template="{what} {value} writes a second PDF; with --format tex the key is in "
+                                               "handout.tex.")
+    if compare_v is not None and not 0.0 < compare_v < 1.0:
+        raise OptionError("compare_v", compare_v, "a speed with 0 < v < 1 (units of c)")
+    if chosen is None:
+        return None
+    try:
+        numbers = tuple(int(part) for part in chosen.split(","))
+    except ValueError:
+        numbers = ()
+    if not numbers or any(n < 1 or n > 8 for n in numbers) or len(set(numbers)) != len(numbers):
+        raise OptionError("questions", chosen, "question numbers from 1 to 8, comma-separated, each once (1,3,5)")
+    return numbers

@@ -38,11 +38,12 @@ def test_tables_list_impacts_at_one_instant_in_the_rods_own_order():
     h = history("fig2", 0.6)
     moving = paper_frames(0.6)[1]
     assert [row[0].text for row in tables.events_table(h, moving).rows] == ["B₁", "A₁", "B₂"]
-    assert [row[0].text for row in tables.ledger_table(h, moving).rows if row[0].text] == ["B₁", "A₁", "B₂"]
+    assert [row[0].text for row in tables.ledger_table(h, moving).rows if row[0].text] == ["B₁ and A₁", "B₂"]
     # and the rod's (dynamical) E runs 1.25 -> 1 at B1 (+0.6 to rest in S'), then 1 -> 17/8 at A1 (rest to 15/17:
     # gamma = 17/8)
-    rod = [row for row in tables.ledger_table(h, moving).rows if row[2].text == "rod"]
-    assert [(r[3].text, r[5].text) for r in rod[:2]] == [("1.25", "1"), ("1", "2.125")]
+    # at one instant of S' they are one row group: the rod's dynamical E goes 1.25 -> 2.125 across both
+    rod = [row for row in tables.ledger_table(h, moving).rows if row[2].text == tables.ROD_DYNAMICAL]
+    assert (rod[0][3].text, rod[0][5].text) == ("1.2500", "2.1250")
 
 
 # --- the handout ------------------------------------------------------------------------------------------------
@@ -214,21 +215,25 @@ def test_the_strips_caption_of_fig2_says_the_left_end_moves_first_in_s_prime():
 def test_a_handout_has_a_section_per_scenario_in_order_and_a_title_naming_them():
     items = [(n, history(n, 0.6)) for n in ("fig1", "fig2", "single")]
     doc = build(items)
-    assert doc.title == "The Sears paradox: fig1, fig2 and single at v = 0.6"
-    assert [s.name for s in doc.sections] == ["fig1", "fig2", "single"]
+    # issue 14: the title names no internal stems; a first section states the paradox
+    assert doc.title == "The Sears paradox, at v = 0.6"
+    assert [s.name for s in doc.sections] == ["introduction", "fig1", "fig2", "single"]
     assert not doc.worksheet and doc.answer_key == ()
     assert not any(isinstance(b, Question) for b in doc.blocks())
-    assert build([("fig2", history("fig2", 0.6))]).title == "The Sears paradox: fig2 at v = 0.6"
-    assert build([("a", history("fig1", 0.6)), ("b", history("fig2", 0.8))]).title == \
-        "The Sears paradox: a at v = 0.6 and b at v = 0.8"
+    assert build([("fig2", history("fig2", 0.6))]).title == "The Sears paradox, at v = 0.6"
+    several = build([("a", history("fig1", 0.6)), ("b", history("fig2", 0.8))])
+    assert several.title == "The Sears paradox"
+    assert [s.blocks[0].text for s in several.sections[1:]] == [
+        "Impacts simultaneous in the rod's rest frame (the paper's Fig. 1), at v = 0.6",
+        "Impacts simultaneous in the moving frame (the paper's Fig. 2), at v = 0.8"]
 
 
 def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
     h = history("fig2", 0.6)
-    section = build([("fig2", h)]).sections[0]
+    section = build([("fig2", h)]).sections[1]
     kinds = [type(b) for b in section.blocks]
     assert kinds[:3] == [Heading, Paragraph, DiagramBlock]
-    assert section.blocks[0].text.startswith("fig2 — The paper's Fig. 2: impacts simultaneous in the moving frame S′")
+    assert section.blocks[0].text == "Impacts simultaneous in the moving frame (the paper's Fig. 2)"
     diagram = section.blocks[2]
     assert diagram.name == "fig2_diagram" and diagram.frames == paper_frames(0.6) and diagram.history == h
     assert "B₁ and A₁ share one dash-dotted line, of S′ (t′ = 17/12 L)" in diagram.caption
@@ -248,7 +253,7 @@ def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
 
 def test_where_the_hidden_part_is_zero_in_a_frame_a_sentence_says_so():
     # Fig. 1 in S: both impulses at once on the rod's own line (constant t), no turn: nothing is ever hidden
-    section = build([("fig1", history("fig1", 0.6))]).sections[0]
+    section = build([("fig1", history("fig1", 0.6))]).sections[1]
     names = [b.name for b in section.blocks if isinstance(b, Table)]
     assert "hidden_rest" not in names and "hidden_moving" in names
     assert any(isinstance(b, Paragraph) and b.text.startswith("In S the hidden part is zero on every slice")
@@ -551,3 +556,24 @@ def test_a_third_frame_is_named_the_frame_u_in_running_text():
     doc = build([("single", h, frames)])
     caption = next(b for b in section_blocks(doc, DiagramBlock)).caption
     assert "(c) in the frame u = 0.3, moving at +0.3 c relative to S" in caption
+
+
+# --- issue 14, item 6: textbook form -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", builtin_names())
+def test_headings_are_the_scenarios_titles_without_internal_names(name):
+    doc = build([(name, history(name, 0.6))])
+    headings = [b.text for b in doc.blocks() if isinstance(b, Heading)]
+    assert load(name).title and load(name).title in headings
+    for text in headings + [doc.title]:
+        assert name not in text and " — " not in text and "for v above" not in text, text
+    caption = next(b for b in doc.blocks() if isinstance(b, DiagramBlock)).caption
+    assert not caption.startswith(name)
+
+
+def test_the_first_section_states_the_paradox_cites_franklin_and_calls_the_rod_an_idealisation():
+    first = build([("fig2", history("fig2", 0.6))]).sections[0]
+    text = " ".join(b.text for b in first.blocks if isinstance(b, Paragraph))
+    assert "J. Franklin, “The ‘Sears paradox’”" in text  # the paper's own title (The `Sears paradox')
+    assert "F. W. Sears" in text and "hidden momentum" in text
+    assert "idealisation" in text and "before light from the impact could reach it" in text

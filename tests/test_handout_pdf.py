@@ -299,7 +299,7 @@ def test_a_worksheet_s_blank_cells_are_boxes_at_least_as_wide_as_their_numbers()
     [sheet_page], [filled_page] = page_figures(sheet), page_figures(filled)
     boxes = {a.get_gid(): a for a in sheet_page.findobj(Rectangle) if (a.get_gid() or "").endswith("-blank")}
     numbers = {run.gid: run for run in page_runs(filled_page) if run.gid}
-    assert len(boxes) == sum(c.blank for t in blank for row in t.rows for c in row) == 18 + 3 + 36  # the events: 3 x 6 numbers; the ledger: 3 times, 9 x 4 numbers
+    assert len(boxes) == sum(c.blank for t in blank for row in t.rows for c in row) == 18 + 3 + 72  # the events: 3 x 6 numbers; the ledger: 3 times, 3 x 6 rows x 4 numbers
     assert not [run for run in page_runs(sheet_page) if run.gid in numbers and (run.gid + "-blank") in boxes]
     with render.style_context("print"):
         renderer = pdf_renderer(filled_page)

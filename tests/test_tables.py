@@ -202,8 +202,8 @@ def test_fig1_ledger_hides_2g2v2_and_2g2v_in_s_prime_by_hand():
     tables = {caption: (header, rows) for caption, header, rows in markdown_tables(text)}
     header, rows = tables["Energy and momentum at each impact, frame S′"]
     hidden_rows = [dict(zip(header, r)) for r in rows if r[2] == "hidden"]
-    assert (hidden_rows[0]["E after"], hidden_rows[0]["p after"]) == ("1.125", "1.875")  # after A₁
-    assert (hidden_rows[1]["E before"], hidden_rows[1]["p before"]) == ("1.125", "1.875")  # before B₁
+    assert (hidden_rows[0]["E after"], hidden_rows[0]["p after"]) == ("1.1250", "1.8750")  # after A₁
+    assert (hidden_rows[1]["E before"], hidden_rows[1]["p before"]) == ("1.1250", "1.8750")  # before B₁
     header, rows = tables["Each body's kinetic energy and momentum at chosen instants, frame S′"]
     at_1 = {r[1]: (r[2], r[3]) for r in rows}
     assert rows[0][0] == "1" and at_1["hidden"] == ("1.125", "1.875")

@@ -27,6 +27,7 @@ the paper's appendix, which misprints the sign).
 
 from __future__ import annotations
 
+import re
 from typing import Sequence
 
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
@@ -50,19 +51,57 @@ def _speed(history: History) -> str:
 
 
 def title(items: Sequence[tuple[str, History]]) -> str:
-    """The Sears paradox: fig2 at v = 0.6; fig1 and fig2 at v = 0.6; fig1 at v = 0.6 and fig2 at v = 0.8."""
-    stems = [item[0] for item in items]
-    speeds = [_speed(item[1]) for item in items]
-    if len(set(speeds)) == 1:
-        return f"The Sears paradox: {listed(stems)} at {speeds[0]}"
-    return "The Sears paradox: " + listed([f"{stem} at {sp}" for stem, sp in zip(stems, speeds)])
+    """The Sears paradox, at v = 0.6 (one speed for every scenario), or The Sears paradox (several speeds, each
+    section's heading then names its own)."""
+    speeds = {_speed(item[1]) for item in items}
+    return f"The Sears paradox, at {speeds.pop()}" if len(speeds) == 1 else "The Sears paradox"
 
 
-def heading(history: History) -> str:
-    """The scenario's name and description."""
+def heading(history: History, with_speed: bool = False) -> str:
+    """The scenario's title (the YAML key `title`), else the first sentence of its description without
+    parenthesised asides, else its name; with the speed when the sections differ in it."""
     s = history.scenario
-    description = with_primes(s.description)
-    return f"{s.name} — {description}" if description else s.name
+    text = s.title
+    if not text and s.description:
+        first = s.description.split(": ")[-1] if s.description.startswith("The paper's") else s.description
+        first = re.sub(r" \([^)]*\)", "", first.split(". ")[0].split("; ")[0]).rstrip(".")
+        text = first[:1].upper() + first[1:]
+    text = with_primes(text) if text else s.name
+    return f"{text}, at {_speed(history)}" if with_speed else text
+
+
+# --- the first section: the paradox and its resolution -----------------------------------------------------------
+
+#: the paper this tool implements, as its own text gives it (title, author, affiliation; the copy carries no journal
+#: or arXiv details)
+FRANKLIN = "J. Franklin, \u201cThe \u2018Sears paradox\u2019\u201d (Department of Physics, Temple University)"
+
+PARADOX = (
+    "F. W. Sears proposed a paradox about forces on a rigid body in special relativity. A rigid rod at rest in a "
+    "frame S is struck at each end at the same instant of S by equal and opposite impulses: the net force is zero "
+    "and the rod stays at rest in S. In a frame S′ moving at −v relative to S the rod moves at +v; by the relativity "
+    "of simultaneity the two impulses now act at different instants of S′, yet the rod\u2019s velocity does not "
+    "change. How can it stay constant in S′, where the forces are no longer equal and opposite at one instant? "
+    "Sears answered with \u2018hidden momentum\u2019 that the rod takes in without changing its velocity.")
+
+RESOLUTION = (
+    f"{FRANKLIN} resolves it: the usual laws of mechanics apply to a rigid body only in its rest frame. The "
+    "impulses that act at different instants of S′ are simultaneous in the rod\u2019s own rest frame, where they "
+    "cancel; what the rod does is decided by its own lines of simultaneity, and the time order seen in S′ is, in "
+    "Franklin\u2019s words, an illusion caused by the Lorentz transformation. The sections below compute each "
+    "scenario from that rule and show it in both frames.")
+
+IDEALISATION = (
+    "The rigid rod is an idealisation. When one end is struck, the far end starts to move along the rod\u2019s "
+    "line of simultaneity through the impact, that is, before light from the impact could reach it: no real "
+    "material transmits a push faster than light, and a real rod would carry it as a wave of compression, far "
+    "slower. The rigid rod is the limit the paper uses to make the paradox sharp.")
+
+
+def introduction() -> Section:
+    """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation."""
+    return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
+                                                   Paragraph(RESOLUTION), Paragraph(IDEALISATION)))
 
 
 # --- the numbers -----------------------------------------------------------------------------------------------
@@ -82,10 +121,12 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
                   f"{_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and of the "
                   f"rod just before and just after it."),
         tables.events_table(history, frame, blank),
-        Paragraph(f"The ledger in {symbol}: at each impact, the energy E and momentum p of the particle, of the rod "
-                  f"(its momentum's, which takes the whole impulse) and the hidden part (what the rod's stress "
-                  f"carries: the total before the first impact less every body's kinetic E and p on the slice "
-                  f"{time} = constant), just before and just after."),
+        Paragraph(f"The ledger in {symbol}: at each instant of {symbol} at which the rod is struck (impacts at one "
+                  f"instant taken together), the energy E and momentum p just before and just after of each "
+                  f"particle, of the rod's motion (its kinetic part, the sum over its material points on the slice "
+                  f"{time} = constant) and the hidden part (what the rod's stress carries), which add up to the "
+                  f"total, the same as before the first impact. Below them, apart, the rod's dynamical E and p, "
+                  f"those of its momentum, which takes each impulse at once: not a summand."),
         tables.ledger_table(history, frame, blank),
     ]
     hidden = tables.hidden_table(history, frame, blank)
@@ -101,33 +142,41 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
 
 # --- the document ----------------------------------------------------------------------------------------------
 
-def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool) -> tuple[Section, list[Block]]:
+def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool,
+             with_speed: bool = False, compare_v: float | None = None,
+             chosen: Sequence[int] | None = None) -> tuple[Section, list[Block]]:
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
-    the questions again)."""
-    blocks: list[Block] = [Heading(heading(history)), Paragraph(setup_text(history)),
-                           DiagramBlock(f"{stem}_diagram", history, frames, diagram_caption(history, frames)),
-                           Heading("What the diagram shows", 2)]
-    blocks += explanation(history, frames)
-    blocks.append(Heading("The rod at successive instants", 2))
+    the questions again). A worksheet asks and never tells before its key: the explanation, the caption's sentences
+    on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
+    key; the tables are left blank."""
+    caption = diagram_caption(history, frames, tell=not worksheet)
+    blocks: list[Block] = [Heading(heading(history, with_speed)), Paragraph(setup_text(history)),
+                           DiagramBlock(f"{stem}_diagram", history, frames, caption)]
+    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames),
+                         Heading("The rod at successive instants", 2)]
     for f in frames:
         times = strip_times(history, f)
-        blocks.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
+        told.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
+    if not worksheet:
+        blocks += told
     blocks.append(Heading("The numbers", 2))
     for f in frames:
         blocks += _tables(history, f, worksheet)
-    section_title = f"{stem} at {_speed(history)}"
+    section_title = heading(history, with_speed=True)
     key: list[Block] = []
     if worksheet:
-        asked = questions(history, frames)
+        asked = questions(history, frames, compare_v, chosen)
         blocks.append(Heading("Questions", 2))
         blocks += asked
         key.append(Heading(section_title, 2))
         key += [b.filled() for b in blocks if hasattr(b, "filled")]
         key += asked
+        key += told
     return Section(stem, section_title, tuple(blocks)), key
 
 
-def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False) -> Handout:
+def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False,
+          compare_v: float | None = None, chosen: Sequence[int] | None = None) -> Handout:
     """The handout (or, with `worksheet`, the worksheet and its answer key) of each (stem, history) item, one
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
     scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames`."""
@@ -141,9 +190,10 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
         else:
             shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append((stem, history, shown_frames))
-    sections, key = [], []
+    sections, key = [introduction()], []
+    several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
-        section, answers = _section(stem, history, shown_frames, worksheet)
+        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
         sections.append(section)
         key += answers
     answer_key = (Heading("Answer key"), *key) if worksheet else ()

@@ -84,8 +84,9 @@ def _frame_described(frame: Frame, v: float) -> str:
     return f"the frame {frame_symbol(frame)}, moving at {in_c(frame.velocity)} relative to S"
 
 
-def diagram_caption(history: History, frames: Sequence[Frame]) -> str:
-    """Which panel is which frame, how to read the lines of simultaneity, and which impacts share one."""
+def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True) -> str:
+    """Which panel is which frame, how to read the lines of simultaneity, and (`tell`; a worksheet asks it) which
+    impacts share one."""
     r = Reading(history, tuple(frames))
     s = history.scenario
     panels = "; ".join(f"({PANEL_LETTERS[k]}) in {_frame_described(f, s.v)}" for k, f in enumerate(frames))
@@ -95,10 +96,12 @@ def diagram_caption(history: History, frames: Sequence[Frame]) -> str:
         f"the particles {listed(particles)} are dashed"
     impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
                f"The impacts are labelled {labels} in the order of the rod's own time. Through each impact run")
-    sentences = [f"{s.name} at v = {exact(s.v)}: {panels}.",
+    sentences = [f"At v = {exact(s.v)}: {panels}.",
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  f"its shaded world-sheet, and {dashed}.",
                  f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted)."]
+    if not tell:
+        return " ".join(sentences)
     styles = {"rest": "dotted", "moving": "dash-dotted"}
     shared = []
     for frame in (rest_frame(), moving_frame(s.v)):
@@ -159,7 +162,7 @@ def _simultaneity(r: Reading) -> str:
             text = (f"{impact_names(group)} lie on one line of simultaneity of "
                     + listed([f"{frame_name(f)} ({r.when(group, f)})" for f in together]))
             if not on_rod_line:
-                text += ", but not on one of the rod's own lines"
+                text += ", but the rod takes them one at a time, as collisions of their own"
         else:
             text = f"{impact_names(group)} lie on one line of the rod's own simultaneity"
         if apart:
@@ -274,10 +277,11 @@ def _why(r: Reading) -> str:
         sentences.append(f"The rod zig-zags: in its own order its velocity goes {', then '.join(ups)}, because it "
                          f"takes the impacts one at a time and each impulse acts alone.")
         motions = []
-        for f in r.frames:
-            u = r.rod_velocities(f)
-            steps = [f"{pushed(u[k], u[k + 1])} ({impact_names(c)})" for k, c in enumerate(collisions)
-                     if u[k + 1] != u[k]]
+        for f in r.frames:  # what the material does, turn by turn: a turn cut short never reaches the momentum's velocity
+            turns = r.turn_steps(f)
+            u = [turns[0][0]] + [after for _, after, _ in turns] if turns else list(r.rod_velocities(f))
+            steps = [f"{pushed(before, after)} ({impact_names(cause)})" for before, after, cause in turns
+                     if after != before]
             backwards = "" if any(a * b < 0 for a in u for b in u) else ", never moving backwards"
             motions.append(f"in {frame_name(f)} it {listed(steps)}{backwards}")
         text = "; ".join(motions)
@@ -287,11 +291,15 @@ def _why(r: Reading) -> str:
             previous = next((p for p in reversed(h.impacts[:h.impacts.index(i)]) if p.particle == i.particle), None)
             if previous is None:
                 continue
-            u_rod = r.velocity(i.rod_rapidity_before, rest)
+            # the struck end's own velocity just before the impact (a turn cut short leaves it short of the
+            # momentum's velocity)
+            sigma = 0.0 if i.end == "left" else h.scenario.L
+            u_end = h.material_velocity(sigma, 0.0, i.event.t - ONE_INSTANT * r.scale * 1e3)
+            u_end = 0.0 if abs(u_end) <= SAME_RAPIDITY else u_end
             u_particle = r.velocity(i.particle_rapidity_before, rest)
             particle = "stood still" if u_particle == 0.0 else f"moved at {in_c(u_particle)}"
             sentences.append(f"{i.particle} strikes again ({impact_name(i.label)}) because after "
-                             f"{impact_names(collisions[k - 1])} the rod was driven at {in_c(u_rod)} in S while "
+                             f"{impact_names(collisions[k - 1])} the rod's {i.end} end moved at {in_c(u_end)} in S while "
                              f"{i.particle}, since {impact_name(previous.label)}, {particle}: the rod's {i.end} end "
                              f"closed on {i.particle} again.")
     for k, turn in enumerate(t for t in h.rigid.turns if not t.completed):

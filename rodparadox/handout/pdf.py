@@ -359,10 +359,12 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
     caption = wrap(words_of(block.caption), t.caption, pages.text_width)
     room = pages.text_height - 0.5 * t.body - len(caption) * 1.3 * t.caption
     if isinstance(block, DiagramBlock):
-        _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name)
+        # no title above the panels: the section's heading and the caption say what it shows
+        untitled = render.Options(titled=False)
+        _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
-            render.draw_into(target, block.history, block.frames, style.name)
+            render.draw_into(target, block.history, block.frames, style.name, untitled)
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         height = min(room, render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS)[1])

@@ -139,8 +139,19 @@ class Reading:
             later = sorted(((turn_interval(t, frame.rapidity)[0], t) for t in turns[k + 1:]), key=lambda st: st[0])
             if later and later[0][0] < end - ONE_INSTANT * self.scale:
                 continue  # another turn already moves part of the rod
-            out.append((turn, end, later[0][0] if later else None, later[0][1] if later else None))
+            # the next turn is the next in the rod's own order (two turns may start at one instant of the frame,
+            # and a rounding must not let a later one stand for it)
+            following = turns[k + 1] if k + 1 < len(turns) else None
+            start = turn_interval(following, frame.rapidity)[0] if following is not None else None
+            out.append((turn, end, start, following))
         return out
+
+    def turn_steps(self, frame: Frame) -> tuple[tuple[float, float, tuple[Impact, ...]], ...]:
+        """What the rod's material does in each turn, in the rod's own order, seen in the frame: (the velocity it
+        turns from, the velocity it reaches, the impacts that started the turn). A turn cut short by an impact on
+        the far end reaches only `rapidity_stop`, never the rod's velocity after the impact."""
+        return tuple((self.velocity(t.rapidity_from, frame), self.velocity(t.rapidity_stop, frame), self.turn_cause(t))
+                     for t in self.history.rigid.turns)
 
     def velocity(self, rapidity: float, frame: Frame) -> float:
         """The velocity in the frame of a body of this rapidity in S; a rounding-sized one is 0."""

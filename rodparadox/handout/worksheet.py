@@ -20,7 +20,8 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 
 
-def questions(history: History, frames: Sequence[Frame]) -> tuple[Question, ...]:
+def questions(history: History, frames: Sequence[Frame], compare_v: float | None = None,
+              chosen: Sequence[int] | None = None) -> tuple[Question, ...]:
     """Five to eight questions on the scenario, numbered from 1, each with a worked answer computed by the tool:
     read an event off the panels; a Lorentz transformation; velocity addition; the hidden momentum on a slice;
     the questions that fit the scenario (a stopped turn, a rod at rest in a moving frame, a single particle, unequal
@@ -34,9 +35,12 @@ def questions(history: History, frames: Sequence[Frame]) -> tuple[Question, ...]
                if len({p.mass for p in history.scenario.particles}) > 1 else None,
                question_together(r, b), question_zigzag(r)]
     asked += [q for q in fitting if q is not None]
-    other = question_other_speed(r, a, b)
+    other = question_other_speed(r, a, b, compare_v)
     if other is not None:
         asked = asked[:7] + [other]
     if len(asked) < 5:  # a scenario with little to ask about: momentum is conserved at each collision
         asked += [question_momentum(r, c) for c in r.collisions][:5 - len(asked)]
-    return tuple(Question(k + 1, text, answer) for k, (text, answer) in enumerate(asked[:8]))
+    asked = asked[:8]
+    if chosen is not None:  # the teacher's choice (--questions 1,3,5), renumbered from 1 in worksheet and key alike
+        asked = [asked[k - 1] for k in chosen if 1 <= k <= len(asked)]
+    return tuple(Question(k + 1, text, answer) for k, (text, answer) in enumerate(asked))

@@ -22,8 +22,10 @@ from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, moving_f
 from rodparadox.physics.rod import turn_interval
 from rodparadox.tables.build import coordinates
 
-#: the speeds a "what if" question tries, in this order, for one that differs from the scenario's and runs
+#: the speeds a "what if" question tries, in this order, for one that differs meaningfully from the scenario's
+#: (by at least OTHER_SPEED_GAP: never 0.8 for v = 0.81) and runs
 OTHER_SPEEDS = (0.8, 0.5, 0.9, 0.3)
+OTHER_SPEED_GAP = 0.15
 
 
 Asked = tuple[str, tuple[str, ...]]
@@ -166,13 +168,15 @@ def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
     return f"{given} Use the relativistic addition of velocities to find {what} in {B}.", tuple(answer)
 
 
-def question_other_speed(r: Reading, a: Frame, b: Frame) -> Asked | None:
+def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None = None) -> Asked | None:
     """The same scenario at another v, run again: the interval between the rod's first two impacts in both frames
     (or, for one impact, how long the far end takes to follow), and whether the rod ends at rest in S."""
     h = r.history
     s = h.scenario
     other = None
-    for v2 in OTHER_SPEEDS:
+    candidates = (compare_v,) if compare_v is not None else tuple(
+        u for u in OTHER_SPEEDS if abs(u - s.v) >= OTHER_SPEED_GAP)
+    for v2 in candidates:
         if v2 != s.v:
             try:
                 other = run(s.with_overrides(v=v2))

@@ -15,8 +15,9 @@ from typing import Any, Sequence
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_heading, time_window
 from rodparadox.physics.rod import turn_interval
-from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, rounding_zero)
-from rodparadox.numbers import number_text
+from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, instant_entries,
+                                       rounding_zero)
+from rodparadox.numbers import MINUS, number_text
 
 FORMAT = "sears-paradox-ledger/1"
 #: slices drawn between the ends of a frame's time window when no times are given (plus every turn's start and
@@ -111,6 +112,12 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
     return out.getvalue()
 
 
+def fixed(value: float, zero: float = 0.0) -> str:
+    """A ledger number: 4 decimals (one format for every number of a column), never -0."""
+    text = f"{0.0 if abs(value) <= zero else value:.4f}"
+    return text.lstrip("-") if float(text) == 0.0 else text
+
+
 def _frame_title(f: Frame) -> str:
     return frame_heading(f) + f": velocity {number_text(f.velocity)} relative to S"
 
@@ -141,21 +148,25 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
 
         lines += ["", _frame_title(f),
                   f"  all bodies before the first impact: E = {number_text(total.E)}, p = {num(total.p)}"]
-        for e in impact_entries(history, eta):
-            i = e.impact
-            together = f", with {i.simultaneous_with}" if i.simultaneous_with else ""
-            turning = ", rod still turning" if i.while_turning else ""
+        for entry in instant_entries(history, eta):  # impacts at one instant of the frame: one table
+            labels = " and ".join(i.label for i in entry.impacts)
+            ends = ", ".join(f"{i.end} end" + (", rod still turning" if i.while_turning else "") for i in entry.impacts)
             rows = [["", "E before", "p before", "E after", "p after"]]
-            for label, b, a in ((i.particle, e.particle_before, e.particle_after),
-                                ("rod, kinetic", e.rod_kinetic, e.rod_kinetic),
-                                ("rod, dynamical", e.rod_dynamical_before, e.rod_dynamical_after),
-                                ("kinetic total", e.kinetic_before, e.kinetic_after),
-                                ("hidden", e.hidden_before, e.hidden_after)):
-                # a body's E is at least its rest energy, never rounding: only differences (hidden) may be
-                energy = num if label == "hidden" else number_text
-                rows.append([label, energy(b.E), num(b.p), energy(a.E), num(a.p)])
-            lines += ["", f"  impact {i.label} ({i.end} end{together}{turning}) at t = {number_text(e.t)}", *_table(rows),
-                      f"  impulse to the rod: E {num(e.impulse.E)}, p {num(e.impulse.p)}"]
+            for (body, b), (_, a) in zip(entry.before, entry.after):
+                label = {"rod": "rod, kinetic", "hidden": "hidden"}.get(body, body)
+                # a body's E is at least its rest energy, never rounding: only differences (hidden, p) may be
+                e_zero = zero if body == "hidden" else 0.0
+                rows.append([label, fixed(b.E, e_zero), fixed(b.p, zero), fixed(a.E, e_zero), fixed(a.p, zero)])
+            rows.append(["total"] + [fixed(x, zero) for x in (total.E, total.p, total.E, total.p)])
+            d_b, d_a = entry.rod_dynamical_before, entry.rod_dynamical_after
+            table = _table(rows)
+            lines += ["", f"  impact {labels} ({ends}) at t = {number_text(entry.t)}", *table,
+                      f"  rod, dynamical (its momentum's; not a summand): E {fixed(d_b.E, zero)} -> "
+                      f"{fixed(d_a.E, zero)}, p {fixed(d_b.p, zero)} -> {fixed(d_a.p, zero)}"]
+            for i in entry.impacts:
+                e = next(e for e in impact_entries(history, eta) if e.impact is i)
+                lines.append(f"  impulse of {i.label} to the rod: E {fixed(e.impulse.E, zero)}, "
+                             f"p {fixed(e.impulse.p, zero)}")
         if at:
             rows = [["t"] + [f"{name} {q}" for name in names + ["rod", "kinetic", "hidden"] for q in ("E", "p")]]
             for t in at:

@@ -35,6 +35,7 @@ __all__ = ["Particle", "Scenario", "Timing", "builtin_names", "configs_folder", 
 _SCHEMA = {
     "name": None,
     "description": None,
+    "title": None,
     "v": None,
     "L": None,
     "particles": {
@@ -216,12 +217,12 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
                 raise ScenarioError(f"{key} needs the key particle (the other particle, A or B).", key)
             fields["timed_with"] = Timing(**timing, key=key)
         particles.append(Particle(name=name, **fields))
-    for key in ("name", "description"):
+    for key in ("name", "description", "title"):
         if key in data and not isinstance(data[key], str):
             value = data[key]
             raise ScenarioError(f"{key} must be text, got {described(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
-                    v=data["v"], L=data.get("L", 1.0), particles=tuple(particles))
+                    v=data["v"], L=data.get("L", 1.0), particles=tuple(particles), title=data.get("title", ""))
 
 
 # --- built-in scenarios and files ----------------------------------------------------------

@@ -25,7 +25,7 @@ from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import time_order
 from rodparadox.physics.kinematics import HyperbolicArc, Line
 from rodparadox.physics.rod import material_worldline
-from rodparadox.tolerances import PRINTED_ZERO, SAME_INSTANT
+from rodparadox.tolerances import ONE_INSTANT, PRINTED_ZERO, SAME_INSTANT
 
 
 @dataclass(frozen=True)
@@ -222,3 +222,50 @@ def impact_entries(history: History, frame_rapidity: float) -> tuple[ImpactEntry
 def turn_times(history: History, frame_rapidity: float) -> list[float]:
     """Every instant of the frame's time where a turn starts or ends."""
     return history.rigid.turn_times(frame_rapidity)
+
+
+@dataclass(frozen=True)
+class InstantEntry:
+    """The impacts at one instant of a frame (several where they share its time: B₁ and A₁ at t′ = 17/12 in Fig. 2),
+    taken as one: every body's kinetic (E, p) just before all of them and just after all of them, the hidden part
+    and the total (the same before and after, and the same as before the first impact), and apart from these the
+    rod's dynamical (E, p) before the first and after the last (not a summand: the rod's kinetic part is)."""
+
+    impacts: tuple[Impact, ...]
+    t: float
+    before: tuple[tuple[str, EnergyMomentum], ...]  # A, B (those present), "rod" (kinetic), "hidden"
+    after: tuple[tuple[str, EnergyMomentum], ...]
+    total: EnergyMomentum
+    rod_dynamical_before: EnergyMomentum
+    rod_dynamical_after: EnergyMomentum
+
+
+def instant_entries(history: History, frame_rapidity: float) -> tuple[InstantEntry, ...]:
+    """The impacts grouped by instant of the frame's time (`impact_entries`' order), one entry per instant."""
+    entries = impact_entries(history, frame_rapidity)
+    scale = history.scenario.L + max((abs(e.t) for e in entries), default=0.0)
+    groups: list[list[ImpactEntry]] = []
+    for e in entries:
+        if groups and abs(groups[-1][0].t - e.t) <= ONE_INSTANT * scale:
+            groups[-1].append(e)
+        else:
+            groups.append([e])
+    total = initial_total(history, frame_rapidity)
+    names = sorted(p.name for p in history.scenario.particles)
+    out = []
+    for group in groups:
+        t = group[0].t
+        rod = group[0].rod_kinetic
+
+        def state(after: bool) -> tuple[tuple[str, EnergyMomentum], ...]:
+            bodies = [(n, particle_on_slice(history, n, frame_rapidity, t, after=after)) for n in names]
+            kinetic = ZERO
+            for _, em in bodies:  # as initial_total sums, so rest energies cancel exactly
+                kinetic += em
+            kinetic += rod
+            return (*bodies, ("rod", rod), ("hidden", total - kinetic))
+
+        rod_order = sorted(group, key=lambda e: history.impacts.index(e.impact))
+        out.append(InstantEntry(tuple(e.impact for e in rod_order), t, state(False), state(True), total,
+                                rod_order[0].rod_dynamical_before, rod_order[-1].rod_dynamical_after))
+    return tuple(out)

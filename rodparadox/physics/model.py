@@ -131,9 +131,12 @@ class Scenario:
     particles: tuple[Particle, ...]
     L: float = 1.0
     description: str = ""
+    #: a heading for documents (a handout's section), in words: "Impacts simultaneous in the moving frame"
+    title: str = ""
 
     def __post_init__(self) -> None:
         _check_text(self.name, "name", newlines=False)
+        _check_text(self.title, "title", newlines=False)
         _check_text(self.description, "description", newlines=True)
         if len(self.name) > MAX_NAME_LENGTH:
             raise ScenarioError(f"name must be at most {MAX_NAME_LENGTH} characters, got {len(self.name)}; "

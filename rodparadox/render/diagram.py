@@ -162,7 +162,7 @@ class _Builder:
         self.legend = legend_entries(style, history, options, self.clock_step)
 
     def lay_out(self, page: Page) -> Layout:
-        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page)
+        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled)
 
     def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
         """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""

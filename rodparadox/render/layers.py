@@ -48,6 +48,7 @@ class Options(NamedTuple):
     light_cones: bool = False  # the light cone of every impact
     hyperbolae: bool = False  # calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin
     grid: bool = False
+    titled: bool = True  # the scenario's name and v above the panels (a handout's section heading says it instead)
     rod_lines: int = 0  # this many interior material world-lines of the rod
     rod_now: bool = False  # the rod's own lines of simultaneity: each turn's fan, and lines between turns
     proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end

@@ -228,7 +228,7 @@ class Layout(NamedTuple):
 
 
 def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, float], legend_labels: list[str],
-            page: Page) -> Layout:
+            page: Page, titled: bool = True) -> Layout:
     """Lay the figure out in points: suptitle; rows of panels, each with its title, axes and tick labels; legend.
 
     The panels share one height (equal scales within a panel; one size for
@@ -242,15 +242,16 @@ def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, f
     m = Metrics(style, fs)
     steps = [(tick_step(p.data_box),) * 2 for p in panels]  # (x step, t step) of each panel
     for _ in range(6):  # steps only grow, and each growth is a nice step: this settles in two or three rounds
-        rows, height, width, (legend_rows, legend_cols) = _arrange(history, panels, m, steps, fs, legend_labels, page)
+        rows, height, width, (legend_rows, legend_cols) = _arrange(history, panels, m, steps, fs, legend_labels, page,
+                                                                    titled)
         readable = [readable_steps(p, step, m) for p, step in zip(panels, steps)]
         if readable == steps:
             break
         steps = readable
 
     legend_h = m.legend_height(legend_rows)
-    title = suptitle(history.scenario, width, fs["suptitle"])
-    top = m.top(title)
+    title = suptitle(history.scenario, width, fs["suptitle"]) if titled else ""
+    top = m.top(title) if titled else 0.0
     blocks = [m.title_band(row) + height + m.bottom_axis for row in rows]
     fig_h = top + sum(blocks) + m.row_gap * (len(rows) - 1) + legend_h
     return Layout(width, fig_h, rows, {p.letter: step for p, step in zip(panels, steps)}, title, top, blocks,
@@ -258,7 +259,7 @@ def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, f
 
 
 def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs: dict[str, float],
-             labels: list[str], page: Page) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
+             labels: list[str], page: Page, titled: bool = True) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
     """(rows of panels, the panels' height, the figure's width, the legend's rows and columns).
 
     Every panel's width, box and title lines are set.
@@ -294,7 +295,8 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
     def figure_height(rows: list[list[Panel]], wide: bool, h: float) -> float:
         width = figure_width(rows, wide, h)
         bands = sum(max(len(m.wrap(p.title, w)) for p, w in zip(row, widths(row, h))) for row in rows)
-        return (m.top(suptitle(history.scenario, width, fs["suptitle"])) + bands * m.title_line
+        top = m.top(suptitle(history.scenario, width, fs["suptitle"])) if titled else 0.0
+        return (top + bands * m.title_line
                 + len(rows) * (m.title_pad + h + m.bottom_axis)
                 + m.row_gap * (len(rows) - 1) + m.legend_height(legend(rows, wide)[0]))
 

@@ -17,7 +17,7 @@ from typing import Sequence
 from rodparadox.tables.table import Cell, Table
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
-from rodparadox.physics.ledger import impact_entries, rounding_zero
+from rodparadox.physics.ledger import instant_entries, rounding_zero
 from rodparadox.numbers import MINUS, coordinate_format, exact, fraction_text, impact_name, number_text, velocity_format
 from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
 from rodparadox.tolerances import ONE_INSTANT
@@ -70,31 +70,64 @@ def _zero_below(history: History, frame: Frame) -> float:
     return rounding_zero(history.initial_total(frame.rapidity))
 
 
+#: decimals of every number in the ledger table: one format per column, so the rows add up to the eye
+LEDGER_DECIMALS = 4
+
+
+def fixed(value: float, zero: float = 0.0) -> str:
+    """A number with LEDGER_DECIMALS decimals, − for minus, never −0 (|value| <= zero is 0)."""
+    if abs(value) <= zero:
+        value = 0.0
+    text = f"{value:.{LEDGER_DECIMALS}f}"
+    if float(text) == 0.0:
+        text = text.lstrip("-")
+    return text.replace("-", MINUS)
+
+
+def _body_name(name: str) -> str:
+    return {"rod": "rod, kinetic", "hidden": "hidden"}.get(name, f"particle {name}")
+
+
 def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
-    """Per impact, in the frame's time order: the particle's (E, p), the rod's dynamical (E, p) and the hidden
-    part just before and after (E in M c², p in M c)."""
+    """Per instant of the frame at which impacts happen (impacts at one instant are one row group: just before all
+    of them, just after all of them), in its time order: each particle's (E, p), the rod's kinetic part, the hidden
+    part, and their total (the same as before the first impact); then, apart and not a summand, the rod's
+    dynamical (E, p). E in M c², p in M c; every number with LEDGER_DECIMALS decimals."""
     zero = _zero_below(history, frame)
     rows = []
-    rod_order = {i.label: k for k, i in enumerate(history.impacts)}
-    entries = sorted(impact_entries(history, frame.rapidity), key=lambda e: rod_order[e.impact.label])
-    scale = history.scenario.L + max((abs(e.t) for e in entries), default=0.0)
-    for e in (entries[k] for k in time_order([e.t for e in entries], scale)):
-        name = impact_name(e.impact.label)
-        t = with_fraction(number_text(e.t), e.t)
-        for k, (body, b, a) in enumerate(((f"particle {e.impact.particle}", e.particle_before, e.particle_after),
-                                          ("rod", e.rod_dynamical_before, e.rod_dynamical_after),
-                                          ("hidden", e.hidden_before, e.hidden_after))):
-            # a body's E is at least its rest energy, never rounding: only differences (hidden) may be
-            below = zero if body == "hidden" else 0.0
-            values = [number_text(b.E, below), number_text(b.p, zero), number_text(a.E, below), number_text(a.p, zero)]
+    for entry in instant_entries(history, frame.rapidity):
+        name = impact_names_text(entry.impacts)
+        t = fixed(entry.t)
+        for k, ((body, b), (_, a)) in enumerate(zip(entry.before, entry.after)):
+            values = (b.E, b.p, a.E, a.p)
             # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
-            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0), Cell(body),
-                         *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
+            rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0),
+                         Cell(_body_name(body)), *(Cell(fixed(q, zero), blank) for q in values)))
+        total = entry.total
+        rows.append((Cell(""), Cell(""), Cell("total"), *(Cell(fixed(q, zero), blank)
+                                                          for q in (total.E, total.p, total.E, total.p))))
+        b, a = entry.rod_dynamical_before, entry.rod_dynamical_after
+        rows.append((Cell(""), Cell(""), Cell(ROD_DYNAMICAL), *(Cell(fixed(q, zero), blank)
+                                                                  for q in (b.E, b.p, a.E, a.p))))
     _, tn = coordinates(frame)
+    total = history.initial_total(frame.rapidity)
     return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
                  ("impact", tn, "body", "E before", "p before", "E after", "p after"), tuple(rows), "lnlnnnn",
-                 ("E in M c², p in M c, M the rod's mass; hidden: the total before the first impact less every "
-                  "body's kinetic (E, p) on the frame's slice.",))
+                 (f"E in M c², p in M c, M the rod's mass. Particles, the rod's kinetic part and the hidden part add "
+                  f"up to the total, the total before the first impact (E = {fixed(total.E, zero)}, p = "
+                  f"{fixed(total.p, zero)}); hidden: that total less every body's kinetic (E, p) on the frame's "
+                  f"slice. Impacts at one instant of the frame are one row group. {ROD_DYNAMICAL}: E and p of the "
+                  f"rod's momentum, which takes each impulse at once; shown apart, it is not a summand.",))
+
+
+#: the label of the rod's dynamical (E, p) in every ledger table: shown apart from the summands
+ROD_DYNAMICAL = "rod, dynamical (not a summand)"
+
+
+def impact_names_text(impacts) -> str:
+    """B₁, or B₁ and A₁ (in the rod's order) for impacts at one instant."""
+    names = [impact_name(i.label) for i in impacts]
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
@@ -111,11 +144,9 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
     rows = []
     for t in hidden_instants(history, frame):
         hidden = history.energy_momentum(frame.rapidity, t).hidden
-        E, p = number_text(hidden.E, zero), number_text(hidden.p, zero)
-        if E == "0" and p == "0":
+        if number_text(hidden.E, zero) == "0" and number_text(hidden.p, zero) == "0":
             continue
-        rows.append((Cell(with_fraction(number_text(t), t).replace("-", MINUS)),
-                     *(Cell(with_fraction(q, float(q)).replace("-", MINUS), blank) for q in (E, p))))
+        rows.append((Cell(fixed(t)), *(Cell(fixed(q, zero), blank) for q in (hidden.E, hidden.p))))
     if not rows:
         return None
     _, tn = coordinates(frame)
