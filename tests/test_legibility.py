@@ -77,3 +77,27 @@ def test_readouts_write_impacts_with_subscripts():
     strip = Strip(t=1.0, sigma=np.array([0.0, 1.0]), x=np.array([0.0, 1.0]), velocity=np.zeros(2), particles=(),
                   flashing=("A1", "B12"))
     assert readout_text(strip, Frame("rest", 0.0), 1.0).endswith("A\u2081, B\u2081\u2082!")
+
+
+@pytest.mark.parametrize("v", [0.6, 0.97])
+def test_a_lens_shows_the_rod_at_least_a_third_of_its_width_at_every_instant(v):
+    """fig2 at 0.97 in S′: the rod is 0.24 L long before the impacts, L/γ(0.9995) = 0.03 L between them."""
+    from rodparadox import render
+    from rodparadox.animate.now_scene import NowScene
+    from rodparadox.animate.timeline import timeline
+    from rodparadox.physics.frames import paper_frames
+
+    h = history("fig2", v)
+    line = timeline(h, paper_frames(v), "now", 13)
+    with render.style_context("default"):
+        scene = NowScene(h, line, "default")
+    lenses = [m for m in scene.panels if m.lens is not None]
+    assert lenses
+    for k in range(13):
+        scene.update(k)
+        for motion in lenses:
+            ax = motion.lens.bar.axes
+            segments = motion.lens.bar.get_segments()
+            length = segments[-1][-1][0] - segments[0][0][0]
+            width = ax.get_xlim()[1] - ax.get_xlim()[0]
+            assert 1 / 3 <= length / width <= 1.0

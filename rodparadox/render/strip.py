@@ -174,7 +174,7 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     if bar_width is None:
         bar_width = ax.bbox.height * 72 / ax.get_figure(root=True).dpi * 0.5
     bar = LineCollection([], cmap=colour_map(st), norm=colour_norm(scale, st), linewidths=bar_width,
-                         capstyle="butt", animated=animated)
+                         capstyle="butt", animated=animated, antialiaseds=False)  # no seams between neighbours
     ax.add_collection(bar)
     half_bar = bar_width / 2 / (ax.bbox.height * 72 / ax.get_figure(root=True).dpi / 2)  # points -> axes' y
     outline = ax.plot([], [], color=st.rod.colour, linewidth=max(0.6, 0.45 * st.rod.width), solid_joinstyle="miter",
