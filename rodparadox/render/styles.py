@@ -31,7 +31,7 @@ AXES_DASHDOTDOT = (0, (7.0, 2.0, 1.2, 2.0, 1.2, 2.0))
 CONE_SHORT_DASH = (0, (2.0, 2.0))
 #: the rod's own lines of simultaneity (Options.rod_now): long dashes, so that in grey they are not taken for the
 #: material lines (thin, solid) they cross
-ROD_NOW_DASH = (0, (9.0, 3.0))
+ROD_NOW_DASH = (0, (16.0, 4.0))
 #: the ledger figure's particle B in print, where both particles are black and no label names the curves
 LEDGER_DASHDOT = (0, (6.0, 1.8, 1.5, 1.8))
 
@@ -129,8 +129,10 @@ _DEFAULT = Style(
     handout_body_size=9.5,
     rc=_frozen({**_COMMON_RC, **_SANS}),
 )
-#: in print both particles are black: B is dash-dotted, so the legend tells A from B without colour
-_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, LEDGER_DASHDOT)}
+#: in print both particles are black: B is long-and-short dashed (not dash-dotted: that is S′'s simultaneity), so
+#: the legend tells A from B without colour
+PRINT_B_DASH = (0, (8.0, 2.0, 3.0, 2.0))
+_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PRINT_B_DASH)}
 _PRINT = Style(
     name="print",
     about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
@@ -148,7 +150,7 @@ _PRINT = Style(
     rod_now=Ink("#000000", 0.55, ROD_NOW_DASH),
     clock_size=3.0,
     tick_length=3.5,
-    ledger_particles=_frozen(_PRINT_PARTICLES),
+    ledger_particles=_frozen({**_PRINT_PARTICLES, "B": _PRINT_PARTICLES["B"]._replace(dashes=LEDGER_DASHDOT)}),
     hidden_edge="#888888", hidden_hatch="////",  # hatched: a light grey fill alone fades in print
     flash_colour="#000000", velocity_colour_map="print-greys",
     animation_dpi=150, animation_ticks=(2.5, 2.0), boost_size=(7.0, 6.0),
