@@ -14,7 +14,6 @@ gives the same bytes as separate processes (the determinism tests check that).
 from __future__ import annotations
 
 import hashlib
-import os
 import sys
 import tempfile
 from pathlib import Path

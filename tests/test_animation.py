@@ -136,9 +136,12 @@ def test_the_colour_scale_is_centred_on_the_rod_and_holds_every_velocity(v):
     """fig2: in S the rod goes 0 -> -v -> +v -> 0, in S' +v -> 0 -> 2v/(1+v^2) -> +v (README, events)."""
     h = history("fig2", v)
     rest, moving = colour_scale(h, Frame("rest", 0.0)), colour_scale(h, Frame("moving", -v))
-    assert (rest.centre, rest.bound) == (0.0, pytest.approx(v, abs=1e-12))
+    # the bound is a rapidity (the colours are even in rapidity): S: atanh v; S': the larger of atanh v (0 from +v)
+    # and atanh(2v/(1+v^2)) - atanh v = atanh v (rapidities add)
+    assert (rest.centre, rest.bound) == (0.0, pytest.approx(math.atanh(v), abs=1e-12))
     assert moving.centre == v
-    assert moving.bound == pytest.approx(max(v, 2 * v / (1 + v * v) - v), abs=1e-12)
+    assert moving.bound == pytest.approx(math.atanh(v), abs=1e-12)
+    assert moving.limits == (pytest.approx(0.0, abs=1e-12), pytest.approx(2 * v / (1 + v * v), abs=1e-12))
     frames = frames_at(v)
     line = now_timeline(h, frames, 25)
     for p in range(3):

@@ -41,6 +41,11 @@ def now_images(history: History, timeline: NowTimeline, style: str) -> Iterator[
 LENS_BELOW = 0.2
 #: the lens's magnification makes the rod's longest length about this fraction of the lens's width
 LENS_FILL = 0.6
+#: the rod in a lens is never shorter than this fraction of the lens's width: where one magnification cannot hold
+#: the rod's shortest and longest lengths (fig2 at 0.97 in S′: 0.24 L, then 0.03 L), the lens follows it
+LENS_LEAST = 1 / 3
+#: nor longer than this fraction
+LENS_MOST = 0.9
 #: instants sampled to find the rod's longest length in a panel (for the magnification only, not for drawing)
 LENS_SAMPLES = 41
 
@@ -54,6 +59,8 @@ class PanelMotion(NamedTuple):
     strip: object
     lens: object | None
     magnification: float
+    #: a lens whose magnification follows the rod's length (`LENS_LEAST`): its title, rewritten at each instant
+    lens_title: object | None = None
 
 
 class NowScene:
@@ -79,6 +86,8 @@ class NowScene:
         panels = [ax for ax in figure.axes if (ax.get_gid() or "").endswith("-axes")]
         rows = sorted({round(ax.get_position().y0, 6) for ax in panels}, reverse=True)
         magnifications = [self._magnification(p, ax) for p, ax in enumerate(panels)]
+        self._lengths = [self._lengths_in(p) for p in range(len(panels))]
+        self._span = [ax.get_xlim()[1] - ax.get_xlim()[0] for ax in panels]
         b = _Band(st, any(m > 1 for m in magnifications))
         band = b.height / 72  # inches, per row of panels
         total = height + band * len(rows)
@@ -122,8 +131,19 @@ class NowScene:
                 lens = draw_strip(lens_ax, first, st, scale, frame, L=L, bar_width=0.5 * b.lens_h, animated=True,
                                   readout=False)
                 lens_ax.tick_params(length=b.tick_len, pad=b.tick_pad)
-                lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint", loc="left",
-                                  fontsize=b.small, pad=b.lens_pad)
+                title = lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint", loc="left",
+                                          fontsize=b.small, pad=b.lens_pad)
+                shortest, longest = self._lengths[p]
+                span = 2 * half * m
+                if shortest * m < LENS_LEAST * span or longest * m > LENS_MOST * span:
+                    # one magnification cannot hold the rod's range of lengths: the lens follows it, untick'd
+                    # (its title says the magnification now); its x runs in units of the lens's half-width
+                    lens_ax.set_xlim(-1.0, 1.0)
+                    lens_ax.set_xticks([0.0])
+                    lens_ax.xaxis.set_major_formatter(_signed_labels(1.0))
+                    title.set_animated(True)
+                    self.panels.append(PanelMotion(frame, now, strip, lens, m, title))
+                    continue
             self.panels.append(PanelMotion(frame, now, strip, lens, m))
 
     def _readout_size(self, p: int, frame: Frame, room: float, size: float) -> float:
@@ -157,9 +177,27 @@ class NowScene:
             shown_now = self.timeline.strip(self.history, k, p)
             motion.now.set_ydata([shown_now.t / L, shown_now.t / L])
             moved += [motion.now, *update_strip(motion.strip, shown_now, motion.frame, L)]
-            if motion.lens is not None:
+            if motion.lens is not None and motion.lens_title is None:
                 moved += update_strip(motion.lens, _about_midpoint(shown_now), motion.frame, L)
+            elif motion.lens is not None:
+                span = self._span[p]
+                m = nice_number(LENS_MOST * span / max(float(np.ptp(shown_now.x)) / L, 1e-300), "at_most")
+                motion.lens_title.set_text(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint")
+                moved += [motion.lens_title, *update_strip(motion.lens, _scaled(_about_midpoint(shown_now),
+                                                                                  2 * m / span), motion.frame, L)]
         return moved
+
+    def _lengths_in(self, p: int) -> tuple[float, float]:
+        """The rod's shortest and longest length in panel p over the animation, in units of L (sampled)."""
+        ks = np.unique(np.linspace(0, len(self.timeline) - 1, LENS_SAMPLES).round().astype(int))
+        lengths = [float(np.ptp(self.timeline.strip(self.history, int(k), p).x)) / self.L for k in ks]
+        return min(lengths), max(lengths)
+
+
+def _scaled(strip, factor: float):
+    """The strip with every x multiplied by `factor` (a lens whose x runs in units of its half-width)."""
+    return replace(strip, x=strip.x * factor, particles=tuple((name, x * factor) for name, x in strip.particles),
+                   flash_x=tuple(x * factor for x in strip.flash_x))
 
 
 def _about_midpoint(strip):

@@ -33,7 +33,7 @@ from typing import Sequence
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
-from rodparadox.handout.words import listed, time_name, with_primes
+from rodparadox.handout.words import time_name, with_primes
 from rodparadox.handout.worksheet import questions
 from rodparadox.numbers import exact
 from rodparadox.physics.engine import History

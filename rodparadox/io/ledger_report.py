@@ -17,7 +17,7 @@ from rodparadox.physics.frames import Frame, frame_heading, time_window
 from rodparadox.physics.rod import turn_interval
 from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, instant_entries,
                                        rounding_zero)
-from rodparadox.numbers import MINUS, number_text
+from rodparadox.numbers import number_text
 
 FORMAT = "sears-paradox-ledger/1"
 #: slices drawn between the ends of a frame's time window when no times are given (plus every turn's start and

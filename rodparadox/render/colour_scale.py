@@ -12,15 +12,17 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.snapshot import rod_rapidities
 
-#: the colour scale's half-range when the rod never changes velocity in a frame (every point at the centre)
+#: the colour scale's half-range, in rapidity, when the rod never changes velocity in a frame (every point at the
+#: centre)
 STILL_BOUND = 0.1
 
 
 @dataclass(frozen=True)
 class ColourScale:
-    """The strip's diverging colour scale: `centre` (the frame's initial rod velocity) +- `bound`; `shown` is the
-    part a colour bar shows, from the slowest to the fastest velocity any material point takes (never past c,
-    which centre +- bound can be: 0.6 +- 0.6 in Fig. 2's S′)."""
+    """The strip's diverging colour scale, even in rapidity: `centre` (the frame's initial rod velocity) and
+    `bound`, the half-range in rapidity about it, so near c, where every velocity after the impacts crowds into
+    0.97..0.9995, the colours still spread (a colour bar is ticked in velocity, on this rapidity scale); `shown`
+    is the part a colour bar shows, from the slowest to the fastest velocity any material point takes."""
 
     centre: float
     bound: float
@@ -28,16 +30,23 @@ class ColourScale:
 
     @property
     def limits(self) -> tuple[float, float]:
-        return self.centre - self.bound, self.centre + self.bound
+        """The scale's two ends as velocities: tanh(atanh(centre) -+ bound), always inside (-c, c)."""
+        eta = math.atanh(self.centre)
+        return math.tanh(eta - self.bound), math.tanh(eta + self.bound)
+
+    @property
+    def ends(self) -> tuple[float, float]:
+        """The velocities a colour bar spans: `shown`, or the limits for a rod that never turns."""
+        return self.shown or self.limits
 
 
 def colour_scale(history: History, frame: Frame) -> ColourScale:
-    """Centred on the rod's velocity in `frame` before any impact; bound the largest distance from it of any
-    material point's velocity over the whole history, so the colours mean the same at every instant."""
+    """Centred on the rod's velocity in `frame` before any impact; bound the largest distance in rapidity from it
+    of any material point's velocity over the whole history, so the colours mean the same at every instant."""
     centre = frame.rod_velocity()
     eta = frame.rapidity
-    velocities = [math.tanh(r - eta) for r in rod_rapidities(history)]
-    bound = max(abs(u - centre) for u in velocities)
+    rapidities = [r - eta for r in rod_rapidities(history)]
+    bound = max(abs(r - math.atanh(centre)) for r in rapidities)
     if bound <= 0:
         return ColourScale(centre, STILL_BOUND)
-    return ColourScale(centre, bound, (min(velocities), max(velocities)))
+    return ColourScale(centre, bound, (math.tanh(min(rapidities)), math.tanh(max(rapidities))))

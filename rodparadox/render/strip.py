@@ -21,19 +21,22 @@ from __future__ import annotations
 
 from typing import NamedTuple, Sequence
 
+import math
+
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.colorbar import Colorbar
-from matplotlib.colors import Normalize
+from matplotlib.colors import FuncNorm
 from matplotlib.figure import Figure, SubFigure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
+from matplotlib.ticker import NullLocator
 
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
-from rodparadox.numbers import shown
+from rodparadox.numbers import impact_name, shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.render.text import coordinate_names
@@ -94,23 +97,57 @@ def colour_map(style: Style | str):
     return matplotlib.colormaps[name]
 
 
+def colour_norm(scale: ColourScale, style: Style | str) -> FuncNorm:
+    """Velocity -> 0..1 for the colour map, linear in rapidity (`ColourScale`). On screen over the scale's
+    limits, so its centre, the rod before any impact, is the diverging map's white; in print over the
+    velocities the rod takes, slowest light to fastest dark, so a rod that only speeds up (or only slows
+    down) from its first velocity starts light, at the ramp's pale end, not at mid-grey."""
+    lo, hi = scale.ends if _style(style).name == "print" else scale.limits
+    return FuncNorm((np.arctanh, np.tanh), vmin=lo, vmax=hi)
+
+
 def readout_text(strip: Strip, frame: Frame, L: float) -> str:
     """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
     now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
-    lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
+    lit = f"   {', '.join(impact_name(name) for name in strip.flashing)}!" if strip.flashing else ""
     return f"{clock} = {shown(strip.t / L, 4)} L in {frame_name(frame)}{lit}"
 
 
-def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
-    """Three ticks, the scale's two ends and its centre (the frame's rod velocity before any impact), and the
-    bar's name."""
-    lo, hi = scale.shown or scale.limits
-    ticks = sorted({lo, scale.centre, hi}) if lo <= scale.centre <= hi else [lo, hi]
+#: room between two colour-bar tick labels, in multiples of the font size
+TICK_GAP = 0.8
+
+
+def colour_bar_ticks(scale: ColourScale, width: float, size: float) -> tuple[list[float], list[str]]:
+    """The ticks of a colour bar `width` points wide with labels of `size` points: the scale's two ends and its
+    centre (the frame's rod velocity before any impact), placed on the bar's rapidity scale; the centre is left
+    out when its label would touch an end's (near c: 0.97 beside 0.9995), and one end when the two would."""
+    from rodparadox.render.text import approximate_size
+
+    lo, hi = scale.ends
+    wanted = [lo, hi] + ([scale.centre] if lo < scale.centre < hi else [])  # ends first: they are kept first
     # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
-    labels = [shown(0.0 if abs(x) <= STEP_ROUNDING * scale.bound else x, 3) for x in ticks]
-    colour_bar.set_ticks(list(ticks), labels=labels)
-    colour_bar.ax.set_xlim(lo, hi)  # the velocities the rod takes: the scale's ends can lie past c
+    label = {x: shown(0.0 if abs(x) <= STEP_ROUNDING * max(abs(lo), abs(hi)) else x, 3) for x in wanted}
+    a, b = math.atanh(lo), math.atanh(hi)
+    place = {x: (0.5 if b == a else (math.atanh(x) - a) / (b - a)) * width for x in wanted}
+    half = {x: approximate_size(label[x], size)[0] / 2 for x in wanted}
+    kept: list[float] = []
+    for x in wanted:
+        if all(abs(place[x] - place[y]) >= half[x] + half[y] + TICK_GAP * size for y in kept):
+            kept.append(x)
+    kept.sort()
+    return kept, [label[x] for x in kept]
+
+
+def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
+    """Ticks that never overlap (`colour_bar_ticks`) and the bar's name."""
+    lo, hi = scale.ends
+    ax = colour_bar.ax
+    width = ax.bbox.width * 72 / ax.get_figure(root=True).dpi
+    ticks, labels = colour_bar_ticks(scale, width, size)
+    colour_bar.set_ticks(ticks, labels=labels)
+    colour_bar.ax.xaxis.set_minor_locator(NullLocator())
+    colour_bar.ax.set_xlim(lo, hi)  # the velocities the rod takes (in print the norm's own ends)
     colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
     colour_bar.set_label(COLOUR_BAR_LABEL, fontsize=size, labelpad=1)
 
@@ -132,8 +169,8 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     ax.tick_params(labelsize=0.8 * fs, length=2.5, pad=2)
     if bar_width is None:
         bar_width = ax.bbox.height * 72 / ax.get_figure(root=True).dpi * 0.5
-    bar = LineCollection([], cmap=colour_map(st), norm=Normalize(*scale.limits), linewidths=bar_width,
-                         capstyle="butt", animated=animated)
+    bar = LineCollection([], cmap=colour_map(st), norm=colour_norm(scale, st), linewidths=bar_width,
+                         capstyle="butt", animated=animated, antialiaseds=False)  # no seams between neighbours
     ax.add_collection(bar)
     half_bar = bar_width / 2 / (ax.bbox.height * 72 / ax.get_figure(root=True).dpi / 2)  # points -> axes' y
     outline = ax.plot([], [], color=st.rod.colour, linewidth=max(0.6, 0.45 * st.rod.width), solid_joinstyle="miter",
@@ -166,8 +203,12 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
     """Move a drawn strip to the instant of `strip`; returns the artists that changed (`StripArtists.moving`)."""
     x = strip.x / L
     mid = 0.5 * (strip.velocity[1:] + strip.velocity[:-1])
-    artists.bar.set_segments([[(a, 0.0), (b, 0.0)] for a, b in zip(x[:-1], x[1:])])
-    artists.bar.set_array(mid)
+    # neighbours of one colour are one segment: butt-capped neighbours antialiased apart show a seam between them
+    # (a rod at rest in print: a pale line every 0.1 L)
+    starts = np.flatnonzero(np.concatenate([[True], mid[1:] != mid[:-1]]))
+    ends = np.concatenate([starts[1:], [len(mid)]])
+    artists.bar.set_segments([[(x[a], 0.0), (x[b], 0.0)] for a, b in zip(starts, ends)])
+    artists.bar.set_array(mid[starts])
     h = artists.half_bar
     artists.outline.set_data([x[0], x[-1], x[-1], x[0], x[0]], [-h, -h, h, h, -h])
     artists.dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))

@@ -29,6 +29,9 @@ REST_DOTS = (0, (1.0, 1.8))
 MOVING_DASHDOT = (0, (6.0, 2.0, 1.2, 2.0))
 AXES_DASHDOTDOT = (0, (7.0, 2.0, 1.2, 2.0, 1.2, 2.0))
 CONE_SHORT_DASH = (0, (2.0, 2.0))
+#: the rod's own lines of simultaneity (Options.rod_now): long dashes, so that in grey they are not taken for the
+#: material lines (thin, solid) they cross
+ROD_NOW_DASH = (0, (16.0, 4.0))
 #: the ledger figure's particle B in print, where both particles are black and no label names the curves
 LEDGER_DASHDOT = (0, (6.0, 1.8, 1.5, 1.8))
 
@@ -116,7 +119,7 @@ _DEFAULT = Style(
     hyperbola=Ink("#9a9a9a", 0.6),
     grid=Ink("#e3e3e3", 0.5),
     rod_interior=Ink(_BLUE, 0.55),
-    rod_now=Ink("#3d3d3d", 0.75),
+    rod_now=Ink("#3d3d3d", 0.75, ROD_NOW_DASH),
     clock_size=3.2,
     tick_length=3.5,
     ledger_particles=_frozen(_DEFAULT_PARTICLES),
@@ -126,7 +129,10 @@ _DEFAULT = Style(
     handout_body_size=9.5,
     rc=_frozen({**_COMMON_RC, **_SANS}),
 )
-_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PARTICLE_DASH)}
+#: in print both particles are black: B is long-and-short dashed (not dash-dotted: that is S′'s simultaneity), so
+#: the legend tells A from B without colour
+PRINT_B_DASH = (0, (8.0, 2.0, 3.0, 2.0))
+_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PRINT_B_DASH)}
 _PRINT = Style(
     name="print",
     about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
@@ -141,7 +147,7 @@ _PRINT = Style(
     hyperbola=Ink("#8c8c8c", 0.45),
     grid=Ink("#e6e6e6", 0.4),
     rod_interior=Ink("#9a9a9a", 0.4),  # grey, behind: the rod's own lines of simultaneity are the black ones
-    rod_now=Ink("#000000", 0.55),
+    rod_now=Ink("#000000", 0.55, ROD_NOW_DASH),
     clock_size=3.0,
     tick_length=3.5,
     ledger_particles=_frozen({**_PRINT_PARTICLES, "B": _PRINT_PARTICLES["B"]._replace(dashes=LEDGER_DASHDOT)}),

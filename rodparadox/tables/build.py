@@ -102,7 +102,9 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
             values = (b.E, b.p, a.E, a.p)
             # the impact's time is left blank too: it is the events table's t, which a worksheet asks for
             rows.append((Cell(name if k == 0 else ""), Cell(t if k == 0 else "", blank and k == 0),
-                         Cell(_body_name(body)), *(Cell(fixed(q, zero), blank) for q in values)))
+                         Cell(_body_name(body)),  # a body's E is at least its rest energy, never a rounding zero
+                         *(Cell(fixed(q, zero if (j % 2 or body == "hidden") else 0.0), blank)
+                           for j, q in enumerate(values))))
         total = entry.total
         rows.append((Cell(""), Cell(""), Cell("total"), *(Cell(fixed(q, zero), blank)
                                                           for q in (total.E, total.p, total.E, total.p))))
