@@ -203,9 +203,10 @@ def test_the_ledger_keeps_the_rods_rest_energy_beside_a_particle_of_2e12():
     s = run(parse("name: heavyA\nv: 0.9999999\nparticles:\n  A:\n    mass: 1.0e+9\n    gap: 0.5\n", "heavyA.yaml", "heavyA"))
     text = to_text(s, (rest_frame(),))
     row = next(line for line in text.splitlines() if line.strip().startswith("rod, kinetic"))
-    assert row.split()[2:] == ["1", "0", "1", "0"]
+    assert row.split()[2:] == ["1.0000", "0.0000", "1.0000", "0.0000"]  # four decimals in every ledger column
     before = next(line for line in text.splitlines() if line.strip().startswith("rod, dynamical"))
-    assert before.split()[2:4] == ["1", "0"]
+    assert before.split("E ")[1].split(" ->")[0] == "1.0000"  # its rest energy before A1
     table = ledger_table(s, rest_frame())
-    rod = next(row for row in table.rows if row[2].text == "rod")
-    assert rod[3].text == "1"
+    kinetic = next(row for row in table.rows if row[2].text == "rod, kinetic")
+    dynamical = next(row for row in table.rows if row[2].text.startswith("rod, dynamical"))
+    assert (kinetic[3].text, dynamical[3].text) == ("1.0000", "1.0000")

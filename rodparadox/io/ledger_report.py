@@ -161,8 +161,8 @@ def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | Non
             d_b, d_a = entry.rod_dynamical_before, entry.rod_dynamical_after
             table = _table(rows)
             lines += ["", f"  impact {labels} ({ends}) at t = {number_text(entry.t)}", *table,
-                      f"  rod, dynamical (its momentum's; not a summand): E {fixed(d_b.E, zero)} -> "
-                      f"{fixed(d_a.E, zero)}, p {fixed(d_b.p, zero)} -> {fixed(d_a.p, zero)}"]
+                      f"  rod, dynamical (its momentum's; not a summand): E {fixed(d_b.E)} -> "
+                      f"{fixed(d_a.E)}, p {fixed(d_b.p, zero)} -> {fixed(d_a.p, zero)}"]
             for i in entry.impacts:
                 e = next(e for e in impact_entries(history, eta) if e.impact is i)
                 lines.append(f"  impulse of {i.label} to the rod: E {fixed(e.impulse.E, zero)}, "

@@ -18,6 +18,7 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   text     what the panels say (frame names, titles, tick labels) and text sizes in points, without a renderer
   layout   the layout in points: data boxes, rows of panels, tick steps, title lines, the legend's shape
   labels   label placement: beside an anchor, clear of lines, markers and other labels
+  layer_base  what every layer shares: options, the panel context, the Layer class, inks as keywords
   layers   one class per element (world-sheet, rod ends, particles, impacts, lines of simultaneity, extras):
            it draws itself, names what labels must avoid, and gives its own legend entry; ink from the style
   panel    one panel: its axes, then every enabled layer, then the labels

@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, NamedTuple
 
 import numpy as np
 from matplotlib.lines import Line2D
@@ -26,10 +25,12 @@ from matplotlib.patches import Patch, Polygon
 from rodparadox.physics import kinematics
 from rodparadox.physics import rod
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
+from rodparadox.physics.frames import Frame, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.physics.kinematics import Event, HyperbolicArc
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
+from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
+                                          impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
@@ -40,128 +41,6 @@ HYPERBOLA_SAMPLING = 1e-5
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16
 
-
-class Options(NamedTuple):
-    """The teacher's extras, all off by default because they crowd a printed figure."""
-
-    other_axes: bool = False  # the other frame's x and t axes, tilted
-    light_cones: bool = False  # the light cone of every impact
-    hyperbolae: bool = False  # calibration hyperbolae t^2 - x^2 = +-k^2 about the shared origin
-    grid: bool = False
-    titled: bool = True  # the scenario's name and v above the panels (a handout's section heading says it instead)
-    rod_lines: int = 0  # this many interior material world-lines of the rod
-    rod_now: bool = False  # the rod's own lines of simultaneity: each turn's fan, and lines between turns
-    proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end
-
-
-# --- ink: how the style says a line or a marker is drawn, in one place ---------------------------------------
-
-def line_kwargs(ink: Ink) -> dict[str, Any]:
-    """matplotlib's keywords for a line drawn in `ink`."""
-    return {"color": ink.colour, "linewidth": ink.width, "linestyle": ink.dashes}
-
-
-def marker_kwargs(size: float, face: str, edge: str, edge_width: float) -> dict[str, Any]:
-    """matplotlib's keywords for round markers without a line."""
-    return {"linestyle": "none", "marker": "o", "markersize": size, "markerfacecolor": face,
-            "markeredgecolor": edge, "markeredgewidth": edge_width}
-
-
-def impact_marker(style: Style) -> dict[str, Any]:
-    """An impact: a filled dot with a white rim, so it reads on top of any line."""
-    return marker_kwargs(style.impact_size, style.impact_colour, "white", 0.6)
-
-
-def clock_marker(style: Style, ink: Ink) -> dict[str, Any]:
-    """A tick of proper time: a hollow circle in the world-line's colour."""
-    return marker_kwargs(style.clock_size, "white", ink.colour, 0.8)
-
-
-def line_handle(ink: Ink) -> Line2D:
-    return Line2D([], [], **line_kwargs(ink))
-
-
-def widest_line(style: Style) -> float:
-    """The widest line a label must keep clear of."""
-    return max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
-                                     style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
-
-
-# --- what a layer is given and gives back ------------------------------------------------------------------
-
-@dataclass(frozen=True)
-class PanelContext:
-    """One panel as the layers see it: the history in one frame, the axes' limits and tick steps, the style."""
-
-    history: History
-    style: Style
-    options: Options
-    fs: dict[str, float]  # type sizes, points
-    letter: str
-    view: FrameView
-    worldlines: dict[str, np.ndarray]  # units of L
-    box: tuple[float, float, float, float]  # the axes' limits x0, x1, t0, t1, units of L
-    steps: tuple[float, float]  # the x and t tick steps, units of L
-    clock_step: float  # proper time between two clock ticks, same units as L
-
-    @property
-    def L(self) -> float:
-        return self.history.scenario.L
-
-    @property
-    def v(self) -> float:
-        return self.history.scenario.v
-
-    def events(self) -> list[tuple[str, str, float, float]]:
-        """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
-        return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
-
-    def plot(self, ax, points: np.ndarray, ink: Ink, zorder: float, gid: str):
-        """A polyline in `ink`: the one way layers draw a line."""
-        line, = ax.plot(points[:, 0], points[:, 1], **line_kwargs(ink), zorder=zorder, gid=gid)
-        return line
-
-
-class LayerArtists(NamedTuple):
-    """What a layer drew in one panel."""
-
-    artists: tuple = ()
-    obstacles: tuple = ()  # polylines (n x 2, units of L) that no label may cross
-    guides: tuple = ()  # polylines a label may cross, on a white ground
-    labels: tuple = ()  # Labels to place once every layer has drawn
-
-
-class Layer:
-    """One element of the diagram; see the module's docstring."""
-
-    name = ""
-    label_rank = 0
-
-    def enabled(self, options: Options) -> bool:
-        return True
-
-    def draw(self, ax, panel: PanelContext) -> LayerArtists:
-        raise NotImplementedError
-
-    def legend_entry(self, style: Style, history: History, options: Options,
-                     clock_step: float | None = None) -> tuple[Any, str] | None:
-        return None
-
-
-def clip_line(x: float, t: float, dx: float, dt: float, box) -> np.ndarray | None:
-    """The part inside box = (x0, x1, t0, t1) of the infinite line through (x, t) along (dx, dt), or None."""
-    x0, x1, t0, t1 = box
-    lo, hi = -math.inf, math.inf
-    for p, a, b in ((dx, x0 - x, x1 - x), (dt, t0 - t, t1 - t)):
-        if p == 0.0:
-            if a > 0 or b < 0:
-                return None
-            continue
-        s0, s1 = sorted((a / p, b / p))
-        lo, hi = max(lo, s0), min(hi, s1)
-    if not lo < hi:
-        return None
-    return np.array([[x + lo * dx, t + lo * dt], [x + hi * dx, t + hi * dt]])
 
 
 # --- the layers ----------------------------------------------------------------------------------------------

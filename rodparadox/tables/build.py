@@ -109,8 +109,8 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
         rows.append((Cell(""), Cell(""), Cell("total"), *(Cell(fixed(q, zero), blank)
                                                           for q in (total.E, total.p, total.E, total.p))))
         b, a = entry.rod_dynamical_before, entry.rod_dynamical_after
-        rows.append((Cell(""), Cell(""), Cell(ROD_DYNAMICAL), *(Cell(fixed(q, zero), blank)
-                                                                  for q in (b.E, b.p, a.E, a.p))))
+        rows.append((Cell(""), Cell(""), Cell(ROD_DYNAMICAL), *(Cell(fixed(q, zero if j % 2 else 0.0), blank)
+                                                                  for j, q in enumerate((b.E, b.p, a.E, a.p)))))
     _, tn = coordinates(frame)
     total = history.initial_total(frame.rapidity)
     return Table(f"ledger_{frame_word(frame)}", f"Energy and momentum at each impact, frame {frame_symbol(frame)}",
