@@ -59,20 +59,58 @@ def report(written, quiet: bool) -> None:
     held these bytes; nothing with -q. `written` may be lazy (each file written as it is reached): it is read to
     the end either way."""
     for path, changed in written:
-        if not quiet:
+        if not quiet and not _is_standard_output(path):  # -o /dev/stdout: the output is the data itself
             emit(str(path) if changed else f"{path} (unchanged)")
+
+
+def _is_standard_output(path) -> bool:
+    """Whether `path` is this process's standard output (/dev/stdout, or what it leads to)."""
+    import os
+    import sys
+
+    if str(path) in ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"):
+        return True
+    try:
+        here, there = os.fstat(sys.stdout.fileno()), os.stat(path)
+    except (OSError, ValueError, AttributeError):
+        return False
+    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino) and not os.path.isdir(path)
 
 
 def emit(text: str, nl: bool = True) -> None:
     """Print to standard output: a failed write (a full disk) is one sentence and exit status 1, a closed pipe
     (`| head -1`) a quiet exit."""
     try:
-        click.echo(text, nl=nl)
+        _write_all(text + ("\n" if nl else ""))
     except BrokenPipeError:
         _quiet_exit()
     except OSError as e:
         stdout_to_devnull()
         raise EnvironmentFailure(f"cannot write to standard output: {(e.strerror or str(e)).lower()}.") from None
+
+
+def _write_all(text: str) -> None:
+    """Write `text` to standard output whole. A text stream without a buffer in between (`python -u`,
+    PYTHONUNBUFFERED) hands the system one write and drops what a pipe did not take; here every short write is
+    followed by another, so a reader that went away is always seen (BrokenPipeError), never a cut table."""
+    import sys
+
+    stream = sys.stdout
+    raw = getattr(stream, "buffer", None)
+    if raw is None or stream is None:  # a stream of text only (a test's): it takes everything or raises
+        click.echo(text, nl=False)
+        return
+    stream.flush()
+    view = memoryview(text.encode(stream.encoding or "utf-8", stream.errors or "strict"))
+    while view:
+        written = raw.write(view)
+        if written is None:  # a non-blocking stream that is full: wait for it
+            import select
+
+            select.select([], [raw], [])
+            continue
+        view = view[written:]
+    raw.flush()
 
 
 def _quiet_exit():

@@ -57,7 +57,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
 
     paper = paper.lower()
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
-                                folders={"tex": "the LaTeX pieces"}, folder_in_folder=True, check=_check_output,
+                                folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=[paper] if paper != HANDOUT_PAPER else [])

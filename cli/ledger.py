@@ -62,6 +62,18 @@ def _kind(fmt: str | None, output: str | None) -> str:
     raise words.unknown_extension(output, ".txt, .json, .csv, .md, .tex, .svg, .pdf or .png,")
 
 
+def _check_agreement(kind: str, fmt: str | None, output: str | None) -> None:
+    """-o's extension against --format: a table into a file named as a figure (x.svg with json), or a figure into
+    one named as a table (x.tex with svg), is a contradiction, refused as export and plot refuse theirs."""
+    if fmt is None or output in (None, "-") or Path(output).is_dir():
+        return
+    suffix = Path(output).suffix.lstrip(".").lower()
+    named = _EXTENSIONS.get(suffix) or (suffix if suffix in FIGURE_FORMATS else None)
+    asked = [part.strip().lower() for part in fmt.split(",")]
+    if named is not None and (named not in asked or (kind == "table") != (suffix in _EXTENSIONS)):
+        raise words.output_disagrees(output, fmt.strip())
+
+
 @click.command()
 @scenario_options()
 @frame_option("The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
@@ -93,7 +105,9 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if output is not None and not output.strip():
         raise words.empty_output(output)
     times = _times(at)
-    if _kind(fmt, output) == "table":
+    kind = _kind(fmt, output)
+    _check_agreement(kind, fmt, output)
+    if kind == "table":
         fmt = (fmt or _EXTENSIONS.get(Path(output or "-").suffix.lstrip(".").lower(), "text")).strip().lower()
         if output not in (None, "-"):
             suffix = Path(output).suffix.lstrip(".").lower()
