@@ -14,8 +14,8 @@ import click
 from rodparadox.errors import OptionError
 
 from . import words
-from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
-                     scenario_options, style_option)
+from .common import (NUMBER, Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
+                     reports_errors, run_scenario, scenario_options, style_option)
 
 #: the defaults: 6 seconds at 25 frames per second, a rate a GIF stores exactly (4 hundredths of a second)
 DEFAULT_FPS = 25
@@ -33,10 +33,10 @@ ANIMATION_FORMATS = ("gif", "mp4", "png")
                    "velocity runs smoothly from A to B.")
 @format_option("gif, mp4 (needs ffmpeg) or png (numbered stills in a folder). [default: the extension of -o, "
                "else gif]", default=None, metavar="gif|mp4|png")
-@click.option("--fps", "fps", type=int, default=DEFAULT_FPS, show_default=True, metavar="N",
+@click.option("--fps", "fps", type=Whole(), default=DEFAULT_FPS, show_default=True, metavar="N",
               help="Frames per second; for a GIF one of 1, 2, 4, 5, 10, 20, 25, 50 (it stores hundredths of a "
                    "second).")
-@click.option("--seconds", "seconds", type=float, default=DEFAULT_SECONDS, show_default=True, metavar="S",
+@click.option("--seconds", "seconds", type=NUMBER, default=DEFAULT_SECONDS, show_default=True, metavar="S",
               help="The animation's length, above 0 and at most 120 seconds: round(S * N) frames.")
 @output_option("gif, mp4: a folder (it must exist) or a file name; png: the folder of the stills. "
                "[default: outputs/, created if missing]")
@@ -70,6 +70,7 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     planned.prepare([job], described, output)
     line = timeline(history, job.frames[0], mode, count)
 
+    before_matplotlib()
     from rodparadox.animate.scenes import images_of  # matplotlib: only now, after every input has been checked
     from rodparadox.animate.encoders import write_images
 

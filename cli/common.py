@@ -54,6 +54,45 @@ def reports_errors(command):
     return wrapper
 
 
+def before_matplotlib() -> None:
+    """Call before a command first imports matplotlib: where its default config and cache folders cannot be made
+    (an unwritable HOME), point MPLCONFIGDIR at a temporary folder of our own, removed at exit, so that
+    matplotlib's warnings about them ("mkdir -p failed", "created a temporary cache directory") never reach
+    standard error. matplotlib would make the same folders itself; a MPLCONFIGDIR the user set is left alone."""
+    import atexit
+    import os
+    import shutil
+    import sys
+    import tempfile
+    from pathlib import Path
+
+    if "matplotlib" in sys.modules or os.environ.get("MPLCONFIGDIR") or not sys.platform.startswith("linux"):
+        return
+    try:
+        home = Path.home()
+    except RuntimeError:
+        home = None
+    for variable, default in (("XDG_CONFIG_HOME", ".config"), ("XDG_CACHE_HOME", ".cache")):
+        base = os.environ.get(variable) or (home / default if home is not None else None)
+        if base is None:
+            break
+        folder = Path(base, "matplotlib")
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+        except OSError:
+            break
+        if not (folder.is_dir() and os.access(folder, os.W_OK)):
+            break
+    else:
+        return
+    try:
+        folder = tempfile.mkdtemp(prefix="sears-paradox-matplotlib-")
+    except OSError:
+        return  # matplotlib will say why itself
+    atexit.register(shutil.rmtree, folder, True)
+    os.environ["MPLCONFIGDIR"] = folder
+
+
 def report(written, quiet: bool) -> None:
     """Print each path of `written` (path, changed), `PATH (unchanged)` for a file left alone because it already
     held these bytes; nothing with -q. `written` may be lazy (each file written as it is reached): it is read to
@@ -177,16 +216,59 @@ def checked_frame_velocity(u: float | None) -> float | None:
         raise words.frame_error(e, "frame_velocity", u) from None
 
 
+# --- numbers: one rule for every number on the command line ------------------------------------------
+# Decimal digits, an optional point and exponent (`rodparadox.numbers.decimal`), as in a scenario file: Python's
+# `1_000` is refused as `0x10` is, with the same sentence.
+
+def _not_decimal(value, kind: str) -> str:
+    if isinstance(value, str) and ("_" in value or value.strip().lower().lstrip("+-").startswith(("0x", "0b", "0o"))):
+        examples = "1000, 0.6, 1e-6" if kind == "float" else "1000"
+        return f"{value!r} is not a valid {kind}: write it in plain decimal digits (e.g. {examples})."
+    return f"{value!r} is not a valid {kind}."
+
+
+class Decimal(click.types.FloatParamType):
+    """A float written in decimal (`numbers.decimal`): click's float without Python's underscores."""
+
+    def convert(self, value, param, ctx):
+        from rodparadox.numbers import decimal
+
+        if isinstance(value, float):
+            return value
+        try:
+            return decimal(value)
+        except ValueError:
+            self.fail(_not_decimal(value, "float"), param, ctx)
+
+
+class Whole(click.IntRange):
+    """A whole number written in decimal digits (`numbers.whole`), within optional bounds: click's int (or
+    IntRange) without Python's underscores."""
+
+    def convert(self, value, param, ctx):
+        from rodparadox.numbers import whole
+
+        if not isinstance(value, int):
+            try:
+                value = whole(value)
+            except ValueError:
+                self.fail(_not_decimal(value, "integer"), param, ctx)
+        return super().convert(value, param, ctx)
+
+
+NUMBER = Decimal()
+
+
 # --- the options the commands share ----------------------------------------------------------------
 # Each declared once, named as `words` names it in messages; where commands word an option differently, the
 # command gives its own help (and metavar).
 
 scenario_argument = click.argument("scenario", metavar="SCENARIO")
 scenarios_argument = click.argument("scenarios", nargs=-1, required=True, metavar="SCENARIO...")
-v_option = click.option(option("v"), "v", type=float, metavar="V",
+v_option = click.option(option("v"), "v", type=NUMBER, metavar="V",
                         help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
-L_option = click.option(option("L"), "L", type=float, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
-frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=float, metavar="U",
+L_option = click.option(option("L"), "L", type=NUMBER, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
+frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=NUMBER, metavar="U",
                                      help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
 quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")

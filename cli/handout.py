@@ -12,8 +12,8 @@ import click
 
 from rodparadox.errors import OptionError
 
-from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
-                     scenario_options, style_option)
+from .common import (before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
+                     reports_errors, run_scenario, scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
@@ -64,6 +64,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     histories = [run_scenario(s, name) for s, name in zip(job.scenarios, job.names)]
     planned.prepare([job], described, output)
 
+    before_matplotlib()
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
 

@@ -107,3 +107,107 @@ def test_handout_tex_writes_into_the_folder_named_every_time(tmp_path):
     printed = second.output.splitlines()
     assert printed and all(line.startswith(f"{folder}/") and line.endswith(" (unchanged)") for line in printed)
     assert {Path(line.split(" ")[0]).name for line in printed} == {p.name for p in folder.iterdir()}
+
+
+# --- item 11: YAML 1.1's other numbers --------------------------------------------------------------------
+
+@pytest.mark.parametrize("text, meant", [("1:30", "in base 60 as 90"),  # 1*60 + 30
+                                         ("-1:30", "in base 60 as -90"),
+                                         ("1:30.5", "in base 60 as 90.5"),
+                                         ("010", "in octal as 8"),  # 1*8 + 0
+                                         ("0x10", "in hexadecimal as 16"),
+                                         ("0b11", "in binary as 3"),
+                                         ("1_000", "skipping the underscores, as 1000")])
+def test_a_number_yaml_reads_otherwise_than_its_digits_is_refused(tmp_path, text, meant):
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text(f"v: 0.6\nparticles:\n  A: {{gap: 0.5}}\n  B:\n    gap: 1\n    speed: 0.6\nL: {text}\n")
+    assert error_of("events", scenario) == (f"{scenario}, line 7: L is {text}, which YAML 1.1 reads {meant}; write "
+                                            f"the number in plain decimal digits.")
+    scenario.write_text(f"v: 0.6\nparticles:\n  A:\n    gap: {text}\n")
+    assert error_of("events", scenario).startswith(f"{scenario}, line 4: particles.A.gap is {text}, which YAML 1.1")
+
+
+@pytest.mark.parametrize("text, L", [("2.", "2"), (".5", "0.5"), ("1e1", "10"), ("007.5", "7.5"), ("+3", "3"),
+                                     ("'2'", None)])
+def test_a_decimal_number_in_yaml_is_read_as_written(tmp_path, text, L):
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text(f"v: 0.6\nL: {text}\nparticles:\n  A: {{gap: 0.5}}\n")
+    if L is None:  # a quoted number is text: the scenario's own check says so
+        assert "L" in error_of("events", scenario)
+        return
+    assert run("events", scenario).output.startswith(f"s: v = 0.6, L = {L} ")
+
+
+# --- item 15: one rule for numbers on the command line: decimal digits, no Python-only underscores -----------
+
+@pytest.mark.parametrize("args, message", [
+    (["events", "fig2", "--v", "0_6"], "Invalid value for '--v': '0_6' is not a valid float: write it in plain "
+                                       "decimal digits (e.g. 1000, 0.6, 1e-6)."),
+    (["events", "fig2", "--v", "0x1"], "Invalid value for '--v': '0x1' is not a valid float: write it in plain "
+                                       "decimal digits (e.g. 1000, 0.6, 1e-6)."),
+    (["events", "fig2", "--L", "1_0"], "Invalid value for '--L': '1_0' is not a valid float: write it in plain "
+                                       "decimal digits (e.g. 1000, 0.6, 1e-6)."),
+    (["animate", "fig2", "--fps", "1_0"], "Invalid value for '--fps': '1_0' is not a valid integer: write it in plain "
+                                          "decimal digits (e.g. 1000)."),
+    (["animate", "fig2", "--seconds", "1_0"], "Invalid value for '--seconds': '1_0' is not a valid float: write it in "
+                                              "plain decimal digits (e.g. 1000, 0.6, 1e-6)."),
+    (["plot", "fig2", "--rod-lines", "1_0"], "Invalid value for '--rod-lines': '1_0' is not a valid integer: write it "
+                                             "in plain decimal digits (e.g. 1000)."),
+    (["ledger", "fig2", "--at", "1_000"], "option --at must be one or more times (numbers, in the unit L is given "
+                                          "in), comma-separated, got '1_000'."),
+    (["ledger", "fig2", "--at", "0x10"], "option --at must be one or more times (numbers, in the unit L is given "
+                                         "in), comma-separated, got '0x10'."),
+    (["plot", "fig2", "--frame", "both,0_3"], "option --frame: a frame must be rest, moving, both or a velocity U with "
+                                              "-0.9999999 <= U <= 0.9999999 (or a comma-separated list of these), got "
+                                              "'0_3'."),
+    (["animate", "fig2", "--mode", "boost", "--frame", "0_1..0.5"],
+     "option --frame: each end of A..B must be rest, moving or a velocity U relative to S; not a velocity: '0_1'."),
+])
+def test_numbers_with_underscores_are_refused_as_hexadecimal_is(args, message):
+    assert error_of(*args) == message
+
+
+def test_decimal_numbers_in_every_spelling_are_read():
+    from rodparadox.numbers import decimal, whole
+
+    assert [decimal(t) for t in ("0.6", ".6", "0.60", "+0.6", "6e-1", "6E-1", " 0.6 ", "-0")] == [0.6] * 7 + [0.0]
+    assert str(decimal("-0")) == "0.0" and whole("+12") == 12 and whole(" 7") == 7
+    for bad in ("1_000", "0x10", "0b1", "1e", "", "1,5", "٣"):
+        with pytest.raises(ValueError):
+            decimal(bad)
+    for bad in ("1_0", "1.0", "0x1", "1e2"):
+        with pytest.raises(ValueError):
+            whole(bad)
+
+
+# --- item 15: --at far beyond the history -----------------------------------------------------------------
+
+@pytest.mark.parametrize("t", ["1e308", "-1e308", "1e5"])
+def test_a_time_far_outside_the_window_is_refused(t):
+    message = error_of("ledger", "fig2", "--at", t)
+    assert message.startswith(f"option --at: {float(t):g} lies more than 1000 window lengths outside S's window (")
+    assert message.endswith("), where nothing changes; give times near it.")
+
+
+def test_a_time_well_outside_the_window_gives_the_state_after_the_last_impact():
+    """fig2 is settled after its last impact (t = 79/24 in S, README): at t = 1000 every body's (E, p) is the
+    one at t = 10."""
+    import json
+
+    slices = json.loads(run("ledger", "fig2", "--frame", "rest", "--at", "10,1000", "--format", "json").output)
+    late, far = slices["frames"]["rest"]["slices"]
+    assert (late["t"], far["t"]) == (10, 1000)
+    assert {k: v for k, v in late.items() if k != "t"} == {k: v for k, v in far.items() if k != "t"}
+
+
+# --- item 15: an unwritable HOME: no matplotlib warnings, nothing left in the temporary folder ---------------
+
+def test_an_unwritable_home_gives_no_matplotlib_warnings(tmp_path):
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("XDG_", "MPL"))}
+    env.update(HOME="/proc/version", TMPDIR=str(temporary))  # a file: no folder can be made in it, even by root
+    result = subprocess.run(_cli() + ["plot", "fig2", "-o", str(tmp_path / "p.svg")], capture_output=True, text=True,
+                            env=env, timeout=120)
+    assert (result.returncode, result.stderr, result.stdout) == (0, "", f"{tmp_path / 'p.svg'}\n")
+    assert list(temporary.iterdir()) == []

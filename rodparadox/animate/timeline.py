@@ -23,7 +23,7 @@ import numpy as np
 from rodparadox.physics.engine import History
 from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, sampling_tolerance, time_window, view
-from rodparadox.numbers import exact
+from rodparadox.numbers import decimal, exact
 from rodparadox.physics.kinematics import WorldLine
 from rodparadox.physics.snapshot import Strip, material_points, strip_at
 from rodparadox.render.colour_scale import ColourScale, colour_scale
@@ -158,7 +158,7 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
             ends.append(named_frame(part, v))
             continue
         try:
-            ends.append(frame_of_velocity(float(part) + 0.0))
+            ends.append(frame_of_velocity(decimal(part)))
         except (ValueError, FrameError) as e:
             reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
             raise OptionError("frame", spec, template="{what}: each end of A..B must be rest, moving or a velocity "

@@ -19,7 +19,7 @@ from rodparadox.physics.engine import WORLDLINE_NAMES, History, Impact
 from rodparadox.errors import FrameError
 from rodparadox.physics.kinematics import Event, Segment
 from rodparadox.physics.model import FASTEST, FRAME_NAMES, frame_velocity
-from rodparadox.numbers import exact, shown
+from rodparadox.numbers import decimal, exact, shown
 from rodparadox.tolerances import ONE_INSTANT, SAMPLING_TOLERANCE
 
 #: one panel per frame, lettered (a), (b), ...: at most eight in one figure
@@ -133,7 +133,7 @@ def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
             asked = [named_frame(name, v) for name in named]
         else:
             try:
-                u = float(item) + 0.0  # -0 is 0
+                u = decimal(item)  # -0 is 0; decimal digits only, as every number a user writes
             except ValueError:
                 raise FrameError(f"a frame must be rest, moving, both or a velocity U with {-FASTEST_FRAME!r} <= U <= "
                                  f"{FASTEST_FRAME!r} (or a comma-separated list of these), got {item!r}.") from None
