@@ -7,6 +7,7 @@ must not load numpy or matplotlib.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 
 import click
@@ -31,6 +32,69 @@ class EnvironmentFailure(click.ClickException):
 
 #: the exit status of a process killed by SIGPIPE (128 + 13), as `yes | head -1` leaves `yes`
 BROKEN_PIPE_STATUS = 141
+
+
+class Stopped(BaseException):
+    """A signal that ends the command (Ctrl-C's SIGINT, SIGTERM from kill or timeout, SIGHUP from a closed
+    terminal), raised where the program is, so that every `with` and `finally` on the way out runs: a temporary
+    file or folder (an MP4's, an atomic write's) is removed as for any error. Not an Exception: no `except
+    Exception` stops it."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+    @property
+    def exit_code(self) -> int:
+        return 128 + self.signum  # as the shell reports a process the signal killed: 130, 143, 129
+
+    def sentence(self) -> str:
+        import signal
+
+        said = "by Ctrl-C" if self.signum == signal.SIGINT else f"by {signal.Signals(self.signum).name}"
+        return f"interrupted {said}; no file was left half-written."
+
+
+#: the signals that end a command with its clean-up (`Stopped`)
+STOPPING_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
+
+
+def signal_number(name: str) -> int:
+    import signal
+
+    return int(getattr(signal, name))
+
+
+@contextlib.contextmanager
+def stopped_by_signals():
+    """While the command runs, each of STOPPING_SIGNALS raises `Stopped` (a second one, during the clean-up, is
+    ignored); the handlers before are restored after. Outside the main thread, signals cannot be caught: nothing
+    changes."""
+    import signal
+
+    def stop(signum, frame):
+        for name in STOPPING_SIGNALS:
+            try:
+                signal.signal(signal_number(name), signal.SIG_IGN)
+            except (ValueError, OSError):
+                pass
+        raise Stopped(signum)
+
+    before = {}
+    try:
+        for name in STOPPING_SIGNALS:
+            if hasattr(signal, name):
+                number = signal_number(name)
+                if signal.getsignal(number) is signal.SIG_IGN:
+                    continue  # nohup's SIGHUP, a background job's SIGINT: keep ignoring it, as Python does
+                before[number] = signal.signal(number, stop)
+    except ValueError:  # not the main thread
+        pass
+    try:
+        yield
+    finally:
+        for number, handler in before.items():
+            signal.signal(number, handler if handler is not None else signal.SIG_DFL)
 
 
 def reports_errors(command):

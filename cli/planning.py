@@ -76,8 +76,9 @@ class Outputs:
     the formats written as a folder of files, each with what the folder holds (`png`: "the stills"); a
     command with one reads the format before -o, since the format says whether -o names a file or a folder
     (`check`: the command's own rules on the two); -o names that folder, whether or not it exists yet. Without
-    folder formats -o is read first and --format may list several formats, one file each. `together`: every scenario in one output (a handout's sections),
-    else one output each. `frames` reads --frame for a scenario's v; `default_style` is the style not named.
+    folder formats -o is read first and --format may list several formats, one file each. `together`: every
+    scenario in one output (a handout's sections), else one output each. `frames` reads --frame for a scenario's
+    v; `default_style` is the style not named.
     """
 
     formats: tuple[str, ...]

@@ -15,7 +15,7 @@ from rodparadox.errors import ChoiceError, FrameError, OptionError, ScenarioErro
 #: every choice the library or the command line names, by its option
 OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--frame-velocity", "output": "-o",
            "format": "--format", "fps": "--fps", "seconds": "--seconds", "mode": "--mode", "paper": "--paper",
-           "at": "--at"}
+           "at": "--at", "allow_long": "--allow-long"}
 
 
 def option(choice: str) -> str:

@@ -33,7 +33,9 @@ def error_of(*args) -> str:
 
 def _cli() -> list[str]:
     script = Path(sys.executable).parent / "sears-paradox"
-    return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
+    if script.exists():
+        return [str(script)]
+    return [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
 
 
 # --- item 8: output lost in a pipe is exit 141, whatever the buffering ------------------------------------
@@ -211,3 +213,181 @@ def test_an_unwritable_home_gives_no_matplotlib_warnings(tmp_path):
                             env=env, timeout=120)
     assert (result.returncode, result.stderr, result.stdout) == (0, "", f"{tmp_path / 'p.svg'}\n")
     assert list(temporary.iterdir()) == []
+
+
+# --- items 4 and 13: a signal ends a command cleanly: one sentence, 128 + the signal, nothing left ------------
+
+def _start_mp4(tmp_path):
+    """`animate --format mp4` in a process of its own, its temporary folder in tmp_path/tmp; returns it once the
+    MP4's temporary folder exists (ffmpeg is encoding)."""
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    env = dict(os.environ, TMPDIR=str(temporary))
+    process = subprocess.Popen(_cli() + ["animate", "fig2", "--format", "mp4", "--fps", "10", "--seconds", "12", "-o",
+                                         str(tmp_path / "a.mp4")], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env=env)
+    deadline = time.monotonic() + 90
+    while not any(p.name.startswith("sears-paradox-") for p in temporary.iterdir()):
+        assert process.poll() is None and time.monotonic() < deadline, process.communicate()
+        time.sleep(0.05)
+    return process, temporary
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTERM"), reason="POSIX signals")
+@pytest.mark.parametrize("signum, said, status", [(signal.SIGTERM, "SIGTERM", 143), (signal.SIGINT, "Ctrl-C", 130)])
+def test_a_signal_during_an_mp4_leaves_nothing(tmp_path, signum, said, status):
+    """SIGTERM (kill, timeout) left sears-paradox-*/video.mp4 in the temporary folder; Ctrl-C said click's
+    "Aborted!" and exited 1. Now both clean up and say one sentence, with the shell's status for the signal."""
+    pytest.importorskip("imageio_ffmpeg")
+    process, temporary = _start_mp4(tmp_path)
+    process.send_signal(signum)
+    stdout, stderr = process.communicate(timeout=60)
+    assert (process.returncode, stdout, stderr) == (status, "", f"Error: interrupted by {said}; no file was left "
+                                                                f"half-written.\n")
+    assert list(temporary.iterdir()) == [] and not (tmp_path / "a.mp4").exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["tmp"]
+
+
+@pytest.mark.parametrize("name, status", [("SIGHUP", 129), ("SIGTERM", 143), ("SIGINT", 130)])
+def test_each_stopping_signal_raises_where_the_program_is(name, status):
+    from sears_paradox_cli.common import Stopped, stopped_by_signals
+
+    number = getattr(signal, name)
+    before = signal.getsignal(number)
+    cleaned = []
+    with pytest.raises(Stopped) as e:
+        with stopped_by_signals():
+            try:
+                os.kill(os.getpid(), number)
+                time.sleep(5)  # the handler raises here, at once
+            finally:
+                cleaned.append(True)
+    assert cleaned == [True] and e.value.exit_code == status and signal.getsignal(number) is before
+    word = "Ctrl-C" if name == "SIGINT" else name
+    assert e.value.sentence() == f"interrupted by {word}; no file was left half-written."
+
+
+def test_ctrl_c_in_a_command_is_one_sentence_and_130(monkeypatch):
+    import sears_paradox_cli.main as cli_main
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli_main, "run_scenario", interrupted)
+    result = CliRunner().invoke(main, ["events", "fig2"])
+    # click's blank line closes the terminal's ^C, then the one sentence
+    assert (result.exit_code, result.output) == (130, "\nError: interrupted by Ctrl-C; no file was left "
+                                                      "half-written.\n")
+
+
+# --- items 5 and 13: the progress bar: a time estimate, never with -q ------------------------------------------
+
+class _Terminal:
+    """A stream that says it is a terminal, keeping what is written."""
+
+    def __init__(self):
+        self.text = ""
+
+    def isatty(self):
+        return True
+
+    def write(self, text):
+        self.text += text
+
+    def flush(self):
+        pass
+
+
+def _drawn_with_clock(monkeypatch, quiet: bool) -> str:
+    import click._termui_impl as termui
+
+    from sears_paradox_cli.animate import progress
+
+    now = [1000.0]
+    monkeypatch.setattr(termui.time, "time", lambda: now[0])
+    terminal = _Terminal()
+    with progress(iter(range(10)), 10, "outputs/fig2_now.gif", quiet, stream=terminal) as bar:
+        for _ in bar:
+            now[0] += 2.0  # two seconds an image
+    return terminal.text
+
+
+def test_the_progress_bar_says_the_time_left(monkeypatch):
+    shown = _drawn_with_clock(monkeypatch, quiet=False)
+    assert "outputs/fig2_now.gif" in shown and "3/10" in shown
+    assert "00:00:14 left" in shown  # after 3 images at 2 s each, 7 are left: 14 s
+
+
+def test_quiet_draws_no_progress_bar_on_a_terminal(monkeypatch):
+    assert _drawn_with_clock(monkeypatch, quiet=True) == ""
+
+
+# --- item 5: long animations: a bound on frames x pixels, --fps bounded, the length in the name -----------------
+
+def test_a_long_animation_is_refused_unless_allowed(tmp_path, monkeypatch):
+    import rodparadox.animate.timeline as timeline
+
+    monkeypatch.chdir(tmp_path)
+    # 3000 images of the default 1049 x 1101: 3465 million pixels, above the 400 million bound
+    assert error_of("animate", "fig2", "--seconds", "120") == (
+        "--seconds 120 at --fps 25 gives 3000 frames of 1049 x 1101 pixels, 3,465 million pixels in all, more than "
+        "the 400 million drawn without asking (minutes of work); give --allow-long to draw them, or lower --seconds "
+        "or --fps.")
+    assert list(tmp_path.iterdir()) == [Path("outputs")] or [p.name for p in tmp_path.iterdir()] == ["outputs"]
+    assert list((tmp_path / "outputs").iterdir()) == []
+    monkeypatch.setattr(timeline, "MAX_PIXELS", 3 * 1049 * 1101)  # a bound a short run passes only when allowed
+    assert "give --allow-long" in error_of("animate", "fig2", "--fps", "2", "--seconds", "2")
+    assert run("animate", "fig2", "--fps", "2", "--seconds", "2", "--allow-long").output == \
+        "outputs/fig2_now_fps2_seconds2.gif\n"
+
+
+@pytest.mark.parametrize("fmt", ["mp4", "png"])
+def test_the_frame_rate_of_mp4_and_stills_is_bounded(tmp_path, monkeypatch, fmt):
+    monkeypatch.chdir(tmp_path)
+    assert error_of("animate", "fig2", "--format", fmt, "--fps", "1000", "--seconds", "1") == \
+        "option --fps: 1000 frames per second is faster than a screen shows; give at most 60."
+    assert error_of("animate", "fig2", "--format", fmt, "--fps", "61", "--seconds", "1").endswith("at most 60.")
+
+
+@pytest.mark.parametrize("args, name", [([], "fig2_now.gif"), (["--fps", "25", "--seconds", "6"], "fig2_now.gif"),
+                                        (["--fps", "10"], "fig2_now_fps10.gif"),
+                                        (["--seconds", "3"], "fig2_now_seconds3.gif"),
+                                        (["--seconds", "2.5", "--fps", "4"], "fig2_now_fps4_seconds2.5.gif"),
+                                        (["--mode", "boost", "--v", "0.8", "--fps", "5", "--format", "mp4"],
+                                         "fig2_boost_v0.8_fps5.mp4")])
+def test_animation_names_carry_a_rate_and_length_other_than_the_defaults(args, name):
+    from sears_paradox_cli import planning
+    from sears_paradox_cli.animate import ANIMATION_FORMATS, DEFAULT_FPS, DEFAULT_SECONDS, length_names
+
+    options = dict(zip(args[::2], args[1::2]))
+    fps, seconds = int(options.get("--fps", DEFAULT_FPS)), float(options.get("--seconds", DEFAULT_SECONDS))
+    outputs = planning.Outputs(formats=ANIMATION_FORMATS, default="gif", kind=options.get("--mode", "now"),
+                               folders={"png": "the stills"}, frames=planning.frames_of if "--mode" not in options
+                               else __import__("rodparadox.animate.timeline", fromlist=["x"]).boost_ends)
+    v = float(options["--v"]) if "--v" in options else None
+    [job] = planning.plan(["fig2"], outputs, v=v, L=None, frame="both", fmt=options.get("--format"), output=None,
+                          style="default", extras=length_names(fps, seconds))
+    assert job.path == Path("outputs") / name
+
+
+# --- item 12: PNG stills: a clash said before anything is drawn; a locked folder without internal names -------
+
+def test_a_still_that_cannot_be_written_is_found_before_any_is_drawn(tmp_path):
+    stills = tmp_path / "stills"
+    (stills / "fig2_now_fps4_seconds2_0005.png").mkdir(parents=True)
+    (stills / "fig2_now_fps4_seconds2_0000.png").write_bytes(b"an older still")
+    assert error_of("animate", "fig2", "--format", "png", "--fps", "4", "--seconds", "2", "-o", stills) == \
+        f"cannot write {stills}/fig2_now_fps4_seconds2_0005.png: it is a folder."
+    assert (stills / "fig2_now_fps4_seconds2_0000.png").read_bytes() == b"an older still"
+    assert sorted(p.name for p in stills.iterdir()) == ["fig2_now_fps4_seconds2_0000.png",
+                                                       "fig2_now_fps4_seconds2_0005.png"]
+
+
+def test_a_locked_stills_folder_is_said_without_internal_names(tmp_path, monkeypatch):
+    import rodparadox.io.output as output
+
+    stills = tmp_path / "stills"
+    stills.mkdir()
+    monkeypatch.setattr(output.os, "access", lambda path, mode: Path(path) != stills)  # as for a user, not root
+    assert error_of("animate", "fig2", "--format", "png", "--fps", "4", "--seconds", "1", "-o", stills) == \
+        f"cannot write the stills into {stills}: permission denied."

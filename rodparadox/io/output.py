@@ -143,7 +143,8 @@ def check_folder(folder: str | os.PathLike, what: str) -> Path:
     and can be written (the caller creates it, `make_folder`)."""
     folder = Path(folder)
     if folder.is_dir():
-        check_target(folder / ".probe")  # can be written into
+        if not os.access(folder, os.W_OK | os.X_OK):  # root passes
+            raise OutputError(f"cannot write {what} into {folder}: permission denied.")
         return folder
     if folder.exists():
         raise OutputError(f"cannot write {what} into {folder}: it is a file, not a folder.")
