@@ -1,4 +1,5 @@
-"""`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (README, "The ledger").
+"""`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (README,
+"Energy and momentum").
 
 Thin: parse the options, call `rodparadox.io.ledger_report` (text, JSON, CSV),
 `rodparadox.tables.build` (Markdown, LaTeX) or `rodparadox.render.ledger_figure` (SVG,

@@ -1,4 +1,5 @@
-"""The project's errors: one base class, each concrete error also a builtin (STYLE.md, from pint)."""
+"""The project's errors: one base class, each concrete error also a builtin (as pint's are); the command line says
+each in one sentence naming what to fix (README, "Commands")."""
 
 from __future__ import annotations
 

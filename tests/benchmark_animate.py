@@ -138,7 +138,7 @@ def scene_data(path: Path) -> None:
     from rodparadox.animate.timeline import image_count, timeline
     from rodparadox.physics.engine import run
     from rodparadox.physics.frames import paper_frames
-    from rodparadox.render.strip import COLOUR_BAR_LABEL, COLOUR_MAPS
+    from rodparadox.render.strip import COLOUR_BAR_LABEL
     from rodparadox.io.scenario import load
     from rodparadox.render.styles import STYLES
 
@@ -208,7 +208,7 @@ def scene_data(path: Path) -> None:
                                                           xlabel="")
             data["strips"].append({
                 "strip": index[strip.bar.axes], "colour": index[colour_bar.ax] if colour_bar is not None else None,
-                "cmap": COLOUR_MAPS["default"], "limits": [strip.bar.norm.vmin, strip.bar.norm.vmax],
+                "cmap": STYLES["default"].velocity_colour_map, "limits": [strip.bar.norm.vmin, strip.bar.norm.vmax],
                 "bar_width": float(strip.bar.get_linewidth()[0]), "half_bar": strip.half_bar,
                 "outline_colour": to_hex(strip.outline.get_color()), "outline_width": strip.outline.get_linewidth(),
                 "bar_label": COLOUR_BAR_LABEL, "small": 0.8 * STYLES["default"].font_size,

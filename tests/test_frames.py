@@ -168,18 +168,21 @@ def test_S_prime_moves_at_minus_v_relative_to_S_wherever_a_frame_is_named(v):
 
 
 def test_a_frame_shown_is_bounded_by_the_fastest_v_and_any_frame_by_c():
-    """A frame the user asks to see is bounded by FASTEST_FRAME (double precision places its events and writes its
-    velocities below c); a Lorentz frame as such, and a scenario's timing frame, only by c."""
+    """Every frame velocity a user gives, a frame to see or a scenario's timing frame, is bounded by FASTEST_FRAME
+    (double precision places its events and writes its velocities below c); a Lorentz frame as such only by c."""
     assert FASTEST_FRAME == FASTEST
     assert check_velocity(-FASTEST_FRAME) == -FASTEST_FRAME
+    assert Timing("B", -FASTEST_FRAME).frame == -FASTEST_FRAME
     with pytest.raises(FrameError):
         check_velocity(0.99999995)
+    with pytest.raises(ScenarioError, match=r"^timed_with\.frame must be rest, moving or a velocity u with -0\.9999999 "
+                                            r"<= u <= 0\.9999999, got 0\.99999995\.$"):
+        Timing("B", 0.99999995)
     assert Frame("u=0.99999995", 0.99999995).velocity == 0.99999995
-    assert Timing("B", 0.99999995).frame == 0.99999995
     for u in (1.0, -1.0):
         with pytest.raises(FrameError, match="-1 < u < 1"):
             Frame("u", u)
-        with pytest.raises(ScenarioError, match="-1 < u < 1"):
+        with pytest.raises(ScenarioError, match="-0.9999999 <= u <= 0.9999999"):
             Timing("B", u)
 
 

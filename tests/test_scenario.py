@@ -141,7 +141,7 @@ def test_bad_overrides_name_their_key(option, value, message):
     ("v: 0.5\nparticles:\n  A: {timed_with: {particle: B}}\n  B: {timed_with: {particle: A}}\n",
      "s.yaml, line 3: particles.A.timed_with.particle: A and B cannot both be timed against each other; give B a gap."),
     ("v: 0.5\nparticles:\n  A: {timed_with: {particle: B, frame: lab}}\n  B: {gap: 1}\n",
-     "s.yaml, line 3: particles.A.timed_with.frame must be rest, moving or a velocity u with -1 < u < 1, got 'lab'."),
+     "s.yaml, line 3: particles.A.timed_with.frame must be rest, moving or a velocity u with -0.9999999 <= u <= 0.9999999, got 'lab'."),
     ("v: 0.5\nparticles:\n  A: {timed_with: {frame: rest}}\n  B: {gap: 1}\n",
      "s.yaml, line 3: particles.A.timed_with needs the key particle (the other particle, A or B)."),
     ("v: 0.5\nparticles: {}\n", "s.yaml, line 2: particles must name at least one of A and B."),

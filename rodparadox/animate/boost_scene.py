@@ -1,5 +1,5 @@
-"""Boost mode (README, "Animating"): one panel over fixed axes whose frame runs smoothly from one velocity to
-another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
+"""Boost mode (README, "The paradox in motion"): one panel over fixed axes whose frame runs smoothly from one
+velocity to another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
 module only after every input has been checked.
 
 The world-sheet, the world-lines of the particles and of the rod's ends, and the impacts' markers are `plot`'s
@@ -19,7 +19,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from rodparadox.animate.images import blitted, dpi
+from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import BoostTimeline
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.engine import History
@@ -29,9 +29,6 @@ from rodparadox.render.layers import Impacts, Options, PanelContext, Particle, R
 from rodparadox.render.layout import font_sizes
 from rodparadox.render.styles import STYLES
 
-#: boost mode's figure, inches: the page's (or slide's) width, and at most its height; the panel is square, the
-#: key to its right
-_BOOST_SIZE = {"default": (7.0, 6.0), "print": (7.0, 6.0), "slides": (13.33, 7.5)}
 #: plot's layers drawn at each instant: the world-sheet (under the axes of S and S'), then the bodies (the
 #: particles under the rod's ends), then the impacts' markers (over the bodies)
 SHEET, BODIES, IMPACTS = WorldSheet(), (Particle("A"), Particle("B"), RodEnds()), Impacts()
@@ -72,11 +69,11 @@ class BoostScene:
                 (Line2D([], [], **line_kwargs(axis_inks["rest"])), "axes of S"),
                 (Line2D([], [], **line_kwargs(axis_inks["moving"])), "axes of S\N{PRIME}")]
         key_width = (3.4 * fs + max(render.text_size(text, fs)[0] for _, text in key)) / 72  # inches
-        width, most = _BOOST_SIZE.get(style, _BOOST_SIZE["default"])
+        width, most = st.boost_size  # the page's (or slide's) width, and at most its height
         left, bottom, top = 4.6 * fs / 72, 3.4 * fs / 72, 3.2 * fs / 72  # inches: tick labels and names; title
         side = min(most - bottom - top, width - left - key_width - 0.5)
         height = side + bottom + top
-        self.figure = figure = Figure(figsize=(width, height), dpi=dpi(style))
+        self.figure = figure = Figure(figsize=(width, height), dpi=st.animation_dpi)
         self.canvas = FigureCanvasAgg(figure)
         self.ax = ax = figure.add_axes((left / width, bottom / height, side / width, side / height))
         L = history.scenario.L

@@ -1,4 +1,5 @@
-"""Writing an animation's images to files: GIF, MP4 or numbered PNG stills (README, "Animating"). No matplotlib.
+"""Writing an animation's images to files: GIF, MP4 or numbered PNG stills (README, "The paradox in
+motion"). No matplotlib.
 
 An image is an RGB uint8 numpy array of shape (H, W, 3); every image of one
 animation has the same size. `open_sink(path, fmt, fps)` gives a sink:

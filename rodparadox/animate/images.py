@@ -1,4 +1,5 @@
-"""What the two scenes share: the images' resolution, and drawing them by blitting on one Agg canvas.
+"""What the two scenes share: drawing their images by blitting on one Agg canvas (their resolution is the style's
+`animation_dpi`).
 
 An image is one instant of an animation: an (H, W, 3) uint8 RGB array; every image of one animation has the same
 size. A scene draws its figure once, saves it as the background, and for each instant draws only what moved over
@@ -10,17 +11,6 @@ from __future__ import annotations
 from typing import Iterable, Iterator, Sequence
 
 import numpy as np
-
-#: pixels per inch of the images: about 1050 px wide on the 7 in page, 1330 px on the 13.3 in slide
-DPI = {"default": 150, "print": 150, "slides": 100}
-#: pixels per inch in a style not named in DPI
-OTHER_DPI = 100
-
-
-def dpi(style: str) -> int:
-    """The images' pixels per inch in `style` (`DPI`)."""
-    return DPI.get(style, OTHER_DPI)
-
 
 def image_of(canvas) -> np.ndarray:
     """The canvas's pixels as an image: RGB, a copy (the canvas draws the next instant over them)."""

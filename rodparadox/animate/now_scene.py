@@ -1,4 +1,4 @@
-"""Now mode (README, "Animating"): `plot`'s diagram with each frame's "now" sweeping up and its space below.
+"""Now mode (README, "The paradox in motion"): `plot`'s diagram with each frame's "now" sweeping up and its space below.
 
 Draws the diagram once, as `plot` does, grows the figure downward by a band of strips, and for each
 instant redraws only what moves over the saved background (blitting): each frame's own line of
@@ -18,7 +18,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from rodparadox.animate.images import blitted, dpi
+from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import NowTimeline
 from rodparadox.physics.engine import History
 from rodparadox.numbers import nice_number
@@ -69,7 +69,7 @@ class NowScene:
 
     def __init__(self, history: History, timeline: NowTimeline, style: str):
         from rodparadox import render
-        from rodparadox.render.strip import FLASH_COLOUR, draw_strip
+        from rodparadox.render.strip import draw_strip
 
         st = STYLES[style]
         self.history, self.timeline, self.L = history, timeline, history.scenario.L
@@ -83,12 +83,12 @@ class NowScene:
         band = b.height / 72  # inches, per row of panels
         total = height + band * len(rows)
         _make_room_below(figure, height, total, band * len(rows))
-        figure.set_dpi(dpi(style))
+        figure.set_dpi(st.animation_dpi)
         self.figure, self.canvas = figure, FigureCanvasAgg(figure)
         self.panels: list[PanelMotion] = []
         for p, (ax, frame, scale) in enumerate(zip(panels, timeline.frames, timeline.scales)):
             letter = (ax.get_gid() or "a")[0]
-            now = ax.axhline(timeline.times[0, p] / L, color=FLASH_COLOUR[style], linewidth=2.0 * st.rod.width / 1.7,
+            now = ax.axhline(timeline.times[0, p] / L, color=st.flash_colour, linewidth=2.0 * st.rod.width / 1.7,
                              zorder=8, animated=True, gid=f"{letter}-now")
             pos = ax.get_position()
             # which row of panels it is in: its place before the band was added
@@ -209,7 +209,7 @@ class _Band:
 
         fs = st.font_size
         self.small = 0.8 * fs
-        self.tick_len, self.tick_pad = (4.0, 2.5) if st.name == "slides" else (2.5, 2.0)
+        self.tick_len, self.tick_pad = st.animation_ticks
         ticks = self.tick_len + self.tick_pad + 1.25 * self.small
         self.strip_h = self.lens_h = 2.4 * fs
         overflow = max(0.0, (1 + LETTER_Y) / 2 * self.strip_h + 1.05 * fs - self.strip_h)

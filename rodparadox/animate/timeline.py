@@ -1,4 +1,5 @@
-"""The timeline of an animation: what each panel shows at each instant (README, "Animating"). Pure, no matplotlib.
+"""The timeline of an animation: what each panel shows at each instant (README, "The paradox
+in motion"). Pure, no matplotlib.
 
 Two modes:
 
@@ -23,7 +24,7 @@ import numpy as np
 from rodparadox.physics.engine import History
 from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, sampling_tolerance, time_window, view
-from rodparadox.numbers import decimal, exact
+from rodparadox.numbers import exact
 from rodparadox.physics.kinematics import WorldLine
 from rodparadox.physics.snapshot import Strip, material_points, strip_at
 from rodparadox.render.colour_scale import ColourScale, colour_scale
@@ -159,7 +160,7 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
     """The frames of boost mode: `A..B`, each a name (rest, moving) or a velocity U relative to S; `both` is
     `rest..moving` (the default). The two ends must differ."""
     from rodparadox.errors import FrameError
-    from rodparadox.physics.frames import frame_of_velocity, named_frame
+    from rodparadox.physics.frames import frame_of_word
 
     spec = spec.strip()
     if spec == "both":
@@ -170,15 +171,15 @@ def boost_ends(spec: str, v: float) -> tuple[Frame, Frame]:
                           "(each rest, moving or a velocity U relative to S), e.g. rest..moving, got {value!r}.")
     ends = []
     for part in (p.strip() for p in parts):
-        if part in ("rest", "moving"):
-            ends.append(named_frame(part, v))
-            continue
         try:
-            ends.append(frame_of_velocity(decimal(part)))
-        except (ValueError, FrameError) as e:
-            reason = str(e) if isinstance(e, FrameError) else f"not a velocity: {part!r}"
+            end = frame_of_word(part, v)
+            reason = None if end is not None else f"not a velocity: {part!r}"
+        except FrameError as e:
+            reason = str(e)
+        if reason is not None:
             raise OptionError("frame", spec, template="{what}: each end of A..B must be rest, moving or a velocity "
-                              "U relative to S; {reason}.", end=part, reason=reason.rstrip(".")) from None
+                              "U relative to S; {reason}.", end=part, reason=reason.rstrip("."))
+        ends.append(end)
     if ends[0].velocity == ends[1].velocity:
         raise OptionError("frame", spec, template="{what}: {value} boosts from a frame to itself; give two "
                           "different frames.")

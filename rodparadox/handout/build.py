@@ -1,4 +1,5 @@
-"""What a handout and a worksheet say, as `document` blocks (issue 9): `build`. Pure: no matplotlib, no LaTeX.
+"""What a handout and a worksheet say, as `document` blocks (README, "Teaching handouts"): `build`. Pure: no
+matplotlib, no LaTeX.
 
 `build` turns scenarios' histories into a `document.Handout`: per scenario a
 heading, a set-up paragraph, the diagram with its caption, an explanation, the
@@ -31,11 +32,11 @@ from typing import Sequence
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
-from rodparadox.handout.words import frame_name, listed, time_name, with_primes
+from rodparadox.handout.words import listed, time_name, with_primes
 from rodparadox.handout.worksheet import questions
 from rodparadox.numbers import exact
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, frame_word, moving_frame, paper_frames
+from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
 

@@ -13,13 +13,13 @@ import math
 from typing import Sequence
 
 from rodparadox.handout.document import Paragraph
-from rodparadox.handout.reading import SAME_RAPIDITY, Reading, zigzags
-from rodparadox.handout.words import (frame_name, impact_names, in_c, in_l, listed, numeral, pushed, time_name)
+from rodparadox.handout.reading import Reading, zigzags
+from rodparadox.handout.words import (impact_names, in_c, in_l, listed, numeral, pushed, time_name)
 from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.engine import History, Impact
-from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_symbol, moving_frame, rest_frame,
+from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_name, frame_symbol, moving_frame, rest_frame,
                                        time_order)
-from rodparadox.tolerances import ONE_INSTANT
+from rodparadox.tolerances import ONE_INSTANT, SAME_RAPIDITY
 
 
 # --- the set-up ------------------------------------------------------------------------------------------------

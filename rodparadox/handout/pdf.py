@@ -1,4 +1,4 @@
-"""A handout set on pages as a PDF: `to_pdf(handout, paper, style) -> bytes` (issue 9, items 1-2, 5-7).
+"""A handout set on pages as a PDF: `to_pdf(handout, paper, style) -> bytes` (README, "Teaching handouts").
 
 The blocks of `document.Handout` are set top to bottom on pages of the paper's
 size, with matplotlib's own PDF backend (`PdfPages`, one `Figure` per page,
@@ -46,6 +46,7 @@ from rodparadox.handout.document import (PAPERS, Block, DiagramBlock, Handout, H
 from rodparadox.handout.pdf_text import MM, RULE_GREY, Line, Pages, Type, width_of, words_of, wrap
 from rodparadox.render.diagram import FIGURE_METADATA
 from rodparadox.render.styles import STYLES, Style
+from rodparadox.tolerances import FIT_SLACK
 
 #: a worksheet's ruled answer lines: their distance (about that of ruled paper), and how many at least and at most
 ANSWER_LINE_GAP = 8 * MM
@@ -85,11 +86,11 @@ class TextBlock(Measured):
             top = pages.at_top
             gap = 0.0 if top else self.gap
             whole = len(lines) * leading
-            if gap + whole + (0.0 if top else keep) <= pages.room + 1e-6:
+            if gap + whole + (0.0 if top else keep) <= pages.room + FIT_SLACK:
                 y = pages.start(whole, self.gap)
                 pages.lines(lines, pages.left + self.indent, y, self.size, leading)
                 return
-            fit = int((pages.room - gap + 1e-6) // leading)
+            fit = int((pages.room - gap + FIT_SLACK) // leading)
             if self.breakable:  # two lines at least on this page, two at least on the next
                 fit = min(fit, len(lines) - 2) if not top else fit
             elif not top:
@@ -200,7 +201,7 @@ class TableSet(Measured):
         while groups:
             room = pages.text_height if not pages.figures or pages.at_top else pages.room - self.gap
             take = len(groups)
-            while take > 0 and self.height(groups[:take], first, take == len(groups)) > room + 1e-6:
+            while take > 0 and self.height(groups[:take], first, take == len(groups)) > room + FIT_SLACK:
                 take -= 1
             if take == 0:
                 if pages.figures and not pages.at_top:

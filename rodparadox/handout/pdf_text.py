@@ -28,13 +28,12 @@ from matplotlib.patches import Rectangle
 from rodparadox import render
 from rodparadox.handout.document import PAPERS
 from rodparadox.render.styles import Style
+from rodparadox.tolerances import FIT_SLACK
 
 #: points per millimetre
 MM = 72 / 25.4
 #: the page's margins on every side, points
 MARGIN = 20 * MM
-#: running text's size in each style, points (tables, captions and the footer are scaled from it)
-BODY_SIZE = {"print": 10.0, "default": 9.5, "slides": 12.0}
 #: a measured line is set this much narrower than the text width: the drawn glyphs' kerning may differ a little
 WRAP_SLACK = 1.0
 #: dark enough to survive a black-and-white photocopy, light enough to read as a rule rather than text
@@ -42,7 +41,8 @@ RULE_GREY = "#4d4d4d"
 
 
 class Type(NamedTuple):
-    """The type sizes and distances of a style's handout, points."""
+    """The type sizes and distances of a style's handout, points: tables, captions and the footer are scaled from
+    the running text's (`Style.handout_body_size`)."""
 
     body: float
     leading: float  # baseline to baseline of running text
@@ -54,7 +54,7 @@ class Type(NamedTuple):
 
     @classmethod
     def of(cls, style: Style) -> "Type":
-        body = BODY_SIZE.get(style.name, 10.0)
+        body = style.handout_body_size
         return cls(body, 1.35 * body, 1.55 * body, 1.15 * body, 0.9 * body, 0.9 * body, 0.8 * body)
 
 
@@ -227,7 +227,7 @@ class Pages:
     def start(self, height: float, gap: float) -> float:
         """Make room for `height` points after a gap of `gap` (dropped at the top of a page), on a new page if
         the rest of this one is too short; returns the y (points from the paper's top) of the room's top."""
-        if not self.figures or (not self.at_top and gap + height > self.room + 1e-6):
+        if not self.figures or (not self.at_top and gap + height > self.room + FIT_SLACK):
             self.new_page()
         if not self.at_top:
             self.used += gap

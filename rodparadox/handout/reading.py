@@ -18,12 +18,8 @@ from typing import Sequence
 from rodparadox.handout.words import PROSE_DIGITS, impact_names, in_l, listed, time_name
 from rodparadox.physics.engine import History, Impact, Turn
 from rodparadox.physics.frames import Frame, rest_frame, time_order
-from rodparadox.tolerances import ONE_INSTANT
+from rodparadox.tolerances import ONE_INSTANT, SAME_RAPIDITY
 from rodparadox.physics.rod import turn_interval
-
-#: two rapidities closer than this are one velocity: the engine ends a turn within 1e-12 of its line
-#: (engine.TURN_LINE_ROUNDING) and a boost shifts a rapidity by a rounding of about 1e-15 of it
-SAME_RAPIDITY = 1e-9
 
 
 @dataclass(frozen=True)

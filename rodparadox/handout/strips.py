@@ -6,12 +6,13 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from rodparadox.handout.reading import SAME_RAPIDITY, Reading
-from rodparadox.handout.words import frame_name, impact_names, in_c, in_l, listed, numeral, time_name
+from rodparadox.handout.reading import Reading
+from rodparadox.handout.words import impact_names, in_c, in_l, listed, numeral, time_name
 from rodparadox.physics.engine import History, Turn
-from rodparadox.physics.frames import Frame, time_window
+from rodparadox.physics.frames import Frame, frame_name, time_window
 from rodparadox.physics.rod import turn_corners, turn_interval
 from rodparadox.numbers import impact_name
+from rodparadox.tolerances import SAME_RAPIDITY
 
 #: the fewest and the most instants of the rod shown per frame
 STRIPS_FEWEST, STRIPS_MOST = 6, 8

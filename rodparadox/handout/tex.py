@@ -1,4 +1,5 @@
-"""A handout for authors (`handout --format tex`, issue 9 item 4): a folder of LaTeX, figures and pgfplots data.
+"""A handout for authors (`handout --format tex`; README, "Teaching handouts"): a folder of LaTeX, figures and
+pgfplots data.
 
 `tex_files` turns a `document.Handout` into files, relative name -> bytes, for
 the command to write atomically into one folder:

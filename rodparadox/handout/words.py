@@ -4,8 +4,9 @@ A number is written as a fraction where a small-denominator one matches and its
 decimal never ends (`numbers.fraction_text`: 17/12, 15/17), else with PROSE_DIGITS
 significant digits in the running text and ANSWER_DIGITS in the worked answers;
 x and t as multiples of L (`in_l`: 17/12 L), velocities as fractions of c with
-their sign (`in_c`: +0.6 c, −15/17 c). Names: impacts (A₁ and B₁), frames (S, S′,
-the frame u = 0.3), a frame's time coordinate (t, t′, tᵤ), and lists (a, b and c).
+their sign (`in_c`: +0.6 c, −15/17 c). Names: impacts (A₁ and B₁), a frame's time
+coordinate (t, t′, tᵤ), and lists (a, b and c); a frame (S, S′, the frame u = 0.3)
+is named by `physics.frames.frame_name`, as a strip's readout names it.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Sequence
 
 from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, fraction_text, impact_name, shown
 from rodparadox.physics.engine import Impact
-from rodparadox.physics.frames import Frame, frame_symbol
+from rodparadox.physics.frames import Frame
 from rodparadox.tables.build import coordinates
 
 #: significant digits of a number in running text (explanations, captions), and in a worked answer
@@ -113,12 +114,6 @@ def with_primes(text: str) -> str:
     """A scenario's own text in the handout's Unicode: S' -> S′, t' -> t′ (an apostrophe after one of these
     letters standing alone is a prime; "rod's" keeps its apostrophe)."""
     return re.sub(r"\b([Sxt])'(?![A-Za-z])", "\\1\N{PRIME}", " ".join(text.split()))
-
-
-def frame_name(frame: Frame) -> str:
-    """S, S′, or "the frame u = 0.3" in running text."""
-    symbol = frame_symbol(frame)
-    return symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
 
 
 def capitalised(text: str) -> str:

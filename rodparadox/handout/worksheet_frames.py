@@ -14,11 +14,11 @@ from typing import Sequence
 
 from rodparadox.errors import RodParadoxError
 from rodparadox.handout.reading import Reading
-from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, capitalised, frame_name, impact_names,
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, capitalised, impact_names,
                                       in_c, in_c_approx, in_l, in_l_approx, listed, numeral_approx, signed_numeral)
 from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.engine import History, Impact, run
-from rodparadox.physics.frames import PANEL_LETTERS, Frame, moving_frame, relative_velocity, rest_frame
+from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, moving_frame, relative_velocity, rest_frame
 from rodparadox.physics.rod import turn_interval
 from rodparadox.tables.build import coordinates
 

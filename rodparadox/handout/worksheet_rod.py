@@ -8,16 +8,16 @@ from __future__ import annotations
 
 import math
 
-from rodparadox.handout.reading import SAME_RAPIDITY, Reading, zigzags
-from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, frame_name, impact_names, in_c, in_l,
+from rodparadox.handout.reading import Reading, zigzags
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, impact_names, in_c, in_l,
                                       in_l_approx, listed, numeral_approx, pushed, summand, time_name)
 from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
 from rodparadox.physics.engine import Impact
-from rodparadox.physics.frames import Frame, rest_frame
+from rodparadox.physics.frames import Frame, frame_name, rest_frame
 from rodparadox.physics.rod import rod_slice
 from rodparadox.tables import build as tables
 from rodparadox.numbers import impact_name
-from rodparadox.tolerances import PRINTED_ZERO
+from rodparadox.tolerances import PRINTED_ZERO, SAME_RAPIDITY
 
 #: the rod's material points sampled to tell whether it moves as a whole on a slice (not turning there)
 WHOLE_ROD_POINTS = 9

@@ -1,4 +1,5 @@
-"""Deterministic, atomic writes (STYLE.md `output`): a file is replaced whole or not at all.
+"""Deterministic, atomic writes (README, "Drawing the figures": reproducible, safe for make): a file is replaced whole
+or not at all.
 
 A file whose bytes would not change is left untouched, so make and git see
 no change; a new file is written to a temporary name in the same folder and

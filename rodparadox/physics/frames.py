@@ -2,7 +2,8 @@
 
 The frame conventions live here, once: `rest` is S, `moving` is the paper's S'
 of velocity -v (`model.frame_velocity`), any other frame is its velocity u
-relative to S, bounded by FASTEST_FRAME; velocities add by `relative_velocity`.
+relative to S, bounded by FASTEST_FRAME (`model.FASTEST`); a frame's word is
+read by `frame_of_word`; velocities add by `relative_velocity`.
 Shared by `export` (numbers) and `render` (pictures), so both show the same
 events, over the same time window, sampled the same way.
 """
@@ -26,8 +27,9 @@ from rodparadox.tolerances import ONE_INSTANT, SAMPLING_TOLERANCE
 PANEL_LETTERS = "abcdefgh"
 #: panels in one figure, lettered (a) to (h): the most frames one figure shows
 MAX_PANELS = len(PANEL_LETTERS)
-#: the fastest frame shown, as fast as the fastest v (model.FASTEST): faster, g exceeds 2000 and a
-#: particle's velocity in the frame, 1 - 1e-14 or closer, no longer has the digits to tell it from c
+#: the fastest frame a user may give (to see, to boost to, or to time a particle in: `model.FASTEST`, the one
+#: bound): faster, g exceeds 2000 and a particle's velocity in the frame, 1 - 1e-14 or closer, no longer has the
+#: digits to tell it from c
 FASTEST_FRAME = FASTEST
 
 
@@ -67,13 +69,28 @@ def frame_of_velocity(u: float) -> "Frame":
     return Frame(f"u={exact(u)}", u)
 
 
+def frame_of_word(word: str, v: float) -> "Frame | None":
+    """The frame one word names, for the speed v: `rest` (S), `moving` (S', `named_frame`) or a velocity U relative
+    to S (`frame_of_velocity`: a FrameError past FASTEST_FRAME); None when the word is neither a name nor a
+    number. The one reader of a frame's word: `parse_frames` and boost mode's ends (`animate.timeline`) use it."""
+    word = word.strip()
+    if word in FRAME_NAMES:
+        return named_frame(word, v)
+    try:
+        u = decimal(word)  # -0 is 0; decimal digits only, as every number a user writes
+    except ValueError:
+        return None
+    return frame_of_velocity(u)
+
+
 @dataclass(frozen=True)
 class Frame:
     """An inertial frame by its velocity relative to S: `rest` is S, `moving` is S' (velocity -v).
 
-    Any |velocity| < 1 is a frame (a Lorentz frame moves slower than light, as a scenario's timing frame may);
-    a frame the user asks to see goes through `check_velocity` (or `frame_of_velocity`), which bounds it by
-    FASTEST_FRAME, where double precision still places the events and writes every velocity below c.
+    Its invariant, |velocity| < 1, is what a Lorentz frame is (it moves slower than light), not a bound on what a
+    user may give: every frame velocity a user gives (a frame to see, the ends of a boost, a scenario's timing
+    frame) is bounded by FASTEST_FRAME (`check_velocity`, `frame_of_word`, `model.Timing`), where double
+    precision still places the events and writes every velocity below c.
     """
 
     name: str
@@ -97,6 +114,12 @@ def frame_symbol(frame: "Frame") -> str:
     return {"rest": "S", "moving": "S\N{PRIME}"}.get(frame.name, f"u = {shown(frame.velocity)}")
 
 
+def frame_name(frame: "Frame") -> str:
+    """The frame in running text: S, S′, or "the frame u = 0.3" (a handout's sentences, a strip's readout)."""
+    symbol = frame_symbol(frame)
+    return symbol if frame.name in FRAME_NAMES else f"the frame {symbol}"
+
+
 def frame_heading(frame: "Frame") -> str:
     """The frame as the text tables head it (ASCII): `frame rest (S, the rod's rest frame)`, `frame moving (S',
     where the rod first moves at +v)`, `frame u=0.3`."""
@@ -106,7 +129,7 @@ def frame_heading(frame: "Frame") -> str:
 
 def frame_word(frame: "Frame") -> str:
     """The frame in a file name: rest, moving, or u and every digit of its velocity (u0.3, u-0.5)."""
-    return frame.name if frame.name in ("rest", "moving") else "u" + exact(frame.velocity)
+    return frame.name if frame.name in FRAME_NAMES else "u" + exact(frame.velocity)
 
 
 def paper_frames(v: float, extra_velocity: float | None = None) -> tuple[Frame, ...]:
@@ -128,21 +151,15 @@ def parse_frames(spec: str, v: float) -> tuple[Frame, ...]:
     """
     frames: list[Frame] = []
     for item in (part.strip() for part in spec.split(",")):
-        named = {"rest": ("rest",), "moving": ("moving",), "both": ("rest", "moving")}.get(item)
-        if named is not None:
-            asked = [named_frame(name, v) for name in named]
-        else:
-            try:
-                u = decimal(item)  # -0 is 0; decimal digits only, as every number a user writes
-            except ValueError:
-                raise FrameError(f"a frame must be rest, moving, both or a velocity U with {-FASTEST_FRAME!r} <= U <= "
-                                 f"{FASTEST_FRAME!r} (or a comma-separated list of these), got {item!r}.") from None
-            asked = [frame_of_velocity(u)]
+        asked = [frame_of_word(word, v) for word in (FRAME_NAMES if item == "both" else (item,))]
+        if None in asked:
+            raise FrameError(f"a frame must be rest, moving, both or a velocity U with {-FASTEST_FRAME!r} <= U <= "
+                             f"{FASTEST_FRAME!r} (or a comma-separated list of these), got {item!r}.")
         for frame in asked:
             same = next((k for k, f in enumerate(frames) if f.velocity == frame.velocity), None)
             if same is None:
                 frames.append(frame)
-            elif named is not None and frames[same].name.startswith("u="):
+            elif frame.name in FRAME_NAMES and frames[same].name.startswith("u="):
                 frames[same] = frame  # the name says more than the number: S, not u = 0
     if len(frames) > MAX_PANELS:
         raise FrameError(f"{len(frames)} different frames asked for; at most {MAX_PANELS} panels fit in one figure.")

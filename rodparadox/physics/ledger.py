@@ -1,4 +1,5 @@
-"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (README, "The ledger").
+"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (README,
+"Energy and momentum: the ledger").
 
 Pure. Units: energy in M c^2, momentum in M c (c = 1). A particle of mass m
 and rapidity a has m (cosh a, sinh a). The rod's *kinetic* (E, p) on the slice
@@ -23,7 +24,7 @@ from dataclasses import dataclass
 from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import time_order
 from rodparadox.physics.kinematics import HyperbolicArc, Line
-from rodparadox.physics.rod import material_worldline, turn_interval
+from rodparadox.physics.rod import material_worldline
 from rodparadox.tolerances import PRINTED_ZERO, SAME_INSTANT
 
 

@@ -16,7 +16,8 @@ from rodparadox.errors import ScenarioError
 
 PARTICLE_NAMES = ("A", "B")
 #: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far
-#: in the future that t has no digits left for the rod's zig-zag; faster, g exceeds 2000
+#: in the future that t has no digits left for the rod's zig-zag; faster, g exceeds 2000. FASTEST also bounds
+#: every frame velocity a user gives (a timing frame here, a frame to see: `frames.FASTEST_FRAME`)
 SLOWEST, FASTEST = 1e-6, 0.9999999
 #: the largest gap or timing delay, in units of L
 MAX_SPAN = 1e6
@@ -68,14 +69,12 @@ class Timing:
     def __post_init__(self) -> None:
         if self.particle not in PARTICLE_NAMES:
             raise ScenarioError(f"{self.key}.particle must be A or B, got {described(self.particle)}.", f"{self.key}.particle")
+        key, allowed = f"{self.key}.frame", f"rest, moving or a velocity u with {-FASTEST!r} <= u <= {FASTEST!r}"
         if isinstance(self.frame, str):
             if self.frame not in FRAME_NAMES:
-                raise ScenarioError(
-                    f"{self.key}.frame must be rest, moving or a velocity u with -1 < u < 1, got {self.frame!r}.",
-                    f"{self.key}.frame")
-        else:
-            _check_number(self.frame, f"{self.key}.frame", low=-1, high=1,
-                          allowed="rest, moving or a velocity u with -1 < u < 1")
+                raise ScenarioError(f"{key} must be {allowed}, got {self.frame!r}.", key)
+        elif abs(_check_number(self.frame, key, allowed=allowed)) > FASTEST:
+            raise ScenarioError(f"{key} must be {allowed}, got {self.frame!r}.", key)
         _check_number(self.delay, f"{self.key}.delay", low=-MAX_SPAN, high=MAX_SPAN, low_open=False, high_open=False,
                       allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
 

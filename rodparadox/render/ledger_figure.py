@@ -1,4 +1,5 @@
-"""The ledger as a figure: momentum and energy against each frame's time (README, "The ledger"). Never pyplot, never files.
+"""The ledger as a figure: momentum and energy against each frame's time (README, "Energy and
+momentum"). Never pyplot, never files.
 
 One column per frame: momentum above, energy below, against that frame's
 own time. Each body's kinetic part (particles dashed, the rod solid), the

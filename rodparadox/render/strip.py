@@ -31,23 +31,20 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame
+from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
 from rodparadox.render.styles import STYLES, Style
-from rodparadox.render.text import coordinate_names, frame_symbol
+from rodparadox.render.text import coordinate_names
+from rodparadox.tolerances import ONE_INSTANT, STEP_ROUNDING
 
-#: the colour map of the bar in each style, centred on the frame's initial rod velocity: diverging blue-white-red
-#: on screen; in print a grey ramp, light (slower) to dark (faster), whose lightness runs one way only, so the
-#: bar reads in black and white (a diverging map turns both of its ends dark in grey, and its centre white)
-COLOUR_MAPS = {"default": "RdBu_r", "print": "print-greys", "slides": "RdBu_r"}
+#: the print style's colour map (`Style.velocity_colour_map`): a grey ramp, light (slower) to dark (faster), whose
+#: lightness runs one way only, so the bar reads in black and white (a diverging map, as the other styles' blue-
+#: white-red, turns both of its ends dark in grey, and its centre white)
+PRINT_GREYS = "print-greys"
 #: the print ramp: matplotlib's Greys from 0.12 (light grey, L* about 91) to 0.88 (dark grey, L* about 22)
 PRINT_RAMP = (0.12, 0.88)
-#: the impact's flash (a star) and an animation's now-line: a colour of its own in each style
-FLASH_COLOUR = {"default": "#CC0033", "print": "#000000", "slides": "#CC0033"}
-#: a colour bar's tick closer to 0 than this fraction of the scale's half-range is 0 up to rounding
-ROUNDING = 1e-9
 #: what the colour bar says
 COLOUR_BAR_LABEL = "velocity of the rod's material points"
 #: the strip's axes run from -1 to 1 vertically; the bar lies on 0, a particle's letter starts here (animations)
@@ -86,13 +83,14 @@ def _style(style: Style | str) -> Style:
 
 
 def colour_map(style: Style | str):
-    """The bar's colour map in a style (`COLOUR_MAPS`): a matplotlib Colormap."""
+    """The bar's colour map in a style (`Style.velocity_colour_map`, centred on the frame's initial rod velocity):
+    a matplotlib Colormap."""
     import matplotlib
     from matplotlib.colors import ListedColormap
 
-    name = COLOUR_MAPS.get(_style(style).name, "RdBu_r")
-    if name == "print-greys":
-        return ListedColormap(matplotlib.colormaps["Greys"](np.linspace(*PRINT_RAMP, 256)), name="print-greys")
+    name = _style(style).velocity_colour_map
+    if name == PRINT_GREYS:
+        return ListedColormap(matplotlib.colormaps["Greys"](np.linspace(*PRINT_RAMP, 256)), name=PRINT_GREYS)
     return matplotlib.colormaps[name]
 
 
@@ -100,10 +98,8 @@ def readout_text(strip: Strip, frame: Frame, L: float) -> str:
     """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
     now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
-    symbol = frame_symbol(frame)
-    where = symbol if frame.name in ("rest", "moving") else f"the frame {symbol}"
     lit = f"   {', '.join(strip.flashing)}!" if strip.flashing else ""
-    return f"{clock} = {shown(strip.t / L, 4)} L in {where}{lit}"
+    return f"{clock} = {shown(strip.t / L, 4)} L in {frame_name(frame)}{lit}"
 
 
 def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> None:
@@ -112,7 +108,7 @@ def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> N
     lo, hi = scale.shown or scale.limits
     ticks = sorted({lo, scale.centre, hi}) if lo <= scale.centre <= hi else [lo, hi]
     # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
-    labels = [shown(0.0 if abs(x) <= ROUNDING * scale.bound else x, 3) for x in ticks]
+    labels = [shown(0.0 if abs(x) <= STEP_ROUNDING * scale.bound else x, 3) for x in ticks]
     colour_bar.set_ticks(list(ticks), labels=labels)
     colour_bar.ax.set_xlim(lo, hi)  # the velocities the rod takes: the scale's ends can lie past c
     colour_bar.ax.tick_params(labelsize=size, length=2, pad=1)
@@ -149,7 +145,7 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     dots = ax.plot([], [], "o", color="black", markersize=0.5 * st.impact_size + 2, animated=animated)[0]
     names = tuple(ax.text(0.0, letter_y, name, ha="center", va="bottom", fontsize=fs, style="italic",
                           color=st.particles[name].colour, animated=animated) for name, _ in strip.particles)
-    flash = ax.plot([], [], "*", color=FLASH_COLOUR.get(st.name, "#CC0033"), markersize=2.2 * st.impact_size,
+    flash = ax.plot([], [], "*", color=st.flash_colour, markersize=2.2 * st.impact_size,
                     animated=animated)[0]
     said = None
     if readout:
@@ -187,17 +183,13 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
 
 # --- a block of stills: the rod at successive instants ---------------------------------------------------
 
-#: an impact is "at" an instant of a still when its time there is within this many L: rounding of the times
-#: the caller passes (e.g. 17/12 written as 1.4166666666666667), far below anything a reader could see
-AT_INSTANT = 1e-9
-
 
 def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame, times: Sequence[float],
                      style: str) -> tuple[Axes, ...]:
     """For one frame, the rod and the particles in that frame's space at each of `times` (the frame's own
     time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
     of L, named with the frame's coordinate, e.g. x′/L); each row is labelled with its time (t′ = 1.25 L)
-    and marks the impacts at exactly that instant; one colour bar under the block serves every row (the
+    and marks the impacts at that instant (within ONE_INSTANT * L: rounding of the times passed); one colour bar under the block serves every row (the
     scale of the whole history, `render.colour_scale`, so a colour is the same velocity in every row and
     in the animation). Fills the target (a Figure or SubFigure the caller has sized).
 
@@ -219,7 +211,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     with style_context(style) as st:
         fs = font_sizes(st)
         scale = colour_scale(history, frame)
-        strips = [strip_at(history, frame, t, AT_INSTANT * L) for t in times]
+        strips = [strip_at(history, frame, t, ONE_INSTANT * L) for t in times]
         xname, _ = coordinate_names(frame)
         labels, notes = _stills_labels(strips, frame, L)
         room = _stills_room(labels, notes, fs)
@@ -339,7 +331,7 @@ def strips_size(history: History, frame: Frame, times: Sequence[float], style: s
         raise ValueError("draw_strips_into needs at least one time")
     L = history.scenario.L
     with style_context(style) as st:
-        strips = [strip_at(history, frame, float(t), AT_INSTANT * L) for t in sorted(times)]
+        strips = [strip_at(history, frame, float(t), ONE_INSTANT * L) for t in sorted(times)]
         return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st)).size(len(strips), row_scale)
 
 
