@@ -159,15 +159,18 @@ def plan(names: Sequence[str], outputs: Outputs, *, v: float | None, L: float | 
 
 def _read(names: Sequence[str], outputs: Outputs, *, v, L, frame: str):
     """(names, their scenarios as read, with --v and --L, their frames) of each output, one at a time (a later
-    scenario is read after an earlier one is planned). Together (a handout), a scenario given twice is one
-    section, and every file is read before any option is applied."""
+    scenario is read after an earlier one is planned). Together (a handout), a scenario given twice is refused
+    (a section twice over is a slip for another scenario), and every file is read before any option is
+    applied."""
     if not outputs.together:
         for name in names:
             base = load(name)
             s = with_options(base, v, L)
             yield (name,), (base,), (s,), (tuple(outputs.frames(frame, s.v)),)
         return
-    names = tuple(dict.fromkeys(names))
+    twice = next((name for k, name in enumerate(names) if name in names[:k]), None)
+    if twice is not None:
+        raise BadInput(f"{twice} is given twice; a {outputs.kind} has one section per scenario, so give each once.")
     bases = tuple(load(name) for name in names)
     scenarios = tuple(with_options(base, v, L) for base in bases)
     frames = tuple(tuple(outputs.frames(frame, s.v)) for s in scenarios)

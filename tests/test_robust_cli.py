@@ -391,3 +391,47 @@ def test_a_locked_stills_folder_is_said_without_internal_names(tmp_path, monkeyp
     monkeypatch.setattr(output.os, "access", lambda path, mode: Path(path) != stills)  # as for a user, not root
     assert error_of("animate", "fig2", "--format", "png", "--fps", "4", "--seconds", "1", "-o", stills) == \
         f"cannot write the stills into {stills}: permission denied."
+
+
+# --- handouts: letter slides in LaTeX, a colour scale zero wide, a scenario given twice ---------------------------
+
+@pytest.mark.parametrize("paper", ["letter", "a4"])
+def test_a_slides_handout_in_latex_sizes_its_strips_for_the_type(tmp_path, paper):
+    """6 strips in slides type need 6.39 in; the LaTeX writer gave them 1.45 + 6 x 0.5 = 4.45 in and died with
+    render/strip.py's ValueError. Now the block is as tall as the type needs."""
+    from pypdf import PdfReader
+
+    run("handout", "fig1", "--format", "tex", "--paper", paper, "--style", "slides", "-o", tmp_path / "tex", "-q")
+    box = PdfReader(tmp_path / "tex" / "fig1_strips_moving.pdf").pages[0].mediabox
+    assert float(box.height) / 72 > 4.45 + 1.0  # the larger type needs about 6.4 in
+
+
+def test_a_rod_that_never_changes_velocity_seen_from_another_frame_draws_no_warning():
+    """fig1 from u = 0.3: every material point at -0.30000000000000004, the centre -0.3; the colour bar was zero
+    wide, and matplotlib warned "Attempting to set identical low and high xlims" on standard error."""
+    import warnings
+
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.engine import run as run_history
+    from rodparadox.physics.frames import frame_of_velocity
+    from rodparadox.render.colour_scale import STILL_BOUND, colour_scale
+
+    history = run_history(load("fig1"))
+    scale = colour_scale(history, frame_of_velocity(0.3))
+    assert (scale.centre, scale.bound, scale.shown) == (-0.3, STILL_BOUND, None)  # as fig1 in S: the still scale
+    from matplotlib.figure import Figure
+
+    from rodparadox import render
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        render.draw_strips_into(Figure(figsize=(7, 5)), history, frame_of_velocity(0.3), [0.5, 1.0], "print")
+
+
+def test_a_scenario_given_twice_to_a_handout_is_refused(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert error_of("handout", "fig2", "fig2") == ("fig2 is given twice; a handout has one section per scenario, so "
+                                                  "give each once.")
+    assert error_of("handout", "fig1", "fig2", "fig1", "--worksheet") == (
+        "fig1 is given twice; a worksheet has one section per scenario, so give each once.")
+    assert list(tmp_path.iterdir()) == []

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.tolerances import DIFFERENCE_ROUNDING
 
 #: the colour scale's half-range when the rod never changes velocity in a frame (every point at the centre)
 STILL_BOUND = 0.1
@@ -38,6 +39,8 @@ def colour_scale(history: History, frame: Frame) -> ColourScale:
     eta = frame.rapidity
     velocities = [math.tanh(r - eta) for r in rod_rapidities(history)]
     bound = max(abs(u - centre) for u in velocities)
-    if bound <= 0:
+    # a rod that never changes velocity, seen from a frame that leaves an ulp between its velocity and the centre
+    # (fig1 from u = 0.3: -0.30000000000000004 against -0.3): still, not a scale zero wide
+    if bound <= 0 or max(velocities) - min(velocities) <= DIFFERENCE_ROUNDING:
         return ColourScale(centre, STILL_BOUND)
     return ColourScale(centre, bound, (min(velocities), max(velocities)))
