@@ -75,8 +75,10 @@ def _kind(fmt: str | None, output: str | None) -> str:
             return "figure"
         raise OptionError("format", fmt, f"one of {', '.join(TABLE_FORMATS)}, or one or more of "
                                          f"{', '.join(FIGURE_FORMATS)} comma-separated")
-    if output is None or output == "-":
-        return "table"
+    from rodparadox.io.output import is_stream
+
+    if output is None or output == "-" or (is_stream(output) and not Path(output).suffix):
+        return "table"  # standard output, or a device or pipe such as /dev/stdout: text unless --format says
     suffix = Path(output).suffix.lstrip(".").lower()
     if suffix in _EXTENSIONS:
         return "table"

@@ -152,8 +152,11 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
 
 def export_format(output: str, fmt: str | None) -> str:
-    """The format: --format, else the extension of -o FILE (.json, .csv, any case), else json for standard output."""
-    if output == "-":
+    """The format: --format, else the extension of -o FILE (.json, .csv, any case), else json for standard output
+    (and for a device or pipe named by -o, such as /dev/stdout)."""
+    from rodparadox.io.output import is_stream
+
+    if output == "-" or (is_stream(output) and not Path(output).suffix):
         return fmt or "json"
     suffix = Path(output).suffix.lstrip(".").lower()
     if fmt is None:

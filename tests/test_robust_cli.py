@@ -72,6 +72,14 @@ def test_output_to_dev_stdout_in_a_pipe_is_the_data_alone(args, start):
     assert b"/dev/stdout" not in result.stdout
 
 
+@pytest.mark.parametrize("args, start", [(["export", "fig2"], b'{\n "format": "sears-paradox/1"'),
+                                         (["ledger", "fig2"], b"fig2: v = 0.6, L = 1; E in M c^2")])
+def test_a_table_to_dev_stdout_takes_the_format_of_standard_output(args, start):
+    """No extension to read the format from: json for export and text for ledger, as without -o."""
+    result = subprocess.run(_cli() + args + ["-o", "/dev/stdout"], capture_output=True, timeout=60)
+    assert (result.returncode, result.stderr) == (0, b"") and result.stdout.startswith(start)
+
+
 def test_a_figure_to_dev_stdout_needs_its_format():
     assert error_of("plot", "fig2", "-o", "/dev/null") == ("option -o: cannot tell the format of '/dev/null' from "
                                                           "its extension; name it .svg, .pdf, .png or give --format.")
