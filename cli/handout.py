@@ -12,8 +12,8 @@ import click
 
 from rodparadox.errors import OptionError
 
-from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
-                     scenario_options, style_option)
+from .common import (before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
+                     reports_errors, run_scenario, scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
@@ -70,13 +70,14 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     key = key.lower()
     numbers = _worksheet_options(worksheet, chosen, compare_v, key, fmt.lower())
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
-                                folders={"tex": "the LaTeX pieces"}, folder_in_folder=True, check=_check_output,
+                                folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=[paper] if paper != HANDOUT_PAPER else [])
     histories = [run_scenario(s, name, frames) for s, name, frames in zip(job.scenarios, job.names, job.frames)]
     planned.prepare([job], described, output)
 
+    before_matplotlib()
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
 

@@ -17,10 +17,11 @@ import click
 from rodparadox.render.styles import FORMATS as FIGURE_FORMATS
 
 from rodparadox.errors import OptionError
+from rodparadox.numbers import decimal
 
 from . import words
-from .common import (emit, format_option, frame_option, load_scenario, output_option, quiet_option, report,
-                     reports_errors, run_scenario, scenario_options, style_option)
+from .common import (before_matplotlib, emit, format_option, frame_option, load_scenario, output_option, quiet_option,
+                     report, reports_errors, run_scenario, scenario_options, style_option)
 
 TABLE_FORMATS = ("text", "json", "csv", "markdown", "latex")
 _EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv", "md": "markdown", "markdown": "markdown",
@@ -34,13 +35,34 @@ def _times(spec: str | None) -> tuple[float, ...] | None:
     out = []
     for item in (part.strip() for part in spec.split(",")):
         try:
-            t = float(item) + 0.0
+            t = decimal(item)
         except ValueError:
             t = math.nan
         if not math.isfinite(t):
             raise OptionError("at", item, "one or more times (numbers, in the unit L is given in), comma-separated")
         out.append(t)
     return tuple(out)
+
+
+#: --at: a time farther than this many lengths of a frame's window (README, "The ledger") outside it is refused:
+#: nothing changes outside the window, so such a time is a slip (1e308 for 1e3), not a question
+AT_WINDOWS = 1000
+
+
+def _check_times(history, frames, times) -> None:
+    """Every --at time within AT_WINDOWS lengths of each frame's time window (`frames.time_window`)."""
+    from rodparadox.numbers import shown
+    from rodparadox.physics.frames import frame_symbol, time_window
+
+    for frame in frames:
+        lo, hi = time_window(history, frame)
+        reach = AT_WINDOWS * (hi - lo)
+        for t in times or ():
+            if not lo - reach <= t <= hi + reach:
+                raise OptionError("at", t, template="{what}: {value:g} lies more than {windows} window lengths "
+                                  "outside {frame}'s window ({lo} to {hi}, from before the first impact to after the "
+                                  "last), where nothing changes; give times near it.", windows=AT_WINDOWS,
+                                  frame=frame_symbol(frame), lo=shown(lo, 4), hi=shown(hi, 4))
 
 
 def _kind(fmt: str | None, output: str | None) -> str:
@@ -53,14 +75,28 @@ def _kind(fmt: str | None, output: str | None) -> str:
             return "figure"
         raise OptionError("format", fmt, f"one of {', '.join(TABLE_FORMATS)}, or one or more of "
                                          f"{', '.join(FIGURE_FORMATS)} comma-separated")
-    if output is None or output == "-":
-        return "table"
+    from rodparadox.io.output import is_stream
+
+    if output is None or output == "-" or (is_stream(output) and not Path(output).suffix):
+        return "table"  # standard output, or a device or pipe such as /dev/stdout: text unless --format says
     suffix = Path(output).suffix.lstrip(".").lower()
     if suffix in _EXTENSIONS:
         return "table"
     if suffix in FIGURE_FORMATS or Path(output).is_dir():
         return "figure"
     raise words.unknown_extension(output, ".txt, .json, .csv, .md, .tex, .svg, .pdf or .png,")
+
+
+def _check_agreement(kind: str, fmt: str | None, output: str | None) -> None:
+    """-o's extension against --format: a table into a file named as a figure (x.svg with json), or a figure into
+    one named as a table (x.tex with svg), is a contradiction, refused as export and plot refuse theirs."""
+    if fmt is None or output in (None, "-") or Path(output).is_dir():
+        return
+    suffix = Path(output).suffix.lstrip(".").lower()
+    named = _EXTENSIONS.get(suffix) or (suffix if suffix in FIGURE_FORMATS else None)
+    asked = [part.strip().lower() for part in fmt.split(",")]
+    if named is not None and (named not in asked or (kind == "table") != (suffix in _EXTENSIONS)):
+        raise words.output_disagrees(output, fmt.strip())
 
 
 @click.command()
@@ -94,7 +130,9 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if output is not None and not output.strip():
         raise words.empty_output(output)
     times = _times(at)
-    if _kind(fmt, output) == "table":
+    kind = _kind(fmt, output)
+    _check_agreement(kind, fmt, output)
+    if kind == "table":
         fmt = (fmt or _EXTENSIONS.get(Path(output or "-").suffix.lstrip(".").lower(), "text")).strip().lower()
         if output not in (None, "-"):
             suffix = Path(output).suffix.lstrip(".").lower()
@@ -106,9 +144,10 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         from rodparadox.io import ledger_report
         from rodparadox.tables import build as tables
 
+        history = run_scenario(s, scenario, frames)
+        _check_times(history, frames, times)
         text = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
-                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](run_scenario(s, scenario, frames),
-                                                                                    frames, times)
+                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](history, frames, times)
         if output in (None, "-"):
             emit(text, nl=False)
             return
@@ -123,6 +162,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
+    before_matplotlib()
     from rodparadox import render
     from rodparadox.render import ledger_figure  # matplotlib: only now, after every input has been checked
 

@@ -37,16 +37,23 @@ class _Main(click.Group):
             if not standalone_mode:
                 return super().main(args, prog_name, complete_var, standalone_mode, **extra)
             try:
-                code = super().main(args, prog_name, complete_var, False, **extra)
+                with common.stopped_by_signals():
+                    code = super().main(args, prog_name, complete_var, False, **extra)
             except click.UsageError as e:  # click's own checks (a bad --style, --rod-lines -1): one sentence too
                 click.echo(f"Error: {e.format_message()}", err=True)
                 sys.exit(e.exit_code)
             except click.ClickException as e:
                 e.show()
                 sys.exit(e.exit_code)
-            except click.exceptions.Abort:
-                click.echo("Aborted!", err=True)
-                sys.exit(1)
+            except (common.Stopped, click.exceptions.Abort) as e:
+                # Ctrl-C, kill, timeout, a closed terminal: every file and temporary folder was cleaned up on the
+                # way out (atomic writes, the encoders' `with` blocks); say so, and exit as the signal would
+                stopped = e if isinstance(e, common.Stopped) else common.Stopped(common.signal_number("SIGINT"))
+                try:
+                    click.echo(f"Error: {stopped.sentence()}", err=True)
+                except OSError:  # the terminal went away with SIGHUP
+                    pass
+                sys.exit(stopped.exit_code)
             sys.exit(code if isinstance(code, int) else 0)
         except OSError as e:
             # only help and version text are written outside the commands' edge (reports_errors, emit)
@@ -145,8 +152,11 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
 
 def export_format(output: str, fmt: str | None) -> str:
-    """The format: --format, else the extension of -o FILE (.json, .csv, any case), else json for standard output."""
-    if output == "-":
+    """The format: --format, else the extension of -o FILE (.json, .csv, any case), else json for standard output
+    (and for a device or pipe named by -o, such as /dev/stdout)."""
+    from rodparadox.io.output import is_stream
+
+    if output == "-" or (is_stream(output) and not Path(output).suffix):
         return fmt or "json"
     suffix = Path(output).suffix.lstrip(".").lower()
     if fmt is None:

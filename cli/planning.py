@@ -19,7 +19,7 @@ from rodparadox.errors import FrameError, OptionError
 from rodparadox.physics.frames import Frame, frame_word, parse_frames
 from rodparadox.physics.model import Scenario
 from rodparadox.numbers import exact
-from rodparadox.io.output import check_folder, check_target
+from rodparadox.io.output import check_folder, check_target, is_stream
 from rodparadox.io.scenario import load, stem_of
 
 from . import words
@@ -75,17 +75,16 @@ class Outputs:
     `kind` the word after the scenario's name (`ledger`, `now`, `handout`; none for `plot`). `folders` names
     the formats written as a folder of files, each with what the folder holds (`png`: "the stills"); a
     command with one reads the format before -o, since the format says whether -o names a file or a folder
-    (`check`: the command's own rules on the two), and with `folder_in_folder` an existing folder given to -o
-    receives the output's folder rather than being it. Without folder formats -o is read first and --format
-    may list several formats, one file each. `together`: every scenario in one output (a handout's sections),
-    else one output each. `frames` reads --frame for a scenario's v; `default_style` is the style not named.
+    (`check`: the command's own rules on the two); -o names that folder, whether or not it exists yet. Without
+    folder formats -o is read first and --format may list several formats, one file each. `together`: every
+    scenario in one output (a handout's sections), else one output each. `frames` reads --frame for a scenario's
+    v; `default_style` is the style not named.
     """
 
     formats: tuple[str, ...]
     default: str
     kind: str = ""
     folders: dict[str, str] = field(default_factory=dict)
-    folder_in_folder: bool = False
     check: Callable[[str | None, str, str], None] | None = None
     together: bool = False
     frames: Callable[[str, float], tuple[Frame, ...]] = frames_of
@@ -160,15 +159,18 @@ def plan(names: Sequence[str], outputs: Outputs, *, v: float | None, L: float | 
 
 def _read(names: Sequence[str], outputs: Outputs, *, v, L, frame: str):
     """(names, their scenarios as read, with --v and --L, their frames) of each output, one at a time (a later
-    scenario is read after an earlier one is planned). Together (a handout), a scenario given twice is one
-    section, and every file is read before any option is applied."""
+    scenario is read after an earlier one is planned). Together (a handout), a scenario given twice is refused
+    (a section twice over is a slip for another scenario), and every file is read before any option is
+    applied."""
     if not outputs.together:
         for name in names:
             base = load(name)
             s = with_options(base, v, L)
             yield (name,), (base,), (s,), (tuple(outputs.frames(frame, s.v)),)
         return
-    names = tuple(dict.fromkeys(names))
+    twice = next((name for k, name in enumerate(names) if name in names[:k]), None)
+    if twice is not None:
+        raise BadInput(f"{twice} is given twice; a {outputs.kind} has one section per scenario, so give each once.")
     bases = tuple(load(name) for name in names)
     scenarios = tuple(with_options(base, v, L) for base in bases)
     frames = tuple(tuple(outputs.frames(frame, s.v)) for s in scenarios)
@@ -198,7 +200,7 @@ def _path(outputs: Outputs, fmt: str, stem: str, output: str | None, place, coun
     if place is None and fmt in outputs.folders:
         if output is None:
             return Path(DEFAULT_FOLDER) / stem
-        return Path(output) / stem if outputs.folder_in_folder and Path(output).is_dir() else Path(output)
+        return Path(output)  # the folder itself, every time: not a folder inside it once it exists
     folder, file = place if place is not None else destination(output, count, (fmt,))
     return file if file is not None else folder / f"{stem}.{fmt}"
 
@@ -219,7 +221,7 @@ def formats_of(spec: str | None, file: Path | None, allowed: Sequence[str], defa
             raise OptionError("output", str(file), template="{what} names one file, {value!r}, but {format} asks for "
                                                             "{count} formats; give a folder instead.",
                               count=len(formats))
-        if file.suffix.lstrip(".").lower() != formats[0]:
+        if file.suffix.lstrip(".").lower() != formats[0] and not is_stream(file):
             raise words.output_disagrees(str(file), formats[0])
     return formats
 
@@ -233,7 +235,8 @@ def destination(output: str | None, count: int, allowed: Sequence[str]) -> tuple
     path = Path(output)
     if path.is_dir():
         return path, None
-    looks_like_file = path.suffix.lstrip(".").lower() in allowed and not output.endswith(("/", os.sep))
+    looks_like_file = (path.suffix.lstrip(".").lower() in allowed and not output.endswith(("/", os.sep))
+                       or is_stream(path))  # /dev/stdout, a FIFO: one file, its format from --format
     if not looks_like_file:
         if path.exists():
             raise OptionError("output", output, tuple(allowed), "{what}: {value} is a file, not a folder; give a "

@@ -11,8 +11,8 @@ import click
 
 from rodparadox.render.styles import FORMATS
 
-from .common import (format_option, frame_option, output_option, quiet_option, report, reports_errors, run_scenario,
-                     scenario_options, style_option)
+from .common import (Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
+                     reports_errors, run_scenario, scenario_options, style_option)
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
            ("rod_now", "now"), ("proper_time", "clocks"))
@@ -31,7 +31,7 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
 @click.option("--light-cones", is_flag=True, help="Draw the light cone of every impact.")
 @click.option("--hyperbolae", is_flag=True, help="Draw calibration hyperbolae t^2 - x^2 = +-k^2 about the origin.")
 @click.option("--grid", is_flag=True, help="Draw a grid at the ticks.")
-@click.option("--rod-lines", "rod_lines", type=click.IntRange(0, 50), default=0, metavar="N",
+@click.option("--rod-lines", "rod_lines", type=Whole(0, 50), default=0, metavar="N",
               help="Draw N material world-lines inside the rod (0 to 50), so the rigid response is seen flowing "
                    "through it.")
 @click.option("--rod-now", is_flag=True, help="Draw the rod's own lines of simultaneity: each turn's fan through "
@@ -64,6 +64,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
+    before_matplotlib()
     from rodparadox import render  # matplotlib: only now, after every input has been checked
     from rodparadox.io.output import write_atomic
 

@@ -15,7 +15,8 @@ from rodparadox.errors import ChoiceError, FrameError, OptionError, ScenarioErro
 #: every choice the library or the command line names, by its option
 OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--frame-velocity", "output": "-o",
            "format": "--format", "fps": "--fps", "seconds": "--seconds", "mode": "--mode", "paper": "--paper",
-           "at": "--at", "questions": "--questions", "compare_v": "--compare-v", "key": "--key"}
+           "at": "--at", "questions": "--questions", "compare_v": "--compare-v", "key": "--key",
+           "allow_long": "--allow-long"}
 
 
 def option(choice: str) -> str:

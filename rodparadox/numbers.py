@@ -56,6 +56,31 @@ def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
     return text if math_text else text.replace("-", MINUS)
 
 
+#: a number as a user writes it, on the command line and in a scenario file: decimal digits, an optional point and
+#: exponent (0.6, -.5, 1e-6, 2E9), or inf/nan (which the values' own checks refuse as not finite)
+DECIMAL = re.compile(r"[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?|[-+]?(?:inf|infinity|nan)",
+                     re.IGNORECASE)
+
+
+def decimal(text: str) -> float:
+    """A number written in decimal, as `float`, but refusing what only Python reads (`1_000`, ` 1`) or reads
+    otherwise (`0x10` is no float at all): one rule for every number a user writes. -0 is 0.
+    Raises ValueError."""
+    if not isinstance(text, str) or not DECIMAL.fullmatch(text.strip()):
+        raise ValueError(f"not a decimal number: {text!r}")
+    return float(text) + 0.0
+
+
+def whole(text: str) -> int:
+    """A whole number written in decimal digits (an optional sign): `int` without Python's `1_000`. Raises
+    ValueError."""
+    if isinstance(text, int) and not isinstance(text, bool):
+        return text
+    if not isinstance(text, str) or not re.fullmatch(r"[-+]?[0-9]+", text.strip()):
+        raise ValueError(f"not a whole number: {text!r}")
+    return int(text)
+
+
 def exact_signed(value: float) -> str:
     """`exact`, with its sign always written: +0.6, -0.9999999, +0 (a velocity the user gave, or its negative)."""
     text = exact(value)

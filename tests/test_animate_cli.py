@@ -38,50 +38,53 @@ def here(tmp_path, monkeypatch):
 
 
 def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
-    assert run("fig2", *SHORT).output == "outputs/fig2_now.gif\n"
-    im = Image.open(here / "outputs" / "fig2_now.gif")
+    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds1.gif\n"
+    im = Image.open(here / "outputs" / "fig2_now_fps4_seconds1.gif")
     assert im.n_frames == 4 and im.info["duration"] == 250 and im.info["loop"] == 0
-    first = (here / "outputs" / "fig2_now.gif").read_bytes()
-    stamp = os.stat(here / "outputs" / "fig2_now.gif").st_mtime_ns
-    assert run("fig2", *SHORT).output == "outputs/fig2_now.gif (unchanged)\n"
-    assert os.stat(here / "outputs" / "fig2_now.gif").st_mtime_ns == stamp
-    (here / "outputs" / "fig2_now.gif").unlink()
+    first = (here / "outputs" / "fig2_now_fps4_seconds1.gif").read_bytes()
+    stamp = os.stat(here / "outputs" / "fig2_now_fps4_seconds1.gif").st_mtime_ns
+    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds1.gif (unchanged)\n"
+    assert os.stat(here / "outputs" / "fig2_now_fps4_seconds1.gif").st_mtime_ns == stamp
+    (here / "outputs" / "fig2_now_fps4_seconds1.gif").unlink()
     run("fig2", *SHORT, "-q")
-    assert (here / "outputs" / "fig2_now.gif").read_bytes() == first  # byte-identical, and -q prints nothing
+    # byte-identical, and -q prints nothing
+    assert (here / "outputs" / "fig2_now_fps4_seconds1.gif").read_bytes() == first
 
 
 @pytest.mark.parametrize("args, path", [
-    (["--mode", "boost"], "outputs/fig2_boost.gif"),
-    (["--mode", "boost", "--v", "0.8", "--frame", "rest..0.3"], "outputs/fig2_boost_v0.8_rest_u0.3.gif"),
-    (["--frame", "rest", "--style", "print"], "outputs/fig2_now_rest_print.gif"),
-    (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now.gif"),
-    (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2.gif"),
+    (["--mode", "boost"], "outputs/fig2_boost_fps4_seconds1.gif"),
+    (["--mode", "boost", "--v", "0.8", "--frame", "rest..0.3"],
+     "outputs/fig2_boost_v0.8_rest_u0.3_fps4_seconds1.gif"),
+    (["--frame", "rest", "--style", "print"], "outputs/fig2_now_rest_print_fps4_seconds1.gif"),
+    (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now_fps4_seconds1.gif"),
+    (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2_fps5_seconds1.gif"),
 ])
 def test_names_follow_plots_rule_with_the_mode_as_the_kind(here, args, path):
+    """The rate and length are named when not the defaults (25 and 6), after the other options (issue 15)."""
     assert run("fig2", *SHORT, *args).output == f"{path}\n"
     assert (here / path).is_file()
 
 
 def test_boost_has_its_frame_count(here):
     run("fig1", "--mode", "boost", "--fps", "5", "--seconds", "1.2")
-    assert Image.open(here / "outputs" / "fig1_boost.gif").n_frames == 6
+    assert Image.open(here / "outputs" / "fig1_boost_fps5_seconds1.2.gif").n_frames == 6
 
 
 def test_png_writes_numbered_stills_into_a_folder_named_like_the_file(here):
-    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now/\n"
-    names = sorted(p.name for p in (here / "outputs" / "fig2_now").iterdir())
-    assert names == [f"fig2_now_{k:04d}.png" for k in range(4)]
-    sizes = {Image.open(here / "outputs" / "fig2_now" / n).size for n in names}
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds1/\n"
+    names = sorted(p.name for p in (here / "outputs" / "fig2_now_fps4_seconds1").iterdir())
+    assert names == [f"fig2_now_fps4_seconds1_{k:04d}.png" for k in range(4)]
+    sizes = {Image.open(here / "outputs" / "fig2_now_fps4_seconds1" / n).size for n in names}
     assert len(sizes) == 1
-    before = {n: (here / "outputs" / "fig2_now" / n).read_bytes() for n in names}
-    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now/ (unchanged)\n"
+    before = {n: (here / "outputs" / "fig2_now_fps4_seconds1" / n).read_bytes() for n in names}
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds1/ (unchanged)\n"
     assert run("fig2", *SHORT, "--format", "png", "-o", "stills").output == "stills/\n"
     assert {n: (here / "stills" / n).read_bytes() for n in names} == before
 
 
 def test_output_file_and_folder(here):
     (here / "anims").mkdir()
-    assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now.gif\n"
+    assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now_fps4_seconds1.gif\n"
     assert run("fig2", *SHORT, "-o", "anims/lecture.GIF").output == "anims/lecture.GIF\n"
     assert not (here / "outputs").exists()  # only the default folder is ever created
 
@@ -95,8 +98,8 @@ def test_mp4_has_its_frames(here):
     assert run("fig2", *SHORT, "-o", "a.mp4").output == "a.mp4\n"
     probe = subprocess.run([exe, "-v", "error", "-i", "a.mp4", "-f", "rawvideo", "-pix_fmt", "rgb24", "-"],
                            capture_output=True, check=True).stdout
-    assert run("fig2", *SHORT, "--format", "mp4").output == "outputs/fig2_now.mp4\n"
-    assert (here / "a.mp4").read_bytes() == (here / "outputs" / "fig2_now.mp4").read_bytes()
+    assert run("fig2", *SHORT, "--format", "mp4").output == "outputs/fig2_now_fps4_seconds1.mp4\n"
+    assert (here / "a.mp4").read_bytes() == (here / "outputs" / "fig2_now_fps4_seconds1.mp4").read_bytes()
     gif = Image.open(run("fig2", *SHORT).output.strip())
     width, height = (n + n % 2 for n in gif.size)
     assert len(probe) == 4 * width * height * 3
@@ -175,7 +178,8 @@ def test_a_file_as_the_stills_folder_is_refused(here):
 
 def test_an_unwritable_folder_is_refused(here, unwritable_folder):
     said = error_of("fig2", *SHORT, "-o", str(unwritable_folder))
-    assert said == f"cannot write {unwritable_folder}/fig2_now.gif: permission denied in the folder {unwritable_folder}."
+    assert said == (f"cannot write {unwritable_folder}/fig2_now_fps4_seconds1.gif: permission denied in the folder "
+                    f"{unwritable_folder}.")
 
 
 def test_mp4_without_ffmpeg_is_one_sentence_and_exit_1(here, monkeypatch):
@@ -202,4 +206,4 @@ def test_no_progress_bar_when_stderr_is_not_a_terminal(here):
     code = "import sys\nfrom sears_paradox_cli.main import main\nmain(sys.argv[1:])"
     result = subprocess.run([sys.executable, "-c", code, "animate", "fig2", *SHORT],
                             capture_output=True, text=True, timeout=120)
-    assert (result.returncode, result.stdout, result.stderr) == (0, "outputs/fig2_now.gif\n", "")
+    assert (result.returncode, result.stdout, result.stderr) == (0, "outputs/fig2_now_fps4_seconds1.gif\n", "")

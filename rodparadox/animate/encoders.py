@@ -30,11 +30,13 @@ from typing import Iterable
 import numpy as np
 
 from rodparadox.errors import OptionError, ToolMissing, WriteFailed
-from rodparadox.io.output import check_folder as check_output_folder, write_atomic
+from rodparadox.io.output import check_folder as check_output_folder, check_target, write_atomic
 
 FORMATS = ("gif", "mp4", "png")
 #: rates (images per second) a GIF stores exactly: it keeps each image's duration in hundredths of a second
 GIF_FPS = (1, 2, 4, 5, 10, 20, 25, 50)
+#: the fastest rate for MP4 and stills: a screen shows at most about 60 images a second, and more only costs time
+MAX_FPS = 60
 #: the colours of a GIF's one palette
 GIF_COLOURS = 256
 #: zlib level for images a GIF holds between its two passes: fast, and a diagram still shrinks 20-fold or more
@@ -42,9 +44,13 @@ _HOLD_LEVEL = 1
 
 
 def check_fps(fmt: str, fps: int) -> int:
-    """The rate, in images per second, for a format: a positive integer; for a GIF one whose 100/fps is an integer."""
+    """The rate, in images per second, for a format: a positive integer; for a GIF one whose 100/fps is an integer,
+    for MP4 and stills at most MAX_FPS."""
     if isinstance(fps, bool) or not isinstance(fps, int) or fps <= 0:
         raise OptionError("fps", fps, "a whole number of frames per second above 0")
+    if fmt != "gif" and fps > MAX_FPS:
+        raise OptionError("fps", fps, MAX_FPS, "{what}: {value} frames per second is faster than a screen shows; "
+                          "give at most {allowed}.")
     if fmt == "gif" and fps not in GIF_FPS:
         raise OptionError("fps", fps, GIF_FPS, "{what}: a GIF stores frame durations in hundredths of a second, so "
                           "only {choices} frames per second are exact, got {value}; choose one of them or {format} "
@@ -346,6 +352,17 @@ class PngSink(_Sink):
 def check_folder(folder: str | os.PathLike) -> Path:
     """The folder of the stills: an existing folder, or a new one whose parent exists and can be written."""
     return check_output_folder(folder, "the stills")
+
+
+def check_stills(folder: str | os.PathLike, name: str, count: int) -> None:
+    """Before any still is drawn: each of the `count` stills NAME_0000.png ... can be written into `folder` (none
+    is a folder, a dangling link into a missing folder ...), so a clash is said before anything is overwritten."""
+    folder = check_folder(folder)
+    if folder.is_dir():
+        for k in range(count):
+            still = folder / f"{name}_{k:04d}.png"
+            if os.path.lexists(still):
+                check_target(still)
 
 
 def png_bytes(image: np.ndarray) -> bytes:

@@ -33,6 +33,10 @@ MODES = ("now", "boost")
 #: the longest animation, and the most images one may have: enough for two minutes at 25 images per second
 MAX_SECONDS = 120.0
 MAX_IMAGES = 3000
+#: the most pixels (images x width x height) drawn unless the caller allows a long animation: the default
+#: animation of fig2 is 150 images of 1049 x 1101, 173 million; this bound, about 350 such images, takes under a
+#: minute on a 2-core machine, where drawing costs about 0.1 s per million pixels
+MAX_PIXELS = 400_000_000
 #: an impact flashes while the panel's time is within this fraction of its window of the impact's time
 #: (or half an image's step, if that is longer, so that every impact flashes in at least one image)
 FLASH_FRACTION = 0.02
@@ -53,6 +57,18 @@ def image_count(seconds: float, fps: int) -> int:
         raise OptionError("seconds", seconds, MAX_IMAGES, "{seconds} {value:g} at {fps} {fps_value} gives {count} "
                           "frames; at most {allowed} are drawn, so lower one of them.", fps_value=fps, count=count)
     return count
+
+
+def check_cost(count: int, width: int, height: int, seconds: float, fps: int, allow_long: bool = False) -> None:
+    """Refuse `count` images of `width` x `height` pixels past MAX_PIXELS in all, unless `allow_long`: a long
+    animation is asked for, not stumbled into (README, "Animating": Length)."""
+    pixels = count * width * height
+    if pixels > MAX_PIXELS and not allow_long:
+        raise OptionError("seconds", seconds, MAX_PIXELS // 1_000_000, "{seconds} {value:g} at {fps} {fps_value} "
+                          "gives {count} frames of {width} x {height} pixels, {millions:,} million pixels in all, more "
+                          "than the {allowed} million drawn without asking (minutes of work); give {allow_long} to "
+                          "draw them, or lower {seconds} or {fps}.", fps_value=fps, count=count, width=width,
+                          height=height, millions=round(pixels / 1e6))
 
 
 def sweep(count: int) -> np.ndarray:

@@ -41,6 +41,9 @@ _LATEX_PAPER = {"a4": "a4paper", "letter": "letterpaper"}
 ANSWER_LINES = 5
 #: a strip block's height: room for the time axis and the colour bar, plus one row per instant (inches)
 _STRIPS_BELOW_IN, _STRIPS_ROW_IN = 1.45, 0.5
+#: where the type needs more (slides), each row this many times the least row `draw_strips_into` accepts, as a PDF
+#: handout's rows (room for the particles' letters)
+_STRIPS_ROW_SCALE = 1.25
 #: characters a file name keeps; a dot would end the name for graphicx (`u0.3` -> `u0p3`), anything else is `-`
 _UNSAFE = re.compile(r"[^A-Za-z0-9_-]")
 
@@ -233,7 +236,10 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
     else:
         from matplotlib.figure import Figure
 
-        figure = Figure(figsize=(text_width_in(paper), _STRIPS_BELOW_IN + _STRIPS_ROW_IN * len(block.times)))
+        # the least block the strips take in this style (large type in slides) grows the figure past the default
+        least = render.strips_size(block.history, block.frame, block.times, style, _STRIPS_ROW_SCALE)[1] / 72
+        figure = Figure(figsize=(text_width_in(paper),
+                                 max(_STRIPS_BELOW_IN + _STRIPS_ROW_IN * len(block.times), least)))
         render.draw_strips_into(figure, block.history, block.frame, block.times, style)
     return render.figure_bytes(figure, "pdf", style)
 

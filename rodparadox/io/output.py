@@ -29,6 +29,8 @@ def check_target(path: str | os.PathLike) -> Path:
     A symbolic link is followed: its target is the file written (a dangling link's target is created).
     """
     shown = Path(path)
+    if is_stream(shown):  # /dev/stdout into a pipe: its link leads to no path (pipe:[...]), it is written in place
+        return shown
     real = Path(os.path.realpath(path))  # through symbolic links: replace the target, keep the link
     folder = real.parent
     if not folder.is_dir():
@@ -51,6 +53,16 @@ def check_target(path: str | os.PathLike) -> Path:
         # a new file goes in beside the old one and is renamed: the folder must be writable (root passes)
         raise OutputError(f"cannot write {shown}: permission denied in the folder {shown.parent}.")
     return real
+
+
+def is_stream(path: str | os.PathLike) -> bool:
+    """Whether `path` is, through any links, a device or a pipe (/dev/null, /dev/stdout, a FIFO): written in
+    place, never replaced by a file."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
 
 
 def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
@@ -100,12 +112,16 @@ def write_atomic(path: str | os.PathLike, data: bytes) -> bool:
 def _write_stream(path: Path, data: bytes) -> bool:
     """A device or pipe (/dev/null, /dev/stdout, a FIFO): written in place, never replaced by a file."""
     try:
-        f = open(path, "wb")
+        f = open(path, "wb", buffering=0)
     except OSError as e:
         raise OutputError(f"cannot write {path}: {_reason(e)}.") from None
     try:
         with f:
-            f.write(data)
+            view = memoryview(data)
+            while view:  # a pipe may take part of a write: write the rest, or hear that its reader went away
+                view = view[f.write(view) or 0:]
+    except BrokenPipeError:
+        raise  # the reader of a pipe went away: the caller ends quietly, as for standard output
     except OSError as e:
         raise WriteFailed(f"cannot write {path}: {_reason(e)}.") from None
     return True
@@ -128,7 +144,8 @@ def check_folder(folder: str | os.PathLike, what: str) -> Path:
     and can be written (the caller creates it, `make_folder`)."""
     folder = Path(folder)
     if folder.is_dir():
-        check_target(folder / ".probe")  # can be written into
+        if not os.access(folder, os.W_OK | os.X_OK):  # root passes
+            raise OutputError(f"cannot write {what} into {folder}: permission denied.")
         return folder
     if folder.exists():
         raise OutputError(f"cannot write {what} into {folder}: it is a file, not a folder.")

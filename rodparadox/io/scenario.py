@@ -126,7 +126,35 @@ class _Document:
             # every leaf of the schema is one number or word: a list or mapping is refused unbuilt, as an empty
             # one, so that the key's own check (model.py) words the sentence
             return [] if isinstance(node, yaml.SequenceNode) else {}
-        return loader.construct_object(node)
+        value = loader.construct_object(node)
+        _check_decimal(node, value, path)
+        return value
+
+
+#: a number as YAML 1.2 and the command line write it: decimal digits, an optional point and exponent
+_DECIMAL = re.compile(r"[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+#: YAML's words for infinity and not-a-number, which the scenario's own checks refuse as not finite
+_SPECIAL = re.compile(r"[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN)")
+#: YAML 1.1's other ways to write a number, which PyYAML reads silently: `1:30` is 90, `010` is 8, `0x10` is 16
+_NOT_DECIMAL = ((re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"), "in base 60 as"),
+                (re.compile(r"[-+]?0x[0-9a-fA-F_]+"), "in hexadecimal as"),
+                (re.compile(r"[-+]?0b[01_]+"), "in binary as"),
+                (re.compile(r"[-+]?0[0-7_]+"), "in octal as"))
+
+
+def _check_decimal(node: yaml.ScalarNode, value: Any, path: str) -> None:
+    """Refuse a number that YAML 1.1 reads as another than its decimal digits say (base 60 `1:30`, octal `010`,
+    hexadecimal, binary, underscores): the rule of the command line's numbers too (`numbers.decimal`)."""
+    if node.style is not None or isinstance(value, bool) or not isinstance(value, (int, float)):
+        return
+    text = node.value
+    if (_DECIMAL.fullmatch(text) and float(text) == value) or _SPECIAL.fullmatch(text):
+        return
+    how = next((how for pattern, how in _NOT_DECIMAL if pattern.fullmatch(text)), "as")
+    if how == "as" and "_" in text:
+        how = "skipping the underscores, as"
+    raise ScenarioError(f"{path or 'the value'} is {text}, which YAML 1.1 reads {how} {value!r}; write the number "
+                        f"in plain decimal digits.", path or None, node.start_mark.line + 1)
 
 
 def _shape(node: yaml.Node) -> str:

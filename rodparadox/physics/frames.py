@@ -20,7 +20,7 @@ from rodparadox.physics.engine import WORLDLINE_NAMES, History, Impact
 from rodparadox.errors import FrameError
 from rodparadox.physics.kinematics import Event, Segment
 from rodparadox.physics.model import FASTEST, FRAME_NAMES, frame_velocity
-from rodparadox.numbers import exact, shown
+from rodparadox.numbers import decimal, exact, shown
 from rodparadox.tolerances import ONE_INSTANT, SAMPLING_TOLERANCE
 
 #: one panel per frame, lettered (a), (b), ...: at most eight in one figure
@@ -77,7 +77,7 @@ def frame_of_word(word: str, v: float) -> "Frame | None":
     if word in FRAME_NAMES:
         return named_frame(word, v)
     try:
-        u = float(word) + 0.0  # -0 is 0
+        u = decimal(word)  # -0 is 0; decimal digits only, as every number a user writes
     except ValueError:
         return None
     return frame_of_velocity(u)

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.tolerances import DIFFERENCE_ROUNDING
 
 #: the colour scale's half-range, in rapidity, when the rod never changes velocity in a frame (every point at the
 #: centre)
@@ -47,6 +48,8 @@ def colour_scale(history: History, frame: Frame) -> ColourScale:
     eta = frame.rapidity
     rapidities = [r - eta for r in rod_rapidities(history)]
     bound = max(abs(r - math.atanh(centre)) for r in rapidities)
-    if bound <= 0:
+    # a rod that never changes velocity, seen from a frame that leaves an ulp between its velocity and the centre
+    # (fig1 from u = 0.3: -0.30000000000000004 against -0.3): still, not a scale zero wide
+    if bound <= 0 or max(rapidities) - min(rapidities) <= DIFFERENCE_ROUNDING:
         return ColourScale(centre, STILL_BOUND)
     return ColourScale(centre, bound, (math.tanh(min(rapidities)), math.tanh(max(rapidities))))
