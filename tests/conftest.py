@@ -1,16 +1,43 @@
-"""Fixtures shared by the test files, and hypothesis's profile."""
+"""Fixtures and helpers shared by the test files, hypothesis's profile, and how the suite spreads over processes.
 
+`python -m pytest` runs on two worker processes (pytest-xdist, `-n auto` capped at 2 in pyproject.toml and
+below) with `--dist loadgroup`: tests marked `xdist_group(name)` run in one worker, so that the caches below and
+the test files' own (drawn figures, built PDFs) are filled once per group instead of once per worker.
+"""
+
+import functools
 import os
 from pathlib import Path
 
 import pytest
 from hypothesis import settings
 
+from rodparadox.io.scenario import load
+from rodparadox.physics.engine import History, run
+
 # CI (CI=true) runs the same generated examples every time, so a landing never hangs on a lucky draw;
 # a developer's run draws new ones and finds what CI would not
 settings.register_profile("ci", derandomize=True, database=None)
 if os.environ.get("CI"):
     settings.load_profile("ci")
+
+#: at most this many worker processes for `-n auto`: each imports matplotlib and collects the suite (a few
+#: seconds), and a container's CPU quota is not seen by the CPU count
+MAX_WORKERS = 2
+
+
+def pytest_xdist_auto_num_workers(config):
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        cores = os.cpu_count() or 1
+    return max(1, min(cores, MAX_WORKERS))
+
+
+@functools.lru_cache(maxsize=None)
+def history(name: str, v: float | None = None, L: float | None = None) -> History:
+    """A built-in scenario's history at v and L (None: the scenario's own), run once per process; it is immutable."""
+    return run(load(name).with_overrides(v=v, L=L))
 
 
 @pytest.fixture

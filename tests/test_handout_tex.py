@@ -65,6 +65,10 @@ def handout(names: tuple[str, ...], worksheet: bool) -> Handout:
     return Handout("The Sears paradox", tuple(sections), worksheet, answer_key)
 
 
+#: most tests read the one worksheet (a module fixture): in one worker, so it is made once
+pytestmark = pytest.mark.xdist_group("handout_tex")
+
+
 @pytest.fixture(scope="module")
 def worksheet():
     h = handout(("fig1", "fig2"), worksheet=True)

@@ -1,8 +1,8 @@
 """`sears-paradox plot`: file names, formats, quiet output, bad input (message + exit 2), determinism, make.
 
 Each test runs in its own temporary folder (the default output folder is
-./outputs). A few run the real command in a fresh process: determinism
-across processes, what --help imports, the Makefile.
+./outputs). A few run the real command in a fresh process: what --help
+imports, the Makefile (test_determinism checks the same bytes across processes).
 """
 
 from __future__ import annotations
@@ -271,18 +271,7 @@ def test_a_failure_while_drawing_exits_non_zero_and_leaves_finished_files_whole(
     assert (in_tmp / "outputs" / "fig2.svg").read_bytes().rstrip().endswith(b"</svg>")
 
 
-# --- processes: determinism, imports, make --------------------------------------------------------------
-
-def test_byte_identical_svg_and_pdf_from_two_processes(in_tmp):
-    outputs = []
-    for seed, folder in (("1", "one"), ("2", "two")):
-        (in_tmp / folder).mkdir()
-        env = {**os.environ, "PYTHONHASHSEED": seed}
-        subprocess.run(command() + ["plot", "fig2", "--format", "svg,pdf", "-o", folder], check=True, env=env,
-                       capture_output=True)
-        outputs.append({f: (in_tmp / folder / f"fig2.{f}").read_bytes() for f in ("svg", "pdf")})
-    assert outputs[0] == outputs[1]
-
+# --- processes: imports, make --------------------------------------------------------------------------
 
 def test_help_does_not_import_matplotlib_and_plot_never_imports_pyplot(in_tmp):
     probe = (

@@ -2,7 +2,10 @@
 
 Figures are built with `rodparadox.render.draw` and inspected as matplotlib
 artists, found by their gid (`a-rod_left`, `b-impact-B1`, ...). A few tests
-draw with the Agg renderer to measure the texts as a reader would see them.
+draw with the Agg renderer to measure the texts as a reader would see them;
+the three grids of those (labels touch nothing, labels sit by their markers,
+any number of panels) run as one test per scenario, v and style, which draws
+and renders each figure once and runs every check of every grid on it.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgb
 
+from conftest import history
 from rodparadox import render
 from rodparadox.physics.engine import run
 from rodparadox.errors import ScenarioError
@@ -33,11 +37,6 @@ from rodparadox.render.styles import FORMATS, STYLE_NAMES, STYLES
 
 ROOT = Path(__file__).resolve().parent.parent
 SPEEDS = (0.1, 0.6, 0.95)
-
-
-@lru_cache(maxsize=None)
-def history(name: str, v: float | None = None, L: float | None = None):
-    return run(load(name).with_overrides(v=v, L=L))
 
 
 @lru_cache(maxsize=None)
@@ -365,7 +364,7 @@ def test_a_long_name_is_cut_with_an_ellipsis_and_nothing_leaves_the_figure(tmp_p
     with render.style_context(style):
         box = title.get_window_extent(renderer)
     assert 0 <= box.x0 and box.x1 <= fig.bbox.x1
-    assert [p for p in _collisions(fig, style) if "outside" in p[1]] == []
+    assert [p for p in _collisions(fig, style, renderer) if "outside" in p[1]] == []
 
 
 @pytest.mark.parametrize("text", ["a$b", "$", "50% of $3", "x\\$", "a\\$b, $v$"])
@@ -392,9 +391,9 @@ def _renderer(fig, style):
     return renderer
 
 
-def _collisions(fig, style) -> list[tuple[str, str]]:
+def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:
     """Texts in the panels that touch a line, a marker or another text; any text outside the figure."""
-    renderer = _renderer(fig, style)
+    renderer = renderer or _renderer(fig, style)
     problems, boxes = [], []
     with render.style_context(style):
         for ax in fig.axes:
@@ -421,17 +420,6 @@ def _collisions(fig, style) -> list[tuple[str, str]]:
             if box.x0 < -0.5 or box.y0 < -0.5 or box.x1 > fig.bbox.x1 + 0.5 or box.y1 > fig.bbox.y1 + 0.5:
                 problems.append((text.get_text(), "outside the figure"))
     return problems
-
-
-@pytest.mark.parametrize("style", STYLE_NAMES)
-@pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
-def test_labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_figure(name, v, style):
-    try:
-        history(name, v)
-    except ScenarioError:
-        pytest.skip(f"{name} is refused at v = {v}")
-    assert _collisions(figure(name, v, style), style) == []
 
 
 #: frames for 1 to 8 panels: S, S', then frames on either side of both
@@ -478,31 +466,10 @@ def _layout_problems(fig, style, renderer=None) -> list:
     return problems
 
 
-@pytest.mark.parametrize("style", STYLE_NAMES)
-@pytest.mark.parametrize("count", (1, 2, 3, 4, 5, 8))
-@pytest.mark.parametrize("name, v", [("fig2", 0.6), ("single", 0.95), ("fig2", 0.9999999)])
-def test_any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(name, v, count, style):
-    """Issue 6.2: --frame both,0.3,0.9 was 14.5 in wide, 8 panels 30 in; x' ticks ran together at v = 0.9999999."""
-    h = history(name, v)
-    fig = render.draw(h, frames_of(LAYOUT_FRAMES[:count], v), style).figure
-    width, height = fig.get_size_inches()
-    page = STYLES[style]
-    assert width <= page.max_width + 1e-9
-    if style != "slides" or count <= 3:  # at 17 pt, four panels or more may make a slide taller than 16:9
-        assert height <= page.max_height + 1e-9
-    renderer = _renderer(fig, style)
-    assert _layout_problems(fig, style, renderer) == []
-    for ax in fig.axes:  # every panel keeps at least two ticks on each axis, at equal scales
-        assert len(ax.get_xticks()) >= 2 and len(ax.get_yticks()) >= 2
-        box = ax.get_window_extent(renderer)
-        (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
-        assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-3)
-
-
-def _far_labels(fig, style) -> list:
+def _far_labels(fig, style, renderer=None) -> list:
     """Impact labels farther than LABEL_REACH (+1 pt for glyph metrics) from their marker's edge without a leader
     from that marker's edge to the label's box; leaders that do not."""
-    renderer = _renderer(fig, style)
+    renderer = renderer or _renderer(fig, style)
     radius = STYLES[style].impact_size / 2
     problems = []
     with render.style_context(style):
@@ -529,18 +496,73 @@ def _far_labels(fig, style) -> list:
     return problems
 
 
-@pytest.mark.parametrize("style", STYLE_NAMES)
-@pytest.mark.parametrize("v", (0.6, 0.95, 0.9999999))
-@pytest.mark.parametrize("name", builtin_names())
-def test_every_impact_label_sits_by_its_marker_or_is_tied_to_it(name, v, style):
+#: three grids of drawn figures, measured as rendered (Agg): labels touch nothing (S and S' at SPEEDS); every impact
+#: label sits by its marker (S and S', and four panels, at LABEL_SPEEDS); any number of panels fits (PANEL_CASES)
+LABEL_SPEEDS = (0.6, 0.95, 0.9999999)
+PANEL_CASES = (("fig2", 0.6), ("single", 0.95), ("fig2", 0.9999999))
+PANEL_COUNTS = (1, 2, 3, 4, 5, 8)
+
+
+def labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_figure(fig, style, renderer):
+    assert _collisions(fig, style, renderer) == []
+
+
+def every_impact_label_sits_by_its_marker_or_is_tied_to_it(fig, style, renderer, specs):
     """Issue 6.3: with --frame both,0.3,0.9 panel (c)'s B1 sat 1.2 L from its dot; at v = 0.95 Fig. 2(b)'s B2 45 pt away."""
+    assert _far_labels(fig, style, renderer) == [], specs
+
+
+def any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(fig, style, renderer, count):
+    """Issue 6.2: --frame both,0.3,0.9 was 14.5 in wide, 8 panels 30 in; x' ticks ran together at v = 0.9999999."""
+    width, height = fig.get_size_inches()
+    page = STYLES[style]
+    assert width <= page.max_width + 1e-9
+    if style != "slides" or count <= 3:  # at 17 pt, four panels or more may make a slide taller than 16:9
+        assert height <= page.max_height + 1e-9
+    assert _layout_problems(fig, style, renderer) == []
+    for ax in fig.axes:  # every panel keeps at least two ticks on each axis, at equal scales
+        assert len(ax.get_xticks()) >= 2 and len(ax.get_yticks()) >= 2
+        box = ax.get_window_extent(renderer)
+        (x0, x1), (t0, t1) = ax.get_xlim(), ax.get_ylim()
+        assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-3)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("style", STYLE_NAMES)
+@pytest.mark.parametrize("v", sorted({*SPEEDS, *LABEL_SPEEDS}))
+@pytest.mark.parametrize("name", builtin_names())
+def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits_the_page(name, v, style):
+    """The three grids above, each figure drawn and rendered once for every check of every grid that draws it (the
+    grids share S and S' at 0.6 and 0.95, and two and four panels): per preset, v and style,
+    - at v in SPEEDS, on S and S': labels never touch lines, markers or each other, and nothing leaves the figure;
+    - at v in LABEL_SPEEDS, on S and S' and on S, S', 0.3, 0.9: every impact label sits by its marker or is tied to it;
+    - for PANEL_CASES, on 1 to 8 panels (LAYOUT_FRAMES): the panels fit the style's page and no text overlaps."""
     try:
         h = history(name, v)
     except ScenarioError:
+        if (name, v) in PANEL_CASES:
+            raise  # drawn in every case
         pytest.skip(f"{name} is refused at v = {v}")
-    for specs in (("rest", "moving"), ("rest", "moving", 0.3, 0.9)):
-        fig = render.draw(h, frames_of(specs, v), style).figure
-        assert _far_labels(fig, style) == [], specs
+    figures = {}
+
+    def drawn(specs: tuple) -> tuple:
+        """The figure of these frames and the renderer it was rendered with, once."""
+        if specs not in figures:
+            fig = render.draw(h, frames_of(specs, v), style).figure
+            figures[specs] = (fig, _renderer(fig, style))
+        return figures[specs]
+
+    if v in SPEEDS:
+        fig, renderer = drawn(("rest", "moving"))
+        labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_figure(fig, style, renderer)
+    if v in LABEL_SPEEDS:
+        for specs in (("rest", "moving"), ("rest", "moving", 0.3, 0.9)):
+            fig, renderer = drawn(specs)
+            every_impact_label_sits_by_its_marker_or_is_tied_to_it(fig, style, renderer, specs)
+    if (name, v) in PANEL_CASES:
+        for count in PANEL_COUNTS:
+            fig, renderer = drawn(LAYOUT_FRAMES[:count])
+            any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(fig, style, renderer, count)
 
 
 @pytest.mark.parametrize("v", SPEEDS)
