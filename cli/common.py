@@ -155,6 +155,12 @@ def before_matplotlib() -> None:
         return  # matplotlib will say why itself
     atexit.register(shutil.rmtree, folder, True)
     os.environ["MPLCONFIGDIR"] = folder
+    # a new folder has no font cache: matplotlib builds one, and says so on standard error when that takes over
+    # 5 s (a loaded machine); the building is ours to arrange here, so the notice is dropped
+    import logging
+
+    logging.getLogger("matplotlib.font_manager").addFilter(
+        lambda record: not str(record.msg).startswith("Matplotlib is building the font cache"))
 
 
 def report(written, quiet: bool) -> None:

@@ -98,6 +98,7 @@ class Metrics:
         self.least_panel = 6 * fs["tick"]  # below this a panel has no room for its ticks: shrink no further
         self.gutters: dict[str, float] = {}  # each panel's room on the left
         self.rights: dict[str, float] = {}  # the room right of each panel, were it last in its row
+        self._one_line: dict[str, float] = {}  # titles and their pieces measured, as wrapping tries many widths
 
     def gutter(self, p: Panel, steps: tuple[float, float]) -> float:
         """Room left of a panel for its t tick labels and t axis label, and for half its first x tick label."""
@@ -126,7 +127,9 @@ class Metrics:
 
     def one_line(self, title: str) -> float:
         """The width a panel needs for its title on one line."""
-        return approximate_size(title, self.fs["title"])[0] + 6
+        if title not in self._one_line:
+            self._one_line[title] = approximate_size(title, self.fs["title"])[0] + 6
+        return self._one_line[title]
 
     def _fits(self, text: str, width: float) -> bool:
         return self.one_line(text) <= width
