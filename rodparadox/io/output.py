@@ -49,10 +49,27 @@ def check_target(path: str | os.PathLike) -> Path:
         raise OutputError(f"cannot write {shown}: {_reason(e)}.") from None
     if old is not None and stat.S_ISDIR(old.st_mode):
         raise OutputError(f"cannot write {shown}: it is a folder.")
-    if (old is None or stat.S_ISREG(old.st_mode)) and not os.access(folder, os.W_OK | os.X_OK):
-        # a new file goes in beside the old one and is renamed: the folder must be writable (root passes)
-        raise OutputError(f"cannot write {shown}: permission denied in the folder {shown.parent}.")
+    if old is None or stat.S_ISREG(old.st_mode):
+        # a new file goes in beside the old one and is renamed: the folder must take a new file
+        refused = _refuses_new_files(folder)
+        if refused:
+            raise OutputError(f"cannot write {shown}: {refused} in the folder {shown.parent}.")
     return real
+
+
+def _refuses_new_files(folder: Path) -> str | None:
+    """Why no new file can be made in `folder` (None if one can), found before anything is computed: the mode
+    bits first, then by making and removing an empty file there, since root passes the mode bits of folders it
+    still cannot write into (/sys, a read-only mount)."""
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return "permission denied"
+    try:
+        handle, name = tempfile.mkstemp(dir=folder, prefix=".sears-paradox-", suffix=".part")
+    except OSError as e:
+        return _reason(e)
+    os.close(handle)
+    os.unlink(name)
+    return None
 
 
 def is_stream(path: str | os.PathLike) -> bool:
@@ -144,8 +161,9 @@ def check_folder(folder: str | os.PathLike, what: str) -> Path:
     and can be written (the caller creates it, `make_folder`)."""
     folder = Path(folder)
     if folder.is_dir():
-        if not os.access(folder, os.W_OK | os.X_OK):  # root passes
-            raise OutputError(f"cannot write {what} into {folder}: permission denied.")
+        refused = _refuses_new_files(folder)
+        if refused:
+            raise OutputError(f"cannot write {what} into {folder}: {refused}.")
         return folder
     if folder.exists():
         raise OutputError(f"cannot write {what} into {folder}: it is a file, not a folder.")
@@ -153,8 +171,9 @@ def check_folder(folder: str | os.PathLike, what: str) -> Path:
     if not parent.is_dir():
         raise OutputError(f"cannot create the folder {folder} for {what}: the folder {folder.parent} does not "
                           f"exist; create it first.")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise OutputError(f"cannot create the folder {folder} for {what}: permission denied in the folder "
+    refused = _refuses_new_files(parent)
+    if refused:
+        raise OutputError(f"cannot create the folder {folder} for {what}: {refused} in the folder "
                           f"{folder.parent}.")
     return folder
 
