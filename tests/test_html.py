@@ -1,0 +1,233 @@
+"""`sears-paradox html` (issue 17): the page's data against the engine, hand derivations and `events`; the command's
+names, bytes, refusals; and, where Chromium and playwright are installed, the page in a real browser with the
+network refused.
+
+The Python-side tests share one fig2 page (a session fixture); the command's tests shrink the speed grid
+(`data.SPEED_STEPS`) so that each build takes a fraction of a second. The browser tests share one browser.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rodparadox.io.scenario import load
+from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.render.styles import STYLES
+from rodparadox.web import data as web_data
+from rodparadox.web.page import asset, page
+from sears_paradox_cli.main import main
+
+from conftest import history
+
+ROOT = Path(__file__).resolve().parent.parent
+MB = 1 << 20
+
+
+@pytest.fixture(scope="session")
+def fig2_page() -> str:
+    return page([("fig2", load("fig2"))])
+
+
+@pytest.fixture(scope="session")
+def fig2_data(fig2_page) -> dict:
+    """The data as the page embeds it (read back from its <script>, not from the builder)."""
+    text = re.search(r'<script type="application/json" id="page-data">(.*?)</script>', fig2_page, re.S).group(1)
+    return json.loads(text)
+
+
+def at_speed(data: dict, v: float) -> dict:
+    [entry] = [e for e in data["scenarios"][0]["speeds"] if e["v"] == v]
+    [rigid] = entry["models"]  # a list of models per speed; only the rigid rod so far
+    assert rigid["model"] == "rigid"
+    return rigid
+
+
+@pytest.fixture
+def small_grid(monkeypatch):
+    """Two speeds besides the scenario's and a coarse ledger: the command's behaviour, built in a moment."""
+    monkeypatch.setattr(web_data, "SPEED_STEPS", 2)
+    monkeypatch.setattr(web_data, "LEDGER_INSTANTS", 3)
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, list(args))
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+# --- the data against the engine and hand derivations ------------------------------------------------------
+
+def test_the_speed_grid_holds_the_scenarios_own_v_and_every_twentieth(fig2_data):
+    speeds = [e["v"] for e in fig2_data["scenarios"][0]["speeds"]]
+    assert speeds == [round(0.05 * k, 2) for k in range(1, 20)] and 0.6 in speeds
+    assert web_data.speeds(load("fig2").with_overrides(v=0.637)).count(0.637) == 1
+
+
+def test_fig2_impacts_at_v_0_6_are_the_papers_with_every_digit(fig2_data):
+    """Hand derivation (README): in S, B1 at (1/2, 5/6), A1 at (-3/4, 19/12); in S' (rapidity -atanh 0.6, g = 5/4)
+    both at t' = g (t + 0.6 x) = 17/12."""
+    impacts = {i["label"]: i for i in at_speed(fig2_data, 0.6)["impacts"]}
+    assert impacts["B1"]["x"] == pytest.approx(0.5, abs=1e-15) and impacts["B1"]["t"] == pytest.approx(5 / 6, abs=1e-15)
+    assert impacts["A1"]["x"] == pytest.approx(-0.75, abs=1e-15)
+    assert impacts["A1"]["t"] == pytest.approx(19 / 12, abs=1e-15)
+    for label in ("A1", "B1"):  # the boost the page does, by hand
+        i = impacts[label]
+        assert 1.25 * (i["t"] + 0.6 * i["x"]) == pytest.approx(17 / 12, abs=1e-14)
+    # simultaneous in S', yet not for the rod: it is struck by B first in its own time (the paradox)
+    assert impacts["A1"]["name"] == "A\u2081" and impacts["A1"]["simultaneous_with"] is None
+
+
+def test_the_tables_of_s_and_s_prime_are_what_events_prints(fig2_data):
+    """The embedded tables against `events --format markdown` run through the command (another path to the same
+    numbers), and the fractions by hand: 17/12 in S', 19/12 in S."""
+    tables = at_speed(fig2_data, 0.6)["tables"]
+    markdown = run("events", "fig2", "--v", "0.6", "--format", "markdown").output
+    for table in tables.values():
+        for row in table["rows"]:
+            assert re.search(r"\| " + r"\s*\|\s*".join(map(re.escape, row)) + r"\s*\|", markdown), row
+    moving = {row[0]: row for row in tables["moving"]["rows"]}
+    assert moving["A\u2081"][3] == moving["B\u2081"][3] == "+1.416667 (17/12)"
+    assert {row[0]: row for row in tables["rest"]["rows"]}["A\u2081"][3] == "+1.583333 (19/12)"
+
+
+@pytest.mark.parametrize("v", [0.3, 0.95])
+def test_sampled_lines_lie_on_the_exact_world_lines_within_tolerance_in_every_frame(fig2_data, v):
+    """Every embedded point is on the exact curve (to its digits), and after a boost to u = +-0.95 every chord stays
+    within SAMPLING_TOLERANCE L of the exact world-line at the chord's midpoint time."""
+    h, m = history("fig2", v), at_speed(fig2_data, v)
+    for name, line in m["worldlines"].items():
+        exact = h.worldline(name)
+        for x, t in zip(line["x"], line["t"]):
+            assert exact.event_at_time(t).x == pytest.approx(x, abs=2e-6 * (1 + abs(x)))
+        for u in (-0.95, 0.95):
+            eta = math.atanh(u)
+            seen, c, s = exact.seen_from(eta), math.cosh(eta), math.sinh(eta)
+            points = [(c * x - s * t, c * t - s * x) for x, t in zip(line["x"], line["t"])]
+            for (xa, ta), (xb, tb) in zip(points, points[1:]):
+                if tb - ta > 1e-9:
+                    mid = 0.5 * (ta + tb)
+                    assert abs(xa + (xb - xa) * (mid - ta) / (tb - ta) - seen.event_at_time(mid).x) < 1.2e-4
+    for sigma_index in (0, len(m["material"]) // 2):  # the strip's material points, at their coarser tolerance
+        line = m["material"][sigma_index]
+        exact = h.material_worldline(sigma_index / (web_data.MATERIAL_POINTS - 1))
+        for x, t, phi in zip(line["x"], line["t"], line["phi"]):
+            assert exact.event_at_time(t).x == pytest.approx(x, abs=1e-3)
+            # at a kink (an impact) the point is given twice, before and after: t's digits may put it either side
+            near = [exact.rapidity_at_time(t + dt, after) for dt in (-1e-4, 0.0, 1e-4) for after in (False, True)]
+            assert min(abs(r - phi) for r in near) < 1e-3
+
+
+def test_the_colour_scale_is_the_largest_material_rapidity(fig2_data):
+    """Independent of the samples: the extremes of every material point's rapidity are the turns' ends."""
+    for v in (0.3, 0.6):
+        bound = max(abs(r) for r in rod_rapidities(history("fig2", v)))
+        assert at_speed(fig2_data, v)["colour_bound"] == pytest.approx(bound, rel=1e-4)
+
+
+def test_every_ledger_slice_adds_up_to_the_total_before_the_first_impact(fig2_data):
+    """Conservation, against the total computed by hand from the scenario: the rod at rest in S, each particle of
+    mass m at its speed toward the rod, boosted to the slice's frame."""
+    for v in (0.3, 0.6, 0.95):
+        s = load("fig2").with_overrides(v=v)
+        for frame in at_speed(fig2_data, v)["ledger"]:
+            eta = math.atanh(frame["u"])
+            total = EnergyMomentum.of(1.0, -eta)
+            for p in s.particles:
+                a = (1 if p.name == "A" else -1) * math.atanh(s.speed(p))
+                total += EnergyMomentum.of(p.mass, a - eta)
+            assert frame["bodies"] == ["A", "B", "rod", "hidden"]
+            for row in frame["slices"]:
+                E, p_ = sum(row[1::2]), sum(row[2::2])
+                assert E == pytest.approx(total.E, abs=5e-5 * len(frame["bodies"]))
+                assert p_ == pytest.approx(total.p, abs=5e-5 * len(frame["bodies"]))
+    frames = [f["u"] for f in at_speed(fig2_data, 0.6)["ledger"]]
+    assert frames[:2] == [-0.6, 0.0] and set(web_data.LEDGER_FRAMES) <= set(frames)
+
+
+def test_the_inks_are_the_figures_and_the_strip_colours_are_matplotlibs(fig2_data):
+    import matplotlib
+    import numpy as np
+    from matplotlib.colors import to_hex
+
+    for name, style in STYLES.items():
+        inks = fig2_data["styles"][name]
+        assert inks["rod"]["colour"] == style.rod.colour and inks["sheet"] == style.sheet
+        assert inks["moving"]["dashes"] == list(style.moving_simultaneity.dashes[1])
+        assert inks["particles"]["B"]["dashes"] == list(style.particles["B"].dashes[1])
+    rdbu = [to_hex(c) for c in matplotlib.colormaps["RdBu_r"](np.linspace(0, 1, 11))]
+    greys = [to_hex(c) for c in matplotlib.colormaps["Greys"](np.linspace(0.12, 0.88, 8))]
+    assert fig2_data["styles"]["default"]["colours"] == rdbu and fig2_data["styles"]["print"]["colours"] == greys
+
+
+# --- the page as a file --------------------------------------------------------------------------------------
+
+def test_the_page_is_self_contained_small_and_carries_its_script_verbatim(fig2_page):
+    assert len(fig2_page.encode("utf-8")) <= 2 * MB
+    assert not re.search(r"https?://", fig2_page, re.I)
+    assert not re.search(r"<(script|link|img|iframe)[^>]+(src|href)=", fig2_page, re.I)
+    assert asset("page.js") == (ROOT / "rodparadox" / "web" / "page.js").read_text() and asset("page.js") in fig2_page
+    assert fig2_page.count("</script>") == 2  # the data's own `<` are escaped
+
+
+def test_html_writes_outputs_named_as_plot_names_them_and_leaves_equal_bytes_alone(small_grid, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert run("html", "fig2").output == "outputs/fig2.html\n"
+    first = (tmp_path / "outputs" / "fig2.html").read_bytes()
+    assert run("html", "fig2", "--v", "0.6").output == "outputs/fig2.html (unchanged)\n"
+    assert run("html", "fig1", "fig2", "--v", "0.8", "--style", "print").output == "outputs/fig1_fig2_v0.8_print.html\n"
+    both = (tmp_path / "outputs" / "fig1_fig2_v0.8_print.html").read_text()
+    assert '"name":"fig1"' in both and '"name":"fig2"' in both and '"style":"print"' in both
+    assert run("html", "fig2", "-o", "mine.html", "-q").output == ""
+    assert (tmp_path / "mine.html").read_bytes() == first
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine.html", "outputs"]
+
+
+@pytest.mark.parametrize("args, sentence", [
+    (["fig2", "fig2"], "fig2 is given twice; a page has one section per scenario, so give each once."),
+    (["fig2", "--v", "1"], "option --v: v must be a number with 0 < v < 1 (units of c), got 1."),
+    (["fig2", "-o", "nowhere/fig2.html"], "cannot write nowhere/fig2.html: the folder nowhere does not exist; create "
+                                          "it first."),
+    (["fig2", "-o", "fig2.svg"], "the output folder fig2.svg does not exist; create it first."),
+    (["fig2", "--style", "poster"], None),
+    (["nosuch"], "there is no built-in scenario 'nosuch'"),
+])
+def test_bad_input_is_one_sentence_exit_2_and_leaves_nothing(args, sentence, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    (tmp_path / "tmp").mkdir()
+    tempfile.tempdir = None
+    try:
+        result = run("html", *args, expect=2)
+    finally:
+        tempfile.tempdir = None
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1 and "Traceback" not in result.output, result.output
+    if sentence is not None:
+        assert lines[0].startswith("Error: " + sentence), lines[0]
+    outputs = tmp_path / "outputs"
+    assert not list((tmp_path / "tmp").iterdir()) and (not outputs.exists() or not list(outputs.iterdir()))
+
+
+def test_html_never_imports_matplotlib_and_gives_the_same_bytes_in_another_process(small_grid, tmp_path):
+    """One other process, another hash seed: the command runs without matplotlib and writes the bytes this process
+    writes."""
+    code = ("import sys\nimport rodparadox.web.data as d\nd.SPEED_STEPS, d.LEDGER_INSTANTS = 2, 3\n"
+            "from sears_paradox_cli.main import main\n"
+            f"try:\n    main(['html', 'fig2', '-o', {str(tmp_path / 'other.html')!r}, '-q'])\nexcept SystemExit:\n    pass\n"
+            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                            env={**os.environ, "PYTHONHASHSEED": "12345"})
+    assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
+    assert (tmp_path / "other.html").read_bytes() == page([("fig2", load("fig2"))]).encode("utf-8")
