@@ -138,9 +138,12 @@ def model_data(history, v: float) -> dict[str, Any]:
     for w in worldlines.values():
         changes += [(e.x, e.t) for seg in w.segments for e in (seg.start, seg.end)]
     starts = [(e.x, e.t) for _, e in history.starts] + [(-L / 2, 0.0), (L / 2, 0.0)]
-    material = [sampled(history.material_worldline(L * k / (MATERIAL_POINTS - 1)), L, MATERIAL_TOLERANCE,
-                        MATERIAL_DIGITS) for k in range(MATERIAL_POINTS)]
-    bound = max(abs(p) for line in material for p in line["phi"])
+    exact = [history.material_worldline(L * k / (MATERIAL_POINTS - 1)) for k in range(MATERIAL_POINTS)]
+    material = [sampled(w, L, MATERIAL_TOLERANCE, MATERIAL_DIGITS) for w in exact]
+    # the colour scale's half-range: a point's rapidity is monotonic on each segment, so its extremes are ends
+    bound = max(abs(r) for w in exact for r in (w.rapidity_before, w.rapidity_after,
+                                                 *(s.rapidity_at_start for s in w.segments),
+                                                 *(s.rapidity_at_end for s in w.segments)))
     return {
         "model": history.kind,
         "impacts": impacts,

@@ -13,6 +13,7 @@
   const state = {scenario: 0, speed: 0, model: 0, u: 0, time: 0, cones: false, style: DATA.style, playing: false};
   const timings = {first: null, redraws: []};
   let cache = null;  // the geometry of the current scenario, speed, model and frame
+  let placed = null;  // where the last drawing put the panel
 
   // --- numbers as the tool writes them ------------------------------------------------------------------
   function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
@@ -234,6 +235,7 @@
     }
     ctx.restore();
     axes(ctx, place, g, size, family);
+    placed = place;
     canvas.dataset.impacts = JSON.stringify(dots);
     canvas.dataset.nowRow = String(nowRow);
     canvas.dataset.window = JSON.stringify([g.lo, g.hi]);
@@ -536,5 +538,6 @@
   state.time = 0.5;
   render();
   // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took
-  window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(geometry())};
+  window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(geometry()),
+                         row: (t) => placed.row(t), column: (x) => placed.column(x)};
 })();
