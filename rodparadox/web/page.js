@@ -11,7 +11,8 @@
     play: $("play"), rest: $("frame-rest"), moving: $("frame-moving"), cones: $("cones"), style: $("style"),
   };
   const state = {scenario: 0, speed: 0, model: 0, u: 0, time: 0, cones: false, style: DATA.style, playing: false};
-  const timings = {first: null, redraws: []};
+  // what each drawing took (ms, performance.now()); drawnAt: the first drawing's end, from the page's start
+  const timings = {first: null, drawnAt: null, redraws: []};
   let cache = null;  // the geometry of the current scenario, speed, model and frame
   let placed = null;  // where the last drawing put the panel
 
@@ -479,7 +480,8 @@
     drawStrip(place);
     drawEvents(); drawLedger(); drawLegend();
     const took = performance.now() - start;
-    if (timings.first === null) timings.first = took; else timings.redraws.push(took);
+    if (timings.first === null) { timings.first = took; timings.drawnAt = performance.now(); }
+    else timings.redraws.push(took);
   }
   // A time step redraws only what moves with time.
   function renderTime() {
