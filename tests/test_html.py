@@ -360,7 +360,7 @@ def test_speed_0_6_in_s_prime_shows_a1_and_b1_at_17_12_in_the_table_and_on_one_p
 def test_another_frame_shows_events_digits_boosted_in_the_page(opened, fig2_data, screenshots):
     """u = 0.3: the page's boosted decimals against `events --frame-velocity 0.3` (Python's own boost)."""
     opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
-    opened.press("frame", "Home", *["ArrowRight"] * 125)
+    opened.press("frame", "Home", *["PageUp"] * 6, *["ArrowRight"] * 11)  # a page is a tenth: -0.95 + 6 * 0.19
     assert opened.state()["u"] == 0.3
     text = run("events", "fig2", "--v", "0.6", "--frame-velocity", "0.3").output.split("frame u=0.3")[1]
     printed = {line.split()[0]: line.split() for line in text.splitlines()[2:] if line.strip()}
@@ -376,7 +376,7 @@ def test_another_frame_shows_events_digits_boosted_in_the_page(opened, fig2_data
 
 def test_the_now_line_follows_the_time_scrubber(opened, screenshots):
     lo, hi = json.loads(opened.tab.get_attribute("#diagram", "data-window"))
-    for keys, fraction, name in ((("Home",), 0.0, "start"), (("Home", *["ArrowRight"] * 250), 0.25, "quarter"),
+    for keys, fraction, name in ((("Home",), 0.0, "start"), (("Home", "PageUp", "PageUp", "ArrowRight"), 0.201, "fifth"),
                                  (("End",), 1.0, "end")):
         opened.press("time", *keys)
         now_row = float(opened.tab.get_attribute("#diagram", "data-now-row"))
@@ -417,17 +417,21 @@ def test_every_control_has_a_label_and_works_from_the_keyboard(opened):
     assert opened.tab.get_attribute("#play", "aria-pressed") == "false" and opened.state()["time"] != start
 
 
-@pytest.mark.parametrize("viewport, style", [({"width": 1920, "height": 1080}, "slides"),
-                                             ({"width": 390, "height": 844}, "print")])
-def test_the_layout_follows_the_window_in_every_style(browser, page_file, screenshots, viewport, style):
-    """A projector and a phone: nothing wider than the window; the style switch changes the inks."""
-    tab = Opened(browser, page_file, viewport)
-    try:
-        tab.tab.select_option("#style", style)
-        tab.settled()
-        assert tab.tab.evaluate("document.body.className") == f"style-{style}"
-        assert tab.tab.evaluate("document.documentElement.scrollWidth <= window.innerWidth + 1")
-        assert tab.tab.evaluate("document.getElementById('diagram').getBoundingClientRect().right") <= viewport["width"]
-        tab.tab.screenshot(path=str(screenshots / f"fig2_{viewport['width']}_{style}.png"), full_page=True)
-    finally:
-        tab.close()
+def test_the_layout_follows_the_window_in_every_style(browser, page_file, screenshots):
+    """A projector and a phone: nothing wider than the window; the style switch changes the inks (the rod's ink at
+    a pixel of its left end)."""
+    for viewport, style, rod in (({"width": 1920, "height": 1080}, "slides", STYLES["slides"].rod.colour),
+                                 ({"width": 390, "height": 844}, "print", STYLES["print"].rod.colour)):
+        tab = Opened(browser, page_file, viewport)
+        try:
+            tab.tab.select_option("#style", style)
+            tab.settled()
+            assert tab.tab.evaluate("document.body.className") == f"style-{style}"
+            assert tab.tab.evaluate("document.documentElement.scrollWidth <= window.innerWidth + 1")
+            assert tab.tab.evaluate("document.getElementById('diagram').getBoundingClientRect().right") <= \
+                viewport["width"]
+            x, y = tab.tab.evaluate("[window.searsParadox.column(-0.5), window.searsParadox.row(0.3)]")  # S: at rest
+            assert tab.pixel(x, y)[:3] == [int(rod[k:k + 2], 16) for k in (1, 3, 5)]
+            tab.tab.screenshot(path=str(screenshots / f"fig2_{viewport['width']}_{style}.png"), full_page=True)
+        finally:
+            tab.close()

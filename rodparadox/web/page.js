@@ -139,7 +139,8 @@
     const margin = {left: 4.2 * size, right: 1.2 * size, top: 2.4 * size, bottom: 2.8 * size};
     const holder = $("diagram-box");
     const avail = Math.max(holder.clientWidth - margin.left - margin.right, 120);
-    const tallest = Math.max(window.innerHeight * 0.62 - margin.top - margin.bottom, 120);
+    const share = state.style === "slides" ? 0.8 : 0.62;  // on a projector the diagram is the point
+    const tallest = Math.max(window.innerHeight * share - margin.top - margin.bottom, 120);
     const [x0, x1, t0, t1] = g.box;
     const scale = Math.min(avail / (x1 - x0), tallest / (t1 - t0));
     const extra = (avail - scale * (x1 - x0)) / 2;
@@ -473,6 +474,8 @@
   function render() {
     const start = performance.now();
     document.body.className = "style-" + state.style;
+    controls.scenario.value = String(state.scenario); controls.style.value = state.style;
+    controls.cones.checked = state.cones;
     $("heading").textContent = scenario().title;
     $("about").textContent = DATA.scenarios.length > 1 ? "Choose a scenario below." : scenario().description;
     setSpeedControl(); setFrameControl(); setTimeControl();
