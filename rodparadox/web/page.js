@@ -30,13 +30,19 @@
     return s.replace("-", MINUS);
   }
 
+  function speed(u, digits) {  // a velocity |u| < 1 never written as 1: as many more digits as keep it below
+    let d = digits;
+    while (d < 17 && Math.abs(Number(u.toPrecision(d))) >= 1 && Math.abs(u) < 1) d += 1;
+    return shown(u, d);
+  }
+
   // --- frames and boosts ----------------------------------------------------------------------------------
   const scenario = () => DATA.scenarios[state.scenario];
   const entry = () => scenario().speeds[state.speed];
   const model = () => entry().models[Math.min(state.model, entry().models.length - 1)];
   const v = () => entry().v;
   function frameName(u) { return u === 0 ? "rest" : (u === -v() ? "moving" : "u"); }
-  function frameSymbol(u) { const n = frameName(u); return n === "rest" ? "S" : n === "moving" ? "S" + PRIME : "u = " + shown(u, 4); }
+  function frameSymbol(u) { const n = frameName(u); return n === "rest" ? "S" : n === "moving" ? "S" + PRIME : "u = " + speed(u, 4); }
   function coordinateNames(u) {
     const n = frameName(u);
     return n === "rest" ? ["x", "t"] : n === "moving" ? ["x" + PRIME, "t" + PRIME] : ["x\u1d64", "t\u1d64"];
@@ -286,7 +292,7 @@
   function panelTitle(g) {
     const before = -state.u, last = g.impacts[g.impacts.length - 1];
     const after = last ? Math.tanh(last.rod_after - g.eta) : before;
-    const phrase = (u) => Math.abs(u) < 5e-13 ? "at rest" : "at " + (u > 0 ? "+" : "") + shown(u, 4);
+    const phrase = (u) => Math.abs(u) < 5e-13 ? "at rest" : "at " + (u > 0 ? "+" : "") + speed(u, 4);
     const said = Math.abs(before - after) < 5e-13 ? `rod ${phrase(before)} before and after`
       : `rod first ${phrase(before)}, finally ${phrase(after)}`;
     return `frame ${frameSymbol(state.u)}: ${said}`;
@@ -342,7 +348,7 @@
     ctx.fillStyle = "black"; ctx.font = `${0.85 * size}px ${family}`; ctx.textBaseline = "top";
     const centre = -g.eta;
     [[0, "left", centre - bound], [0.5, "center", centre], [1, "right", centre + bound]].forEach(([f, align, r]) => {
-      ctx.textAlign = align; ctx.fillText(shown(Math.tanh(r), 3), cx0 + f * cw, cy + 0.75 * size);
+      ctx.textAlign = align; ctx.fillText(speed(Math.tanh(r), 3), cx0 + f * cw, cy + 0.75 * size);
     });
     ctx.textAlign = "left";
     ctx.fillText("velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size);
