@@ -125,7 +125,7 @@ def model_data(history, v: float) -> dict[str, Any]:
     """One rod model's run at one speed: what the page draws and prints (the module's docstring)."""
     s = history.scenario
     L = s.L
-    frames = (rest_frame(), moving_frame(v), *(frame_of_velocity(u) for u in LEDGER_FRAMES))
+    frames = (rest_frame(), moving_frame(v), *(frame_of_velocity(u) for u in LEDGER_FRAMES if u != -v))
     for frame in frames:
         check_below_c(view(history, frame))
     worldlines = {name: history.worldline(name) for name in WORLDLINE_NAMES if history.worldline(name) is not None}

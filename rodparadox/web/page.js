@@ -427,8 +427,8 @@
     const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
     fillTable($("ledger"), `Energy and momentum on the slice ${clock} = ${shown(slice[0], 4)} L of ${frameU}` +
               (exact ? " (of the tabulated slices, the nearest the now-line)" :
-               " (the ledger is tabulated in S, S\u2032 and u = \u00b10.3, \u00b10.6, \u00b10.9: this is the nearest frame, " +
-               "at the same fraction of its time window)"),
+               ` (the ledger is tabulated in S\u2032, S and u = ${m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ")}: ` +
+               "this is the nearest frame, at the same fraction of its time window)"),
               ["body", "E (M c\u00b2)", "p (M c)"], rows, []);
   }
 
