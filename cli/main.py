@@ -19,6 +19,7 @@ from .common import (checked_frame_velocity, checked_output, emit, format_option
                      output_option, quiet_option, report, reports_errors, run_scenario, scenario_options)
 from .animate import animate  # imports matplotlib only when it runs
 from .handout import handout
+from .html import html  # never imports matplotlib
 from .ledger import ledger
 from .plot import plot  # the drawing command; it imports matplotlib only when it runs
 
@@ -172,3 +173,4 @@ main.add_command(plot)
 main.add_command(ledger)
 main.add_command(animate)
 main.add_command(handout)
+main.add_command(html)

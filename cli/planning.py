@@ -170,7 +170,8 @@ def _read(names: Sequence[str], outputs: Outputs, *, v, L, frame: str):
         return
     twice = next((name for k, name in enumerate(names) if name in names[:k]), None)
     if twice is not None:
-        raise BadInput(f"{twice} is given twice; a {outputs.kind} has one section per scenario, so give each once.")
+        raise BadInput(f"{twice} is given twice; a {outputs.kind or 'page'} has one section per scenario, so give each "
+                       f"once.")
     bases = tuple(load(name) for name in names)
     scenarios = tuple(with_options(base, v, L) for base in bases)
     frames = tuple(tuple(outputs.frames(frame, s.v)) for s in scenarios)

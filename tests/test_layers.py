@@ -29,6 +29,7 @@ MAY_IMPORT = {
     "render": BASE | {"physics", "io", "tables"},
     "animate": BASE | {"physics", "io", "tables", "render"},
     "handout": BASE | {"physics", "io", "tables", "render"},
+    "web": BASE | {"physics", "io", "tables", "render"},  # of render, only its styles (no matplotlib: tested)
 }
 #: a module longer than this is doing two jobs (README, "Layout")
 MAX_LINES = 520

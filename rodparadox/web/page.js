@@ -1,0 +1,554 @@
+// sears-paradox html: the page's script (README, "One page to explore: `sears-paradox html`").
+// Plain JavaScript, no build step, no network. Every number comes from the data Python embedded: the page only
+// Lorentz-transforms embedded points (exact for each point) and interpolates along the sampled lines to draw.
+"use strict";
+(function () {
+  const DATA = JSON.parse(document.getElementById("page-data").textContent);
+  const MINUS = "\u2212", PRIME = "\u2032";
+  const $ = (id) => document.getElementById(id);
+  const controls = {
+    scenario: $("scenario"), model: $("model"), speed: $("speed"), frame: $("frame"), time: $("time"),
+    play: $("play"), rest: $("frame-rest"), moving: $("frame-moving"), cones: $("cones"), style: $("style"),
+  };
+  const state = {scenario: 0, speed: 0, model: 0, u: 0, time: 0, cones: false, style: DATA.style, playing: false};
+  // what each drawing took (ms, performance.now()); drawnAt: the first drawing's end, from the page's start
+  const timings = {first: null, drawnAt: null, redraws: []};
+  let cache = null;  // the geometry of the current scenario, speed, model and frame
+  let placed = null;  // where the last drawing put the panel
+
+  // --- numbers as the tool writes them ------------------------------------------------------------------
+  function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
+    if (/^-?0(\.0*)?(e[+-]?\d+)?$/.test(text)) return text.replace("-", "");
+    return text[0] === "-" ? MINUS + text.slice(1) : "+" + text;
+  }
+  const coordinate = (x) => signed(Math.abs(x) < 1e-12 ? "0" : x.toPrecision(7));
+  const velocity = (u) => signed(u.toFixed(6));
+  const fixed4 = (x) => { const s = (Math.abs(x) < 5e-5 ? 0 : x).toFixed(4); return s[0] === "-" ? MINUS + s.slice(1) : s; };
+  function shown(x, digits) {  // up to `digits` significant digits, trailing zeros dropped, a real minus sign
+    let s = Number(x.toPrecision(digits)).toString();
+    if (s === "-0") s = "0";
+    return s.replace("-", MINUS);
+  }
+
+  function speed(u, digits) {  // a velocity |u| < 1 never written as 1: as many more digits as keep it below
+    let d = digits;
+    while (d < 17 && Math.abs(Number(u.toPrecision(d))) >= 1 && Math.abs(u) < 1) d += 1;
+    return shown(u, d);
+  }
+
+  // --- frames and boosts ----------------------------------------------------------------------------------
+  const scenario = () => DATA.scenarios[state.scenario];
+  const entry = () => scenario().speeds[state.speed];
+  const model = () => entry().models[Math.min(state.model, entry().models.length - 1)];
+  const v = () => entry().v;
+  function frameName(u) { return u === 0 ? "rest" : (u === -v() ? "moving" : "u"); }
+  function frameSymbol(u) { const n = frameName(u); return n === "rest" ? "S" : n === "moving" ? "S" + PRIME : "u = " + speed(u, 4); }
+  function coordinateNames(u) {
+    const n = frameName(u);
+    return n === "rest" ? ["x", "t"] : n === "moving" ? ["x" + PRIME, "t" + PRIME] : ["x\u1d64", "t\u1d64"];
+  }
+  function boost(x, t, c, s) { return [c * x - s * t, c * t - s * x]; }
+
+  // The current frame's geometry: every embedded point boosted once, the time window as Python's
+  // frames.time_window computes it, each line extended straight to the window's ends.
+  function geometry() {
+    const key = [state.scenario, state.speed, state.model, state.u].join("/");
+    if (cache && cache.key === key) return cache;
+    const m = model(), eta = Math.atanh(state.u), c = Math.cosh(eta), s = Math.sinh(eta);
+    const times = m.changes.map(([x, t]) => c * t - s * x);
+    const first = Math.min(...times), last = Math.max(...times);
+    const atStart = m.starts.map(([x, t]) => c * t - s * x);
+    const lead = Math.min(Math.max(first - Math.min(...atStart), 0.5), 2.0);
+    const lo = first - lead, hi = last + lead;
+    const line = (w) => {
+      const X = [], T = [], P = [];
+      for (let k = 0; k < w.x.length; k++) {
+        const [x, t] = boost(w.x[k], w.t[k], c, s);
+        X.push(x); T.push(t); P.push(w.phi[k] - eta);
+      }
+      return {X, T, P, before: w.before - eta, after: w.after - eta};
+    };
+    const worldlines = {};
+    for (const name of Object.keys(m.worldlines)) worldlines[name] = line(m.worldlines[name]);
+    const impacts = m.impacts.map((i) => {
+      const [x, t] = boost(i.x, i.t, c, s);
+      return Object.assign({}, i, {X: x, T: t});
+    });
+    let xmin = Infinity, xmax = -Infinity;
+    const drawn = {};
+    for (const name of Object.keys(worldlines)) {
+      drawn[name] = clipped(worldlines[name], lo, hi);
+      for (const x of drawn[name][0]) { xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); }
+    }
+    const pad = Math.max(0.08 * (xmax - xmin), 0.25);
+    cache = {key, eta, c, s, lo, hi, worldlines, drawn, impacts, material: m.material.map(line),
+             box: [xmin - pad, xmax + pad, lo, hi]};
+    return cache;
+  }
+
+  // A boosted line's points from t = lo to t = hi: straight before its first point and after its last (its
+  // points are its changes, which the window holds).
+  function clipped(w, lo, hi) {
+    const X = [], T = [];
+    const n = w.X.length;
+    if (lo < w.T[0]) { X.push(w.X[0] + Math.tanh(w.before) * (lo - w.T[0])); T.push(lo); }
+    for (let k = 0; k < n; k++) { X.push(w.X[k]); T.push(w.T[k]); }  // every point is within the window
+    if (hi > w.T[n - 1]) { X.push(w.X[n - 1] + Math.tanh(w.after) * (hi - w.T[n - 1])); T.push(hi); }
+    return [X, T];
+  }
+
+  // Where a boosted line is at time t of the frame, and its rapidity there (interpolated between points).
+  function at(w, t) {
+    const n = w.X.length;
+    if (t <= w.T[0]) return [w.X[0] + Math.tanh(w.before) * (t - w.T[0]), w.before];
+    if (t >= w.T[n - 1]) return [w.X[n - 1] + Math.tanh(w.after) * (t - w.T[n - 1]), w.after];
+    let a = 0, b = n - 1;
+    while (b - a > 1) { const mid = (a + b) >> 1; if (w.T[mid] <= t) a = mid; else b = mid; }
+    const span = w.T[b] - w.T[a];
+    const f = span > 0 ? (t - w.T[a]) / span : 1;
+    return [w.X[a] + f * (w.X[b] - w.X[a]), w.P[a] + f * (w.P[b] - w.P[a])];
+  }
+
+  // --- drawing ---------------------------------------------------------------------------------------------
+  const inks = () => DATA.styles[state.style];
+  const pt = 4 / 3;  // CSS pixels per point
+  function fontSize() { return parseFloat(getComputedStyle(document.body).fontSize); }
+  function fontFamily() { return getComputedStyle(document.body).fontFamily; }
+  function setInk(ctx, ink, scale) {
+    const w = ink.width * pt * scale;
+    ctx.strokeStyle = ink.colour; ctx.lineWidth = w;
+    ctx.setLineDash(ink.dashes.map((d) => d * w));
+    ctx.lineCap = ink.dashes.length ? "butt" : "round";
+  }
+  function niceStep(span, pixels, room) {  // 1, 2, 2.5, 5 x 10^n, ticks at least `room` pixels apart
+    const raw = span * room / pixels, power = Math.pow(10, Math.floor(Math.log10(raw)));
+    for (const m of [1, 2, 2.5, 5, 10]) if (m * power >= raw) return m * power;
+    return 10 * power;
+  }
+
+  function canvasSized(canvas, width, height) {
+    const ratio = window.devicePixelRatio || 1;
+    canvas.style.width = width + "px"; canvas.style.height = height + "px";
+    if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
+      canvas.width = Math.round(width * ratio); canvas.height = Math.round(height * ratio);
+    }
+    const ctx = canvas.getContext("2d");
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    ctx.clearRect(0, 0, width, height);
+    return ctx;
+  }
+
+  // The panel's place on the page: equal scales (light at 45 degrees), as wide as the column allows and no
+  // taller than most of the window.
+  function layout(g) {
+    const size = fontSize();
+    const margin = {left: 4.2 * size, right: 1.2 * size, top: 2.4 * size, bottom: 2.8 * size};
+    const holder = $("diagram-box");
+    const avail = Math.max(holder.clientWidth - margin.left - margin.right, 120);
+    const share = state.style === "slides" ? 0.8 : 0.62;  // on a projector the diagram is the point
+    const tallest = Math.max(window.innerHeight * share - margin.top - margin.bottom, 120);
+    const [x0, x1, t0, t1] = g.box;
+    const scale = Math.min(avail / (x1 - x0), tallest / (t1 - t0));
+    const extra = (avail - scale * (x1 - x0)) / 2;
+    return {margin, scale, width: holder.clientWidth, height: margin.top + margin.bottom + scale * (t1 - t0),
+            column: (x) => margin.left + extra + (x - x0) * scale, row: (t) => margin.top + (t1 - t) * scale};
+  }
+
+  function polyline(ctx, place, X, T) {
+    ctx.beginPath();
+    for (let k = 0; k < X.length; k++) {
+      const px = place.column(X[k]), py = place.row(T[k]);
+      if (k === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
+    }
+    ctx.stroke();
+  }
+
+  // The infinite line through (x, t) along (dx, dt), clipped to the panel's box.
+  function infinite(ctx, place, box, x, t, dx, dt) {
+    let lo = -Infinity, hi = Infinity;
+    for (const [p, a, b] of [[dx, box[0] - x, box[1] - x], [dt, box[2] - t, box[3] - t]]) {
+      if (p === 0) { if (a > 0 || b < 0) return; continue; }
+      const s0 = Math.min(a / p, b / p), s1 = Math.max(a / p, b / p);
+      lo = Math.max(lo, s0); hi = Math.min(hi, s1);
+    }
+    if (!(lo < hi)) return;
+    polyline(ctx, place, [x + lo * dx, x + hi * dx], [t + lo * dt, t + hi * dt]);
+  }
+
+  function drawDiagram() {
+    const g = geometry(), st = inks(), place = layout(g), size = fontSize();
+    const canvas = $("diagram"), ctx = canvasSized(canvas, place.width, place.height);
+    const [x0, x1, t0, t1] = g.box;
+    const family = fontFamily();
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(place.column(x0), place.row(t1), (x1 - x0) * place.scale, (t1 - t0) * place.scale);
+    ctx.clip();
+    // the rod's world-sheet, between its ends
+    const left = g.drawn.rod_left, right = g.drawn.rod_right;
+    ctx.fillStyle = st.sheet;
+    ctx.beginPath();
+    for (let k = 0; k < left[0].length; k++) ctx.lineTo(place.column(left[0][k]), place.row(left[1][k]));
+    for (let k = right[0].length - 1; k >= 0; k--) ctx.lineTo(place.column(right[0][k]), place.row(right[1][k]));
+    ctx.closePath(); ctx.fill();
+    // lines of simultaneity of S and S' through every impact (impacts on one line share it)
+    for (const [which, frameU] of [["rest", 0], ["moving", -v()]]) {
+      setInk(ctx, st[which], 1);
+      const seen = [];
+      for (const i of g.impacts) {
+        const own = Math.cosh(Math.atanh(frameU)) * (i.t - frameU * i.x);
+        if (seen.some((o) => Math.abs(o - own) <= 1e-9 * (1 + Math.abs(own)))) continue;
+        seen.push(own);
+        const [dx, dt] = boost(1, frameU, g.c, g.s);
+        infinite(ctx, place, g.box, i.X, i.T, dx, dt);
+      }
+    }
+    if (state.cones) {  // arms a sixth of the panel's shorter side each way
+      setInk(ctx, st.light_cone, 1);
+      const arm = Math.min(x1 - x0, t1 - t0) / 6;
+      for (const i of g.impacts) for (const d of [[1, 1], [-1, 1]]) {
+        polyline(ctx, place, [i.X - d[0] * arm, i.X + d[0] * arm], [i.T - d[1] * arm, i.T + d[1] * arm]);
+      }
+    }
+    setInk(ctx, st.rod, 1);
+    polyline(ctx, place, ...left); polyline(ctx, place, ...right);
+    for (const p of ["A", "B"]) if (g.drawn[p]) { setInk(ctx, st.particles[p], 1); polyline(ctx, place, ...g.drawn[p]); }
+    ctx.setLineDash([]);
+    // the now-line: the frame's instant under the scrubber
+    const now = nowTime(g), nowRow = place.row(now);
+    ctx.strokeStyle = st.flash; ctx.lineWidth = 2 * st.rod.width * pt / 1.7;
+    ctx.beginPath(); ctx.moveTo(place.column(x0), nowRow); ctx.lineTo(place.column(x1), nowRow); ctx.stroke();
+    // impacts: a dot with a white rim, its label beside it on the side of its end
+    const dots = [];
+    const radius = st.impact_size * pt / 2;
+    ctx.font = `italic ${size}px ${family}`;
+    for (const i of g.impacts) {
+      const px = place.column(i.X), py = place.row(i.T);
+      ctx.fillStyle = st.impact_colour; ctx.strokeStyle = "white"; ctx.lineWidth = 0.8;
+      ctx.beginPath(); ctx.arc(px, py, radius, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      dots.push({label: i.label, x: px, y: py});
+    }
+    for (const i of g.impacts) {
+      const px = place.column(i.X), py = place.row(i.T), right = i.end === "right";
+      label(ctx, i.name, px + (right ? 1 : -1) * (radius + 0.3 * size), py - 0.35 * size, right ? "left" : "right", size);
+    }
+    for (const p of ["A", "B"]) if (g.drawn[p]) {  // the letter beside the first part of its line
+      const [X, T] = g.drawn[p];
+      const k = Math.min(1, X.length - 1);
+      const t = T[0] + 0.12 * (t1 - t0), x = at(g.worldlines[p], t)[0];
+      ctx.fillStyle = st.particles[p].colour;
+      ctx.font = `italic ${1.1 * size}px ${family}`;
+      ctx.textAlign = x < (X[k] + X[0]) / 2 ? "left" : "right";
+      ctx.fillText(p, place.column(x) + (ctx.textAlign === "left" ? 0.5 : -0.5) * size, place.row(t));
+    }
+    ctx.restore();
+    axes(ctx, place, g, size, family);
+    placed = place;
+    canvas.dataset.impacts = JSON.stringify(dots);
+    canvas.dataset.nowRow = String(nowRow);
+    canvas.dataset.window = JSON.stringify([g.lo, g.hi]);
+    return place;
+  }
+
+  function label(ctx, name, x, y, align, size) {  // B₁: the letter in italics, the subscript digits upright
+    const letter = name[0], digits = name.slice(1);
+    ctx.fillStyle = "black"; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
+    ctx.font = `italic ${size}px ${fontFamily()}`;
+    const w1 = ctx.measureText(letter).width;
+    ctx.font = `${size}px ${fontFamily()}`;
+    const w2 = ctx.measureText(digits).width;
+    const start = align === "left" ? x : x - w1 - w2;
+    ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255,255,255,0.85)"; ctx.setLineDash([]);
+    ctx.font = `italic ${size}px ${fontFamily()}`; ctx.strokeText(letter, start, y); ctx.fillText(letter, start, y);
+    ctx.font = `${size}px ${fontFamily()}`; ctx.strokeText(digits, start + w1, y); ctx.fillText(digits, start + w1, y);
+  }
+
+  function axes(ctx, place, g, size, family) {
+    const [x0, x1, t0, t1] = g.box, names = coordinateNames(state.u);
+    ctx.strokeStyle = "black"; ctx.lineWidth = 1; ctx.setLineDash([]);
+    ctx.strokeRect(place.column(x0), place.row(t1), (x1 - x0) * place.scale, (t1 - t0) * place.scale);
+    ctx.fillStyle = "black"; ctx.font = `${0.9 * size}px ${family}`;
+    const xs = niceStep(x1 - x0, (x1 - x0) * place.scale, 3.6 * size), ts = niceStep(t1 - t0, (t1 - t0) * place.scale, 2.2 * size);
+    ctx.textAlign = "center"; ctx.textBaseline = "top";
+    for (let x = Math.ceil(x0 / xs) * xs; x <= x1 + 1e-9; x += xs) {
+      const px = place.column(x), py = place.row(t0);
+      ctx.beginPath(); ctx.moveTo(px, py); ctx.lineTo(px, py + 4); ctx.stroke();
+      ctx.fillText(shown(x, 6), px, py + 6);
+    }
+    ctx.textAlign = "right"; ctx.textBaseline = "middle";
+    for (let t = Math.ceil(t0 / ts) * ts; t <= t1 + 1e-9; t += ts) {
+      const px = place.column(x0), py = place.row(t);
+      ctx.beginPath(); ctx.moveTo(px, py); ctx.lineTo(px - 4, py); ctx.stroke();
+      ctx.fillText(shown(t, 6), px - 6, py);
+    }
+    ctx.textAlign = "center"; ctx.textBaseline = "alphabetic"; ctx.font = `italic ${size}px ${family}`;
+    ctx.fillText(names[0] + "/L", place.column((x0 + x1) / 2), place.row(t0) + 2.5 * size);
+    ctx.save(); ctx.translate(place.column(x0) - 3.4 * size, place.row((t0 + t1) / 2)); ctx.rotate(-Math.PI / 2);
+    ctx.fillText(names[1] + "/L", 0, 0); ctx.restore();
+    ctx.font = `${size}px ${family}`; ctx.textAlign = "left";
+    ctx.fillText(panelTitle(g), place.column(x0), place.row(t1) - 0.7 * size);
+  }
+
+  function panelTitle(g) {
+    const before = -state.u, last = g.impacts[g.impacts.length - 1];
+    const after = last ? Math.tanh(last.rod_after - g.eta) : before;
+    const phrase = (u) => Math.abs(u) < 5e-13 ? "at rest" : "at " + (u > 0 ? "+" : "") + speed(u, 4);
+    const said = Math.abs(before - after) < 5e-13 ? `rod ${phrase(before)} before and after`
+      : `rod first ${phrase(before)}, finally ${phrase(after)}`;
+    return `frame ${frameSymbol(state.u)}: ${said}`;
+  }
+
+  function nowTime(g) { return g.lo + state.time * (g.hi - g.lo); }
+
+  // The strip: the frame's space at the now-line's instant, on the panel's x scale: the rod coloured by the
+  // velocity of its material points (the colour scale even in rapidity, centred on the rod's first velocity, the
+  // same in every frame), the particles, the impacts flashing.
+  function colourAt(f) {
+    const stops = inks().colours, k = Math.max(0, Math.min(1, f)) * (stops.length - 1);
+    const a = Math.floor(Math.min(k, stops.length - 2)), w = k - a;
+    const rgb = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16));
+    const p = rgb(stops[a]), q = rgb(stops[a + 1]);
+    return `rgb(${p.map((c, i) => Math.round(c + w * (q[i] - c))).join(",")})`;
+  }
+
+  function drawStrip(place) {
+    const g = geometry(), st = inks(), size = fontSize(), family = fontFamily(), m = model();
+    const height = 8.2 * size, canvas = $("strip"), ctx = canvasSized(canvas, place.width, height);
+    const t = nowTime(g), bar = 2.4 * size, barH = 0.9 * size, bound = m.colour_bound || 0.1;
+    const [x0, x1, t0, t1] = g.box;
+    const flash = 0.02 * (t1 - t0);
+    const lit = g.impacts.filter((i) => Math.abs(i.T - t) <= flash);
+    const clock = coordinateNames(state.u)[1];
+    ctx.fillStyle = "black"; ctx.font = `${size}px ${family}`; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
+    const where = frameName(state.u) === "u" ? "the frame " + frameSymbol(state.u) : frameSymbol(state.u);
+    ctx.fillText(`${clock} = ${shown(t, 4)} L in ${where}` + (lit.length ? "   " + lit.map((i) => i.name).join(", ") + "!" : ""),
+                 place.column(x0), 1.1 * size);
+    const points = g.material.map((w) => at(w, t));
+    for (let k = 0; k + 1 < points.length; k++) {
+      const phiS = 0.5 * (points[k][1] + points[k + 1][1]) + g.eta;  // the departure from the first velocity
+      ctx.fillStyle = colourAt(0.5 + 0.5 * phiS / bound);
+      const a = place.column(points[k][0]), b = place.column(points[k + 1][0]);
+      ctx.fillRect(a, bar, b - a + 0.5, barH);
+    }
+    const ends = [place.column(points[0][0]), place.column(points[points.length - 1][0])];
+    setInk(ctx, st.rod, 0.6); ctx.strokeRect(ends[0], bar, ends[1] - ends[0], barH);
+    ctx.setLineDash([]);
+    for (const p of ["A", "B"]) if (g.worldlines[p]) {
+      const x = place.column(at(g.worldlines[p], t)[0]);
+      ctx.fillStyle = st.particles[p].colour;
+      ctx.beginPath(); ctx.arc(x, bar + barH / 2, 0.28 * size, 0, 2 * Math.PI); ctx.fill();
+      ctx.font = `italic ${size}px ${family}`; ctx.textAlign = "center";
+      ctx.fillText(p, x, bar - 0.25 * size);
+    }
+    for (const i of lit) star(ctx, place.column(i.X), bar + barH / 2, 0.6 * size, st.flash);
+    // the colour bar: its two ends and its centre, in velocity
+    const cx0 = place.column(x0), cw = Math.min((x1 - x0) * place.scale, 22 * size), cy = bar + barH + 1.3 * size;
+    for (let k = 0; k < cw; k += 2) { ctx.fillStyle = colourAt(k / cw); ctx.fillRect(cx0 + k, cy, 2.5, 0.6 * size); }
+    ctx.strokeStyle = "#444"; ctx.lineWidth = 0.8; ctx.strokeRect(cx0, cy, cw, 0.6 * size);
+    ctx.fillStyle = "black"; ctx.font = `${0.85 * size}px ${family}`; ctx.textBaseline = "top";
+    const centre = -g.eta;
+    [[0, "left", centre - bound], [0.5, "center", centre], [1, "right", centre + bound]].forEach(([f, align, r]) => {
+      ctx.textAlign = align; ctx.fillText(speed(Math.tanh(r), 3), cx0 + f * cw, cy + 0.75 * size);
+    });
+    ctx.textAlign = "left";
+    ctx.fillText("velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size);
+  }
+
+  function star(ctx, x, y, r, colour) {
+    ctx.fillStyle = colour; ctx.beginPath();
+    for (let k = 0; k < 10; k++) {
+      const a = -Math.PI / 2 + k * Math.PI / 5, rr = k % 2 ? 0.45 * r : r;
+      ctx.lineTo(x + rr * Math.cos(a), y + rr * Math.sin(a));
+    }
+    ctx.closePath(); ctx.fill();
+  }
+
+  // --- the tables ------------------------------------------------------------------------------------------
+  function fillTable(table, caption, header, rows, notes) {
+    table.caption.textContent = caption;
+    const head = table.tHead.rows[0] || table.tHead.insertRow();
+    head.innerHTML = "";
+    for (const h of header) { const th = document.createElement("th"); th.scope = "col"; th.textContent = h; head.appendChild(th); }
+    const body = table.tBodies[0];
+    body.innerHTML = "";
+    for (const row of rows) {
+      const tr = body.insertRow();
+      row.forEach((text, k) => {
+        const cell = k === 0 ? document.createElement("th") : document.createElement("td");
+        if (k === 0) cell.scope = "row";
+        cell.textContent = text; tr.appendChild(cell);
+      });
+    }
+    $(table.id + "-notes").textContent = notes.join(" ");
+  }
+
+  function drawEvents() {
+    const g = geometry(), m = model(), name = frameName(state.u), L = scenario().L;
+    if (name !== "u") {
+      const t = m.tables[name];
+      fillTable($("events"), `${t.caption} (v = ${shown(v(), 10)}): the digits and exact fractions of sears-paradox events`,
+                t.header, t.rows, t.notes);
+      return;
+    }
+    const scale = 1 + Math.max(...g.impacts.map((i) => Math.abs(i.T)));
+    const order = g.impacts.map((i, k) => k).sort((a, b) => g.impacts[a].T - g.impacts[b].T);
+    const instant = {}; let n = -1, first = null;
+    for (const k of order) {
+      if (first === null || g.impacts[k].T - first > scenario().one_instant * scale) { n += 1; first = g.impacts[k].T; }
+      instant[k] = n;
+    }
+    order.sort((a, b) => instant[a] - instant[b] || a - b);
+    const rows = order.map((k) => {
+      const i = g.impacts[k];
+      return [i.name, i.end, coordinate(i.X * L), coordinate(i.T * L),
+              ...[i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => velocity(Math.tanh(r - g.eta)))];
+    });
+    const names = coordinateNames(state.u);
+    fillTable($("events"), `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}): decimals boosted in ` +
+              "this page from the exact events (choose S or S\u2032 for sears-paradox events' table with its fractions)",
+              ["impact", "end", names[0], names[1], "particle before", "particle after", "rod before", "rod after"], rows, []);
+  }
+
+  function drawLedger() {
+    const g = geometry(), m = model();
+    let best = m.ledger[0];
+    for (const f of m.ledger) if (Math.abs(Math.atanh(f.u) - g.eta) < Math.abs(Math.atanh(best.u) - g.eta)) best = f;
+    const k = Math.round(state.time * (best.slices.length - 1)), slice = best.slices[k];
+    const rows = [];
+    let E = 0, p = 0;
+    best.bodies.forEach((name, b) => {
+      const e = slice[1 + 2 * b], q = slice[2 + 2 * b];
+      E += e; p += q;
+      rows.push([name === "rod" ? "rod (kinetic)" : name === "hidden" ? "hidden (stress)" : "particle " + name, fixed4(e), fixed4(q)]);
+    });
+    rows.push(["total", fixed4(E), fixed4(p)]);
+    const frameU = best.u === 0 ? "S" : best.u === -v() ? "S\u2032" : "u = " + shown(best.u, 4);
+    const clock = best.u === 0 ? "t" : best.u === -v() ? "t\u2032" : "t\u1d64";
+    const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
+    fillTable($("ledger"), `Energy and momentum on the slice ${clock} = ${shown(slice[0], 4)} L of ${frameU}` +
+              (exact ? " (of the tabulated slices, the nearest the now-line)" :
+               ` (the ledger is tabulated in S\u2032, S and u = ${m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ")}: ` +
+               "this is the nearest frame, at the same fraction of its time window)"),
+              ["body", "E (M c\u00b2)", "p (M c)"], rows, []);
+  }
+
+  // --- the legend: the same elements and inks as the SVG figures --------------------------------------------
+  function swatch(ink, extra) {
+    const w = ink.width * pt, dash = ink.dashes.map((d) => d * w).join(" ");
+    return `<svg width="44" height="14" aria-hidden="true">${extra || ""}<line x1="2" y1="7" x2="42" y2="7" ` +
+      `stroke="${ink.colour}" stroke-width="${w}" stroke-dasharray="${dash || "none"}"/></svg>`;
+  }
+  function drawLegend() {
+    const st = inks(), items = [];
+    items.push([swatch(st.rod, `<rect x="2" y="1" width="40" height="12" fill="${st.sheet}"/>`), "rod: its ends (solid), world-sheet shaded"]);
+    for (const p of ["A", "B"]) if (model().worldlines[p]) items.push([swatch(st.particles[p]), "particle " + p]);
+    items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`, "impact"]);
+    items.push([swatch(st.rest), "line of simultaneity of S"]);
+    items.push([swatch(st.moving), "line of simultaneity of S\u2032"]);
+    if (state.cones) items.push([swatch(st.light_cone), "light cone of an impact"]);
+    items.push([swatch({colour: st.flash, width: 2 * st.rod.width / 1.7, dashes: []}), "now: the frame's instant under the scrubber"]);
+    $("legend").innerHTML = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
+  }
+
+  // --- the controls ----------------------------------------------------------------------------------------
+  function setSpeedControl() {
+    const speeds = scenario().speeds;
+    controls.speed.max = String(speeds.length - 1);
+    controls.speed.value = String(state.speed);
+    controls.speed.setAttribute("aria-valuetext", "v = " + shown(v(), 10));
+    $("speed-value").textContent = shown(v(), 10);
+    const reach = Math.max(scenario().frame_reach, ...speeds.map((e) => e.v));
+    controls.frame.min = String(-Math.ceil(reach * 100)); controls.frame.max = String(Math.ceil(reach * 100));
+    controls.model.innerHTML = entry().models.map((m, k) => `<option value="${k}">${m.model} rod</option>`).join("");
+    controls.model.value = String(state.model); controls.model.disabled = entry().models.length < 2;
+  }
+  function setFrameControl() {
+    controls.frame.value = String(Math.round(state.u * 100));
+    const said = frameSymbol(state.u) + (frameName(state.u) === "u" ? "" : ` (u = ${shown(state.u, 10)})`);
+    controls.frame.setAttribute("aria-valuetext", said);
+    $("frame-value").textContent = said;
+    controls.rest.setAttribute("aria-pressed", String(frameName(state.u) === "rest"));
+    controls.moving.setAttribute("aria-pressed", String(frameName(state.u) === "moving"));
+  }
+  function setTimeControl() {
+    const g = geometry(), t = nowTime(g), clock = coordinateNames(state.u)[1];
+    controls.time.value = String(Math.round(state.time * 1000));
+    controls.time.setAttribute("aria-valuetext", `${clock} = ${shown(t, 4)} L`);
+    $("time-value").textContent = `${clock} = ${shown(t, 4)} L`;
+  }
+
+  function render() {
+    const start = performance.now();
+    document.body.className = "style-" + state.style;
+    controls.scenario.value = String(state.scenario); controls.style.value = state.style;
+    controls.cones.checked = state.cones;
+    $("heading").textContent = scenario().title;
+    $("about").textContent = DATA.scenarios.length > 1 ? "Choose a scenario below." : scenario().description;
+    setSpeedControl(); setFrameControl(); setTimeControl();
+    const place = drawDiagram();
+    drawStrip(place);
+    drawEvents(); drawLedger(); drawLegend();
+    const took = performance.now() - start;
+    if (timings.first === null) { timings.first = took; timings.drawnAt = performance.now(); }
+    else timings.redraws.push(took);
+  }
+  // A time step redraws only what moves with time.
+  function renderTime() {
+    const start = performance.now();
+    setTimeControl();
+    drawStrip(drawDiagram());
+    drawLedger();
+    timings.redraws.push(performance.now() - start);
+  }
+
+  let pending = null;
+  function soon(what) {  // one drawing per animation frame however fast the events come
+    if (pending === null) requestAnimationFrame(() => { const f = pending; pending = null; f(); });
+    pending = pending === render || what === render ? render : what;
+  }
+
+  controls.scenario.addEventListener("change", () => {
+    state.scenario = Number(controls.scenario.value);
+    state.speed = scenario().speeds.findIndex((e) => e.v === scenario().v);
+    state.model = 0; state.u = 0; soon(render);
+  });
+  controls.model.addEventListener("change", () => { state.model = Number(controls.model.value); soon(render); });
+  controls.speed.addEventListener("input", () => {
+    const moving = frameName(state.u) === "moving";
+    state.speed = Number(controls.speed.value);
+    if (moving) state.u = -v();  // S' stays S' at the new speed
+    soon(render);
+  });
+  controls.frame.addEventListener("input", () => { state.u = Number(controls.frame.value) / 100 + 0; soon(render); });
+  controls.rest.addEventListener("click", () => { state.u = 0; render(); });
+  controls.moving.addEventListener("click", () => { state.u = -v(); render(); });
+  controls.time.addEventListener("input", () => { state.time = Number(controls.time.value) / 1000; soon(renderTime); });
+  controls.cones.addEventListener("change", () => { state.cones = controls.cones.checked; soon(render); });
+  controls.style.addEventListener("change", () => { state.style = controls.style.value; soon(render); });
+  let last = null;
+  function tick(now) {
+    if (!state.playing) { last = null; return; }
+    if (last !== null) state.time = (state.time + (now - last) / 8000) % 1;  // eight seconds a sweep
+    last = now;
+    renderTime();
+    requestAnimationFrame(tick);
+  }
+  controls.play.addEventListener("click", () => {
+    state.playing = !state.playing;
+    controls.play.textContent = state.playing ? "Pause" : "Play";
+    controls.play.setAttribute("aria-pressed", String(state.playing));
+    if (state.playing) requestAnimationFrame(tick);
+  });
+  window.addEventListener("resize", () => soon(render));
+
+  // --- start -------------------------------------------------------------------------------------------------
+  controls.scenario.innerHTML = DATA.scenarios.map((s, k) => `<option value="${k}">${s.name}: ${s.title}</option>`).join("");
+  controls.scenario.disabled = DATA.scenarios.length < 2;
+  controls.style.value = state.style;
+  state.speed = scenario().speeds.findIndex((e) => e.v === scenario().v);
+  state.time = 0.5;
+  render();
+  // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took
+  window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(geometry()),
+                         row: (t) => placed.row(t), column: (x) => placed.column(x)};
+})();

@@ -1,0 +1,95 @@
+"""The page: one self-contained HTML document (README, "One page to explore: `sears-paradox html`"). Pure.
+
+Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (`page.js`, plain JavaScript
+kept as its own file, no build step): nothing is fetched, so the page opens from `file://` with no network. The
+same scenarios, options and package give the same bytes: JSON with sorted keys and Python's shortest round-trip
+floats, no date, no version.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from importlib import resources
+from typing import Sequence
+
+from rodparadox.physics.model import Scenario
+from rodparadox.render.styles import STYLE_NAMES
+from rodparadox.web.data import page_data
+
+
+def asset(name: str) -> str:
+    """A file of the package beside this module (`page.js`, `page.css`), as text."""
+    return resources.files("rodparadox.web").joinpath(name).read_text(encoding="utf-8")
+
+
+def data_json(data: dict) -> str:
+    """The data as JSON safe inside a <script> element: sorted keys, no spaces, `<` escaped (no `</script>`)."""
+    return json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=False, allow_nan=False).replace(
+        "<", "\\u003c")
+
+
+def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default") -> str:
+    """The whole page for the scenarios (name as the user gave it, scenario with --v and --L applied)."""
+    if style not in STYLE_NAMES:
+        raise ValueError(f"style must be one of {', '.join(STYLE_NAMES)}, got {style!r}")
+    data = page_data(scenarios, style)
+    first = data["scenarios"][0]
+    title = " · ".join(s["name"] for s in data["scenarios"])
+    about = first["description"] if len(data["scenarios"]) == 1 else "Choose a scenario below."
+    styles = "".join(f'<option value="{name}">{name}</option>' for name in STYLE_NAMES)
+    return TEMPLATE.format(title=html.escape(f"sears-paradox: {title}"), heading=html.escape(first["title"]),
+                           about=html.escape(about), styles=styles, css=asset("page.css"), data=data_json(data),
+                           script=asset("page.js"))
+
+
+TEMPLATE = """<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta name="generator" content="sears-paradox html">
+<title>{title}</title>
+<style>
+{css}</style>
+</head>
+<body>
+<header>
+<h1 id="heading">{heading}</h1>
+<p class="about" id="about">{about}</p>
+<noscript><p>This page draws with JavaScript; allow scripts for this file to explore it.</p></noscript>
+</header>
+<main>
+<section aria-label="Minkowski diagram and the rod at one instant">
+<div id="diagram-box">
+<canvas id="diagram" role="img" aria-label="Minkowski diagram: the rod's world-sheet and ends, the particles, the impacts and the lines of simultaneity, in the chosen frame"></canvas>
+<canvas id="strip" role="img" aria-label="The rod and the particles at the now-line's instant, the rod coloured by the velocity of its material points"></canvas>
+</div>
+<ul id="legend" aria-label="Legend"></ul>
+</section>
+<section aria-label="Controls and tables">
+<fieldset>
+<legend class="group">Explore</legend>
+<div class="control"><label for="scenario">scenario</label><select id="scenario"></select></div>
+<div class="control"><label for="model">rod model</label><select id="model"></select></div>
+<div class="control"><label for="speed">speed v of S′</label><input type="range" id="speed" min="0" max="0" step="1" value="0"><output id="speed-value" for="speed"></output></div>
+<div class="control"><label for="frame">frame: velocity u relative to S</label><input type="range" id="frame" min="-95" max="95" step="1" value="0"><output id="frame-value" for="frame"></output></div>
+<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
+<div class="control"><label for="time">time: the now-line</label><input type="range" id="time" min="0" max="1000" step="1" value="500"><output id="time-value" for="time"></output><button type="button" id="play" aria-pressed="false">Play</button></div>
+<div class="control"><label for="cones">light cones</label><input type="checkbox" id="cones"></div>
+<div class="control"><label for="style">style</label><select id="style">{styles}</select></div>
+</fieldset>
+</section>
+<section class="tables" aria-label="The impacts and the ledger">
+<div><table id="events"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<p class="notes" id="events-notes"></p></div>
+<div><table id="ledger"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<p class="notes" id="ledger-notes"></p></div>
+</section>
+</main>
+<script type="application/json" id="page-data">{data}</script>
+<script>
+{script}</script>
+</body>
+</html>
+"""

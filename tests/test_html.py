@@ -1,0 +1,438 @@
+"""`sears-paradox html` (issue 17): the page's data against the engine, hand derivations and `events`; the command's
+names, bytes, refusals; and, where Chromium and playwright are installed, the page in a real browser with the
+network refused.
+
+The Python-side tests share one fig2 page (a session fixture); the command's tests shrink the speed grid
+(`data.SPEED_STEPS`) so that each build takes a fraction of a second. The browser tests share one browser.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rodparadox.io.scenario import load
+from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.render.styles import STYLES
+from rodparadox.web import data as web_data
+from rodparadox.web.page import asset, page
+from sears_paradox_cli.main import main
+
+from conftest import history
+
+ROOT = Path(__file__).resolve().parent.parent
+MB = 1 << 20
+
+
+@pytest.fixture(scope="session")
+def fig2_page() -> str:
+    return page([("fig2", load("fig2"))])
+
+
+@pytest.fixture(scope="session")
+def fig2_data(fig2_page) -> dict:
+    """The data as the page embeds it (read back from its <script>, not from the builder)."""
+    text = re.search(r'<script type="application/json" id="page-data">(.*?)</script>', fig2_page, re.S).group(1)
+    return json.loads(text)
+
+
+def at_speed(data: dict, v: float) -> dict:
+    [entry] = [e for e in data["scenarios"][0]["speeds"] if e["v"] == v]
+    [rigid] = entry["models"]  # a list of models per speed; only the rigid rod so far
+    assert rigid["model"] == "rigid"
+    return rigid
+
+
+@pytest.fixture
+def small_grid(monkeypatch):
+    """Two speeds besides the scenario's and a coarse ledger: the command's behaviour, built in a moment."""
+    monkeypatch.setattr(web_data, "SPEED_STEPS", 2)
+    monkeypatch.setattr(web_data, "LEDGER_INSTANTS", 3)
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, list(args))
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+# --- the data against the engine and hand derivations ------------------------------------------------------
+
+def test_the_speed_grid_holds_the_scenarios_own_v_and_every_twentieth(fig2_data):
+    speeds = [e["v"] for e in fig2_data["scenarios"][0]["speeds"]]
+    assert speeds == [round(0.05 * k, 2) for k in range(1, 20)] and 0.6 in speeds
+    assert web_data.speeds(load("fig2").with_overrides(v=0.637)).count(0.637) == 1
+
+
+def test_fig2_impacts_at_v_0_6_are_the_papers_with_every_digit(fig2_data):
+    """Hand derivation (README): in S, B1 at (1/2, 5/6), A1 at (-3/4, 19/12); in S' (rapidity -atanh 0.6, g = 5/4)
+    both at t' = g (t + 0.6 x) = 17/12."""
+    impacts = {i["label"]: i for i in at_speed(fig2_data, 0.6)["impacts"]}
+    assert impacts["B1"]["x"] == pytest.approx(0.5, abs=1e-15) and impacts["B1"]["t"] == pytest.approx(5 / 6, abs=1e-15)
+    assert impacts["A1"]["x"] == pytest.approx(-0.75, abs=1e-15)
+    assert impacts["A1"]["t"] == pytest.approx(19 / 12, abs=1e-15)
+    for label in ("A1", "B1"):  # the boost the page does, by hand
+        i = impacts[label]
+        assert 1.25 * (i["t"] + 0.6 * i["x"]) == pytest.approx(17 / 12, abs=1e-14)
+    # simultaneous in S', yet not for the rod: it is struck by B first in its own time (the paradox)
+    assert impacts["A1"]["name"] == "A\u2081" and impacts["A1"]["simultaneous_with"] is None
+
+
+def test_the_tables_of_s_and_s_prime_are_what_events_prints(fig2_data):
+    """The embedded tables against `events --format markdown` run through the command (another path to the same
+    numbers), and the fractions by hand: 17/12 in S', 19/12 in S."""
+    tables = at_speed(fig2_data, 0.6)["tables"]
+    markdown = run("events", "fig2", "--v", "0.6", "--format", "markdown").output
+    for table in tables.values():
+        for row in table["rows"]:
+            assert re.search(r"\| " + r"\s*\|\s*".join(map(re.escape, row)) + r"\s*\|", markdown), row
+    moving = {row[0]: row for row in tables["moving"]["rows"]}
+    assert moving["A\u2081"][3] == moving["B\u2081"][3] == "+1.416667 (17/12)"
+    assert {row[0]: row for row in tables["rest"]["rows"]}["A\u2081"][3] == "+1.583333 (19/12)"
+
+
+@pytest.mark.parametrize("v", [0.3, 0.95])
+def test_sampled_lines_lie_on_the_exact_world_lines_within_tolerance_in_every_frame(fig2_data, v):
+    """Every embedded point is on the exact curve (to its digits), and after a boost to u = +-0.95 every chord stays
+    within SAMPLING_TOLERANCE L of the exact world-line at the chord's midpoint time."""
+    h, m = history("fig2", v), at_speed(fig2_data, v)
+    for name, line in m["worldlines"].items():
+        exact = h.worldline(name)
+        for x, t in zip(line["x"], line["t"]):
+            assert exact.event_at_time(t).x == pytest.approx(x, abs=2e-6 * (1 + abs(x)))
+        for u in (-0.95, 0.95):
+            eta = math.atanh(u)
+            seen, c, s = exact.seen_from(eta), math.cosh(eta), math.sinh(eta)
+            points = [(c * x - s * t, c * t - s * x) for x, t in zip(line["x"], line["t"])]
+            for (xa, ta), (xb, tb) in zip(points, points[1:]):
+                if tb - ta > 1e-9:
+                    mid = 0.5 * (ta + tb)
+                    assert abs(xa + (xb - xa) * (mid - ta) / (tb - ta) - seen.event_at_time(mid).x) < 1.2e-4
+    for sigma_index in (0, len(m["material"]) // 2):  # the strip's material points, at their coarser tolerance
+        line = m["material"][sigma_index]
+        exact = h.material_worldline(sigma_index / (web_data.MATERIAL_POINTS - 1))
+        for x, t, phi in zip(line["x"], line["t"], line["phi"]):
+            assert exact.event_at_time(t).x == pytest.approx(x, abs=1e-3)
+            # at a kink (an impact) the point is given twice, before and after: t's digits may put it either side
+            near = [exact.rapidity_at_time(t + dt, after) for dt in (-1e-4, 0.0, 1e-4) for after in (False, True)]
+            assert min(abs(r - phi) for r in near) < 1e-3
+
+
+def test_the_colour_scale_is_the_largest_material_rapidity(fig2_data):
+    """Independent of the samples: the extremes of every material point's rapidity are the turns' ends."""
+    for v in (0.3, 0.6):
+        bound = max(abs(r) for r in rod_rapidities(history("fig2", v)))
+        assert at_speed(fig2_data, v)["colour_bound"] == pytest.approx(bound, rel=1e-12)
+
+
+def test_every_ledger_slice_adds_up_to_the_total_before_the_first_impact(fig2_data):
+    """Conservation, against the total computed by hand from the scenario: the rod at rest in S, each particle of
+    mass m at its speed toward the rod, boosted to the slice's frame."""
+    for v in (0.3, 0.6, 0.95):
+        s = load("fig2").with_overrides(v=v)
+        for frame in at_speed(fig2_data, v)["ledger"]:
+            eta = math.atanh(frame["u"])
+            total = EnergyMomentum.of(1.0, -eta)
+            for p in s.particles:
+                a = (1 if p.name == "A" else -1) * math.atanh(s.speed(p))
+                total += EnergyMomentum.of(p.mass, a - eta)
+            assert frame["bodies"] == ["A", "B", "rod", "hidden"]
+            for row in frame["slices"]:
+                E, p_ = sum(row[1::2]), sum(row[2::2])
+                assert E == pytest.approx(total.E, abs=5e-5 * len(frame["bodies"]))
+                assert p_ == pytest.approx(total.p, abs=5e-5 * len(frame["bodies"]))
+    for v in (0.3, 0.6):  # S', S, then the grid's other frames, each once
+        frames = [f["u"] for f in at_speed(fig2_data, v)["ledger"]]
+        assert frames[:2] == [-v, 0.0] and sorted(frames) == sorted({-v, 0.0, *web_data.LEDGER_FRAMES})
+
+
+def test_the_inks_are_the_figures_and_the_strip_colours_are_matplotlibs(fig2_data):
+    import matplotlib
+    import numpy as np
+    from matplotlib.colors import to_hex
+
+    for name, style in STYLES.items():
+        inks = fig2_data["styles"][name]
+        assert inks["rod"]["colour"] == style.rod.colour and inks["sheet"] == style.sheet
+        assert inks["moving"]["dashes"] == list(style.moving_simultaneity.dashes[1])
+        assert inks["particles"]["B"]["dashes"] == list(style.particles["B"].dashes[1])
+    rdbu = [to_hex(c) for c in matplotlib.colormaps["RdBu_r"](np.linspace(0, 1, 11))]
+    greys = [to_hex(c) for c in matplotlib.colormaps["Greys"](np.linspace(0.12, 0.88, 8))]
+    assert fig2_data["styles"]["default"]["colours"] == rdbu and fig2_data["styles"]["print"]["colours"] == greys
+
+
+# --- the page as a file --------------------------------------------------------------------------------------
+
+def test_the_page_is_self_contained_small_and_carries_its_script_verbatim(fig2_page):
+    assert len(fig2_page.encode("utf-8")) <= 2 * MB
+    assert not re.search(r"https?://", fig2_page, re.I)
+    assert not re.search(r"<(script|link|img|iframe)[^>]+(src|href)=", fig2_page, re.I)
+    assert asset("page.js") == (ROOT / "rodparadox" / "web" / "page.js").read_text() and asset("page.js") in fig2_page
+    assert fig2_page.count("</script>") == 2  # the data's own `<` are escaped
+
+
+def test_html_writes_outputs_named_as_plot_names_them_and_leaves_equal_bytes_alone(small_grid, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert run("html", "fig2").output == "outputs/fig2.html\n"
+    first = (tmp_path / "outputs" / "fig2.html").read_bytes()
+    assert run("html", "fig2", "--v", "0.6").output == "outputs/fig2.html (unchanged)\n"
+    assert run("html", "fig1", "fig2", "--v", "0.8", "--style", "print").output == "outputs/fig1_fig2_v0.8_print.html\n"
+    both = (tmp_path / "outputs" / "fig1_fig2_v0.8_print.html").read_text()
+    assert '"name":"fig1"' in both and '"name":"fig2"' in both and '"style":"print"' in both
+    assert run("html", "fig2", "-o", "mine.html", "-q").output == ""
+    assert (tmp_path / "mine.html").read_bytes() == first
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine.html", "outputs"]
+
+
+@pytest.mark.parametrize("args, sentence", [
+    (["fig2", "fig2"], "fig2 is given twice; a page has one section per scenario, so give each once."),
+    (["fig2", "--v", "1"], "option --v: v must be a number with 0 < v < 1 (units of c), got 1."),
+    (["fig2", "-o", "nowhere/fig2.html"], "cannot write nowhere/fig2.html: the folder nowhere does not exist; create "
+                                          "it first."),
+    (["fig2", "-o", "fig2.svg"], "the output folder fig2.svg does not exist; create it first."),
+    (["fig2", "--style", "poster"], None),
+    (["nosuch"], "there is no built-in scenario 'nosuch'"),
+])
+def test_bad_input_is_one_sentence_exit_2_and_leaves_nothing(args, sentence, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    (tmp_path / "tmp").mkdir()
+    tempfile.tempdir = None
+    try:
+        result = run("html", *args, expect=2)
+    finally:
+        tempfile.tempdir = None
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1 and "Traceback" not in result.output, result.output
+    if sentence is not None:
+        assert lines[0].startswith("Error: " + sentence), lines[0]
+    outputs = tmp_path / "outputs"
+    assert not list((tmp_path / "tmp").iterdir()) and (not outputs.exists() or not list(outputs.iterdir()))
+
+
+def test_html_never_imports_matplotlib_and_gives_the_same_bytes_in_another_process(small_grid, tmp_path):
+    """One other process, another hash seed: the command runs without matplotlib and writes the bytes this process
+    writes."""
+    code = ("import sys\nimport rodparadox.web.data as d\nd.SPEED_STEPS, d.LEDGER_INSTANTS = 2, 3\n"
+            "from sears_paradox_cli.main import main\n"
+            f"try:\n    main(['html', 'fig2', '-o', {str(tmp_path / 'other.html')!r}, '-q'])\nexcept SystemExit:\n    pass\n"
+            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                            env={**os.environ, "PYTHONHASHSEED": "12345"})
+    assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
+    assert (tmp_path / "other.html").read_bytes() == page([("fig2", load("fig2"))]).encode("utf-8")
+
+
+# --- in a real browser: Debian's Chromium, driven by playwright, the network refused ---------------------------
+
+CHROMIUM = Path("/usr/bin/chromium")
+BROWSER_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                "--disable-component-update", "--no-first-run", "--disable-sync"]
+MINUS = "\u2212"
+
+
+def browser_missing() -> str | None:
+    if not CHROMIUM.exists():
+        return "no Chromium at /usr/bin/chromium (apt-get install chromium; README, 'sears-paradox html')"
+    try:
+        import playwright.sync_api  # noqa: F401
+    except ImportError:
+        return "playwright is not installed (pip install -e '.[browser]'; README, 'sears-paradox html')"
+    return None
+
+
+@pytest.fixture(scope="session")
+def browser():
+    reason = browser_missing()
+    if reason:
+        pytest.skip(reason)
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as driver:
+        chromium = driver.chromium.launch(executable_path=str(CHROMIUM), args=BROWSER_ARGS)
+        yield chromium
+        chromium.close()
+
+
+@pytest.fixture(scope="session")
+def page_file(fig2_page, tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("html") / "fig2.html"
+    path.write_text(fig2_page, encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="session")
+def screenshots(tmp_path_factory) -> Path:
+    """Where each state's screenshot goes: SEARS_PARADOX_SCREENSHOTS to keep them and look, else a test folder."""
+    folder = Path(os.environ.get("SEARS_PARADOX_SCREENSHOTS") or tmp_path_factory.mktemp("screenshots"))
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder
+
+
+class Opened:
+    """A tab with the page, every request it made, the ones refused (anything not file://), and script errors."""
+
+    def __init__(self, browser, path: Path, viewport: dict):
+        self.context = browser.new_context(viewport=viewport)
+        self.refused, self.requests, self.errors = [], [], []
+        self.context.route("**/*", self._route)
+        self.tab = self.context.new_page()
+        self.tab.on("request", lambda request: self.requests.append(request.url))
+        self.tab.on("pageerror", lambda error: self.errors.append(str(error)))
+        self.tab.on("console", lambda message: self.errors.append(message.text) if message.type == "error" else None)
+        self.tab.goto(path.as_uri())
+        self.tab.wait_for_function("window.searsParadox !== undefined")
+        self.uri = path.as_uri()
+
+    def _route(self, route):
+        if route.request.url.startswith("file://"):
+            route.continue_()
+        else:
+            self.refused.append(route.request.url)
+            route.abort()
+
+    def settled(self):
+        """After the next animation frame: every drawing asked for is done."""
+        self.tab.evaluate("new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))")
+
+    def press(self, control: str, *keys: str):
+        self.tab.focus(f"#{control}")
+        for key in keys:
+            self.tab.keyboard.press(key)
+        self.settled()
+
+    def state(self) -> dict:
+        return self.tab.evaluate("JSON.parse(JSON.stringify(window.searsParadox.state))")
+
+    def rows(self, table: str) -> dict[str, list[str]]:
+        return {row[0]: row for row in self.tab.evaluate(
+            f"[...document.querySelectorAll('#{table} tbody tr')].map((r) => [...r.cells].map((c) => c.textContent))")}
+
+    def pixel(self, x: float, y: float) -> list[int]:
+        return self.tab.evaluate(f"""(() => {{ const c = document.getElementById('diagram'), r = window.devicePixelRatio;
+            return [...c.getContext('2d').getImageData(Math.round({x} * r), Math.round({y} * r), 1, 1).data]; }})()""")
+
+    def close(self):
+        assert self.errors == []
+        assert self.refused == [] and set(self.requests) == {self.uri}, (self.refused, self.requests)
+        self.context.close()
+
+
+@pytest.fixture
+def opened(browser, page_file):
+    tab = Opened(browser, page_file, {"width": 1280, "height": 860})
+    yield tab
+    tab.close()
+
+
+def speed_index(v: float, data: dict) -> int:
+    return [e["v"] for e in data["scenarios"][0]["speeds"]].index(v)
+
+
+def test_speed_0_6_in_s_prime_shows_a1_and_b1_at_17_12_in_the_table_and_on_one_pixel_row(opened, fig2_data,
+                                                                                        screenshots):
+    """By the keyboard: the speed slider to v = 0.6, the frame slider from -0.95 to -0.60 (S')."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("frame", "Home", *["ArrowRight"] * 35)
+    state = opened.state()
+    assert state["u"] == -0.6 and fig2_data["scenarios"][0]["speeds"][state["speed"]]["v"] == 0.6
+    rows = opened.rows("events")
+    assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)"
+    assert "S\u2032" in opened.tab.inner_text("#events caption")
+    dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
+    row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
+    assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
+    for label in ("A1", "B1"):  # the dot is drawn there, in the impact's ink (black)
+        assert max(opened.pixel(dots[label]["x"], dots[label]["y"])[:3]) < 90
+    opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_moving.png"), full_page=True)
+
+
+def test_another_frame_shows_events_digits_boosted_in_the_page(opened, fig2_data, screenshots):
+    """u = 0.3: the page's boosted decimals against `events --frame-velocity 0.3` (Python's own boost)."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("frame", "Home", *["PageUp"] * 6, *["ArrowRight"] * 11)  # a page is a tenth: -0.95 + 6 * 0.19
+    assert opened.state()["u"] == 0.3
+    text = run("events", "fig2", "--v", "0.6", "--frame-velocity", "0.3").output.split("frame u=0.3")[1]
+    printed = {line.split()[0]: line.split() for line in text.splitlines()[2:] if line.strip()}
+    rows = opened.rows("events")
+    assert len(rows) == len(printed) == 3
+    for label, row in rows.items():
+        ours = [float(cell.replace(MINUS, "-")) for cell in row[2:4]]
+        theirs = [float(cell) for cell in printed[label.translate(str.maketrans("\u2081\u2082", "12"))][2:4]]
+        assert ours == pytest.approx(theirs, rel=1e-6, abs=1e-7)
+    assert "boosted" in opened.tab.inner_text("#events caption")
+    opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_u0.3.png"), full_page=True)
+
+
+def test_the_now_line_follows_the_time_scrubber(opened, screenshots):
+    lo, hi = json.loads(opened.tab.get_attribute("#diagram", "data-window"))
+    for keys, fraction, name in ((("Home",), 0.0, "start"), (("Home", "PageUp", "PageUp", "ArrowRight"), 0.201, "fifth"),
+                                 (("End",), 1.0, "end")):
+        opened.press("time", *keys)
+        now_row = float(opened.tab.get_attribute("#diagram", "data-now-row"))
+        expected = opened.tab.evaluate(f"window.searsParadox.row({lo + fraction * (hi - lo)})")
+        assert abs(now_row - expected) < 0.01
+        if 0 < fraction < 1:  # the line is drawn there, in the flash ink (#CC0033), along most of the panel
+            x0 = opened.tab.evaluate("window.searsParadox.column(window.searsParadox.geometry().box[0])")
+            red = [opened.pixel(x0 + k * 7 + 3, now_row) for k in range(20)]
+            assert sum(1 for r, g, b, _ in red if r > 150 and g < 90 and b < 110) >= 12, red
+        opened.tab.screenshot(path=str(screenshots / f"fig2_now_{name}.png"))
+
+
+def test_every_control_has_a_label_and_works_from_the_keyboard(opened):
+    unlabelled = opened.tab.evaluate("""[...document.querySelectorAll('input, select, button')]
+        .filter((e) => !(e.labels && e.labels.length) && !e.getAttribute('aria-label') && !e.textContent.trim())
+        .map((e) => e.id)""")
+    assert unlabelled == []
+    reached = set()
+    opened.tab.focus("body")
+    for _ in range(16):
+        opened.tab.keyboard.press("Tab")
+        reached.add(opened.tab.evaluate("document.activeElement.id"))
+    assert {"speed", "frame", "frame-rest", "frame-moving", "time", "play", "cones", "style"} <= reached
+    before = opened.state()
+    opened.press("speed", "ArrowLeft")
+    assert opened.state()["speed"] == before["speed"] - 1
+    opened.press("frame-moving", "Enter")
+    v = opened.tab.evaluate("window.searsParadox.geometry() && " + "JSON.parse(document.getElementById('page-data')"
+                            ".textContent).scenarios[0].speeds[window.searsParadox.state.speed].v")
+    assert opened.state()["u"] == -v
+    opened.press("cones", "Space")
+    assert opened.state()["cones"] is True
+    opened.press("play", "Space")
+    assert opened.tab.get_attribute("#play", "aria-pressed") == "true"
+    start = opened.state()["time"]
+    opened.tab.wait_for_timeout(250)
+    opened.press("play", "Space")
+    assert opened.tab.get_attribute("#play", "aria-pressed") == "false" and opened.state()["time"] != start
+
+
+def test_the_layout_follows_the_window_in_every_style(browser, page_file, screenshots):
+    """A projector and a phone: nothing wider than the window; the style switch changes the inks (the rod's ink at
+    a pixel of its left end)."""
+    for viewport, style, rod in (({"width": 1920, "height": 1080}, "slides", STYLES["slides"].rod.colour),
+                                 ({"width": 390, "height": 844}, "print", STYLES["print"].rod.colour)):
+        tab = Opened(browser, page_file, viewport)
+        try:
+            tab.tab.select_option("#style", style)
+            tab.settled()
+            assert tab.tab.evaluate("document.body.className") == f"style-{style}"
+            assert tab.tab.evaluate("document.documentElement.scrollWidth <= window.innerWidth + 1")
+            assert tab.tab.evaluate("document.getElementById('diagram').getBoundingClientRect().right") <= \
+                viewport["width"]
+            x, y = tab.tab.evaluate("[window.searsParadox.column(-0.5), window.searsParadox.row(0.3)]")  # S: at rest
+            assert tab.pixel(x, y)[:3] == [int(rod[k:k + 2], 16) for k in (1, 3, 5)]
+            tab.tab.screenshot(path=str(screenshots / f"fig2_{viewport['width']}_{style}.png"), full_page=True)
+        finally:
+            tab.close()
