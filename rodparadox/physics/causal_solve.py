@@ -394,7 +394,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                         delta = psi - r_in0
                         if delta <= 0.0:  # a front arrived that the end may follow freely: separation
                             T = _separate(rider, end, T, psi, r_in0, events, state, a_of, b_of, L)
-                            last_separation = T
+                            last_separation = max(last_separation, T)
                             continue
                         const = _constant(inp)
                         if const is not None:
@@ -411,7 +411,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                         else:
                             psi_sep = piece.psi(T_sep)
                             T = _separate(rider, end, T_sep, psi_sep, inp.r(T_sep), events, state, a_of, b_of, L)
-                            last_separation = T
+                            last_separation = max(last_separation, T)
                         continue
                     # free end: out = -in; a particle on its way may meet it
                     # the end's output is written first: where the end is depends on it
