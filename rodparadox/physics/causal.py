@@ -158,7 +158,7 @@ class CausalHistory:
 
     # --- energy and momentum -----------------------------------------------------------------------------------
 
-    def _end_T(self, end: str, frame_rapidity: float, t: float) -> float:
+    def end_chart_time(self, end: str, frame_rapidity: float, t: float) -> float:
         X = 0.0 if end == "left" else self.scenario.L
         line = ChartCurve(self.solution, X, -math.inf, math.inf, frame_rapidity)
         return line.chart_time(t)
@@ -166,7 +166,7 @@ class CausalHistory:
     def rod_energy_momentum(self, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The rod's (E, p) on the slice t of the frame, from its stress-energy (module docstring), exactly."""
         L, f, sol = self.scenario.L, frame_rapidity, self.solution
-        T_L, T_R = self._end_T("left", f, t), self._end_T("right", f, t)
+        T_L, T_R = self.end_chart_time("left", f, t), self.end_chart_time("right", f, t)
         I_plus = sol.plus.integrals(T_R + L)[1] - sol.plus.integrals(T_L)[1]
         I_minus = sol.minus.integrals(T_L)[1] - sol.minus.integrals(T_R - L)[1]
         x_L = ChartCurve(sol, 0.0, T_L, T_L, f).point(T_L).x
