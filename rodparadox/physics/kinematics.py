@@ -398,6 +398,8 @@ class ChartCurve:
         knots = [self.T_start, *self.chart.breaks(self.X, self.T_start, self.T_end), self.T_end]
         out = [self.point(self.T_start)]
         for a0, b0 in zip(knots, knots[1:]):
+            if b0 - a0 <= 1e-14 * (abs(a0) + abs(b0) + 1e-300):
+                continue  # a front through an end of the curve, read an ulp apart
             stack = [(a0, b0, 0)]
             while stack:
                 a, b, depth = stack.pop()
