@@ -93,7 +93,7 @@ def test_bad_overrides_name_their_key(option, value, message):
     ("v: 0.6\nparticles:\n  A: {gap: 0.5, spead: 0.3}\n",
      "s.yaml, line 3: unknown key 'spead' in particles.A (allowed: mass, speed, gap, timed_with); did you mean speed?"),
     ("v: 0.6\nparticle:\n  A: {gap: 0.5}\n",
-     "s.yaml, line 2: unknown key 'particle' in the top level (allowed: name, description, title, v, L, particles); "
+     "s.yaml, line 2: unknown key 'particle' in the top level (allowed: name, description, title, v, L, rod, sound_speed, particles); "
      "did you mean particles?"),
     ("v: 0.6\nparticles:\n  C: {gap: 0.5}\n",
      "s.yaml, line 3: unknown key 'C' in particles (allowed: A, B)."),
