@@ -265,7 +265,7 @@ def _with_rod(scenario):
     meta = context.meta if context is not None else {}
     rod, rods = meta.get(ROD_META) or scenario.rod, meta.get(RODS_META, ("rigid", "causal"))
     if rod not in rods:
-        raise BadInput(words.rod_not_here(rod, context.command_path if context is not None else "this command", rods))
+        raise BadInput(words.rod_not_here(rod, context.info_name if context is not None else "this command", rods))
     return scenario.with_overrides(rod=rod)
 
 
