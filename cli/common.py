@@ -248,20 +248,31 @@ def checked_output(output: str | None) -> str | None:
 
 
 def load_scenario(name: str, v: float | None, L: float | None):
-    """A built-in scenario or YAML file, with the command line's --v and --L."""
+    """A built-in scenario or YAML file, with the command line's --v, --L and --rod (`with_options`)."""
     from rodparadox.io.scenario import load
 
     return with_options(load(name), v, L)
 
 
 def with_options(scenario, v: float | None, L: float | None):
-    """The scenario with the command line's --v and --L; a bad value is said as its option's."""
+    """The scenario with the command line's --v, --L and --rod; a bad value is said as its option's."""
     from rodparadox.errors import ScenarioError
 
     try:
-        return scenario.with_overrides(v=v, L=L)
+        scenario = scenario.with_overrides(v=v, L=L)
     except ScenarioError as e:
         raise words.scenario_option_error(e, [k for k, value in (("v", v), ("L", L)) if value is not None]) from None
+    return _with_rod(scenario)
+
+
+def _with_rod(scenario):
+    """The scenario with --rod (kept in the click context by `scenario_options`), if the command takes that rod."""
+    context = click.get_current_context(silent=True)
+    meta = context.meta if context is not None else {}
+    rod, rods = meta.get(ROD_META) or scenario.rod, meta.get(RODS_META, ("rigid", "causal"))
+    if rod not in rods:
+        raise BadInput(words.rod_not_here(rod, context.info_name if context is not None else "this command", rods))
+    return scenario.with_overrides(rod=rod)
 
 
 def run_scenario(scenario, source: str, frames=()):
@@ -271,12 +282,12 @@ def run_scenario(scenario, source: str, frames=()):
     every velocity is below c in double precision (`frames.check_below_c`), so `plot`, `animate` and `ledger`
     refuse what `events`, `export` and `handout` refuse. A boost's frames in between need no check: a body's
     speed is largest at one of its ends."""
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.rod_models import run_rod
     from rodparadox.physics.frames import check_below_c, view
     from rodparadox.errors import ScenarioError
 
     try:
-        history = run(scenario)
+        history = run_rod(scenario)
     except ScenarioError as e:  # the engine's sentence does not say which scenario: say it here
         raise BadInput(f"{source}: {e}") from None
     for frame in frames:
@@ -353,10 +364,25 @@ quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")
 
 
-def scenario_options(several: bool = False):
-    """SCENARIO (or SCENARIO... with `several`), then --v and --L: how every command begins."""
+#: where `scenario_options` leaves --rod and the rod models a command draws, for `load_scenario`
+ROD_META, RODS_META = "sears_paradox.rod", "sears_paradox.rods"
+ROD_WORDS = ("rigid", "causal", "both")
+
+
+def scenario_options(several: bool = False, rods: tuple[str, ...] = ("rigid", "causal")):
+    """SCENARIO (or SCENARIO... with `several`), then --v, --L and --rod: how every command begins. `rods`: the
+    rod models the command takes; --rod (or a scenario's rod:) naming another is refused in one sentence."""
+    def keep_rod(context: click.Context, parameter, value):
+        context.meta[ROD_META], context.meta[RODS_META] = value, rods
+        return value
+
+    rod_option = click.option(option("rod"), "rod", type=click.Choice(ROD_WORDS), default=None, expose_value=False,
+                              is_eager=True, callback=keep_rod, metavar="rigid|causal",
+                              help="The rod: rigid (the paper's) or causal (sound at c, README \"The causal rod\"); "
+                                   "overrides the scenario's rod:.")
+
     def decorate(command):
-        for declare in (L_option, v_option, scenarios_argument if several else scenario_argument):
+        for declare in (rod_option, L_option, v_option, scenarios_argument if several else scenario_argument):
             command = declare(command)
         return command
     return decorate

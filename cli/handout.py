@@ -24,7 +24,7 @@ HANDOUT_PAPER = "a4"
 
 
 @click.command()
-@scenario_options(several=True)
+@scenario_options(several=True, rods=("rigid",))
 @frame_option("The frames shown, as plot's --frame (e.g. both,0.3).")
 @click.option("--paper", "paper", type=click.Choice(PAPER_NAMES, case_sensitive=False), default=HANDOUT_PAPER,
               show_default=True, help="The paper size.")

@@ -100,7 +100,7 @@ def _check_agreement(kind: str, fmt: str | None, output: str | None) -> None:
 
 
 @click.command()
-@scenario_options()
+@scenario_options(rods=("rigid",))
 @frame_option("The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
               "gives several (e.g. both,0.3).")
 @click.option("--at", "at", default=None, metavar="T1,T2,...",

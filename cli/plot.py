@@ -19,7 +19,7 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
 
 
 @click.command()
-@scenario_options(several=True)
+@scenario_options(several=True, rods=("rigid",))
 @frame_option("Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
               "a comma-separated list gives several (e.g. both,0.3).")
 @format_option("One or more formats, comma-separated. [default: svg, or the extension of -o FILE]", default=None,

@@ -16,7 +16,7 @@ from rodparadox.errors import ChoiceError, FrameError, OptionError, ScenarioErro
 OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--frame-velocity", "output": "-o",
            "format": "--format", "fps": "--fps", "seconds": "--seconds", "mode": "--mode", "paper": "--paper",
            "at": "--at", "questions": "--questions", "compare_v": "--compare-v", "key": "--key",
-           "allow_long": "--allow-long"}
+           "allow_long": "--allow-long", "rod": "--rod"}
 
 
 def option(choice: str) -> str:
@@ -68,3 +68,10 @@ def unknown_extension(output: str, extensions: str) -> OptionError:
 def format_not_one_of(fmt: str, allowed: Sequence[str]) -> OptionError:
     """--format names none of the command's formats."""
     return OptionError("format", fmt, tuple(allowed))
+
+
+def rod_not_here(rod: str, command: str, rods) -> str:
+    """A rod model a command does not take (from --rod or a scenario's rod:), in one sentence."""
+    takes = " or ".join(rods)
+    what = "--rod both (the two rods side by side)" if rod == "both" else f"the {rod} rod"
+    return f"{command} does not take {what} yet (from option --rod or the scenario's rod:); it takes {takes}."

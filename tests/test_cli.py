@@ -328,9 +328,11 @@ def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch
                                   ["ledger", "fig2", "--format", "markdown", "--at", "1"],
                                   ["ledger", "fig2", "--format", "latex"]])
 def test_non_drawing_paths_never_import_matplotlib(argv):
+    """Nor scipy: only a causal rod needs an integrator (issue 16, item 8)."""
     code = ("import sys\nfrom sears_paradox_cli.main import main\n"
             f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
-            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
+            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else\n"
+            "                 'SCIPY' if any(m.startswith('scipy') for m in sys.modules) else 'CLEAN')\n")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
 

@@ -15,7 +15,7 @@ from typing import Any
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, FrameView, check_below_c, frame_heading, sampling_tolerance, view
 from rodparadox.numbers import coordinate_format, exact, exact_signed, velocity_format
-from rodparadox.physics.kinematics import HyperbolicArc, Line, Segment
+from rodparadox.physics.kinematics import ChartCurve, HyperbolicArc, Line, Segment
 
 FORMAT = "sears-paradox/1"
 
@@ -27,14 +27,20 @@ def _point(e) -> list[float]:
 def _segment(s: Segment) -> dict[str, Any]:
     if isinstance(s, Line):
         return {"kind": "line", "start": _point(s.start), "end": _point(s.end)}
+    if isinstance(s, ChartCurve):  # the causal rod's: exact only through its chart, so a polyline is the data
+        return {"kind": "chart", "start": _point(s.start), "end": _point(s.end), "material_label": s.X}
     assert isinstance(s, HyperbolicArc)
     return {"kind": "arc", "start": _point(s.start), "end": _point(s.end), "centre": _point(s.centre),
             "radius": s.radius, "side": s.side, "rapidity_start": s.phi_start, "rapidity_end": s.phi_end}
 
 
-def frame_document(fv: FrameView, tolerance: float) -> dict[str, Any]:
+#: the causal rod's material points exported, at sigma = k L / MATERIAL_POINTS for k = 0 .. MATERIAL_POINTS
+MATERIAL_POINTS = 8
+
+
+def frame_document(fv: FrameView, tolerance: float, history=None) -> dict[str, Any]:
     check_below_c(fv)
-    return {
+    out = {
         "velocity": fv.frame.velocity,
         "rod_velocity_before": fv.frame.rod_velocity(),
         "t_range": list(fv.t_range),
@@ -43,12 +49,20 @@ def frame_document(fv: FrameView, tolerance: float) -> dict[str, Any]:
              "particle_velocity_before": e.particle_velocity_before,
              "particle_velocity_after": e.particle_velocity_after,
              "rod_velocity_before": e.rod_velocity_before, "rod_velocity_after": e.rod_velocity_after,
-             "simultaneous_with": e.impact.simultaneous_with, "while_turning": e.impact.while_turning}
+             "simultaneous_with": e.impact.simultaneous_with, "while_turning": e.impact.while_turning,
+             "kind": e.impact.kind}
             for e in fv.events
         ],
         "worldlines": {name: points.tolist() for name, points in fv.worldline_points(tolerance).items()},
         "segments": {name: [_segment(s) for s in pieces] for name, pieces in fv.segments},
     }
+    if history is not None and history.rigid is None:
+        L, eta = history.scenario.L, fv.frame.rapidity
+        out["material_worldlines"] = [
+            {"sigma": k * L / MATERIAL_POINTS,
+             "points": history.material_worldline(k * L / MATERIAL_POINTS).seen_from(eta).sample(*fv.t_range, tolerance).tolist()}
+            for k in range(MATERIAL_POINTS + 1)]
+    return out
 
 
 def document(history: History, frames: tuple[Frame, ...]) -> dict[str, Any]:
@@ -57,13 +71,14 @@ def document(history: History, frames: tuple[Frame, ...]) -> dict[str, Any]:
     tolerance = sampling_tolerance(history)
     return {
         "format": FORMAT,
+        "rod": history.kind,
         "scenario": {
             "name": s.name, "description": s.description, "v": s.v, "L": s.L,
             "particles": {p.name: {"mass": p.mass, "speed": s.speed(p), "start": _point(starts[p.name])}
                           for p in s.particles},
         },
         "sampling_tolerance": tolerance,
-        "frames": {f.name: frame_document(view(history, f), tolerance) for f in frames},
+        "frames": {f.name: frame_document(view(history, f), tolerance, history) for f in frames},
     }
 
 

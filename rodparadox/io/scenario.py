@@ -38,6 +38,8 @@ _SCHEMA = {
     "title": None,
     "v": None,
     "L": None,
+    "rod": None,
+    "sound_speed": None,
     "particles": {
         "A": {"mass": None, "speed": None, "gap": None, "timed_with": {"particle": None, "frame": None, "delay": None}},
         "B": {"mass": None, "speed": None, "gap": None, "timed_with": {"particle": None, "frame": None, "delay": None}},
@@ -249,8 +251,20 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
         if key in data and not isinstance(data[key], str):
             value = data[key]
             raise ScenarioError(f"{key} must be text, got {described(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
+    if "sound_speed" in data:
+        _check_sound_speed(data["sound_speed"])
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
-                    v=data["v"], L=data.get("L", 1.0), particles=tuple(particles), title=data.get("title", ""))
+                    v=data["v"], L=data.get("L", 1.0), particles=tuple(particles), title=data.get("title", ""),
+                    rod=data.get("rod", "rigid"))
+
+
+def _check_sound_speed(value: Any) -> None:
+    """sound_speed: 1 (c) is the causal rod; slower sound steepens compressions into shocks, which heat the rod,
+    and faster is faster than light: both refused in one sentence."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value != 1:
+        raise ScenarioError(f"sound_speed must be 1 (c, the causal rod: rod: causal), got {described(value)}; a "
+                            f"slower sound steepens compressions into shocks, which heat the rod and are not "
+                            f"modelled, and a faster one outruns light.", "sound_speed")
 
 
 # --- built-in scenarios and files ----------------------------------------------------------

@@ -63,6 +63,8 @@ class Impact:
     while_turning: bool = False
     line_rapidity: float = 0.0
     collision: int = 0
+    #: "contact" (a particle meets an end; every rigid impact) or "separation" (it leaves a causal rod's end)
+    kind: str = "contact"
 
 
 @dataclass(frozen=True)

@@ -226,7 +226,8 @@ def time_window(history: History, frame: Frame) -> tuple[float, float]:
     for name in WORLDLINE_NAMES:
         worldline = history.worldline(name)
         if worldline is not None:
-            changes += [t for s in worldline.seen_from(eta).segments for t in (s.start.t, s.end.t)]
+            # a causal rod's ends ring for ever: their endless last segment has no end to show
+            changes += [t for s in worldline.seen_from(eta).segments for t in (s.start.t, s.end.t) if math.isfinite(t)]
     first, last = min(changes), max(changes)
     at_start = [e.seen_from(eta).t for _, e in history.starts]
     at_start += [Event(sign * L / 2, 0.0).seen_from(eta).t for sign in (-1, 1)]

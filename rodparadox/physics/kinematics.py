@@ -198,9 +198,10 @@ class WorldLine:
         """Exact segments covering t_lo <= t <= t_hi, the straight ends included as Lines."""
         first, last = self.first, self.last
         before = Line(_along(first, self.rapidity_before, min(t_lo, first.t) - first.t), first)
-        after = Line(last, _along(last, self.rapidity_after, max(t_hi, last.t) - last.t))
+        # a causal rod that rings for ever ends on an endless chart curve: nothing straight after it
+        after = (Line(last, _along(last, self.rapidity_after, max(t_hi, last.t) - last.t)),) if math.isfinite(last.t) else ()
         out = []
-        for piece in (before, *self.segments, after):
+        for piece in (before, *self.segments, *after):
             clipped = piece.clipped(t_lo, t_hi)
             if clipped is not None:
                 out.append(clipped)
@@ -309,3 +310,106 @@ def _at_proper_time(piece: Segment, tau: float) -> Event:
 def _along(event: Event, rapidity_: float, dt: float) -> Event:
     """The event a time dt after `event` on the straight world-line of the given rapidity."""
     return Event(event.x + math.tanh(rapidity_) * dt, event.t + dt)
+
+
+class ChartCurve:
+    """The world-line of the causal rod's material point X between chart times T_start and T_end (README, "The
+    causal rod"): t + x = e^-f a(T + X), t - x = e^f b(T - X), exact at any T; its rapidity there is
+    (r+(T + X) - r-(T - X))/2 - f. A boost by rapidity f' only adds f' to f (`seen_from`). `chart` gives a, b,
+    r_plus, r_minus and `breaks(X, T_lo, T_hi)` (the chart times where a front crosses the line, where it kinks).
+    T_end may be infinite (a rod that rings for ever): the curve then has no end event.
+    """
+
+    def __init__(self, chart, X: float, T_start: float, T_end: float, f: float = 0.0):
+        self.chart, self.X, self.T_start, self.T_end, self.f = chart, X, T_start, T_end, f
+
+    def point(self, T: float) -> Event:
+        U = math.exp(-self.f) * self.chart.a(T + self.X)
+        V = math.exp(self.f) * self.chart.b(T - self.X)
+        return Event(0.5 * (U - V), 0.5 * (U + V))
+
+    def rapidity(self, T: float) -> float:
+        return 0.5 * (self.chart.r_plus(T + self.X) - self.chart.r_minus(T - self.X)) - self.f
+
+    @property
+    def start(self) -> Event:
+        return self.point(self.T_start)
+
+    @property
+    def end(self) -> Event:
+        return self.point(self.T_end) if math.isfinite(self.T_end) else Event(math.nan, math.inf)
+
+    @property
+    def rapidity_at_start(self) -> float:
+        return self.rapidity(self.T_start)
+
+    @property
+    def rapidity_at_end(self) -> float:
+        return self.rapidity(self.T_end)
+
+    def seen_from(self, frame_rapidity: float) -> "ChartCurve":
+        return ChartCurve(self.chart, self.X, self.T_start, self.T_end, self.f + frame_rapidity)
+
+    def chart_time(self, t: float) -> float:
+        """The chart time where the curve is at time t (t rises with T: the curve is time-like)."""
+        lo, hi = self.T_start, self.T_end
+        if not math.isfinite(lo):  # endless into the past too (the rod at rest before any contact)
+            lo = hi if math.isfinite(hi) else 0.0
+            step = 1.0
+            while self.point(lo).t > t:
+                lo, step = lo - step, 2.0 * step
+        if not math.isfinite(hi):
+            step = max(1.0, t - self.point(lo).t)
+            hi = lo + step
+            while self.point(hi).t < t:
+                step *= 2.0
+                hi = lo + step
+        if t <= self.point(lo).t:
+            return lo
+        if t >= self.point(hi).t:
+            return hi
+        for _ in range(200):  # bisection to the last bit: exact to rounding, whatever the pieces are
+            mid = 0.5 * (lo + hi)
+            if mid in (lo, hi):
+                break
+            if self.point(mid).t < t:
+                lo = mid
+            else:
+                hi = mid
+        return hi
+
+    def event_at_time(self, t: float) -> Event:
+        return self.point(self.chart_time(t))
+
+    def phi_at_time(self, t: float) -> float:
+        """The rapidity at time t (named as HyperbolicArc's, so WorldLine.rapidity_at_time reads both)."""
+        return self.rapidity(self.chart_time(t))
+
+    def clipped(self, t_lo: float, t_hi: float) -> "ChartCurve | None":
+        a = self.T_start if t_lo <= self.start.t else self.chart_time(t_lo)
+        b = self.T_end if math.isfinite(self.T_end) and t_hi >= self.end.t else self.chart_time(t_hi)
+        return ChartCurve(self.chart, self.X, a, b, self.f) if b > a else None
+
+    def sample(self, tolerance: float) -> np.ndarray:
+        """Points whose polyline lies within `tolerance` of the curve: split at every front (a kink), then bisected
+        in chart time until the chord's distance from the mid point is within tolerance."""
+        if not math.isfinite(self.T_end):
+            raise ValueError("an endless chart curve is sampled only when clipped to a window")
+        knots = [self.T_start, *self.chart.breaks(self.X, self.T_start, self.T_end), self.T_end]
+        out = [self.point(self.T_start)]
+        for a0, b0 in zip(knots, knots[1:]):
+            if b0 - a0 <= 1e-14 * (abs(a0) + abs(b0) + 1e-300):
+                continue  # a front through an end of the curve, read an ulp apart
+            stack = [(a0, b0, 0)]
+            while stack:
+                a, b, depth = stack.pop()
+                pa, pb, pm = self.point(a), self.point(b), self.point(0.5 * (a + b))
+                dx, dt = pb.x - pa.x, pb.t - pa.t
+                chord = math.hypot(dx, dt)
+                error = abs(dx * (pm.t - pa.t) - dt * (pm.x - pa.x)) / chord if chord > 0 else 0.0
+                if (error > tolerance or depth < 2) and depth < 40:
+                    stack.append((0.5 * (a + b), b, depth + 1))
+                    stack.append((a, 0.5 * (a + b), depth + 1))
+                else:
+                    out.append(pb)
+        return np.array([[p.x, p.t] for p in out])

@@ -68,6 +68,8 @@ class Slice:
     bodies: tuple[tuple[str, EnergyMomentum], ...]  # A, B (those present), rod
     kinetic: EnergyMomentum
     hidden: EnergyMomentum
+    #: the causal rod's (E, p) split into its matter part and its stress part (README, "The causal rod")
+    rod_parts: tuple[tuple[str, EnergyMomentum], ...] = ()
 
 
 @dataclass(frozen=True)

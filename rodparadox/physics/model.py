@@ -25,6 +25,8 @@ MAX_SPAN = 1e6
 FRAME_NAMES = ("rest", "moving")
 #: the longest scenario name: it starts every figure title and file name
 MAX_NAME_LENGTH = 200
+#: the rod models: the paper's rigid rod, and the causal rod whose sound speed is c (README, "The causal rod")
+ROD_MODELS = ("rigid", "causal")
 
 
 def frame_velocity(frame: str | float, v: float) -> float:
@@ -133,6 +135,8 @@ class Scenario:
     description: str = ""
     #: a heading for documents (a handout's section), in words: "Impacts simultaneous in the moving frame"
     title: str = ""
+    #: which rod: "rigid" (the paper's) or "causal" (sound at c)
+    rod: str = "rigid"
 
     def __post_init__(self) -> None:
         _check_text(self.name, "name", newlines=False)
@@ -146,6 +150,8 @@ class Scenario:
         _check_number(self.L, "L", low=0, allowed="a positive length (the rod's proper length)")
         _check_number(self.L, "L", low=1e-100, high=1e100, low_open=False, high_open=False,
                       allowed="between 1e-100 and 1e+100 (choose the unit of length to suit)")
+        if self.rod not in ROD_MODELS:
+            raise ScenarioError(f"rod must be rigid or causal, got {described(self.rod)}.", "rod")
         names = [p.name for p in self.particles]
         if not names:
             raise ScenarioError("particles must name at least one of A and B.", "particles")
@@ -172,10 +178,10 @@ class Scenario:
         """Velocity relative to S of a frame of this scenario: rest, moving (S', -v) or a velocity (`frame_velocity`)."""
         return frame_velocity(frame, self.v)
 
-    def with_overrides(self, *, v: float | None = None, L: float | None = None) -> "Scenario":
-        """The same scenario with other values of v and L (None keeps the scenario's); a bad value's error has its
-        key, v or L, so that a caller can say where the value came from."""
-        return replace(self, **{k: val for k, val in (("v", v), ("L", L)) if val is not None})
+    def with_overrides(self, *, v: float | None = None, L: float | None = None, rod: str | None = None) -> "Scenario":
+        """The same scenario with other values of v, L and rod (None keeps the scenario's); a bad value's error has
+        its key, v, L or rod, so that a caller can say where the value came from."""
+        return replace(self, **{k: val for k, val in (("v", v), ("L", L), ("rod", rod)) if val is not None})
 
 
 def described(value: Any) -> str:
