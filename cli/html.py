@@ -16,7 +16,7 @@ HTML_FORMATS = ("html",)
 
 
 @click.command()
-@scenario_options(several=True)
+@scenario_options(several=True, rods=("rigid",))
 @output_option("A folder to write into (it must exist), or a file name .html. [default: outputs/, created if "
                "missing]", metavar="PATH_OR_DIR")
 @style_option(help="The style the page opens in (it has a switch for the others): default: colour; print: black "
