@@ -69,13 +69,16 @@ def material_lines_that_fit(history: History, fv: FrameView, worldlines: dict[st
         return 0
     count = min(asked, max(0, math.floor(sheet_width(worldlines, points_per_L) / MATERIAL_LINE_GAP) - 1))
     L, (t_lo, t_hi) = history.scenario.L, fv.t_range
+    tolerance = max(sampling_tolerance(history), 0.02 / points_per_L * L)  # a fiftieth of a point: enough to measure
     while count > 0:
         lines = [points / L for _, points in rod.material_lines(history, fv.frame.rapidity, count, t_lo, t_hi,
-                                                                  sampling_tolerance(history))]
+                                                                  tolerance)]
         chain = [worldlines["rod_left"], *lines, worldlines["rod_right"]]
-        if min(polyline_gap(a, b) for a, b in zip(chain, chain[1:])) * points_per_L >= MATERIAL_LINE_GAP:
+        least = min(polyline_gap(a, b) for a, b in zip(chain, chain[1:])) * points_per_L
+        if least >= MATERIAL_LINE_GAP:
             return count
-        count -= 1
+        # the gaps shrink as 1/(count + 1): jump to the count whose least gap would be about the rule's
+        count = min(count - 1, math.floor((count + 1) * least / MATERIAL_LINE_GAP) - 1)
     return 0
 
 
@@ -222,9 +225,25 @@ def draw_inset(ax, plan: InsetPlan, history: History, fv: FrameView, style: Styl
             artists += inset.plot([e.x / L], [e.t / L], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.impact.label}")
     about = ", ".join(impact_name(label, math_text=True) for label in plan.about)
-    note = inset.text(0.04, 0.96, f"\N{MULTIPLICATION SIGN}{shown(plan.magnification, 3)} at {about}",
-                      transform=inset.transAxes, ha="left", va="top", fontsize=font_size, zorder=8,
-                      gid=f"{letter}-inset-note",
+    text = f"\N{MULTIPLICATION SIGN}{shown(plan.magnification, 3)} at {about}"
+    # in the corner of the inset whose note crosses the fewest of its lines and markers
+    w, h, _ = approximate_size(text, font_size)
+    scale = side / (wx1 - wx0)
+    drawn = [np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float) for line in inset.lines]
+    segments = _segments_pt([d for d in drawn if len(d) > 1], plan.window, scale)
+    dots = [((d[0, 0] - wx0) * scale, (d[0, 1] - wt0) * scale) for d in drawn if len(d) == 1]
+    pad = 3.0
+    corners = [(pad, side - pad - h, "left", "top"), (side - pad - w, side - pad - h, "right", "top"),
+               (pad, pad, "left", "bottom"), (side - pad - w, pad, "right", "bottom")]
+
+    def crossed(corner) -> int:
+        x0_, y0_ = corner[:2]
+        hit = int(boxes_hit_segments(np.array([(x0_, y0_, x0_ + w, y0_ + h)]), segments)[0]) if len(segments) else 0
+        return hit + sum(x0_ - 4 <= dx <= x0_ + w + 4 and y0_ - 4 <= dy <= y0_ + h + 4 for dx, dy in dots) * 10
+
+    x_, y_, ha, va = min(corners, key=crossed)
+    note = inset.text((x_ if ha == "left" else x_ + w) / side, (y_ + h if va == "top" else y_) / side, text,
+                      transform=inset.transAxes, ha=ha, va=va, fontsize=font_size, zorder=8, gid=f"{letter}-inset-note",
                       bbox=dict(boxstyle="square,pad=0.15", facecolor="white", edgecolor="none"))
     return (inset, *artists, note)
 
