@@ -128,7 +128,7 @@ def _inset(ax):
 
 THRESHOLD = 3.0 * MM  # the inset's rule, as the README states it: a world-sheet drawn thinner than 3 mm
 INSET_CASES = (("while_turning", 0.97, "print"), ("fig2", 0.6, "default"), ("fig2", 0.9, "default"),
-               ("fig2", 0.99, "print"), ("fig2", 0.81, "default"))
+               ("fig2", 0.99, "print"), ("single", 0.95, "default"), ("off_timing", 0.85, "print"))
 
 
 @pytest.mark.parametrize("name, v, style", INSET_CASES)

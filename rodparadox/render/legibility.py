@@ -106,8 +106,10 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
                keep_clear: list[tuple[float, float, float, float]], lines: list[np.ndarray]) -> InsetPlan | None:
     """The inset of a panel whose world-sheet is thinner than INSET_BELOW, or None.
 
-    It is centred on the frame's first impacts (those at its earliest instant) and the rod at that instant, magnified a nice factor (1, 2, 2.5
-    or 5 times a power of ten) that draws the sheet at least INSET_SHEET wide while those impacts stay inside, and
+    It is centred on the frame's first impacts (those at its earliest instant) and the rod at that instant,
+    magnified a nice factor (1, 2, 2.5 or 5 times a power of ten) that draws the sheet at least INSET_SHEET wide
+    while those stay inside; where that leaves less than 2 (the rod already at rest and long there), it shows the
+    sheet where it is thinnest, nearest that instant, at the factor that draws it INSET_SHEET wide. It is
     placed in a corner of the panel where it hides none of `keep_clear` (boxes in points: labels, markers), crossing
     as few of `lines` (units of L) as it can; None when no corner is free.
     """
@@ -133,9 +135,12 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
         # the first impacts and the rod, and a margin of a fifth of the inset on each side, stay inside
         most = side * 0.6 / (max(spread, 1e-300) * scale)
         magnification = wanted if wanted <= most else nice_number(most, "at_most")
-        magnification = max(magnification, 1.0)
+        about = tuple(e.impact.label for e in first)
+        centre = (cx, ct)
+        if magnification < 2:  # the rod at its first impacts is too wide to magnify: the sheet where it is thinnest
+            magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t / L)
         half = side / 2 / (scale * magnification)
-        window = (cx - half, cx + half, ct - half, ct + half)
+        window = (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)
         corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
                    (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
         free = []
@@ -147,8 +152,28 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             free.append((crossed, k, (x, y)))
         if free:
             _, _, (x, y) = min(free)
-            return InsetPlan((x, y, side), window, magnification, tuple(e.impact.label for e in first))
+            return InsetPlan((x, y, side), window, magnification, about)
     return None
+
+
+def _thinnest_near(worldlines: dict[str, np.ndarray], t: float) -> tuple[float, float]:
+    """Of the places where the world-sheet is within 5 % of its least width, the one nearest the time t: the
+    midpoint of a vertex of one end's world-line and the nearest point of the other's (units of L)."""
+    places = []
+    for one, other in (("rod_left", "rod_right"), ("rod_right", "rod_left")):
+        points, line = worldlines[one], worldlines[other]
+        p0, d = line[:-1], line[1:] - line[:-1]
+        rel = points[:, None, :] - p0[None]
+        s = np.clip((rel * d[None]).sum(2) / np.maximum((d * d).sum(1), 1e-300)[None], 0.0, 1.0)
+        nearest = p0[None] + s[:, :, None] * d[None]
+        gaps = np.hypot(*(points[:, None, :] - nearest).transpose(2, 0, 1))
+        k = gaps.argmin(1)
+        places.append(np.column_stack([gaps[np.arange(len(points)), k],
+                                       (points + nearest[np.arange(len(points)), k]) / 2]))
+    places = np.concatenate(places)
+    thin = places[places[:, 0] <= 1.05 * places[:, 0].min()]
+    x, t_ = thin[np.abs(thin[:, 2] - t).argmin(), 1:]
+    return float(x), float(t_)
 
 
 def _segments_pt(lines: list[np.ndarray], box: Sequence[float], scale: float) -> np.ndarray:
@@ -225,7 +250,7 @@ def draw_inset(ax, plan: InsetPlan, history: History, fv: FrameView, style: Styl
             artists += inset.plot([e.x / L], [e.t / L], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.impact.label}")
     about = ", ".join(impact_name(label, math_text=True) for label in plan.about)
-    text = f"\N{MULTIPLICATION SIGN}{shown(plan.magnification, 3)} at {about}"
+    text = f"\N{MULTIPLICATION SIGN}{shown(plan.magnification, 3)}" + (f" at {about}" if about else "")
     # in the corner of the inset whose note crosses the fewest of its lines and markers
     w, h, _ = approximate_size(text, font_size)
     scale = side / (wx1 - wx0)
