@@ -12,7 +12,7 @@ from typing import NamedTuple, Sequence
 
 import numpy as np
 
-from rodparadox.numbers import impact_name, nice_number, shown
+from rodparadox.numbers import SCIENTIFIC_ABOVE, impact_name, nice_number, shown
 from rodparadox.physics import rod
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import FrameView, relative_velocity, rest_frame, moving_frame, sampling_tolerance
@@ -250,14 +250,22 @@ def draw_inset(ax, plan: InsetPlan, history: History, fv: FrameView, style: Styl
             artists += inset.plot([e.x / L], [e.t / L], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.impact.label}")
     about = ", ".join(impact_name(label, math_text=True) for label in plan.about)
-    text = f"\N{MULTIPLICATION SIGN}{shown(plan.magnification, 3)}" + (f" at {about}" if about else "")
+    m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁵ on, as the ticks write it
+    factor = f"\N{MULTIPLICATION SIGN}{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3)}"
+    pad = 3.0
+    # the note inside the inset: without the impacts' names if they make it too wide, in smaller type if need be
+    for text in ([factor + f" at {about}"] if about else []) + [factor]:
+        w, h, _ = approximate_size(text, font_size)
+        if w <= side - 2 * pad:
+            break
+    else:
+        font_size *= (side - 2 * pad) / w
+        w, h, _ = approximate_size(text, font_size)
     # in the corner of the inset whose note crosses the fewest of its lines and markers
-    w, h, _ = approximate_size(text, font_size)
     scale = side / (wx1 - wx0)
     drawn = [np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float) for line in inset.lines]
     segments = _segments_pt([d for d in drawn if len(d) > 1], plan.window, scale)
     dots = [((d[0, 0] - wx0) * scale, (d[0, 1] - wt0) * scale) for d in drawn if len(d) == 1]
-    pad = 3.0
     corners = [(pad, side - pad - h, "left", "top"), (side - pad - w, side - pad - h, "right", "top"),
                (pad, pad, "left", "bottom"), (side - pad - w, pad, "right", "bottom")]
 
