@@ -8,6 +8,7 @@ world-lines and the axes' own transforms, never read back from the code under te
 from __future__ import annotations
 
 import itertools
+import re
 from functools import lru_cache
 
 import numpy as np
@@ -160,7 +161,7 @@ def test_an_inset_appears_exactly_where_the_sheet_is_thinner_than_3_mm_and_hides
             assert box.width / (x1 - x0) == pytest.approx(box.height / (t1 - t0), rel=1e-6)  # equal scales
             return box.width / (x1 - x0)
         [note] = [t for t in inset.texts if t.get_gid() == f"{info.letter}-inset-note"]
-        stated = float(note.get_text().split()[0].lstrip("\N{MULTIPLICATION SIGN}"))
+        stated = float(re.fullmatch(r"\$\\times([0-9.]+)\$( at .*)?", note.get_text())[1])
         assert per_L(inset) / per_L(ax) == pytest.approx(stated, rel=1e-6)
         assert stated > 1
         box = inset.get_window_extent(renderer)
@@ -251,3 +252,30 @@ def test_material_lines_that_fit_are_all_drawn():
     d = diagram("fig2", 0.3, "default", render.Options(rod_lines=3))
     assert {info.letter: len(d.artists["rod-lines"][info.letter]) for info in d.panels} == {"a": 3, "b": 3}
     assert "material points inside the rod" in [t.get_text() for t in d.figure.legends[0].get_texts()]
+
+
+# --- issue 15.14: no missing glyph anywhere at v = 0.9999999 ------------------------------------------------------
+
+@pytest.mark.slow  # about 8 s: a handout and two animations
+def test_plot_handout_and_animate_at_0_9999999_warn_of_nothing(tmp_path):
+    """`handout` at v = 0.9999999 printed five "missing glyph" warnings. With warnings as errors, every command that
+    draws writes its files and prints nothing on stderr (where matplotlib logs a missing glyph): plot in both
+    families of fonts (insets with ×1×10⁶ included), the handout, both animations."""
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    # the print style's fonts (STIX) and the default's (DejaVu, as slides'); fig1 at 0.9999999 put ×1×10⁶ in an inset
+    commands = [["plot", "fig1", "fig2", "while_turning", "--style", "print"], ["plot", "fig2", "unequal_masses"]]
+    commands += [["handout", "fig1"], ["animate", "fig2", "--fps", "2", "--seconds", "1", "--format", "png"],
+                 ["animate", "while_turning", "--mode", "boost", "--fps", "2", "--seconds", "1", "--format", "png",
+                  "--style", "print"]]
+    import warnings
+    for k, command in enumerate(commands):
+        out = tmp_path / str(k)
+        out.mkdir()
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            result = CliRunner().invoke(main, [*command, "--v", "0.9999999", "-o", str(out)], catch_exceptions=True)
+        assert result.exit_code == 0 and result.exception is None and result.stderr == "", (command, result.output)
+        assert any(out.iterdir())

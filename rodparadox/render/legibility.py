@@ -250,8 +250,9 @@ def draw_inset(ax, plan: InsetPlan, history: History, fv: FrameView, style: Styl
             artists += inset.plot([e.x / L], [e.t / L], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.impact.label}")
     about = ", ".join(impact_name(label, math_text=True) for label in plan.about)
-    m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁵ on, as the ticks write it
-    factor = f"\N{MULTIPLICATION SIGN}{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3)}"
+    m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁶ on, 2.5×10⁶ as the ticks write it
+    # in mathtext, as the impacts' names are: mathtext's fonts lack the superscript digits plain text would use
+    factor = f"$\\times{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3, math_text=True)}$"
     pad = 3.0
     # the note inside the inset: without the impacts' names if they make it too wide, in smaller type if need be
     for text in ([factor + f" at {about}"] if about else []) + [factor]:
