@@ -246,7 +246,7 @@ def test_material_lines_are_thinned_to_1_mm_apart_and_the_legend_says_how_many()
     for letter, n in drawn.items():
         if n < asked:
             assert (f"{n} in ({letter})" if n else f"none in ({letter})") in entry
-    assert f"of {asked}" in entry
+    assert entry.startswith(f"material points inside the rod ({asked}; ") and entry.endswith("to stay 1 mm apart)")
 
 
 def test_material_lines_that_fit_are_all_drawn():

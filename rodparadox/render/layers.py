@@ -158,7 +158,7 @@ class Clocks(Layer):
 
     def legend_entry(self, style, history, options, clock_step=None):
         step = clock_step / history.scenario.L
-        return Line2D([], [], **clock_marker(style, style.rod)), f"proper time: a tick every {shown(step, 4)} L"
+        return Line2D([], [], **clock_marker(style, style.rod)), f"proper time: a tick every {shown(step, 4)} $L$"
 
 
 @dataclass(frozen=True)
@@ -365,8 +365,8 @@ class Hyperbolae(Layer):
         return out
 
     def legend_entry(self, style, history, options, clock_step=None):
-        return line_handle(style.hyperbola), ("calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} "
-                                              "x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}")
+        # the variables in math italics (mathtext), the words upright
+        return line_handle(style.hyperbola), r"calibration hyperbolae $t^2 - x^2 = \pm k^2$"
 
 
 def _branch_in_box(k: float, side: int, along: tuple[float, float], across: tuple[float, float]) -> list[tuple[float, float]]:

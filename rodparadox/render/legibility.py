@@ -87,7 +87,7 @@ def material_lines_text(asked: int, drawn: dict[str, int]) -> str:
     fewer = [f"{n} in ({letter})" if n else f"none in ({letter})" for letter, n in sorted(drawn.items()) if n < asked]
     if not fewer:
         return "material points inside the rod"
-    return f"material points inside the rod: {', '.join(fewer)} of {asked}, 1 mm apart"
+    return f"material points inside the rod ({asked}; {', '.join(fewer)} to stay 1 mm apart)"
 
 
 # --- the inset ------------------------------------------------------------------------------------------------
