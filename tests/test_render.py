@@ -230,7 +230,7 @@ def test_every_kind_of_line_has_a_look_of_its_own_and_print_tells_them_apart_by_
         patterns = [str(ink.dashes) for name, ink in inks.items()]
         solid = [ink.width for ink in inks.values() if ink.dashes == "solid"]
         assert len(set(patterns)) == len(patterns) - (len(solid) - 1)
-        assert min(solid) * 2.5 <= max(solid)
+        assert len(solid) == 1 or min(solid) * 2.5 <= max(solid)  # the hyperbolae are dashed now: the rod alone
 
 
 def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_and_v():
