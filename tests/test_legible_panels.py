@@ -282,3 +282,16 @@ def test_plot_handout_and_animate_at_0_9999999_warn_of_nothing(tmp_path, caplog)
         # matplotlib logs a missing glyph (to stderr in a shell; under pytest, to its log capture)
         assert [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING] == [], command
         assert any(out.iterdir())
+
+
+def test_plot_equal_scales_names_its_file_and_draws_one_scale(tmp_path):
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    result = CliRunner().invoke(main, ["plot", "while_turning", "--v", "0.97", "--equal-scales", "-o", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert result.output.strip() == str(tmp_path / "while_turning_v0.97_samescale.svg")
+    # the option reaches the drawing (its one scale is checked on the Options above)
+    svg = (tmp_path / "while_turning_v0.97_samescale.svg").read_text()
+    assert 'id="a-axes"' in svg and 'id="b-axes"' in svg
