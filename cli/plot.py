@@ -15,7 +15,7 @@ from .common import (Whole, before_matplotlib, format_option, frame_option, outp
                      reports_errors, run_scenario, scenario_options, style_option)
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
-           ("rod_now", "now"), ("proper_time", "clocks"))
+           ("rod_now", "now"), ("proper_time", "clocks"), ("equal_scales", "samescale"))
 
 
 @click.command()
@@ -38,12 +38,14 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
                                                "its pivot, and lines between turns.")
 @click.option("--proper-time", is_flag=True, help="Draw clock ticks of equal proper time along every particle and "
                                                    "rod end.")
+@click.option("--equal-scales", is_flag=True, help="Draw every panel to one scale (the same length of L on the page), "
+                                                    "not each filling its panel.")
 @quiet_option
 @click.option("--verbose", is_flag=True, hidden=True, help="Accepted and ignored: every path is printed anyway.")
 @reports_errors
 def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, fmt: str | None,
          output: str | None, style: str, other_axes: bool, light_cones: bool, hyperbolae: bool, grid: bool,
-         rod_lines: int, rod_now: bool, proper_time: bool, quiet: bool, verbose: bool) -> None:
+         rod_lines: int, rod_now: bool, proper_time: bool, equal_scales: bool, quiet: bool, verbose: bool) -> None:
     """Draw Minkowski diagrams of each SCENARIO: both frames side by side (the paper's Figs. 1 and 2).
 
     Writes OUTPUT/NAME.FORMAT, NAME being the scenario's name followed by every
@@ -57,7 +59,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from sears_paradox_cli import planning as planned
 
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
-              "rod_now": rod_now, "proper_time": proper_time}
+              "rod_now": rod_now, "proper_time": proper_time, "equal_scales": equal_scales}
     described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)

@@ -20,7 +20,7 @@ def history(name="fig2", v=0.6):
     return run(load(name).with_overrides(v=v, L=None))
 
 
-@pytest.mark.parametrize("v", [0.01, 0.3, 0.6, 0.9, 0.95, 0.97, 0.99])
+@pytest.mark.parametrize("v", [0.01, 0.3, 0.6, 0.9, 0.95, 0.97, 0.99, 0.9999999])  # issue 15.14: 0.9999999
 @pytest.mark.parametrize("name", ["fig2", "while_turning", "unequal_masses"])
 def test_colour_bar_tick_labels_never_overlap(name, v):
     h = history(name, v)

@@ -230,7 +230,7 @@ def test_every_kind_of_line_has_a_look_of_its_own_and_print_tells_them_apart_by_
         patterns = [str(ink.dashes) for name, ink in inks.items()]
         solid = [ink.width for ink in inks.values() if ink.dashes == "solid"]
         assert len(set(patterns)) == len(patterns) - (len(solid) - 1)
-        assert min(solid) * 2.5 <= max(solid)
+        assert len(solid) == 1 or min(solid) * 2.5 <= max(solid)  # the hyperbolae are dashed now: the rod alone
 
 
 def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_and_v():
@@ -535,7 +535,8 @@ def any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(fig, style, r
 def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits_the_page(name, v, style):
     """The three grids above, each figure drawn and rendered once for every check of every grid that draws it (the
     grids share S and S' at 0.6 and 0.95, and two and four panels): per preset, v and style,
-    - at v in SPEEDS, on S and S': labels never touch lines, markers or each other, and nothing leaves the figure;
+    - at v in SPEEDS and LABEL_SPEEDS, on S and S': labels never touch lines, markers or each other, and nothing
+      leaves the figure;
     - at v in LABEL_SPEEDS, on S and S' and on S, S', 0.3, 0.9: every impact label sits by its marker or is tied to it;
     - for PANEL_CASES, on 1 to 8 panels (LAYOUT_FRAMES): the panels fit the style's page and no text overlaps."""
     try:
@@ -553,7 +554,7 @@ def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits
             figures[specs] = (fig, _renderer(fig, style))
         return figures[specs]
 
-    if v in SPEEDS:
+    if v in SPEEDS or v in LABEL_SPEEDS:  # issue 15.14: A and B overprinted at v = 0.9999999
         fig, renderer = drawn(("rest", "moving"))
         labels_never_touch_lines_markers_or_each_other_and_nothing_leaves_the_figure(fig, style, renderer)
     if v in LABEL_SPEEDS:

@@ -81,7 +81,8 @@ class NowScene:
         st = STYLES[style]
         self.history, self.timeline, self.L = history, timeline, history.scenario.L
         L = self.L
-        figure = render.draw(history, timeline.frames, style).figure
+        # no inset: the strips' lens magnifies the rod, and an inset would not follow the now-line
+        figure = render.draw(history, timeline.frames, style, render.Options(insets=False)).figure
         width, height = figure.get_size_inches()
         panels = [ax for ax in figure.axes if (ax.get_gid() or "").endswith("-axes")]
         rows = sorted({round(ax.get_position().y0, 6) for ax in panels}, reverse=True)

@@ -22,7 +22,8 @@ from rodparadox.physics.engine import History
 from rodparadox.physics.frames import PANEL_LETTERS, Frame
 from rodparadox.render.styles import FORMATS, STYLES, Style
 from rodparadox.render.layers import Options, legend_entries
-from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of, tick_step
+from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, one_scale, panel_of, tick_step
+from rodparadox.render.legibility import material_lines_that_fit
 from rodparadox.render.panel import draw_panel
 from rodparadox.tolerances import FIT_SLACK
 
@@ -157,12 +158,27 @@ class _Builder:
         self.history, self.style, self.options = history, style, options
         self.fs = font_sizes(style)
         self.panels: list[Panel] = [panel_of(history, letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
+        if options.equal_scales:
+            one_scale(self.panels)
         # one clock step for every panel (proper time is the same in every frame), from the longest time span
         self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
         self.legend = legend_entries(style, history, options, self.clock_step)
+        self.rod_lines = {p.letter: options.rod_lines for p in self.panels}  # material lines drawn in each panel
 
     def lay_out(self, page: Page) -> Layout:
-        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled)
+        """The layout; with material lines, laid out again while the legend's count of them changes: the count
+        follows each panel's width, and only falls, so this ends."""
+        while True:
+            layout = lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled)
+            if not self.options.rod_lines:
+                return layout
+            fits = {p.letter: min(self.rod_lines[p.letter], material_lines_that_fit(
+                self.history, p.view, p.worldlines, p.width / (p.box[1] - p.box[0]), self.options.rod_lines))
+                for p in self.panels}
+            if fits == self.rod_lines:
+                return layout
+            self.rod_lines = fits
+            self.legend = legend_entries(self.style, self.history, self.options, self.clock_step, fits)
 
     def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
         """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""
@@ -180,7 +196,8 @@ class _Builder:
                                       p.height / height))
                 x += p.width + m.gap
                 ax.set_gid(f"{p.letter}-axes")
-                drawn = draw_panel(ax, p, step, m, self.history, self.style, self.options, self.clock_step)
+                drawn = draw_panel(ax, p, step, m, self.history, self.style, self.options, self.clock_step,
+                                   self.rod_lines[p.letter])
                 for name, layer_artists in drawn.items():
                     artists.setdefault(name, {})[p.letter] = layer_artists
                 infos.append(PanelInfo(p.view.frame, p.letter, tuple(p.data_box), tuple(p.box), ax))

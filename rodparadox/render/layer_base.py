@@ -16,7 +16,8 @@ from rodparadox.render.styles import Ink, Style
 
 
 class Options(NamedTuple):
-    """The teacher's extras, all off by default because they crowd a printed figure."""
+    """The teacher's extras, all off by default because they crowd a printed figure; and what keeps a fast
+    scenario legible (`insets`, on by default; `equal_scales`)."""
 
     other_axes: bool = False  # the other frame's x and t axes, tilted
     light_cones: bool = False  # the light cone of every impact
@@ -26,6 +27,8 @@ class Options(NamedTuple):
     rod_lines: int = 0  # this many interior material world-lines of the rod
     rod_now: bool = False  # the rod's own lines of simultaneity: each turn's fan, and lines between turns
     proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end
+    equal_scales: bool = False  # every panel drawn to one scale (points per L), not each filling its panel
+    insets: bool = True  # a magnified inset where the world-sheet is drawn thinner than a few millimetres
 
 
 # --- ink: how the style says a line or a marker is drawn, in one place ---------------------------------------
@@ -77,6 +80,7 @@ class PanelContext:
     box: tuple[float, float, float, float]  # the axes' limits x0, x1, t0, t1, units of L
     steps: tuple[float, float]  # the x and t tick steps, units of L
     clock_step: float  # proper time between two clock ticks, same units as L
+    rod_lines: int | None = None  # material lines drawn here (fewer than asked where they would crowd); None: asked
 
     @property
     def L(self) -> float:

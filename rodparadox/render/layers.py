@@ -32,6 +32,7 @@ from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
+from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
 
@@ -83,7 +84,8 @@ class MaterialLines(Layer):
 
     def draw(self, ax, panel):
         t_lo, t_hi = panel.view.t_range
-        lines = rod.material_lines(panel.history, panel.view.frame.rapidity, panel.options.rod_lines, t_lo, t_hi,
+        count = panel.options.rod_lines if panel.rod_lines is None else panel.rod_lines
+        lines = rod.material_lines(panel.history, panel.view.frame.rapidity, count, t_lo, t_hi,
                                    sampling_tolerance(panel.history))
         drawn, points_drawn = [], []
         for k, (_sigma, points) in enumerate(lines, start=1):
@@ -93,7 +95,7 @@ class MaterialLines(Layer):
         return LayerArtists(artists=tuple(drawn), guides=tuple(points_drawn))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        return line_handle(style.rod_interior), "material points inside the rod"
+        return line_handle(style.rod_interior), material_lines_text(options.rod_lines, {})
 
 
 @dataclass(frozen=True)
@@ -156,7 +158,7 @@ class Clocks(Layer):
 
     def legend_entry(self, style, history, options, clock_step=None):
         step = clock_step / history.scenario.L
-        return Line2D([], [], **clock_marker(style, style.rod)), f"proper time: a tick every {shown(step, 4)} L"
+        return Line2D([], [], **clock_marker(style, style.rod)), f"proper time: a tick every {shown(step, 4)} $L$"
 
 
 @dataclass(frozen=True)
@@ -363,8 +365,8 @@ class Hyperbolae(Layer):
         return out
 
     def legend_entry(self, style, history, options, clock_step=None):
-        return line_handle(style.hyperbola), ("calibration hyperbolae t\N{SUPERSCRIPT TWO} \N{MINUS SIGN} "
-                                              "x\N{SUPERSCRIPT TWO} = \N{PLUS-MINUS SIGN}k\N{SUPERSCRIPT TWO}")
+        # the variables in math italics (mathtext), the words upright
+        return line_handle(style.hyperbola), r"calibration hyperbolae $t^2 - x^2 = \pm k^2$"
 
 
 def _branch_in_box(k: float, side: int, along: tuple[float, float], across: tuple[float, float]) -> list[tuple[float, float]]:
@@ -425,9 +427,15 @@ LEGEND: tuple[Layer, ...] = (_ROD, _A, _B, _IMPACTS, _REST, _MOVING, _OTHER_AXES
 assert set(LEGEND) <= set(LAYERS)
 
 
-def legend_entries(style: Style, history: History, options: Options, clock_step: float) -> tuple[list, list[str]]:
+def legend_entries(style: Style, history: History, options: Options, clock_step: float,
+                   rod_lines: dict[str, int] | None = None) -> tuple[list, list[str]]:
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
-    time between clock ticks, chosen by the diagram from its panels' time spans)."""
+    time between clock ticks, chosen by the diagram from its panels' time spans; `rod_lines`: the material lines
+    drawn in each panel, when fewer than asked)."""
     entries = [layer.legend_entry(style, history, options, clock_step) for layer in LEGEND if layer.enabled(options)]
+    if rod_lines and options.rod_lines:
+        thinned = material_lines_text(options.rod_lines, rod_lines)
+        entries = [(entry[0], thinned) if layer is _ROD_LINES else entry
+                   for layer, entry in zip((layer for layer in LEGEND if layer.enabled(options)), entries)]
     entries = [entry for entry in entries if entry is not None]
     return [handle for handle, _ in entries], [text for _, text in entries]

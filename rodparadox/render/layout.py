@@ -60,6 +60,18 @@ def panel_of(history: History, letter: str, frame: Frame) -> Panel:
     return Panel(letter, fv, worldlines, box, panel_title(letter, fv))
 
 
+def one_scale(panels: list[Panel]) -> None:
+    """Options.equal_scales: pad every panel's data box (both sides equally) to the widest width and the tallest
+    height among them, so that panels of one height draw one length of L as one length on the page."""
+    width = max(p.data_box[1] - p.data_box[0] for p in panels)
+    height = max(p.data_box[3] - p.data_box[2] for p in panels)
+    for p in panels:
+        x0, x1, t0, t1 = p.data_box
+        dx, dt = (width - (x1 - x0)) / 2, (height - (t1 - t0)) / 2
+        p.data_box = (x0 - dx, x1 + dx, t0 - dt, t1 + dt)
+        p.box = list(p.data_box)
+
+
 def fit_aspect(box: list[float], low: float, high: float) -> None:
     """Pad the box with empty space (both sides equally) until low <= width/height <= high."""
     w, h = box[1] - box[0], box[3] - box[2]

@@ -9,15 +9,21 @@ from rodparadox.render.styles import Style
 from rodparadox.render.labels import Area, place
 from rodparadox.render.layers import LAYERS, Options, PanelContext, widest_line
 from rodparadox.render.layout import Metrics, Panel
+from rodparadox.render.legibility import draw_inset, inset_plan, label_boxes, material_lines_that_fit
 from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
 
 
 def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: History, style: Style,
-               options: Options, clock_step: float) -> dict[str, tuple]:
-    """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name."""
+               options: Options, clock_step: float, rod_lines: int | None = None) -> dict[str, tuple]:
+    """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name,
+    and the magnified inset's (`inset`) when the world-sheet is thin on the page (`legibility.inset_plan`).
+    `rod_lines`: the material lines to draw (the diagram thins them to what the panel holds); None: as asked."""
     _axes(ax, p, steps, m)
+    if rod_lines is None and options.rod_lines:
+        rod_lines = material_lines_that_fit(history, p.view, p.worldlines, p.width / (p.box[1] - p.box[0]),
+                                            options.rod_lines)
     panel = PanelContext(history, style, options, m.fs, p.letter, p.view, p.worldlines, tuple(p.box), steps,
-                         clock_step)
+                         clock_step, rod_lines)
     drawn: dict[str, list] = {}
     obstacles, guides, labels = [], [], []
     for layer in LAYERS:
@@ -33,6 +39,17 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
                    widest_line(style), m.fs["impact"], style.font_size)
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
+    if options.insets:
+        scale = p.width / (p.box[1] - p.box[0])  # points per L
+        keep_clear = label_boxes(ax, p.box, scale, 2.0)
+        keep_clear += [((e.x / history.scenario.L - p.box[0]) * scale - style.impact_size,
+                        (e.t / history.scenario.L - p.box[2]) * scale - style.impact_size,
+                        (e.x / history.scenario.L - p.box[0]) * scale + style.impact_size,
+                        (e.t / history.scenario.L - p.box[2]) * scale + style.impact_size) for e in p.view.events]
+        plan = inset_plan(p.view, history.scenario.L, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles)
+        if plan is not None:
+            drawn["inset"] = list(draw_inset(ax, plan, history, p.view, style, p.letter, m.fs["tick"], p.width,
+                                             p.height))
     return {name: tuple(artists) for name, artists in drawn.items()}
 
 

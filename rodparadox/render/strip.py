@@ -127,7 +127,10 @@ def colour_bar_ticks(scale: ColourScale, width: float, size: float) -> tuple[lis
     lo, hi = scale.ends
     wanted = [lo, hi] + ([scale.centre] if lo < scale.centre < hi else [])  # ends first: they are kept first
     # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
-    label = {x: shown(0.0 if abs(x) <= STEP_ROUNDING * max(abs(lo), abs(hi)) else x, 3) for x in wanted}
+    for digits in range(3, 18):  # more digits until no two ticks read alike (0.9999999 and 0.99999994 near c)
+        label = {x: shown(0.0 if abs(x) <= STEP_ROUNDING * max(abs(lo), abs(hi)) else x, digits) for x in wanted}
+        if len(set(label.values())) == len(wanted):
+            break
     a, b = math.atanh(lo), math.atanh(hi)
     place = {x: (0.5 if b == a else (math.atanh(x) - a) / (b - a)) * width for x in wanted}
     half = {x: approximate_size(label[x], size)[0] / 2 for x in wanted}

@@ -32,6 +32,11 @@ CONE_SHORT_DASH = (0, (2.0, 2.0))
 #: the rod's own lines of simultaneity (Options.rod_now): long dashes, so that in grey they are not taken for the
 #: material lines (thin, solid) they cross
 ROD_NOW_DASH = (0, (16.0, 4.0))
+#: calibration hyperbolae: thin long dashes, so that in grey they are not taken for the material lines (thin, solid)
+HYPERBOLA_DASH = (0, (6.0, 2.0))
+#: particle B is long-and-short dashed in every style (not dash-dotted: that is S′'s simultaneity), so that a legend
+#: read in grey (a photocopy, the print style) tells A from B without colour
+B_DASH = (0, (8.0, 2.0, 3.0, 2.0))
 #: the ledger figure's particle B in print, where both particles are black and no label names the curves
 LEDGER_DASHDOT = (0, (6.0, 1.8, 1.5, 1.8))
 
@@ -104,7 +109,7 @@ _COMMON_RC = {
 _SANS = {"font.family": ("DejaVu Sans",), "mathtext.fontset": "dejavusans"}
 _SERIF = {"font.family": ("STIXGeneral", "DejaVu Serif"), "mathtext.fontset": "stix"}  # DejaVu: the glyphs STIX lacks (italic prime)
 
-_DEFAULT_PARTICLES = {"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, PARTICLE_DASH)}
+_DEFAULT_PARTICLES = {"A": Ink(_VERMILLION, 1.3, PARTICLE_DASH), "B": Ink(_GREEN, 1.3, B_DASH)}
 _DEFAULT = Style(
     name="default",
     about="colour (Okabe-Ito, colour-blind safe), sans-serif, 7 in wide: for the screen and colour print",
@@ -116,7 +121,7 @@ _DEFAULT = Style(
     moving_simultaneity=Ink(_PURPLE, 1.1, MOVING_DASHDOT),
     other_axes=Ink(_GREY, 0.9, AXES_DASHDOTDOT),
     light_cone=Ink(_SKY, 0.9, CONE_SHORT_DASH),
-    hyperbola=Ink("#9a9a9a", 0.6),
+    hyperbola=Ink("#9a9a9a", 0.6, HYPERBOLA_DASH),
     grid=Ink("#e3e3e3", 0.5),
     rod_interior=Ink(_BLUE, 0.55),
     rod_now=Ink("#3d3d3d", 0.75, ROD_NOW_DASH),
@@ -129,10 +134,7 @@ _DEFAULT = Style(
     handout_body_size=9.5,
     rc=_frozen({**_COMMON_RC, **_SANS}),
 )
-#: in print both particles are black: B is long-and-short dashed (not dash-dotted: that is S′'s simultaneity), so
-#: the legend tells A from B without colour
-PRINT_B_DASH = (0, (8.0, 2.0, 3.0, 2.0))
-_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, PRINT_B_DASH)}
+_PRINT_PARTICLES = {"A": Ink("#000000", 1.0, PARTICLE_DASH), "B": Ink("#000000", 1.0, B_DASH)}
 _PRINT = Style(
     name="print",
     about="black and grey only, serif (STIX): every element told apart by its line style; for journals",
@@ -144,7 +146,7 @@ _PRINT = Style(
     moving_simultaneity=Ink("#000000", 0.7, MOVING_DASHDOT),
     other_axes=Ink("#555555", 0.7, AXES_DASHDOTDOT),
     light_cone=Ink("#555555", 0.6, CONE_SHORT_DASH),
-    hyperbola=Ink("#8c8c8c", 0.45),
+    hyperbola=Ink("#8c8c8c", 0.45, HYPERBOLA_DASH),
     grid=Ink("#e6e6e6", 0.4),
     rod_interior=Ink("#9a9a9a", 0.4),  # grey, behind: the rod's own lines of simultaneity are the black ones
     rod_now=Ink("#000000", 0.55, ROD_NOW_DASH),

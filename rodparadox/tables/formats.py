@@ -238,6 +238,14 @@ def _fraction_cell(cell: Cell, align: str) -> str:
     return r"{\footnotesize(" + latex_text(m["fraction"]) + ")}" if m and m["fraction"] else ""
 
 
+#: after the tabular (kept in a macro): set it in a box; if it is wider than the line, set it again in footnote
+#: size with half the column gap; if still wider, scale it to the line (with graphicx's \resizebox, when loaded)
+FIT_TO_LINE = (r"\setbox0=\hbox{\rodparadoxtable}%",
+               r"\ifdim\wd0>\linewidth\footnotesize\setlength{\tabcolsep}{3pt}\setbox0=\hbox{\rodparadoxtable}\fi",
+               r"\ifdim\wd0>\linewidth\ifdefined\resizebox\setbox0=\hbox{\resizebox{\linewidth}{!}{\box0}}\fi\fi",
+               r"\leavevmode\box0")
+
+
 def to_latex(table: Table) -> str:
     """The table as a LaTeX fragment to `\\input` into a document that loads booktabs and siunitx.
 
@@ -245,10 +253,11 @@ def to_latex(table: Table) -> str:
     their widest number, each number printed as given (explicit plus, every digit); a number's exact fraction
     (`+1.416667 (17/12)`) is set in small type on a line of its own under the number, so that a column is as
     wide as its numbers and the events table fits a page; a blank cell is a rule of fixed width in a row tall enough
-    to write in (BLANK_RULE); the notes follow the tabular as small paragraphs.
+    to write in (BLANK_RULE); the notes follow the tabular as small paragraphs. A tabular wider than the line
+    (masses of 1e-6 and 1e6 make a ledger's numbers twelve digits long) is set again smaller (FIT_TO_LINE).
     """
     lines = [f"% {' '.join(table.caption.split())}", f"% table {table.name}: booktabs and siunitx",
-             rf"\begingroup\sisetup{{{SIUNITX_OPTIONS}}}%"]
+             rf"\begingroup\sisetup{{{SIUNITX_OPTIONS}}}%", r"\def\rodparadoxtable{%"]
     lines += [r"\begin{tabular}{" + " ".join(_column_spec(table, k) for k in range(len(table.align))) + "}",
               r"\toprule",
               " & ".join(_latex_header(h, a) for h, a in zip(table.header, table.align)) + r" \\",
@@ -260,7 +269,7 @@ def to_latex(table: Table) -> str:
             lines += [cells + rf" \\[{FRACTION_LINE_SKIP}]", " & ".join(fractions) + r" \\"]
         else:
             lines.append(cells + r" \\")
-    lines += [r"\bottomrule", r"\end{tabular}", r"\endgroup"]
+    lines += [r"\bottomrule", r"\end{tabular}}%", *FIT_TO_LINE, r"\endgroup"]
     for k, note in enumerate(table.notes):
         space = r"\par\smallskip" if k == 0 else r"\par"
         lines.append(space + r"\noindent{\footnotesize " + latex_text(note) + r"\par}")
