@@ -28,14 +28,15 @@ the paper's appendix, which misprints the sign).
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Sequence
 
-from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
+from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
 from rodparadox.handout.words import time_name, with_primes
 from rodparadox.handout.worksheet import questions
-from rodparadox.numbers import exact
+from rodparadox.numbers import exact, impact_name
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
@@ -70,6 +71,18 @@ def heading(history: History, with_speed: bool = False) -> str:
     return f"{text}, at {_speed(history)}" if with_speed else text
 
 
+def neutral_heading(history: History, with_speed: bool = False) -> str:
+    """A worksheet's heading: who strikes the rod, never what follows (a preset's title may say "simultaneous in
+    the moving frame", which a worksheet asks)."""
+    particles = history.scenario.particles
+    if len(particles) == 1:
+        text = f"One particle, {particles[0].name}, strikes a rod"
+    else:
+        masses = "equal" if len({p.mass for p in particles}) == 1 else "unequal"
+        text = f"{len(particles)} particles of {masses} mass strike a rod".replace("2 particles", "Two particles")
+    return f"{text}, at {_speed(history)}" if with_speed else text
+
+
 # --- the first section: the paradox and its resolution -----------------------------------------------------------
 
 #: the paper this tool implements, as its own text gives it (title, author, affiliation; the copy carries no journal
@@ -98,6 +111,20 @@ IDEALISATION = (
     "slower. The rigid rod is the limit the paper uses to make the paradox sharp.")
 
 
+WORKSHEET_PARADOX = (
+    "F. W. Sears proposed a paradox about forces on a rigid body in special relativity. A rigid rod at rest in a "
+    "frame S is struck at its two ends by equal and opposite impulses, and stays at rest in S. What happens in a "
+    "frame S′ moving at −v relative to S, where the rod moves at +v? Work it out for each scenario below, from the "
+    "diagram, the Lorentz transformation and the rod’s own lines of simultaneity; the answer key gives the "
+    f"resolution of {FRANKLIN}.")
+
+
+def worksheet_introduction() -> Section:
+    """A worksheet's first section: the paradox as a question; the whole introduction opens the answer key (its
+    resolution tells what the questions ask: the impulses act at different instants of S′)."""
+    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
+
+
 def introduction() -> Section:
     """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation."""
     return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
@@ -109,6 +136,28 @@ def introduction() -> Section:
 def _table_unit(L: float) -> str:
     """How the tables give x and t: in units of L, or, for L other than 1, in the unit L is given in."""
     return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
+
+
+def _in_rods_order(history: History, table: Table) -> Table:
+    """A worksheet's events table: its rows in the rod's own order, without notes (the frame's order, and which
+    impacts the rod takes together, are what the questions ask)."""
+    order = {impact_name(i.label): k for k, i in enumerate(history.impacts)}
+    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(),
+                   rows=tuple(sorted(table.rows, key=lambda row: order[row[0].text])))
+
+
+def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list[Block]]:
+    """A worksheet's blank events table of the frame, and the filled tables its answer key prints (`_tables`): the
+    ledger and hidden tables wait for the key, since a ledger's row of one instant ("B₁ and A₁") tells which impacts
+    are simultaneous in the frame, and its slices' times tell when the impacts come."""
+    symbol, time = frame_name(frame), time_name(frame)
+    x = coordinates(frame)[0]
+    asked: list[Block] = [
+        Paragraph(f"The impacts in {symbol}, in the rod's own order: fill in where and when each strikes ({x} and "
+                  f"{time} {_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and "
+                  f"of the rod just before and just after it."),
+        _in_rods_order(history, tables.events_table(history, frame, blank=True))]
+    return asked, _tables(history, frame, blank=False)
 
 
 def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
@@ -150,8 +199,10 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
     key; the tables are left blank."""
     caption = diagram_caption(history, frames, tell=not worksheet)
-    blocks: list[Block] = [Heading(heading(history, with_speed)), Paragraph(setup_text(history)),
-                           DiagramBlock(f"{stem}_diagram", history, frames, caption)]
+    diagram = DiagramBlock(f"{stem}_diagram", history, frames, caption, tell=not worksheet)
+    title = neutral_heading if worksheet else heading
+    blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet)),
+                           diagram]
     told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames),
                          Heading("The rod at successive instants", 2)]
     for f in frames:
@@ -160,16 +211,23 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     if not worksheet:
         blocks += told
     blocks.append(Heading("The numbers", 2))
+    filled: list[Block] = []
     for f in frames:
-        blocks += _tables(history, f, worksheet)
-    section_title = heading(history, with_speed=True)
+        if worksheet:
+            asked_tables, key_tables = _worksheet_tables(history, f)
+            blocks += asked_tables
+            filled += key_tables
+        else:
+            blocks += _tables(history, f, blank=False)
+    section_title = title(history, with_speed=True)
     key: list[Block] = []
     if worksheet:
         asked = questions(history, frames, compare_v, chosen)
         blocks.append(Heading("Questions", 2))
         blocks += asked
-        key.append(Heading(section_title, 2))
-        key += [b.filled() for b in blocks if hasattr(b, "filled")]
+        # the key: the scenario's own title and set-up (which may say what the questions asked), the numbers
+        key += [Heading(heading(history, with_speed=True), 2), Paragraph(setup_text(history)),
+                Heading("The numbers", 2), *filled, Heading("Questions and answers", 2)]
         key += asked
         key += told
     return Section(stem, section_title, tuple(blocks)), key
@@ -190,12 +248,14 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
         else:
             shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append((stem, history, shown_frames))
-    sections, key = [introduction()], []
+    sections, key = [worksheet_introduction() if worksheet else introduction()], []
     several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
         section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
         sections.append(section)
         key += answers
-    answer_key = (Heading("Answer key"), *key) if worksheet else ()
+    resolution = introduction().blocks[1:]  # the paradox, its resolution and the idealisation
+    answer_key = (Heading("Answer key"), Heading("The paradox and its resolution", 2), *resolution, *key) \
+        if worksheet else ()
     return Handout(title([(stem, history) for stem, history, _ in entries]), tuple(sections), worksheet,
                    tuple(answer_key))

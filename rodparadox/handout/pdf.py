@@ -364,7 +364,7 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
         _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
-            render.draw_into(target, block.history, block.frames, style.name, untitled)
+            block.retitle(render.draw_into(target, block.history, block.frames, style.name, untitled))
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         height = min(room, render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS)[1])

@@ -232,7 +232,11 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
     from rodparadox import render
 
     if isinstance(block, DiagramBlock):
-        figure = render.draw(block.history, block.frames, style).figure
+        # a worksheet's diagram without the scenario's title (a preset's may say what it asks) or the panels' velocities
+        options = render.Options() if block.tell else render.Options(titled=False)
+        diagram = render.draw(block.history, block.frames, style, options)
+        block.retitle(diagram)
+        figure = diagram.figure
     else:
         from matplotlib.figure import Figure
 
