@@ -37,6 +37,8 @@ from rodparadox.tables.formats import latex_text, to_latex
 MARGIN_MM = 20.0
 #: LaTeX's name for each paper size of `document.PAPERS`
 _LATEX_PAPER = {"a4": "a4paper", "letter": "letterpaper"}
+#: the comment line before a worksheet's answer key in handout.tex: what precedes it is what the student sees
+ANSWER_KEY_MARK = "% the answer key"
 #: ruled lines a worksheet leaves under each question for the student's answer
 ANSWER_LINES = 5
 #: a strip block's height: room for the time axis and the colour bar, plus one row per instant (inches)
@@ -211,7 +213,7 @@ def handout_tex(handout: Handout, placed: list[_Placed], paper: str) -> str:
     key_started = False
     for p in placed:
         if p.in_answer_key and not key_started:
-            parts += [r"\clearpage", ""]
+            parts += [ANSWER_KEY_MARK, r"\clearpage", ""]
             key_started = True
         parts.append(_block(p, handout.worksheet))
     parts += [r"\end{document}", ""]
@@ -329,6 +331,16 @@ def readme(handout: Handout) -> str:
 # --- the folder ----------------------------------------------------------------------------------------------
 
 
+def tex_sources(handout: Handout, paper: str = "a4", placed: list[_Placed] | None = None) -> dict[str, str]:
+    """The folder's LaTeX text, without drawing a figure: handout.tex and each table's NAME.tex."""
+    placed = _place(handout) if placed is None else placed
+    text = {"handout.tex": handout_tex(handout, placed, paper)}
+    for p in placed:
+        if isinstance(p.block, Table):
+            text.setdefault(f"{p.stem}.tex", to_latex(p.block))
+    return text
+
+
 def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict[str, bytes]:
     """The folder of a handout for authors: relative file name -> bytes (module docstring), sorted by name.
 
@@ -339,13 +351,11 @@ def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict
     if style not in STYLES:
         raise ValueError(f"unknown style {style!r}; use one of {', '.join(STYLES)}.")
     placed = _place(handout)
-    text = {"handout.tex": handout_tex(handout, placed, paper)}
+    text = tex_sources(handout, paper, placed)
     figures = {}
     for p in placed:
-        name = f"{p.stem}.tex" if isinstance(p.block, Table) else f"{p.stem}.pdf"
-        if isinstance(p.block, Table):
-            text.setdefault(name, to_latex(p.block))
-        elif isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
+        name = f"{p.stem}.pdf"
+        if isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
             figures[name] = figure_pdf(p.block, paper, style)
     text.update(data_files(handout))
     text["README.txt"] = readme(handout)

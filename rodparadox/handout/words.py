@@ -111,7 +111,7 @@ def number_forms(x: float) -> tuple[str, ...]:
     −0.8824 are both found. A round number (x to two significant digits: 0, 0.6, 1.2, 0.25) has none: it is also
     what the set-up gives (v = 0.6, 0.5 L), so finding it would tell nothing."""
     x = abs(x + 0.0)
-    if x == 0.0 or float(f"{x:.2g}") == x or not 1e-3 <= x < 1e6:
+    if abs(float(f"{x:.2g}") - x) <= 1e-12 * max(1.0, x) or not 1e-3 <= x < 1e6:
         return ()
     forms = {fraction_text(x)} | {shown(x, d) for d in PRINTED_DIGITS} | {f"{x:.{d}f}" for d in PRINTED_DIGITS}
     return tuple(sorted(f for f in forms if f and ("/" in f or len(f.replace(".", "").lstrip("0")) >= 3)))

@@ -79,7 +79,8 @@ def question_read(r: Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> As
     """Read an impact's coordinates off two panels, checked by the interval t² − x², the same in every frame."""
     h = r.history
     i = next((i for i in reversed(h.impacts) if i not in avoid), h.impacts[-1])
-    panels = [f for f in (a, b) if f in r.frames] or list(r.frames[:1])
+    # an impact the Lorentz question gives in frame a is read in frame b alone
+    panels = [f for f in ((b,) if i in avoid else (a, b)) if f in r.frames] or list(r.frames[:1])
     lines, checks, asks = [], [], []
     for f in panels:
         x, t = r.length(r.x(i, f)), r.length(r.t(i, f))
@@ -206,10 +207,11 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
     labels = [i.label for i in h.impacts[:2]]
     names = [impact_name(label) for label in labels]
 
-    asks: list[Fact] = []
+    asks: list[Fact] = []  # what the run at v2 finds (at v the other questions ask it, or the set-up gives it)
 
     def facts(history: History) -> str:
         at = f"at v = {exact(history.scenario.v)}"
+        told = len(asks)
         reading = Reading(history, tuple(moving_frame(history.scenario.v) if f.name == "moving" else f
                                           for f in (a, b)))
         found = {i.label: i for i in history.impacts}
@@ -218,7 +220,9 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
             p, q = found[labels[0]], found[labels[1]]
             for f in reading.frames:
                 gap = reading.length(reading.t(q, f) - reading.t(p, f))
-                asks.extend(simultaneity_facts(names[0], names[1], frame_name(f), gap == 0.0, abs(gap)))
+                # the intervals at v2 (the phrases "A₁ and B₁" name this worksheet's impacts at v, not v2's)
+                asks.extend(f for f in simultaneity_facts(names[0], names[1], frame_name(f), gap == 0.0, abs(gap))
+                            if f.number)
                 out.append(f"{names[0]} and {names[1]} are simultaneous in {frame_name(f)}" if gap == 0.0 else
                            f"{names[1]} comes {in_l(abs(gap), ANSWER_DIGITS)} {'after' if gap > 0 else 'before'} "
                            f"{names[0]} in {frame_name(f)}")
@@ -235,6 +239,8 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
                     told_number(f"the rod's final velocity in S {at}", final))
         out.append("the rod ends at rest in S" if final == 0.0 else
                    f"the rod ends moving at {in_c(final, ANSWER_DIGITS)} in S")
+        if history is h:
+            del asks[told:]
         return "; ".join(out)
 
     v, v2 = exact(s.v), exact(other.scenario.v)

@@ -103,10 +103,16 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
              "simultaneity: the impulse of the first sits in the stress until the second arrives")
     steps.append(f"It is carried by the stress in the rod: {where}. (The hidden energy on the slice is "
                  f"{numeral_approx(s.hidden.E)} M c².)")
-    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol} ({_between(r, f, t)}), "
-            f"{listed(known)}. Before the first impact the bodies' total momentum in {symbol} was "
-            f"{answer_numeral(total.p)} M c. How much momentum is hidden on this slice, and where is it?")
-    asks = (told_number(f"the hidden momentum on the slice {time} = {in_l(r.length(t))} of {symbol}", hidden),)
+    # where the slice lies among the impacts is the answer's (it tells the order of the impacts in the frame), and
+    # the total is the student's to find (given, it may be a number another question asks: γ v for one particle)
+    steps[:0] = [f"The slice lies {_between(r, f, t)}. Before the first impact the bodies' total momentum in "
+                 f"{symbol}, m u/√(1 − u²) summed over the rod and the particles at their first velocities, is "
+                 f"{answer_numeral(total.p)} M c, and it is conserved."]
+    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol}, {listed(known)}. Find the bodies' "
+            f"total momentum in {symbol} before the first impact, from the set-up. How much momentum is hidden on "
+            f"this slice, and where is it?")
+    asks = (told_number(f"the hidden momentum on the slice {time} = {in_l(r.length(t))} of {symbol}", hidden),
+            told_number(f"the bodies' total momentum in {symbol}", total.p))
     return Asked(text, tuple(steps), asks)
 
 
