@@ -216,7 +216,8 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
         if worksheet:
             asked_tables, key_tables = _worksheet_tables(history, f)
             blocks += asked_tables
-            filled += key_tables
+            # the key's tables named after the section (their LaTeX files fig2_ledger_rest_key.tex, one per scenario)
+            filled += [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b for b in key_tables]
         else:
             blocks += _tables(history, f, blank=False)
     section_title = title(history, with_speed=True)
