@@ -17,6 +17,8 @@ from rodparadox.physics.engine import run
 from rodparadox.physics.frames import paper_frames
 
 SPEEDS = (0.3, 0.6, 0.95)
+#: a number as the text writes it: 5/6, 1.2, −0.75
+NUMBER = r"[+−]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?"
 
 
 def _text(name: str, v: float) -> str:
@@ -100,3 +102,35 @@ def test_claims_about_the_material_hold(name, v):
     for symbol, (lo, hi) in ranges.items():
         if lo > 1e-6 or hi < -1e-6:
             assert not re.search(rf"[Ii]n {re.escape(symbol)} it [^;.]*stops", text), (name, v, symbol)
+
+
+# --- the rigid rod as an idealisation: its far end moves before light from the impact could reach it --------------
+
+@pytest.mark.parametrize("v", SPEEDS)
+@pytest.mark.parametrize("name", builtin_names())
+def test_the_far_end_moves_before_light_from_the_impact_reaches_it(name, v):
+    from rodparadox.handout.build import introduction
+    from rodparadox.numbers import impact_name
+
+    h = run(load(name).with_overrides(v=v))
+    text = introduction([h]).blocks[-1].text
+    found = re.search(rf"(\S+) strikes the rod’s (left|right) end at t = ({NUMBER}) L in S, and the (left|right) end "
+                      rf"starts to move at that same instant of S, while light from \1 reaches it only at t = "
+                      rf"({NUMBER}) L\.", text)
+    if not any(t.rapidity_from == 0.0 for t in h.rigid.turns[:1]):
+        assert found is None and "In the scenario" not in text  # fig1: the rod never turns
+        return
+    assert found, text
+    label, end, moves, far, light = found.groups()
+    impact = next(i for i in h.impacts if impact_name(i.label) == label)
+    L = h.scenario.L
+    assert impact.end == end and far != end and abs(_number(moves) - impact.event.t / L) < 1e-6
+    # independent: the far end's material velocity in S, read from its world-line, is 0 before the impact's instant
+    # and not after it; light from the impact crosses to the far end's place at rest (x = ∓L/2)
+    sigma = 0.0 if far == "left" else L
+    eps = 1e-6 * L
+    assert h.material_velocity(sigma, 0.0, impact.event.t - eps) == pytest.approx(0.0, abs=1e-9)
+    assert abs(h.material_velocity(sigma, 0.0, impact.event.t + eps)) > 0.0
+    x_far = -L / 2 if far == "left" else L / 2
+    assert abs(_number(light) - (impact.event.t + abs(x_far - impact.event.x)) / L) < 1e-6
+    assert _number(light) > _number(moves)

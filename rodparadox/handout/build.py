@@ -27,6 +27,7 @@ the paper's appendix, which misprints the sign).
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import replace
 from typing import Sequence
@@ -34,13 +35,14 @@ from typing import Sequence
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
-from rodparadox.handout.words import time_name, with_primes
+from rodparadox.handout.words import in_l, time_name, with_primes
 from rodparadox.handout.worksheet import questions
 from rodparadox.numbers import exact, impact_name
-from rodparadox.physics.engine import History
+from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
+from rodparadox.tolerances import ONE_INSTANT
 
 
 # --- the title and the headings ---------------------------------------------------------------------------------
@@ -125,10 +127,37 @@ def worksheet_introduction() -> Section:
     return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
 
 
-def introduction() -> Section:
-    """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation."""
+def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, str, float, float] | None:
+    """The numbers of the idealisation: in the first scenario whose rod turns from rest in S, the impact at the
+    turn's pivot, the far end, when that end starts to move in S and when light from the impact reaches it.
+
+    A turn from rest turns the rod's lines of simultaneity about the pivot P from those of S: the far end starts on
+    its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
+    t_P + L."""
+    for h in histories:
+        turn = next(iter(h.rigid.turns), None)
+        if turn is None or turn.rapidity_from != 0.0:
+            continue
+        impact = next(i for i in h.impacts if math.hypot(i.event.x - turn.pivot.x, i.event.t - turn.pivot.t)
+                      <= ONE_INSTANT * (h.scenario.L + abs(i.event.t)))
+        far = "left" if turn.pivot_end == "right" else "right"
+        return h, impact, far, turn.pivot.t / h.scenario.L, turn.pivot.t / h.scenario.L + 1.0
+    return None
+
+
+def introduction(histories: Sequence[History] = ()) -> Section:
+    """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation (with the
+    numbers of the first scenario whose rod turns: when its far end moves, when light could reach it)."""
+    idealisation = IDEALISATION
+    numbers = far_end_and_light(histories)
+    if numbers is not None:
+        h, impact, far, moves, light = numbers
+        idealisation += (f" In the scenario \u201c{heading(h)}\u201d, {impact_name(impact.label)} strikes the rod\u2019s "
+                         f"{impact.end} end at t = {in_l(moves)} in S, and the {far} end starts to move at that same "
+                         f"instant of S, while light from {impact_name(impact.label)} reaches it only at t = "
+                         f"{in_l(light)}.")
     return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
-                                                   Paragraph(RESOLUTION), Paragraph(IDEALISATION)))
+                                                   Paragraph(RESOLUTION), Paragraph(idealisation)))
 
 
 # --- the numbers -----------------------------------------------------------------------------------------------
@@ -249,13 +278,14 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
         else:
             shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append((stem, history, shown_frames))
-    sections, key = [worksheet_introduction() if worksheet else introduction()], []
+    first = introduction([history for _, history, _ in entries])
+    sections, key = [worksheet_introduction() if worksheet else first], []
     several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
         section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
         sections.append(section)
         key += answers
-    resolution = introduction().blocks[1:]  # the paradox, its resolution and the idealisation
+    resolution = first.blocks[1:]  # the paradox, its resolution and the idealisation
     answer_key = (Heading("Answer key"), Heading("The paradox and its resolution", 2), *resolution, *key) \
         if worksheet else ()
     return Handout(title([(stem, history) for stem, history, _ in entries]), tuple(sections), worksheet,
