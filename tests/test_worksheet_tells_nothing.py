@@ -24,10 +24,9 @@ from rodparadox.handout.build import build
 from rodparadox.handout.document import Fact, Heading, Paragraph, Question
 from rodparadox.handout.pdf import page_figures
 from rodparadox.handout.pdf_text import TextRuns
-from rodparadox.handout.tex import ANSWER_KEY_MARK, tex_sources
+from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
 from rodparadox.io.scenario import builtin_names
 from rodparadox.physics.frames import paper_frames
-from rodparadox.tables.formats import latex_text
 
 SPEEDS = (0.3, 0.6, 0.95)
 #: the speed whose worksheet is also saved as a PDF and read back with pypdf (saving is the costly part)
@@ -47,10 +46,10 @@ def _ascii(text: str) -> str:
 
 def leaks(fact: Fact, text: str, latex: bool = False, ascii_digits: bool = False) -> list[str]:
     """The forms of the fact found in the text: a number standing alone (no digit or point-digit either side), a
-    phrase anywhere; in LaTeX each form as `latex_text` writes it; with `ascii_digits` (a PDF's text) B₁ as B1."""
+    phrase anywhere; in LaTeX each form as `tex.prose` writes it; with `ascii_digits` (a PDF's text) B₁ as B1."""
     found = []
     for form in fact.forms:
-        written = latex_text(form) if latex else _ascii(form) if ascii_digits else form
+        written = prose(form) if latex else _ascii(form) if ascii_digits else form
         pattern = (rf"(?<![0-9.]){re.escape(written)}(?![0-9]|\.[0-9])" if fact.number else
                    re.escape(written) + ("(?![′'])" if not latex else r"(?!')"))  # "in S" is not "in S′"
         if re.search(pattern, text):
@@ -127,7 +126,7 @@ def test_no_page_before_the_key_states_what_a_question_asks(worksheets, v):
     for k, section in enumerate(doc.sections[1:], start=1):
         asked = _questions(section)
         asking = [sentence for q in asked for sentence in re.findall(r"[^.?]*\?", q.text)]
-        asking = [t for sentence in asking for t in (sentence.strip(), latex_text(sentence.strip()))]
+        asking = [t for sentence in asking for t in (sentence.strip(), prose(sentence.strip()))]
         assert asked and all(q.asks for q in asked), (section.name, "every question names the facts it asks")
         for q in asked:
             for fact in q.asks:
@@ -177,10 +176,10 @@ def test_a_planted_leak_is_found():
     velocity = asks["the rod's velocity after A₁ in S′"]
     together = next(f for what, f in asks.items() if what.endswith(" simultaneous in S′") and "not" not in what)
     for planted in ("the rod moves at +0.8824 c after A₁", "a colour bar's tick 0.882", "15/17"):
-        assert leaks(velocity, planted) and leaks(velocity, latex_text(planted), latex=True)
+        assert leaks(velocity, planted) and leaks(velocity, prose(planted), latex=True)
     assert not leaks(velocity, "x = 10.88241 L, t = 0.88245")
     for planted in ("B₁ and A₁", "Impacts simultaneous in the moving frame", "at the same instant of S′ as B's"):
-        assert leaks(together, planted) and leaks(together, latex_text(planted), latex=True)
+        assert leaks(together, planted) and leaks(together, prose(planted), latex=True)
     # and planted into the worksheet itself, the section's text as the test above reads it finds it
     section = doc.sections[1]
     planted = dataclasses.replace(section, blocks=section.blocks + (Paragraph("After A₁ the rod moves at +15/17 c."),))

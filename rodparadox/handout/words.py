@@ -148,6 +148,30 @@ def order_facts(earlier: str, later: str, frame: str) -> tuple[Fact, ...]:
                        f"{earlier}, then {later}", f"{later} comes"),)
 
 
+# --- variables in math italics ---------------------------------------------------------------------------------
+
+#: the letters that are variables wherever they stand alone (v, L, t, x, E, p, u, w, m): set in math italics, while
+#: units (c, M), frames (S, S′) and labels (A, B₁) stay upright
+VARIABLES = "vLtxEpuwm"
+#: a variable: one of VARIABLES standing alone (no letter or apostrophe before it, no letter after it), with its
+#: primes, subscripts (tᵤ, x_P) and powers (u²)
+VARIABLE = re.compile(rf"(?<![A-Za-z'’_])[{VARIABLES}]['′]*(?:_[A-Z]|[ᵤ₀-₉]+)?²?(?![A-Za-z0-9])")
+
+
+def math_pieces(text: str) -> list[tuple[str, bool]]:
+    """The text cut into (piece, is a variable), in order: "t′ = 17/12 L" -> [("t′", True), (" = 17/12 ", False),
+    ("L", True)]. The PDF sets the variables in italics, the LaTeX in $...$."""
+    pieces, k = [], 0
+    for m in VARIABLE.finditer(text):
+        if m.start() > k:
+            pieces.append((text[k:m.start()], False))
+        pieces.append((m.group(), True))
+        k = m.end()
+    if k < len(text):
+        pieces.append((text[k:], False))
+    return pieces
+
+
 # --- names -----------------------------------------------------------------------------------------------------
 
 def listed(words: Sequence[str]) -> str:
