@@ -232,10 +232,10 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     title = neutral_heading if worksheet else heading
     blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet)),
                            diagram]
-    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames),
-                         Heading("The rod at successive instants", 2)]
-    for f in frames:
+    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames)]
+    for f in frames:  # each frame's strips under a heading naming it, so a block that starts a page says its frame
         times = strip_times(history, f)
+        told.append(Heading(f"The rod at successive instants of {frame_name(f)}", 2))
         told.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
     if not worksheet:
         blocks += told

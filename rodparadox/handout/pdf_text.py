@@ -227,6 +227,8 @@ class Pages:
         self.figures: list[Figure] = []
         self.texts: list[TextRuns] = []  # each page's text
         self.used = 0.0
+        self.drawing = True  # False: the pictures are placed, not drawn (`pdf.page_plan`)
+        self.marks: list[tuple[int, float, float]] = []  # each room made: (page, top, bottom), from the text's top
 
     # where things are
     @property
@@ -256,6 +258,7 @@ class Pages:
             self.used += gap
         y = self.top + self.used
         self.used += height
+        self.marks.append((len(self.figures) - 1, self.used - height, self.used))
         return y
 
     # drawing, in points from the paper's top left corner, on the current page or on page `on` (from 0)
