@@ -142,16 +142,18 @@ def test_a_table_longer_than_a_page_is_split_between_rows_with_its_header_repeat
             assert on[i] == on[i + 1] == on[i + 2]
 
 
-def test_a_table_that_does_not_fit_the_rest_of_the_page_starts_a_new_one():
-    """Three fillers fewer than fill a page leave room for the start of a twelve-row table (a two-row table fits
-    there) but not for all of it: the whole table goes to the next page."""
+def test_a_table_that_does_not_fit_the_rest_of_the_page_is_split_between_rows_rather_than_leave_it_empty():
+    """Three fillers fewer than fill a page leave room for a two-row table, and for the start of a twelve-row table
+    but not all of it: that one starts there, taller than a quarter page, and goes on on the next page under its
+    header again, every row once (a page is not left a quarter empty for a table that can be split)."""
     n = most_fillers_on_one_page() - 3
     short = pages_text(to_pdf(text_only(Section("s", "s", fillers(n) + (long_table(2),)))))
     assert len(short) == 1 and "row1left" in short[0]
     texts = pages_text(to_pdf(text_only(Section("s", "s", fillers(n) + (long_table(12),)))))
     assert len(texts) == 2
-    assert f"Filler {n - 1}." in texts[0] and "A long table" not in texts[0]
-    assert all(f"row{i}left" in texts[1] for i in range(12))
+    assert f"Filler {n - 1}." in texts[0] and "A long table" in texts[0] and "row0left" in texts[0]
+    assert "A long table (continued)" in texts[1]
+    assert [sum(f"row{i}left" in t for t in texts) for i in range(12)] == [1] * 12
 
 
 def test_a_heading_is_never_left_alone_at_the_foot_of_a_page():

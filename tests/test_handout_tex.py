@@ -246,8 +246,8 @@ def test_handout_tex_sets_every_block_in_order(worksheet):
     # the worksheet's questions with room to write and no answers; the answer key's with their worked answers
     assert body.count("\\answerlines{") == 4 and key.count("\\answerlines{") == 0
     assert key.count("\\begin{answer}") == 4
-    assert "$x'$ = 1.25 L and $t'$ = $\\gamma$(1 + v$^{2}$)/2v L = 17/12 L." in key
-    assert "$x'$ = 1.25 L" not in body
+    assert "$x'$ = 1.25 $L$ and $t'$ = $\\gamma$(1 + $v^{2}$)/2$v$ $L$ = 17/12 $L$." in key
+    assert "$x'$ = 1.25 $L$" not in body
 
 
 def test_a_handout_prints_its_questions_with_their_answers():

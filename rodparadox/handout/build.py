@@ -27,19 +27,22 @@ the paper's appendix, which misprints the sign).
 
 from __future__ import annotations
 
+import math
 import re
+from dataclasses import replace
 from typing import Sequence
 
-from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips
+from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
-from rodparadox.handout.words import time_name, with_primes
+from rodparadox.handout.words import in_l, time_name, with_primes
 from rodparadox.handout.worksheet import questions
-from rodparadox.numbers import exact
-from rodparadox.physics.engine import History
+from rodparadox.numbers import exact, impact_name
+from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
+from rodparadox.tolerances import ONE_INSTANT
 
 
 # --- the title and the headings ---------------------------------------------------------------------------------
@@ -67,6 +70,18 @@ def heading(history: History, with_speed: bool = False) -> str:
         first = re.sub(r" \([^)]*\)", "", first.split(". ")[0].split("; ")[0]).rstrip(".")
         text = first[:1].upper() + first[1:]
     text = with_primes(text) if text else s.name
+    return f"{text}, at {_speed(history)}" if with_speed else text
+
+
+def neutral_heading(history: History, with_speed: bool = False) -> str:
+    """A worksheet's heading: who strikes the rod, never what follows (a preset's title may say "simultaneous in
+    the moving frame", which a worksheet asks)."""
+    particles = history.scenario.particles
+    if len(particles) == 1:
+        text = f"One particle, {particles[0].name}, strikes a rod"
+    else:
+        masses = "equal" if len({p.mass for p in particles}) == 1 else "unequal"
+        text = f"{len(particles)} particles of {masses} mass strike a rod".replace("2 particles", "Two particles")
     return f"{text}, at {_speed(history)}" if with_speed else text
 
 
@@ -98,10 +113,51 @@ IDEALISATION = (
     "slower. The rigid rod is the limit the paper uses to make the paradox sharp.")
 
 
-def introduction() -> Section:
-    """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation."""
+WORKSHEET_PARADOX = (
+    "F. W. Sears proposed a paradox about forces on a rigid body in special relativity. A rigid rod at rest in a "
+    "frame S is struck at its two ends by equal and opposite impulses, and stays at rest in S. What happens in a "
+    "frame S′ moving at −v relative to S, where the rod moves at +v? Work it out for each scenario below, from the "
+    "diagram, the Lorentz transformation and the rod’s own lines of simultaneity; the answer key gives the "
+    f"resolution of {FRANKLIN}.")
+
+
+def worksheet_introduction() -> Section:
+    """A worksheet's first section: the paradox as a question; the whole introduction opens the answer key (its
+    resolution tells what the questions ask: the impulses act at different instants of S′)."""
+    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
+
+
+def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, str, float, float] | None:
+    """The numbers of the idealisation: in the first scenario whose rod turns from rest in S, the impact at the
+    turn's pivot, the far end, when that end starts to move in S and when light from the impact reaches it.
+
+    A turn from rest turns the rod's lines of simultaneity about the pivot P from those of S: the far end starts on
+    its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
+    t_P + L."""
+    for h in histories:
+        turn = next(iter(h.rigid.turns), None)
+        if turn is None or turn.rapidity_from != 0.0:
+            continue
+        impact = next(i for i in h.impacts if math.hypot(i.event.x - turn.pivot.x, i.event.t - turn.pivot.t)
+                      <= ONE_INSTANT * (h.scenario.L + abs(i.event.t)))
+        far = "left" if turn.pivot_end == "right" else "right"
+        return h, impact, far, turn.pivot.t / h.scenario.L, turn.pivot.t / h.scenario.L + 1.0
+    return None
+
+
+def introduction(histories: Sequence[History] = ()) -> Section:
+    """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation (with the
+    numbers of the first scenario whose rod turns: when its far end moves, when light could reach it)."""
+    idealisation = IDEALISATION
+    numbers = far_end_and_light(histories)
+    if numbers is not None:
+        h, impact, far, moves, light = numbers
+        idealisation += (f" In the scenario \u201c{heading(h)}\u201d, {impact_name(impact.label)} strikes the rod\u2019s "
+                         f"{impact.end} end at t = {in_l(moves)} in S, and the {far} end starts to move at that same "
+                         f"instant of S, while light from {impact_name(impact.label)} reaches it only at t = "
+                         f"{in_l(light)}.")
     return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
-                                                   Paragraph(RESOLUTION), Paragraph(IDEALISATION)))
+                                                   Paragraph(RESOLUTION), Paragraph(idealisation)))
 
 
 # --- the numbers -----------------------------------------------------------------------------------------------
@@ -109,6 +165,28 @@ def introduction() -> Section:
 def _table_unit(L: float) -> str:
     """How the tables give x and t: in units of L, or, for L other than 1, in the unit L is given in."""
     return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
+
+
+def _in_rods_order(history: History, table: Table) -> Table:
+    """A worksheet's events table: its rows in the rod's own order, without notes (the frame's order, and which
+    impacts the rod takes together, are what the questions ask)."""
+    order = {impact_name(i.label): k for k, i in enumerate(history.impacts)}
+    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(),
+                   rows=tuple(sorted(table.rows, key=lambda row: order[row[0].text])))
+
+
+def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list[Block]]:
+    """A worksheet's blank events table of the frame, and the filled tables its answer key prints (`_tables`): the
+    ledger and hidden tables wait for the key, since a ledger's row of one instant ("B₁ and A₁") tells which impacts
+    are simultaneous in the frame, and its slices' times tell when the impacts come."""
+    symbol, time = frame_name(frame), time_name(frame)
+    x = coordinates(frame)[0]
+    asked: list[Block] = [
+        Paragraph(f"The impacts in {symbol}, in the rod's own order: fill in where and when each strikes ({x} and "
+                  f"{time} {_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and "
+                  f"of the rod just before and just after it."),
+        _in_rods_order(history, tables.events_table(history, frame, blank=True))]
+    return asked, _tables(history, frame, blank=False)
 
 
 def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
@@ -150,26 +228,36 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
     key; the tables are left blank."""
     caption = diagram_caption(history, frames, tell=not worksheet)
-    blocks: list[Block] = [Heading(heading(history, with_speed)), Paragraph(setup_text(history)),
-                           DiagramBlock(f"{stem}_diagram", history, frames, caption)]
-    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames),
-                         Heading("The rod at successive instants", 2)]
-    for f in frames:
+    diagram = DiagramBlock(f"{stem}_diagram", history, frames, caption, tell=not worksheet)
+    title = neutral_heading if worksheet else heading
+    blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet)),
+                           diagram]
+    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames)]
+    for f in frames:  # each frame's strips under a heading naming it, so a block that starts a page says its frame
         times = strip_times(history, f)
+        told.append(Heading(f"The rod at successive instants of {frame_name(f)}", 2))
         told.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
     if not worksheet:
         blocks += told
     blocks.append(Heading("The numbers", 2))
+    filled: list[Block] = []
     for f in frames:
-        blocks += _tables(history, f, worksheet)
-    section_title = heading(history, with_speed=True)
+        if worksheet:
+            asked_tables, key_tables = _worksheet_tables(history, f)
+            blocks += asked_tables
+            # the key's tables named after the section (their LaTeX files fig2_ledger_rest_key.tex, one per scenario)
+            filled += [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b for b in key_tables]
+        else:
+            blocks += _tables(history, f, blank=False)
+    section_title = title(history, with_speed=True)
     key: list[Block] = []
     if worksheet:
         asked = questions(history, frames, compare_v, chosen)
         blocks.append(Heading("Questions", 2))
         blocks += asked
-        key.append(Heading(section_title, 2))
-        key += [b.filled() for b in blocks if hasattr(b, "filled")]
+        # the key: the scenario's own title and set-up (which may say what the questions asked), the numbers
+        key += [Heading(heading(history, with_speed=True), 2), Paragraph(setup_text(history)),
+                Heading("The numbers", 2), *filled, Heading("Questions and answers", 2)]
         key += asked
         key += told
     return Section(stem, section_title, tuple(blocks)), key
@@ -190,12 +278,15 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
         else:
             shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append((stem, history, shown_frames))
-    sections, key = [introduction()], []
+    first = introduction([history for _, history, _ in entries])
+    sections, key = [worksheet_introduction() if worksheet else first], []
     several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
         section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
         sections.append(section)
         key += answers
-    answer_key = (Heading("Answer key"), *key) if worksheet else ()
+    resolution = first.blocks[1:]  # the paradox, its resolution and the idealisation
+    answer_key = (Heading("Answer key"), Heading("The paradox and its resolution", 2), *resolution, *key) \
+        if worksheet else ()
     return Handout(title([(stem, history) for stem, history, _ in entries]), tuple(sections), worksheet,
                    tuple(answer_key))

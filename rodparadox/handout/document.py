@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import Union
 
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame
+from rodparadox.physics.frames import Frame, frame_symbol
 from rodparadox.tables.table import ALIGNS, Cell, Table  # noqa: F401 (a handout's tables: re-exported)
 
 #: paper sizes in inches (width, height): ISO A4 (210 x 297 mm) and US Letter
@@ -52,6 +52,15 @@ class DiagramBlock:
     history: History
     frames: tuple[Frame, ...]
     caption: str
+    #: the panels' titles give the rod's velocity before and after (a worksheet asks it: only "(a) frame S" there)
+    tell: bool = True
+
+    def retitle(self, diagram) -> None:
+        """After `render.draw_into` or `render.draw` (a `render.Diagram`): a block that does not tell names only
+        each panel's frame in its title, "(b) frame S′", never "rod first at +0.6, finally at +0.3846"."""
+        if not self.tell:
+            for panel in diagram.panels:
+                panel.axes.title.set_text(f"({panel.letter}) frame {frame_symbol(panel.frame)}")
 
 
 @dataclass(frozen=True)
@@ -67,12 +76,25 @@ class Strips:
 
 
 @dataclass(frozen=True)
+class Fact:
+    """One thing a question asks for, as every text that would state it: a number's printed forms (`number`: found
+    only standing alone, no digit either side: 0.8824 is not in 10.88241) or a claim's phrases ("B₁ and A₁",
+    "simultaneous in S′"). A worksheet prints none of them before its answer key (a question may ask in words its
+    own claim, never print its own number)."""
+
+    what: str
+    forms: tuple[str, ...]
+    number: bool = False
+
+
+@dataclass(frozen=True)
 class Question:
-    """A worksheet question and its worked answer (paragraphs), which the answer key prints."""
+    """A worksheet question, its worked answer (paragraphs), which the answer key prints, and the facts it asks."""
 
     number: int
     text: str
     answer: tuple[str, ...]
+    asks: tuple[Fact, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -33,8 +33,10 @@ def _timing_frame(frame: str | float) -> str:
     return f"the frame of velocity {in_c(float(frame))} relative to S"
 
 
-def setup_text(history: History) -> str:
-    """One paragraph: the rod, v and the frames, then each particle's mass, speed, end and start."""
+def setup_text(history: History, tell: bool = True) -> str:
+    """One paragraph: the rod, v and the frames, then each particle's mass, speed, end and start; with `tell`, how a
+    particle's start was chosen (at the same instant of S′ as B's first impact: a worksheet asks it, and gives the
+    start alone)."""
     s = history.scenario
     v = exact(s.v)
     sentences = [
@@ -54,6 +56,9 @@ def setup_text(history: History) -> str:
         if p.timed_with is None:
             text += (", starting at that end at t = 0." if p.gap == 0 else
                      f", starting {in_l(p.gap)} from it at t = 0.")
+        elif not tell:
+            text += (f", starting {in_l(gap / s.L)} from it at t = 0." if gap >= 0 else
+                     f", starting at x = {in_l(starts[p.name].x / s.L)} at t = 0.")
         else:
             timing = p.timed_with
             frame = _timing_frame(timing.frame)
@@ -94,8 +99,12 @@ def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True
     particles = sorted(p.name for p in s.particles)
     dashed = f"the particle {particles[0]} is dashed" if len(particles) == 1 else \
         f"the particles {listed(particles)} are dashed"
+    # a worksheet lists the labels without "and" (a ledger's row "B₁ and A₁" is a claim of simultaneity it asks)
+    labels = labels if tell else ", ".join(impact_name(i.label) for i in history.impacts)
     impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
-               f"The impacts are labelled {labels} in the order of the rod's own time. Through each impact run")
+               f"The impacts are labelled in the order of the rod's own time: {labels}. Through each impact run" if
+               not tell else f"The impacts are labelled {labels} in the order of the rod's own time. Through each "
+                             f"impact run")
     sentences = [f"At v = {exact(s.v)}: {panels}.",
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  f"its shaded world-sheet, and {dashed}.",

@@ -36,7 +36,7 @@ subscripts included.
 from __future__ import annotations
 
 import io
-from typing import Callable
+from typing import Callable, NamedTuple
 
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
@@ -53,15 +53,18 @@ ANSWER_LINE_GAP = 8 * MM
 ANSWER_LINES = (3, 8)
 #: a strip's row in a handout, in units of the least row `draw_strips_into` accepts: room for the particles' letters
 STRIP_ROWS = 1.25
+#: a table at most this part of a page high is short: it moves whole, with its introduction
+SHORT_TABLE = 0.25
 
 
 # --- blocks, measured -------------------------------------------------------------------------------------
 
 class Measured:
     """A block measured for the page: `lead` is the least height it needs to start on a page (what a heading
-    before it must find room for), `set(pages)` places it."""
+    before it must find room for), `set(pages)` places it; `kind` names it in the page plan."""
 
     lead: float = 0.0
+    kind: str = "block"
 
     def set(self, pages: Pages) -> None:
         raise NotImplementedError
@@ -74,6 +77,7 @@ class TextBlock(Measured):
                  breakable: bool = True, heading: bool = False):
         self.lines, self.size, self.leading, self.gap, self.indent = lines, size, leading, gap, indent
         self.heading = heading
+        self.kind = "heading" if heading else "paragraph"
         self.breakable = breakable and not heading and len(lines) >= 4
         self.lead = leading * (min(2, len(lines)) if self.breakable else len(lines))
 
@@ -105,6 +109,8 @@ class TextBlock(Measured):
 class Break(Measured):
     """A new page, unless the current one is still empty."""
 
+    kind = "break"
+
     def set(self, pages: Pages) -> None:
         if not pages.at_top:
             pages.new_page()
@@ -113,6 +119,8 @@ class Break(Measured):
 class TableSet(Measured):
     """A table measured: its type size (shrunk if the natural width exceeds the text width), column widths and
     positions, the height of its parts; `set` places it whole, or split between groups of rows."""
+
+    kind = "table"
 
     def __init__(self, table: Table, pages: Pages, gap: float):
         self.table, self.gap = table, gap
@@ -154,10 +162,13 @@ class TableSet(Measured):
         self.row_h = (2.4 if table.has_blanks else 1.45) * size
         self.group_gap = 0.35 * size
         self.groups = _groups(table) or [[]]  # a table without rows still has its caption, header and rules
-        # the least start on a page: the whole table if it fits a page (it is then never split), else its caption,
-        # header and first group of rows
+        # the least start on a page: a short table whole (it is never split), else its caption, header and first
+        # two groups of rows (a longer table is split between groups rather than leave a page a quarter empty)
         whole = self.height(self.groups, True, True)
-        self.lead = whole if whole <= pages.text_height else self.height(self.groups[:1], True, False)
+        self.short = whole <= SHORT_TABLE * pages.text_height or len(self.groups) <= 2
+        least = min(2, len(self.groups))
+        self.lead = whole if self.short and whole <= pages.text_height else self.height(self.groups[:least], True,
+                                                                                        least == len(self.groups))
 
     def _columns(self, size: float) -> tuple[list[float], list[float], list[float]]:
         """Each column's width, and for a numbers column the widths of its widest parts before and from the
@@ -195,8 +206,9 @@ class TableSet(Measured):
     def set(self, pages: Pages) -> None:
         groups = self.groups
         whole = self.height(groups, True, True)
-        if pages.figures and not pages.at_top and self.gap + whole > pages.room and whole <= pages.text_height:
-            pages.new_page()  # a table that fits a page is never split
+        if (pages.figures and not pages.at_top and self.gap + whole > pages.room and whole <= pages.text_height
+                and (self.short or self.gap + self.lead > pages.room + FIT_SLACK)):
+            pages.new_page()  # a short table is never split; a longer one starts here if two groups fit
         first = True
         while groups:
             room = pages.text_height if not pages.figures or pages.at_top else pages.room - self.gap
@@ -293,15 +305,20 @@ class Picture(Measured):
         self.caption_gap = 0.5 * t.body
         self.lead = height + self.caption_gap + len(caption) * self.caption_leading
 
+    kind = "picture"
+
     def set(self, pages: Pages) -> None:
         y = pages.start(self.lead, self.gap)
-        self.draw(pages.target(y, self.picture_h))
+        if pages.drawing:
+            self.draw(pages.target(y, self.picture_h))
         pages.lines(self.caption, pages.left, y + self.picture_h + self.caption_gap, pages.type.caption,
                     self.caption_leading)
 
 
 class QuestionSet(Measured):
     """`Question k.` and its text; then ruled lines to write on (a worksheet) or the worked answer."""
+
+    kind = "question"
 
     def __init__(self, question: Question, pages: Pages, gap: float, ruled: bool):
         t = pages.type
@@ -340,7 +357,9 @@ def _heading(block: Heading, pages: Pages) -> TextBlock:
     t = pages.type
     size = t.h1 if block.level == 1 else t.h2
     lines = wrap(words_of(block.text, bold=True), size, pages.text_width)
-    return TextBlock(lines, size, 1.25 * size, (1.4 if block.level == 1 else 1.1) * t.body, heading=True)
+    heading = TextBlock(lines, size, 1.25 * size, (1.4 if block.level == 1 else 1.1) * t.body, heading=True)
+    heading.kind = f"heading{block.level}"
+    return heading
 
 
 def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
@@ -364,7 +383,7 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
         _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
-            render.draw_into(target, block.history, block.frames, style.name, untitled)
+            block.retitle(render.draw_into(target, block.history, block.frames, style.name, untitled))
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         height = min(room, render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS)[1])
@@ -377,17 +396,66 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
 
 # --- the document ------------------------------------------------------------------------------------------
 
+def _introduces(item: Measured, following: Measured | None) -> bool:
+    """A paragraph before a table or a figure: its introduction, kept on the page where that starts."""
+    return isinstance(item, TextBlock) and not item.heading and isinstance(following, (TableSet, Picture))
+
+
+def _needs(measured: list[Measured]) -> list[float]:
+    """The room each block needs at a page's foot to start there with what must stay with it: a heading with the
+    next block's need, an introduction that moves whole with its table's or figure's start (one that may be split
+    needs only its first lines: the rest go with the table). One more entry, 0, for after the last block."""
+    needs = [0.0] * (len(measured) + 1)
+    for k in range(len(measured) - 1, -1, -1):
+        item = measured[k]
+        following = measured[k + 1] if k + 1 < len(measured) else None
+        needs[k] = item.lead
+        chained = (isinstance(item, TextBlock) and item.heading and following is not None
+                   and not isinstance(following, Break)) or (_introduces(item, following) and not item.breakable)
+        if chained:
+            needs[k] += getattr(following, "gap", 0.0) + needs[k + 1]
+    return needs
+
+
+class Placed(NamedTuple):
+    """Where a block was set: its kind (heading1, heading2, paragraph, table, picture, question, break) and its
+    pieces, (page from 0, top, bottom) in points from the text area's top, one per page it spans."""
+
+    kind: str
+    pieces: tuple[tuple[int, float, float], ...]
+
+
+class PagePlan(NamedTuple):
+    """The pages' plan: the text area's height (points) and every block where it was set, in order."""
+
+    text_height: float
+    blocks: tuple[Placed, ...]
+    pages: int
+
+
 def page_figures(handout: Handout, paper: str = "a4", style: str = "print") -> tuple[Figure, ...]:
     """The handout's pages as Figures (paper size, dpi 72: one unit a point), drawn in the style's fonts.
 
     Save them inside `render.style_context(style)`, as `to_pdf` does, for the style's PDF settings.
     """
+    return _set_pages(handout, paper, style)[0]
+
+
+def page_plan(handout: Handout, paper: str = "a4", style: str = "print") -> PagePlan:
+    """Where each block of the handout lands on its pages (the rules of setting, tested: tests/test_page_rules.py)."""
+    return _set_pages(handout, paper, style, drawing=False)[1]
+
+
+def _set_pages(handout: Handout, paper: str, style: str, drawing: bool = True
+               ) -> tuple[tuple[Figure, ...], PagePlan]:
+    """The pages set; without `drawing` the diagrams and strips are measured and placed but not drawn (the plan)."""
     if paper not in PAPERS:
         raise ValueError(f"unknown paper size {paper!r}; use one of {', '.join(PAPERS)}")
     if style not in STYLES:
         raise ValueError(f"unknown style {style!r}; use one of {', '.join(STYLES)}")
     with render.style_context(style) as st:
         pages = Pages(paper, st, Type.of(st))
+        pages.drawing = drawing
         parts = [(block, False) for section in handout.sections for block in section.blocks]
         parts += [(block, True) for block in handout.answer_key]
         measured: list[Measured] = []
@@ -400,15 +468,22 @@ def page_figures(handout: Handout, paper: str = "a4", style: str = "print") -> t
                 measured.append(Break())  # a section's heading, after the document's first
             headings = headings or isinstance(block, Heading)
             measured.append(measure(block, pages, st, ruled=handout.worksheet and not in_key))
-        for item, following in zip(measured, measured[1:] + [None]):
+        plan = []
+        needs = _needs(measured)
+        for k, (item, following) in enumerate(zip(measured, measured[1:] + [None])):
+            marks = len(pages.marks)
+            keep = getattr(following, "gap", 0.0) + needs[k + 1] if following is not None else 0.0
             if isinstance(item, TextBlock) and item.heading and following and not isinstance(following, Break):
-                item.set(pages, keep=following.lead)  # a heading is never left alone at the foot of a page
+                item.set(pages, keep=keep)  # a heading is never left alone at the foot of a page
+            elif _introduces(item, following):
+                item.set(pages, keep=keep)  # nor an introduction, apart from its table or figure
             else:
                 item.set(pages)
+            plan.append(Placed(item.kind, tuple(pages.marks[marks:])))
         if not pages.figures:
             pages.new_page()
         pages.footers(handout.title)
-        return tuple(pages.figures)
+        return tuple(pages.figures), PagePlan(pages.text_height, tuple(plan), len(pages.figures))
 
 
 def to_pdf(handout: Handout, paper: str = "a4", style: str = "print") -> bytes:

@@ -27,6 +27,7 @@ from matplotlib.patches import Rectangle
 
 from rodparadox import render
 from rodparadox.handout.document import PAPERS
+from rodparadox.handout.words import math_pieces
 from rodparadox.render.styles import Style
 from rodparadox.tolerances import FIT_SLACK
 
@@ -75,31 +76,46 @@ def width_of(text: str, size: float, bold: bool = False, italic: bool = False) -
     return render.text_size(text, size, italic=italic, ismath=False, bold=bold)[0]
 
 
-def wrap(words: Sequence[tuple[str, bool, bool]], size: float, width: float) -> list[Line]:
-    """Words (text, bold, italic) set in lines no wider than `width` points, ragged-right, each word measured once.
+def wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
+    """Words (text, bold, italic[, glued]) set in lines no wider than `width` points, ragged-right, each word measured
+    once; a glued piece (a variable's italics inside a word: "t" of "t′") follows the one before it with no space
+    and never starts a line.
 
     A word wider than a whole line (a long number, a path) is cut between characters, so nothing runs off the page.
     """
-    lines: list[list[tuple[str, bool, bool, float]]] = [[]]  # (word, bold, italic, x)
+    lines: list[list[tuple[str, bool, bool, float, bool]]] = [[]]  # (word, bold, italic, x, glued)
     x = 0.0
     room = width - WRAP_SLACK
-    for text, bold, italic in words:
-        w = width_of(text, size, bold, italic)
+    for word in _whole_words(words):
+        w = sum(width_of(text, size, bold, italic) for text, bold, italic in word)
+        text, bold, italic = word[0]
         space = width_of(" ", size, bold, italic)
-        if w > room:  # cut it into pieces that fit
+        if len(word) == 1 and w > room:  # cut it into pieces that fit
             for piece in _cut(text, size, bold, italic, room):
                 if lines[-1]:
                     lines.append([])
-                lines[-1].append((piece, bold, italic, 0.0))
+                lines[-1].append((piece, bold, italic, 0.0, False))
             x = width_of(lines[-1][-1][0], size, bold, italic)
             continue
         if lines[-1] and x + space + w > room:
             lines.append([])
             x = 0.0
-        start = x + space if lines[-1] else 0.0
-        lines[-1].append((text, bold, italic, start))
-        x = start + w
+        x = x + space if lines[-1] else 0.0
+        for k, (text, bold, italic) in enumerate(word):
+            lines[-1].append((text, bold, italic, x, k > 0))
+            x += width_of(text, size, bold, italic)
     return [_runs(line) for line in lines if line]
+
+
+def _whole_words(words: Sequence[tuple]) -> list[list[tuple[str, bool, bool]]]:
+    """The words as lists of their pieces: a glued piece joins the word before it."""
+    out: list[list[tuple[str, bool, bool]]] = []
+    for text, bold, italic, *glued in words:
+        if glued and glued[0] and out:
+            out[-1].append((text, bold, italic))
+        else:
+            out.append([(text, bold, italic)])
+    return out
 
 
 def _cut(text: str, size: float, bold: bool, italic: bool, room: float) -> list[str]:
@@ -112,19 +128,26 @@ def _cut(text: str, size: float, bold: bool, italic: bool, room: float) -> list[
     return pieces + [piece]
 
 
-def _runs(line: list[tuple[str, bool, bool, float]]) -> Line:
+def _runs(line: list[tuple[str, bool, bool, float, bool]]) -> Line:
     """Consecutive words in one font joined into one run (one text in the PDF, read back as it was written)."""
     runs: list[Run] = []
-    for text, bold, italic, x in line:
+    for text, bold, italic, x, glued in line:
         if runs and (runs[-1].bold, runs[-1].italic) == (bold, italic):
-            runs[-1] = runs[-1]._replace(text=f"{runs[-1].text} {text}")
+            runs[-1] = runs[-1]._replace(text=runs[-1].text + ("" if glued else " ") + text)
         else:
             runs.append(Run(text, x, bold, italic))
     return tuple(runs)
 
 
-def words_of(text: str, bold: bool = False, italic: bool = False) -> list[tuple[str, bool, bool]]:
-    return [(word, bold, italic) for word in text.split()]
+def words_of(text: str, bold: bool = False, italic: bool = False) -> list[tuple[str, bool, bool, bool]]:
+    """The text's words (text, bold, italic, glued); a variable (`words.math_pieces`: v, L, t′, x, E, p, u) is a
+    piece of its word set in math italics, glued to the piece before it (upright text around it stays upright; in
+    italic text it stays italic)."""
+    out = []
+    for word in text.split():
+        for k, (piece, variable) in enumerate(math_pieces(word)):
+            out.append((piece, bold, italic or variable, k > 0))
+    return out
 
 
 # --- the page ---------------------------------------------------------------------------------------------
@@ -204,6 +227,8 @@ class Pages:
         self.figures: list[Figure] = []
         self.texts: list[TextRuns] = []  # each page's text
         self.used = 0.0
+        self.drawing = True  # False: the pictures are placed, not drawn (`pdf.page_plan`)
+        self.marks: list[tuple[int, float, float]] = []  # each room made: (page, top, bottom), from the text's top
 
     # where things are
     @property
@@ -233,6 +258,7 @@ class Pages:
             self.used += gap
         y = self.top + self.used
         self.used += height
+        self.marks.append((len(self.figures) - 1, self.used - height, self.used))
         return y
 
     # drawing, in points from the paper's top left corner, on the current page or on page `on` (from 0)

@@ -28,6 +28,7 @@ import re
 from dataclasses import dataclass
 
 from rodparadox.handout.document import PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.handout.words import math_pieces
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
 from rodparadox.render.styles import STYLES
@@ -37,6 +38,8 @@ from rodparadox.tables.formats import latex_text, to_latex
 MARGIN_MM = 20.0
 #: LaTeX's name for each paper size of `document.PAPERS`
 _LATEX_PAPER = {"a4": "a4paper", "letter": "letterpaper"}
+#: the comment line before a worksheet's answer key in handout.tex: what precedes it is what the student sees
+ANSWER_KEY_MARK = "% the answer key"
 #: ruled lines a worksheet leaves under each question for the student's answer
 ANSWER_LINES = 5
 #: a strip block's height: room for the time axis and the colour bar, plus one row per instant (inches)
@@ -159,39 +162,67 @@ _PREAMBLE = r"""%% handout.tex, written by sears-paradox handout --format tex: c
 """
 
 
+_PRIMES = re.compile(r"['′]")
+#: two pieces of math side by side ($-$ then $L$): one $...$ (never $$, which TeX reads as display math)
+_ADJACENT_MATH = re.compile(r"(?<!\\)\$\$")
+
+
+def _variable(token: str) -> str:
+    """A variable (`words.VARIABLE`) as math: t′ -> $t'$, tᵤ -> $t_{u}$, x_P -> $x_{P}$, u² -> $u^{2}$."""
+    letter, rest = token[0], token[1:]
+    body = letter + "'" * len(_PRIMES.findall(rest))
+    rest = _PRIMES.sub("", rest)
+    power = "^{2}" if rest.endswith("²") else ""
+    rest = rest.rstrip("²").lstrip("_")
+    if rest:
+        body += "_{" + rest.translate(_SUBSCRIPT_LETTERS) + "}"
+    return f"${body}{power}$"
+
+
+_SUBSCRIPT_LETTERS = str.maketrans("ᵤ₀₁₂₃₄₅₆₇₈₉", "u0123456789")
+
+
+def prose(text: str) -> str:
+    """Running text as LaTeX (`latex_text`), its variables (`words.math_pieces`: v, L, t′, x, E, p, u) in math
+    italics, as the PDF sets them; units (c, M), frames (S′) and labels (A, B₁) upright."""
+    latex = "".join(_variable(piece) if variable else latex_text(piece).replace("$S'$", "S$'$")  # S′: a label
+                    for piece, variable in math_pieces(text))
+    return _ADJACENT_MATH.sub("", latex)
+
+
 def _figure(stem: str, caption: str) -> str:
     # not a float: the figure stays where the handout puts it, whole on one page, with its caption under it; at the
     # width of the text unless that would be taller than most of a page
     return "\n".join([r"\par\medskip\noindent\begin{minipage}{\linewidth}", r"\centering",
                       rf"\includegraphics[width=\textwidth,height=0.8\textheight,keepaspectratio]{{{stem}.pdf}}",
-                      rf"\captionof{{figure}}{{{latex_text(caption)}}}", r"\end{minipage}\par\medskip", ""])
+                      rf"\captionof{{figure}}{{{prose(caption)}}}", r"\end{minipage}\par\medskip", ""])
 
 
 def _table(stem: str, table: Table) -> str:
     # not a float either: in its place, never split across pages, its caption above it
     return "\n".join([r"\par\medskip\noindent\begin{minipage}{\linewidth}", r"\centering",
-                      rf"\captionof{{table}}{{{latex_text(table.caption)}}}", rf"\input{{{stem}.tex}}",
+                      rf"\captionof{{table}}{{{prose(table.caption)}}}", rf"\input{{{stem}.tex}}",
                       r"\end{minipage}\par\medskip", ""])
 
 
 def _question(q: Question, worksheet: bool, in_answer_key: bool) -> str:
     """A worksheet's question with room to write; in the answer key (or a handout) with its worked answer."""
-    lines = [rf"\question{{{q.number}}}{{{latex_text(q.text)}}}"]
+    lines = [rf"\question{{{q.number}}}{{{prose(q.text)}}}"]
     if worksheet and not in_answer_key:
         # the question and its lines on one page
         return "\n".join([r"\par\noindent\begin{minipage}{\linewidth}", *lines, rf"\answerlines{{{ANSWER_LINES}}}",
                           r"\end{minipage}\par\bigskip", ""])
     if q.answer:
-        lines += [r"\begin{answer}", "\n\n".join(latex_text(a) for a in q.answer), r"\end{answer}"]
+        lines += [r"\begin{answer}", "\n\n".join(prose(a) for a in q.answer), r"\end{answer}"]
     return "\n".join(lines + [""])
 
 
 def _block(p: _Placed, worksheet: bool) -> str:
     b = p.block
     if isinstance(b, Heading):
-        return (r"\section*{" if b.level == 1 else r"\subsection*{") + latex_text(b.text) + "}\n"
+        return (r"\section*{" if b.level == 1 else r"\subsection*{") + prose(b.text) + "}\n"
     if isinstance(b, Paragraph):
-        return latex_text(b.text) + "\n"
+        return prose(b.text) + "\n"
     if isinstance(b, Table):
         return _table(p.stem, b)
     if isinstance(b, (DiagramBlock, Strips)):
@@ -207,11 +238,11 @@ def handout_tex(handout: Handout, placed: list[_Placed], paper: str) -> str:
     """The standalone document: the preamble, the title, then every block in order (the answer key from a new
     page), each block a paragraph of its own."""
     parts = [_PREAMBLE % {"paper": _LATEX_PAPER[paper], "margin": f"{MARGIN_MM:g}"}, r"\begin{document}", "",
-             r"\begin{center}{\LARGE\bfseries " + latex_text(handout.title) + r"\par}\end{center}", ""]
+             r"\begin{center}{\LARGE\bfseries " + prose(handout.title) + r"\par}\end{center}", ""]
     key_started = False
     for p in placed:
         if p.in_answer_key and not key_started:
-            parts += [r"\clearpage", ""]
+            parts += [ANSWER_KEY_MARK, r"\clearpage", ""]
             key_started = True
         parts.append(_block(p, handout.worksheet))
     parts += [r"\end{document}", ""]
@@ -232,7 +263,11 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
     from rodparadox import render
 
     if isinstance(block, DiagramBlock):
-        figure = render.draw(block.history, block.frames, style).figure
+        # a worksheet's diagram without the scenario's title (a preset's may say what it asks) or the panels' velocities
+        options = render.Options() if block.tell else render.Options(titled=False)
+        diagram = render.draw(block.history, block.frames, style, options)
+        block.retitle(diagram)
+        figure = diagram.figure
     else:
         from matplotlib.figure import Figure
 
@@ -325,6 +360,16 @@ def readme(handout: Handout) -> str:
 # --- the folder ----------------------------------------------------------------------------------------------
 
 
+def tex_sources(handout: Handout, paper: str = "a4", placed: list[_Placed] | None = None) -> dict[str, str]:
+    """The folder's LaTeX text, without drawing a figure: handout.tex and each table's NAME.tex."""
+    placed = _place(handout) if placed is None else placed
+    text = {"handout.tex": handout_tex(handout, placed, paper)}
+    for p in placed:
+        if isinstance(p.block, Table):
+            text.setdefault(f"{p.stem}.tex", to_latex(p.block))
+    return text
+
+
 def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict[str, bytes]:
     """The folder of a handout for authors: relative file name -> bytes (module docstring), sorted by name.
 
@@ -335,13 +380,11 @@ def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict
     if style not in STYLES:
         raise ValueError(f"unknown style {style!r}; use one of {', '.join(STYLES)}.")
     placed = _place(handout)
-    text = {"handout.tex": handout_tex(handout, placed, paper)}
+    text = tex_sources(handout, paper, placed)
     figures = {}
     for p in placed:
-        name = f"{p.stem}.tex" if isinstance(p.block, Table) else f"{p.stem}.pdf"
-        if isinstance(p.block, Table):
-            text.setdefault(name, to_latex(p.block))
-        elif isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
+        name = f"{p.stem}.pdf"
+        if isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
             figures[name] = figure_pdf(p.block, paper, style)
     text.update(data_files(handout))
     text["README.txt"] = readme(handout)

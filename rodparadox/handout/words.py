@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
+from rodparadox.handout.document import Fact
 from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, fraction_text, impact_name, shown
 from rodparadox.physics.engine import Impact
 from rodparadox.physics.frames import Frame
@@ -96,6 +97,79 @@ def in_c_approx(u: float) -> str:
         decimal = signed_numeral(u, ANSWER_DIGITS).replace(exact_text, shown(abs(u), ANSWER_DIGITS))
         return f"{signed_numeral(u)} c ≈ {decimal} c"
     return in_c(u, ANSWER_DIGITS)
+
+
+# --- what a question asks, as it would be printed ----------------------------------------------------------------
+
+#: the digits a number is printed with anywhere (prose 4, a table 7, a figure's readout or colour bar 3 or 4)
+PRINTED_DIGITS = range(3, 8)
+
+
+def number_forms(x: float) -> tuple[str, ...]:
+    """Every way a handout, a table or a figure could print |x|: its fraction (15/17) and its decimals with 3 to 7
+    significant digits or decimals (0.882, 0.8824, 0.882353, 0.8823529; 1.3 for 1.299651 is too short to search). The sign is left out, so +0.8824 and
+    −0.8824 are both found. A round number (x to two significant digits: 0, 0.6, 1.2, 0.25) has none: it is also
+    what the set-up gives (v = 0.6, 0.5 L), so finding it would tell nothing."""
+    x = abs(x + 0.0)
+    if abs(float(f"{x:.2g}") - x) <= 1e-12 * max(1.0, x) or not 1e-3 <= x < 1e6:
+        return ()
+    forms = {fraction_text(x)} | {shown(x, d) for d in PRINTED_DIGITS} | {f"{x:.{d}f}" for d in PRINTED_DIGITS}
+    return tuple(sorted(f for f in forms if f and ("/" in f or len(f.replace(".", "").lstrip("0")) >= 3)))
+
+
+def told_number(what: str, x: float) -> Fact:
+    """A number a question asks for (`number_forms`)."""
+    return Fact(what, number_forms(x), number=True)
+
+
+def told_claim(what: str, *phrases: str) -> Fact:
+    """A claim a question asks about, as the phrases that would state it."""
+    return Fact(what, tuple(dict.fromkeys(phrases)))
+
+
+def simultaneity_facts(first: str, second: str, frame: str, same: bool, gap: float = 0.0) -> tuple[Fact, ...]:
+    """Whether two impacts (named B₁, A₁) are simultaneous in a frame (named S′), and if not how far apart: the
+    phrases that state it (a ledger's row label "B₁ and A₁" for one instant, "same instant of S′", the preset's
+    title "simultaneous in the moving frame") and the interval."""
+    described = {"S": "the rod's rest frame", "S′": "the moving frame"}.get(frame, frame)
+    if same:
+        return (told_claim(f"{first} and {second} simultaneous in {frame}", f"{first} and {second}",
+                           f"{second} and {first}", f"simultaneous in {frame}", f"simultaneous in {described}",
+                           f"same instant of {frame}", f"one instant of {frame}", "share one"),)
+    return (told_claim(f"{first} and {second} not simultaneous in {frame}", "not simultaneous",
+                       f"different instants of {frame}", f"different instants of {described}"),
+            told_number(f"the time between {first} and {second} in {frame}", gap))
+
+
+def order_facts(earlier: str, later: str, frame: str) -> tuple[Fact, ...]:
+    """That one impact comes before another in a frame's time, as the phrases that would say so."""
+    return (told_claim(f"{earlier} before {later} in {frame}", f"{earlier} comes before {later}",
+                       f"{later} comes after {earlier}", f"after {earlier} and before {later}",
+                       f"{earlier}, then {later}", f"{later} comes"),)
+
+
+# --- variables in math italics ---------------------------------------------------------------------------------
+
+#: the letters that are variables wherever they stand alone (v, L, t, x, E, p, u, w, m): set in math italics, while
+#: units (c, M), frames (S, S′) and labels (A, B₁) stay upright
+VARIABLES = "vLtxEpuwm"
+#: a variable: one of VARIABLES standing alone (no letter or apostrophe before it, no letter after it), with its
+#: primes, subscripts (tᵤ, x_P) and powers (u²)
+VARIABLE = re.compile(rf"(?<![A-Za-z'’_])[{VARIABLES}]['′]*(?:_[A-Z]|[ᵤ₀-₉]+)?²?(?![A-Za-z0-9])")
+
+
+def math_pieces(text: str) -> list[tuple[str, bool]]:
+    """The text cut into (piece, is a variable), in order: "t′ = 17/12 L" -> [("t′", True), (" = 17/12 ", False),
+    ("L", True)]. The PDF sets the variables in italics, the LaTeX in $...$."""
+    pieces, k = [], 0
+    for m in VARIABLE.finditer(text):
+        if m.start() > k:
+            pieces.append((text[k:m.start()], False))
+        pieces.append((m.group(), True))
+        k = m.end()
+    if k < len(text):
+        pieces.append((text[k:], False))
+    return pieces
 
 
 # --- names -----------------------------------------------------------------------------------------------------

@@ -43,4 +43,4 @@ def questions(history: History, frames: Sequence[Frame], compare_v: float | None
     asked = asked[:8]
     if chosen is not None:  # the teacher's choice (--questions 1,3,5), renumbered from 1 in worksheet and key alike
         asked = [asked[k - 1] for k in chosen if 1 <= k <= len(asked)]
-    return tuple(Question(k + 1, text, answer) for k, (text, answer) in enumerate(asked))
+    return tuple(Question(k + 1, q.text, q.answer, q.asks) for k, q in enumerate(asked))

@@ -1,7 +1,8 @@
 """A worksheet's questions on frames, with their worked answers: an impact read off two panels, a Lorentz
 transformation, the relativistic addition of velocities, and the same scenario at another speed. Pure.
 
-Each question is a pair (text, worked answer's paragraphs), an `Asked`; the
+Each question is an `Asked`: its text, its worked answer's paragraphs and the facts it asks for
+(`document.Fact`: what the worksheet must not print before its key); the
 numbers are computed by the tool, S′ moving at −v relative to S, so
 t′ = γ(t + v x) (derived from `Event.seen_from`, never copied from the paper's
 appendix, which misprints the sign).
@@ -10,12 +11,14 @@ appendix, which misprints the sign).
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from typing import NamedTuple, Sequence
 
 from rodparadox.errors import RodParadoxError
 from rodparadox.handout.reading import Reading
+from rodparadox.handout.document import Fact
 from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, capitalised, impact_names,
-                                      in_c, in_c_approx, in_l, in_l_approx, listed, numeral_approx, signed_numeral)
+                                      in_c, in_c_approx, in_l, in_l_approx, listed, numeral_approx, order_facts,
+                                      signed_numeral, simultaneity_facts, told_claim, told_number)
 from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.engine import History, Impact, run
 from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, moving_frame, relative_velocity, rest_frame
@@ -28,7 +31,12 @@ OTHER_SPEEDS = (0.8, 0.5, 0.9, 0.3)
 OTHER_SPEED_GAP = 0.15
 
 
-Asked = tuple[str, tuple[str, ...]]
+class Asked(NamedTuple):
+    """A question: its text, its worked answer's paragraphs, and the facts it asks for."""
+
+    text: str
+    answer: tuple[str, ...]
+    asks: tuple[Fact, ...] = ()
 
 
 def gamma(w: float) -> float:
@@ -71,10 +79,13 @@ def question_read(r: Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> As
     """Read an impact's coordinates off two panels, checked by the interval t² − x², the same in every frame."""
     h = r.history
     i = next((i for i in reversed(h.impacts) if i not in avoid), h.impacts[-1])
-    panels = [f for f in (a, b) if f in r.frames] or list(r.frames[:1])
-    lines, checks = [], []
+    # an impact the Lorentz question gives in frame a is read in frame b alone
+    panels = [f for f in ((b,) if i in avoid else (a, b)) if f in r.frames] or list(r.frames[:1])
+    lines, checks, asks = [], [], []
     for f in panels:
         x, t = r.length(r.x(i, f)), r.length(r.t(i, f))
+        asks += [told_number(f"{impact_name(i.label)}'s {c} in {frame_name(f)}", value)
+                 for c, value in zip(coordinates(f), (x, t))]
         xs, ts = coordinates(f)
         letter = PANEL_LETTERS[r.frames.index(f)]
         lines.append(f"In {frame_name(f)} (panel ({letter})): {xs} = {in_l_approx(x)}, {ts} = {in_l_approx(t)}.")
@@ -84,10 +95,10 @@ def question_read(r: Reading, a: Frame, b: Frame, avoid: Sequence[Impact]) -> As
     text = (f"Read off the diagram, in {where}, where and when {impact_name(i.label)} happens ({i.particle} striking "
             f"the {i.end} end).")
     if len(panels) == 1:
-        return text, tuple(lines) + ("A careful reading gets these to about a twentieth of L.",)
+        return Asked(text, tuple(lines) + ("A careful reading gets these to about a twentieth of L.",), tuple(asks))
     answer = tuple(lines) + (f"A careful reading gets these to about a twentieth of L. The check, in units of L²: "
                              f"{'; '.join(checks)}: the same, as a Lorentz transformation keeps t² − x².",)
-    return text + " Check your readings: t² − x² must be the same in every frame.", answer
+    return Asked(text + " Check your readings: t² − x² must be the same in every frame.", answer, tuple(asks))
 
 
 def question_lorentz(r: Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -> Asked:
@@ -117,13 +128,18 @@ def question_lorentz(r: Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -
         x, t = r.length(r.x(i, a)), r.length(r.t(i, a))
         steps.append(f"And {xb} = {answer_numeral(g)} × ({answer_numeral(x)} {sign} {W} × {bracketed(t)}) L = "
                      f"{in_l_approx(g * (x - w * t))}.")
-        return (f"In {A}, {given}. {capitalised(B)} moves at {in_c(w, ANSWER_DIGITS)} relative to {A}. Use the Lorentz "
-                f"transformation to find where and when it strikes in {B}.", tuple(steps))
+        asks = (told_number(f"{impact_name(i.label)}'s {tb}", times[0]),
+                told_number(f"{impact_name(i.label)}'s {xb}", g * (x - w * t)))
+        return Asked(f"In {A}, {given}. {capitalised(B)} moves at {in_c(w, ANSWER_DIGITS)} relative to {A}. Use the "
+                     f"Lorentz transformation to find where and when it strikes in {B}.", tuple(steps), asks)
     p, q = pair
     apart_a = abs(r.length(r.t(q, a) - r.t(p, a)))
     same_a = r.same_time(r.t(p, a), r.t(q, a))
     same_b = r.same_time(r.t(p, b), r.t(q, b))
     in_a = f"in {A} they are simultaneous" if same_a else f"in {A} they are {in_l(apart_a, ANSWER_DIGITS)} apart"
+    asks = [told_number(f"{impact_name(i.label)}'s {tb}", time) for i, time in zip(pair, times)]
+    names = [impact_name(i.label) for i in sorted(pair, key=lambda i: r.t(i, b))]
+    asks += simultaneity_facts(*names, B, same_b, abs(times[1] - times[0]))
     if same_b:
         steps.append(f"The two times are equal: {impact_name(p.label)} and {impact_name(q.label)} are simultaneous in "
                      f"{B}, while {in_a}.")
@@ -135,7 +151,8 @@ def question_lorentz(r: Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -
             f"transformation to find {tb} of each. Are they simultaneous in {B}?")
     if not same_a and not same_b and (r.t(p, a) - r.t(q, a)) * (r.t(p, b) - r.t(q, b)) < 0:
         text += f" Which comes first in {B}?"
-    return text, tuple(steps)
+        asks += order_facts(*names, B)
+    return Asked(text, tuple(steps), tuple(asks))
 
 
 def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
@@ -165,7 +182,9 @@ def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
     if abs(u - w) >= 1.0:
         answer.append(f"Adding velocities as Galileo did would give {in_c(u - w, ANSWER_DIGITS)}, faster than "
                       f"light.")
-    return f"{given} Use the relativistic addition of velocities to find {what} in {B}.", tuple(answer)
+    asks = (told_number(f"{what} in {B}", result),) + ((told_claim(f"{what} in {B}: at rest", f"at rest in {B}"),)
+                                                        if result == 0.0 else ())
+    return Asked(f"{given} Use the relativistic addition of velocities to find {what} in {B}.", tuple(answer), asks)
 
 
 def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None = None) -> Asked | None:
@@ -188,7 +207,11 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
     labels = [i.label for i in h.impacts[:2]]
     names = [impact_name(label) for label in labels]
 
+    asks: list[Fact] = []  # what the run at v2 finds (at v the other questions ask it, or the set-up gives it)
+
     def facts(history: History) -> str:
+        at = f"at v = {exact(history.scenario.v)}"
+        told = len(asks)
         reading = Reading(history, tuple(moving_frame(history.scenario.v) if f.name == "moving" else f
                                           for f in (a, b)))
         found = {i.label: i for i in history.impacts}
@@ -197,6 +220,9 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
             p, q = found[labels[0]], found[labels[1]]
             for f in reading.frames:
                 gap = reading.length(reading.t(q, f) - reading.t(p, f))
+                # the intervals at v2 (the phrases "A₁ and B₁" name this worksheet's impacts at v, not v2's)
+                asks.extend(f for f in simultaneity_facts(names[0], names[1], frame_name(f), gap == 0.0, abs(gap))
+                            if f.number)
                 out.append(f"{names[0]} and {names[1]} are simultaneous in {frame_name(f)}" if gap == 0.0 else
                            f"{names[1]} comes {in_l(abs(gap), ANSWER_DIGITS)} {'after' if gap > 0 else 'before'} "
                            f"{names[0]} in {frame_name(f)}")
@@ -204,11 +230,17 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
             out.append(f"the rod is struck {len(history.impacts)} times: {impact_names(history.impacts)}")
         elif history.rigid.turns:
             start, end = turn_interval(history.rigid.turns[0], 0.0)
+            asks.append(told_number(f"the far end's delay in S {at}", reading.length(end - start)))
             out.append(f"the far end takes {in_l(reading.length(end - start), ANSWER_DIGITS)} of S's time to reach "
                        f"the rod's new velocity")
         final = reading.velocity(history.final_rapidity, rest_frame())
+        asks.append(told_claim(f"the rod at rest at the end in S {at}", "ends at rest", "at rest again",
+                               "rest before and after", "finally at rest") if final == 0.0 else
+                    told_number(f"the rod's final velocity in S {at}", final))
         out.append("the rod ends at rest in S" if final == 0.0 else
                    f"the rod ends moving at {in_c(final, ANSWER_DIGITS)} in S")
+        if history is h:
+            del asks[told:]
         return "; ".join(out)
 
     v, v2 = exact(s.v), exact(other.scenario.v)
@@ -221,4 +253,5 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
     else:
         asked = "How long does the far end of the rod take, in S, to reach the rod's new velocity? How does the rod end?"
     text = f"Now take v = {v2} instead of {v} ({changes}). {asked} Compare with v = {v}."
-    return text, (f"At v = {v}: {facts(h)}.", f"At v = {v2} (the tool runs the scenario again): {facts(other)}.")
+    answer = (f"At v = {v}: {facts(h)}.", f"At v = {v2} (the tool runs the scenario again): {facts(other)}.")
+    return Asked(text, answer, tuple(asks))

@@ -10,7 +10,8 @@ import math
 
 from rodparadox.handout.reading import Reading, zigzags
 from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, impact_names, in_c, in_l,
-                                      in_l_approx, listed, numeral_approx, pushed, summand, time_name)
+                                      in_l_approx, listed, numeral_approx, pushed, summand, time_name, told_claim,
+                                      told_number)
 from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
 from rodparadox.physics.engine import Impact
 from rodparadox.physics.frames import Frame, frame_name, rest_frame
@@ -102,10 +103,17 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
              "simultaneity: the impulse of the first sits in the stress until the second arrives")
     steps.append(f"It is carried by the stress in the rod: {where}. (The hidden energy on the slice is "
                  f"{numeral_approx(s.hidden.E)} M c².)")
-    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol} ({_between(r, f, t)}), "
-            f"{listed(known)}. Before the first impact the bodies' total momentum in {symbol} was "
-            f"{answer_numeral(total.p)} M c. How much momentum is hidden on this slice, and where is it?")
-    return text, tuple(steps)
+    # where the slice lies among the impacts is the answer's (it tells the order of the impacts in the frame), and
+    # the total is the student's to find (given, it may be a number another question asks: γ v for one particle)
+    steps[:0] = [f"The slice lies {_between(r, f, t)}. Before the first impact the bodies' total momentum in "
+                 f"{symbol}, m u/√(1 − u²) summed over the rod and the particles at their first velocities, is "
+                 f"{answer_numeral(total.p)} M c, and it is conserved."]
+    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol}, {listed(known)}. Find the bodies' "
+            f"total momentum in {symbol} before the first impact, from the set-up. How much momentum is hidden on "
+            f"this slice, and where is it?")
+    asks = (told_number(f"the hidden momentum on the slice {time} = {in_l(r.length(t))} of {symbol}", hidden),
+            told_number(f"the bodies' total momentum in {symbol}", total.p))
+    return Asked(text, tuple(steps), asks)
 
 
 def question_stopped_turn(r: Reading) -> Asked | None:
@@ -137,7 +145,10 @@ def question_stopped_turn(r: Reading) -> Asked | None:
               f"while the rod's momentum moves at {in_c(u_rod, ANSWER_DIGITS)} after {name}: the {far} end had "
               f"not caught up when {stop} struck, so the rod never moved as a whole at "
               f"{in_c(u_rod, ANSWER_DIGITS)}.")
-    return text, answer
+    asks = (told_number(f"the {far} end's velocity in S at {stop}", u_far),
+            told_number(f"the rod's velocity in S after {name}", u_rod),
+            told_claim(f"the {far} end had not caught up at {stop}", "not caught up", "never moved as a whole"))
+    return Asked(text, answer, asks)
 
 
 def question_at_rest(r: Reading) -> Asked | None:
@@ -162,7 +173,10 @@ def question_at_rest(r: Reading) -> Asked | None:
                   f"At rest in {symbol}, it has its full proper length L there. Before it is struck it moves at "
                   f"{in_c(u0, ANSWER_DIGITS)} in {symbol}, contracted to L √(1 − u²) = L √(1 − {bracketed(u0)}²) "
                   f"= {in_l_approx(1.0 / gamma(u0))}.")
-        return text, answer
+        asks = (told_number(f"when the rod comes to rest in {symbol}", r.length(end)),
+                told_claim(f"the rod at rest in {symbol} has its full length", "full length", "proper length L there"),
+                told_number(f"the rod's length in {symbol} before it is struck", 1.0 / gamma(u0)))
+        return Asked(text, answer, asks)
     return None
 
 
@@ -187,7 +201,9 @@ def question_single(r: Reading) -> Asked | None:
               f"{in_c(u, ANSWER_DIGITS)} from the impact on, moves {in_l_approx(abs(u) * delay)} to the "
               f"{'right' if u > 0 else 'left'}; the rod then has "
               f"its moving length L/γ = {in_l_approx(1.0 / g)} in S.")
-    return text, answer
+    asks = (told_number(f"how long the {far} end takes in S", delay),
+            told_number("how far the struck end moves meanwhile", abs(u) * delay))
+    return Asked(text, answer, asks)
 
 
 def _s_table(r: Reading) -> str:
@@ -221,7 +237,12 @@ def question_momentum(r: Reading, collision: tuple[Impact, ...] | None = None) -
     if why:
         answer.append("The particles' momenta do not cancel before the impacts (the heavier one carries more), so the "
                       "rod carries the difference after them.")
-    return text, tuple(answer)
+    asks = [told_number(f"momentum in S before {impact_names(c)}", before + pb),
+            told_number(f"momentum in S after {impact_names(c)}", after + pa)]
+    asks += [told_number(f"{i.particle}'s momentum in S before {impact_names(c)}",
+                         momentum(s.particle(i.particle).mass, r.velocity(i.particle_rapidity_before, rest)))
+             for i in c]
+    return Asked(text, tuple(answer), tuple(asks))
 
 
 def question_together(r: Reading, b: Frame) -> Asked | None:
@@ -248,7 +269,10 @@ def question_together(r: Reading, b: Frame) -> Asked | None:
               f"of its own simultaneity, and there the impulses cancel{cancel}.",
               f"Between the two impacts in {symbol} the momentum {first.particle} has given up is held by the stress "
               f"in the rod: the hidden part of the ledger, which the question on hidden momentum computes.")
-    return text, answer
+    asks = (told_number(f"the rod's velocity in {symbol} between {impact_names(c)}", u_rod),
+            told_claim(f"the rod takes {impact_names(c)} together", f"takes {impact_names(c)} together",
+                       f"{impact_names(c)} together", "impulses cancel"))
+    return Asked(text, answer, asks)
 
 
 def question_zigzag(r: Reading) -> Asked | None:
@@ -272,4 +296,8 @@ def question_zigzag(r: Reading) -> Asked | None:
                       f"{in_c(r.velocity(repeat.rod_rapidity_before, rest), ANSWER_DIGITS)}: its {repeat.end} end "
                       f"closes on {repeat.particle} again, at {impact_name(repeat.label)}. The impulses do not cancel "
                       f"because the rod takes them one at a time.")
-    return text, tuple(answer)
+    asks = [told_number(f"the rod's velocity in S after {impact_names(c)}", u[k + 1])
+            for k, c in enumerate(r.collisions)]
+    asks.append(told_claim("the rod zig-zags in S", "zig-zag", *(f"it {pushed(u[k], u[k + 1])}"
+                                                                for k in range(len(r.collisions)))))
+    return Asked(text, tuple(answer), tuple(asks))

@@ -1,0 +1,114 @@
+"""Pages set like a book (issue 14, item 5), read from the page plan (`pdf.page_plan`: where each block lands) for
+every preset, A4 and Letter, handout and worksheet: no heading or introduction left at a page's foot apart from
+what follows it; a short table on one page with its introduction; every strip block under its frame's heading on
+its page; a question with its answer lines on one page; no page more than a quarter empty but a section's last.
+
+The plan is measured without drawing (no figure is rendered: `page_plan` lays out the same blocks `to_pdf` sets)."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import history
+from rodparadox.handout.build import build
+from rodparadox.handout.pdf import page_plan
+from rodparadox.io.scenario import builtin_names
+
+#: the speed the plans are read at (the looking, at 0.3, 0.6 and 0.95, is in the report)
+V = 0.6
+#: the rules' quarter of a page (not the code's constant: a change of it must show here)
+QUARTER = 0.25
+
+
+@pytest.fixture(scope="module", params=["a4", "letter"])
+def plans(request):
+    """Per paper: each preset's handout and worksheet, and the plan of its pages."""
+    out = []
+    for name in builtin_names():
+        for worksheet in (False, True):
+            doc = build([(name, history(name, V))], worksheet=worksheet)
+            out.append((f"{name} {'worksheet' if worksheet else 'handout'} {request.param}", doc,
+                        page_plan(doc, request.param)))
+    return out
+
+
+def _pairs(plan):
+    blocks = [b for b in plan.blocks if b.pieces]
+    return list(zip(blocks, blocks[1:]))
+
+
+def test_no_heading_or_introduction_is_left_apart_from_what_follows_it(plans):
+    for label, _, plan in plans:
+        for block, following in _pairs(plan):
+            if block.kind.startswith("heading") or (block.kind == "paragraph" and following.kind in
+                                                     ("table", "picture")):
+                # its last line and the next block's first piece on one page
+                assert block.pieces[-1][0] == following.pieces[0][0], (label, block, following)
+
+
+def test_a_short_table_is_whole_and_on_its_introduction_s_page(plans):
+    for label, _, plan in plans:
+        for block, following in _pairs(plan):
+            if following.kind == "table" and len(following.pieces) == 1:
+                continue
+            if following.kind == "table":
+                top, bottom = following.pieces[0][1], following.pieces[-1][2]
+                assert bottom - top > QUARTER * plan.text_height or len(following.pieces) > 1, (label,)
+        for block in plan.blocks:
+            if block.kind == "table" and len(block.pieces) > 1:
+                height = sum(bottom - top for _, top, bottom in block.pieces)
+                assert height > QUARTER * plan.text_height, (label, "a short table was split", block)
+
+
+def test_every_strip_block_is_under_its_frame_s_heading_and_every_question_with_its_lines(plans):
+    for label, doc, plan in plans:
+        kinds = [b.kind for b in plan.blocks if b.kind != "break"]
+        placed = [b for b in plan.blocks if b.kind != "break"]
+        strips = [k for k, b in enumerate(doc.blocks()) if type(b).__name__ == "Strips"]
+        headings = [b for b in doc.blocks() if type(b).__name__ == "Heading"]
+        assert len(strips) == len([h for h in headings if h.text.startswith("The rod at successive instants of")])
+        for k, block in enumerate(doc.blocks()):
+            if type(block).__name__ == "Strips":
+                before = doc.blocks()[k - 1]
+                assert type(before).__name__ == "Heading" and before.text.endswith(
+                    "of S" if block.frame.name == "rest" else "of S′"), (label, before)
+                assert kinds[k - 1] == "heading2" and placed[k - 1].pieces[-1][0] == placed[k].pieces[0][0]
+            if type(block).__name__ == "Question" and doc.worksheet and k < sum(len(x.blocks) for x in doc.sections):
+                assert len({page for page, _, _ in placed[k].pieces}) == 1, (label, block.number)
+
+
+def _whole(table, placed, text_height: float) -> bool:
+    """A table set whole by rule: short, or at most two groups of rows (a ledger's instant: rows after the first
+    with an empty first cell), counted here from its rows."""
+    groups = sum(1 for row in table.rows if row[0].text or table.align[0] == "n")
+    height = placed.pieces[-1][2] - placed.pieces[0][1]
+    return len(placed.pieces) == 1 and (height <= QUARTER * text_height + 1e-6 or groups <= 2)
+
+
+def test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans):
+    """...nor one whose next page starts with what cannot be split and did not fit the space left: a figure (never
+    split or shrunk), a table set whole (short, or one instant's rows), with the heading or introduction kept with
+    it."""
+    empty = []
+    for label, doc, plan in plans:
+        ends = {}  # each page's lowest filled point, and whether a section (or the key) starts on the next page
+        for block in plan.blocks:
+            for page, _, bottom in block.pieces:
+                ends[page] = max(ends.get(page, 0.0), bottom)
+        breaks = set()
+        placed = [b for b in plan.blocks if b.pieces or b.kind == "break"]
+        for k, (block, following) in enumerate(zip(placed, placed[1:])):
+            if following.kind in ("break", "heading1") and block.pieces:
+                breaks.add(block.pieces[-1][0])  # a section's (or the answer key's) last page
+        blocks = dict(zip([id(b) for b in plan.blocks if b.kind != "break"], doc.blocks()))
+        for page in range(plan.pages - 1):
+            # what the next page starts with: the block of its first piece, and what is kept with it
+            k = next(k for k, b in enumerate(placed) if any(p == page + 1 for p, _, _ in b.pieces))
+            kept = next((b for b in placed[k:k + 3] if b.kind not in ("heading2", "paragraph")), None)
+            if kept is not None and (kept.kind == "picture" or (kept.kind == "table" and _whole(
+                    blocks[id(kept)], kept, plan.text_height))):
+                breaks.add(page)
+        for page in range(plan.pages - 1):
+            if page not in breaks and ends.get(page, 0.0) < 0.75 * plan.text_height:
+                empty.append((label, page + 1, round(1 - ends.get(page, 0.0) / plan.text_height, 2)))
+    assert not empty, empty

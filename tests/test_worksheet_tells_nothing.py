@@ -1,0 +1,187 @@
+"""A worksheet asks and never tells before its key (issue 14, item 1), read as the student gets it: the text of
+every page before the answer key (the pages' drawn text, tick labels and panel titles included; the PDF's own text
+at one speed; the LaTeX of --format tex) searched for every fact each question asks (`document.Fact`: a number in
+every printed form, a claim as its phrases), for every preset at v = 0.3, 0.6, 0.95.
+
+One worksheet of all the presets per speed, built once per session and split into its sections by their headings,
+so each question's facts are searched in its own scenario's pages."""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+import math
+import re
+
+import pypdf
+import pytest
+from matplotlib.backends.backend_pdf import PdfPages
+from matplotlib.text import Text
+
+from conftest import history
+from rodparadox import render
+from rodparadox.handout.build import build
+from rodparadox.handout.document import Fact, Heading, Paragraph, Question
+from rodparadox.handout.pdf import page_figures
+from rodparadox.handout.pdf_text import TextRuns
+from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
+from rodparadox.io.scenario import builtin_names
+from rodparadox.physics.frames import paper_frames
+
+SPEEDS = (0.3, 0.6, 0.95)
+#: the speed whose worksheet is also saved as a PDF and read back with pypdf (saving is the costly part)
+PDF_SPEED = 0.95
+SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _plain(text: str) -> str:
+    """A figure's mathtext label as the PDF prints it ($A_{1}$ -> A₁), whitespace as single spaces."""
+    text = re.sub(r"_\{(\d+)\}", lambda m: m.group(1).translate(SUBSCRIPTS), text).replace("$", "")
+    return " ".join(text.split())
+
+
+def _ascii(text: str) -> str:
+    return text.translate({ord(c): str(k) for k, c in enumerate("₀₁₂₃₄₅₆₇₈₉")})
+
+
+def leaks(fact: Fact, text: str, latex: bool = False, ascii_digits: bool = False) -> list[str]:
+    """The forms of the fact found in the text: a number standing alone (no digit or point-digit either side), a
+    phrase anywhere; in LaTeX each form as `tex.prose` writes it; with `ascii_digits` (a PDF's text) B₁ as B1."""
+    found = []
+    for form in fact.forms:
+        written = prose(form) if latex else _ascii(form) if ascii_digits else form
+        pattern = (rf"(?<![0-9.]){re.escape(written)}(?![0-9]|\.[0-9])" if fact.number else
+                   re.escape(written) + ("(?![′'])" if not latex else r"(?!')"))  # "in S" is not "in S′"
+        if re.search(pattern, text):
+            found.append(form)
+    return found
+
+
+def _page_texts(figures) -> list[str]:
+    """Each page's drawn text: the runs of the page and every visible Text of its diagrams, tick labels too."""
+    out = []
+    for figure in figures:
+        for ax in figure.findobj(lambda a: hasattr(a, "xaxis")):
+            ax.xaxis.get_majorticklabels()
+            ax.yaxis.get_majorticklabels()
+        texts = []
+        for artist in figure.findobj(lambda a: isinstance(a, (Text, TextRuns))):
+            if isinstance(artist, TextRuns):
+                texts += [run.text for run in artist.runs]
+            elif artist.get_visible() and artist.get_text():
+                texts.append(artist.get_text())
+        out.append(_plain("\n".join(texts)))
+    return out
+
+
+def _by_section(doc, pages: list[str]) -> list[str]:
+    """The pages' text gathered per section of the document: each scenario's section starts a new page, the one
+    holding its set-up ("A rod of proper length"); the first section is the introduction."""
+    out = [""] * len(doc.sections)
+    k = 0
+    for page in pages:
+        if "A rod of proper length" in page:
+            k += 1
+        out[k] += " " + page
+    assert k == len(doc.sections) - 1, "every scenario's section starts a page with its set-up"
+    return out
+
+
+@pytest.fixture(scope="session")
+def worksheets():
+    """Per speed: the worksheet of every preset, and per section the text before the key as the figures draw it
+    (and at PDF_SPEED as the PDF's text), and as handout.tex and its tables give it."""
+    out = {}
+    for v in SPEEDS:
+        doc = build([(name, history(name, v)) for name in builtin_names()], worksheet=True)
+        before_key = dataclasses.replace(doc, answer_key=())
+        figures = page_figures(before_key)
+        drawn = _by_section(doc, _page_texts(figures))
+        pdf = None
+        if v == PDF_SPEED:
+            buffer = io.BytesIO()
+            with render.style_context("print"), PdfPages(buffer) as pages:
+                for figure in figures:
+                    pages.savefig(figure)
+            # the figures' labels (mathtext) come back as A1, the text's as A₁: read both as A1
+            pdf = _by_section(doc, [_ascii(" ".join(p.extract_text().split()))
+                                    for p in pypdf.PdfReader(io.BytesIO(buffer.getvalue())).pages])
+        sources = tex_sources(doc)
+        main = sources["handout.tex"].split(ANSWER_KEY_MARK)[0]
+        main = re.sub(r"\\input\{([^}]*)\}", lambda m: sources[m.group(1)].replace("\\", "\\\\"), main)
+        latex = main.split(r"\section*{")[1:]
+        assert len(latex) == len(doc.sections)
+        out[v] = doc, drawn, pdf, latex
+    return out
+
+
+def _questions(section) -> list[Question]:
+    return [b for b in section.blocks if isinstance(b, Question)]
+
+
+@pytest.mark.parametrize("v", SPEEDS)
+def test_no_page_before_the_key_states_what_a_question_asks(worksheets, v):
+    doc, drawn, pdf, latex = worksheets[v]
+    found = []
+    for k, section in enumerate(doc.sections[1:], start=1):
+        asked = _questions(section)
+        asking = [sentence for q in asked for sentence in re.findall(r"[^.?]*\?", q.text)]
+        asking = [t for sentence in asking for t in (sentence.strip(), prose(sentence.strip()))]
+        assert asked and all(q.asks for q in asked), (section.name, "every question names the facts it asks")
+        for q in asked:
+            for fact in q.asks:
+                # a sentence that asks ("Are they simultaneous in S′?") states nothing; its numbers still count
+                own = [] if fact.number else asking
+                texts = [("drawn", drawn[k]), ("latex", latex[k])] + ([("pdf", pdf[k])] if pdf else [])
+                for where, text in texts:
+                    for phrase in own:
+                        text = text.replace(_ascii(phrase) if where == "pdf" else phrase, "")
+                    hits = leaks(fact, text, latex=where == "latex", ascii_digits=where == "pdf")
+                    if hits:
+                        found.append((section.name, v, q.number, fact.what, where, hits))
+    assert not found, "\n".join(map(str, found))
+
+
+@pytest.mark.parametrize("v", SPEEDS)
+def test_the_facts_are_what_the_key_answers(worksheets, v):
+    """The facts are real: every number is printed in the key's worked answer of its question (in one of its forms),
+    and the rod's velocity after each collision in S′, computed here independently as tanh of the engine's rapidity
+    less S′'s, is among the facts of the velocity question wherever that question asks about the rod."""
+    doc = worksheets[v][0]
+    asked = [(section, q) for section in doc.sections[1:] for q in _questions(section)]
+    answered = [b for b in doc.answer_key if isinstance(b, Question)]
+    assert [q.text for _, q in asked] == [q.text for q in answered]  # the key's, in the same order
+    for (section, q), key in zip(asked, answered):
+        answer = " ".join(key.answer)
+        for fact in q.asks:
+            if fact.number and fact.forms:
+                assert leaks(fact, answer), (section.name, q.number, fact.what, answer)
+    for section in doc.sections[1:]:
+        velocity = next(q for q in _questions(section) if "relativistic addition" in q.text)
+        h = history(section.name, v)
+        eta = paper_frames(v)[1].rapidity
+        for i in h.impacts:
+            u = math.tanh(i.rod_rapidity_after - eta)
+            what = f"the rod's velocity after {i.label[0]}{i.label[1:].translate(SUBSCRIPTS)} in S′"
+            asked_here = [f for f in velocity.asks if f.what == what]
+            if asked_here and asked_here[0].forms:
+                assert f"{abs(u):.4f}" in asked_here[0].forms, (section.name, what, u, asked_here[0].forms)
+
+
+def test_a_planted_leak_is_found():
+    """The search's power: a sentence planted before the key that states a question's fact is found, in the model's
+    text and as LaTeX (fig2 at 0.6: the rod's velocity after A₁ in S′ is 15/17; B₁ and A₁ share t′ = 17/12)."""
+    doc = build([("fig2", history("fig2", 0.6))], worksheet=True)
+    asks = {f.what: f for q in _questions(doc.sections[1]) for f in q.asks}
+    velocity = asks["the rod's velocity after A₁ in S′"]
+    together = next(f for what, f in asks.items() if what.endswith(" simultaneous in S′") and "not" not in what)
+    for planted in ("the rod moves at +0.8824 c after A₁", "a colour bar's tick 0.882", "15/17"):
+        assert leaks(velocity, planted) and leaks(velocity, prose(planted), latex=True)
+    assert not leaks(velocity, "x = 10.88241 L, t = 0.88245")
+    for planted in ("B₁ and A₁", "Impacts simultaneous in the moving frame", "at the same instant of S′ as B's"):
+        assert leaks(together, planted) and leaks(together, prose(planted), latex=True)
+    # and planted into the worksheet itself, the section's text as the test above reads it finds it
+    section = doc.sections[1]
+    planted = dataclasses.replace(section, blocks=section.blocks + (Paragraph("After A₁ the rod moves at +15/17 c."),))
+    text = " ".join(b.text for b in planted.blocks if isinstance(b, Paragraph))
+    assert leaks(velocity, text)
