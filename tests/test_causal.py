@@ -27,6 +27,9 @@ from rodparadox.physics.causal import run
 from rodparadox.physics.engine import run as run_rigid
 from rodparadox.physics.model import Particle, Scenario, Timing
 
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
+pytestmark = pytest.mark.xdist_group("causal")
+
 
 def _single(v: float, mass: float = 1.0, name: str = "A", gap: float = 0.5) -> Scenario:
     return Scenario("single", v, (Particle(name, mass, gap=gap),), 1.0)

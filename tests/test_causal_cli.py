@@ -11,6 +11,9 @@ from click.testing import CliRunner
 
 from sears_paradox_cli.main import main
 
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
+pytestmark = pytest.mark.xdist_group("causal_cli")
+
 
 def run(*args, expect=0):
     result = CliRunner().invoke(main, list(args))

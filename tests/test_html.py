@@ -31,6 +31,9 @@ from sears_paradox_cli.main import main
 
 from conftest import history
 
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
+pytestmark = pytest.mark.xdist_group("html")
+
 ROOT = Path(__file__).resolve().parent.parent
 MB = 1 << 20
 

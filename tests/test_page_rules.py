@@ -14,6 +14,9 @@ from rodparadox.handout.build import build
 from rodparadox.handout.pdf import page_plan
 from rodparadox.io.scenario import builtin_names
 
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
+pytestmark = pytest.mark.xdist_group("page_rules")
+
 #: the speed the plans are read at (the looking, at 0.3, 0.6 and 0.95, is in the report)
 V = 0.6
 #: the rules' quarter of a page (not the code's constant: a change of it must show here)

@@ -28,6 +28,9 @@ from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
 from rodparadox.io.scenario import builtin_names
 from rodparadox.physics.frames import paper_frames
 
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
+pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
+
 SPEEDS = (0.3, 0.6, 0.95)
 #: the speed whose worksheet is also saved as a PDF and read back with pypdf (saving is the costly part)
 PDF_SPEED = 0.95
