@@ -101,3 +101,25 @@ def test_a_lens_shows_the_rod_at_least_a_third_of_its_width_at_every_instant(v):
             length = segments[-1][-1][0] - segments[0][0][0]
             width = ax.get_xlim()[1] - ax.get_xlim()[0]
             assert 1 / 3 <= length / width <= 1.0
+
+
+def test_two_particles_closer_than_a_letter_have_their_letters_apart():
+    """Issue 15.14: at v = 0.9999999 seen from u = 0.9999999, A and B end 2 L apart on an axis 10⁷ L wide and
+    their letters overprinted. Each letter now sits on its own side of its dot: the two boxes do not overlap,
+    A's (the left particle's) ends left of B's start, and a letter of particles far apart stays centred."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from rodparadox import render
+
+    history = run(load("fig2").with_overrides(v=0.9999999))
+    frame = Frame("u=0.9999999", 0.9999999)
+    times = [-1.0, 1e7]
+    for style in ("print", "default"):
+        figure = Figure(figsize=(6.0, 4.0), dpi=72)
+        with render.style_context(style):
+            rows = render.draw_strips_into(figure, history, frame, times, style)
+            renderer = FigureCanvasAgg(figure).get_renderer()
+            far, near = ({t.get_text(): t for t in row.texts if t.get_text() in ("A", "B")} for row in rows)
+            a, b = (near[n].get_window_extent(renderer) for n in "AB")
+            assert a.x1 <= b.x0 and not a.overlaps(b), style
+            assert far["A"].get_horizontalalignment() == far["B"].get_horizontalalignment() == "center"

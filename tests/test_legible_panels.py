@@ -268,7 +268,8 @@ def test_plot_handout_and_animate_at_0_9999999_warn_of_nothing(tmp_path, caplog)
 
     # the print style's fonts (STIX) and the default's (DejaVu, as slides'); fig1 at 0.9999999 put ×1×10⁶ in an inset
     commands = [["plot", "fig1", "fig2", "while_turning", "--style", "print"], ["plot", "fig2", "unequal_masses"]]
-    commands += [["handout", "fig1"], ["animate", "fig2", "--fps", "2", "--seconds", "1", "--format", "png"],
+    # a frame u's clock is mathtext ($t_u$): its strips read 5×10⁶ L there (a missing-glyph box, fixed)
+    commands += [["handout", "fig1", "--frame", "both,0.9999999"], ["animate", "fig2", "--fps", "2", "--seconds", "1", "--format", "png"],
                  ["animate", "while_turning", "--mode", "boost", "--fps", "2", "--seconds", "1", "--format", "png",
                   "--style", "print"]]
     import warnings
@@ -295,3 +296,12 @@ def test_plot_equal_scales_names_its_file_and_draws_one_scale(tmp_path):
     # the option reaches the drawing (its one scale is checked on the Options above)
     svg = (tmp_path / "while_turning_v0.97_samescale.svg").read_text()
     assert 'id="a-axes"' in svg and 'id="b-axes"' in svg
+
+
+def test_a_clock_in_mathtext_reads_its_powers_of_ten_in_mathtext():
+    """`$t_u$ = 5×10⁶ L`: mathtext's fonts lack the superscript digits, so in a frame u the reading is mathtext."""
+    from rodparadox.render.strip import clock_reading
+
+    assert clock_reading("$t_u$", 5e6) == "$t_u$ = $5{\\times}10^{6}$ L"
+    assert clock_reading("$t_u$", -0.5) == "$t_u$ = $-0.5$ L"
+    assert clock_reading("t\N{PRIME}", 5e6) == "t\N{PRIME} = 5\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT SIX} L"

@@ -111,7 +111,16 @@ def readout_text(strip: Strip, frame: Frame, L: float) -> str:
     now: `   A1, B2!`."""
     clock = coordinate_names(frame)[1]
     lit = f"   {', '.join(impact_name(name) for name in strip.flashing)}!" if strip.flashing else ""
-    return f"{clock} = {shown(strip.t / L, 4)} L in {frame_name(frame)}{lit}"
+    return f"{clock_reading(clock, strip.t / L)} in {frame_name(frame)}{lit}"
+
+
+def clock_reading(clock: str, t: float) -> str:
+    """`t′ = 2.111 L`; with a clock named in mathtext (`$t_u$`) the number is mathtext too, as a powers-of-ten
+    number's superscripts outside $...$ would be set in mathtext's fonts, which lack them (`$t_u$ = 5×10⁶ L`
+    drew a missing-glyph box)."""
+    if "$" in clock:
+        return f"{clock} = ${shown(t, 4, math_text=True)}$ L"
+    return f"{clock} = {shown(t, 4)} L"
 
 
 #: room between two colour-bar tick labels, in multiples of the font size
@@ -215,14 +224,35 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
     h = artists.half_bar
     artists.outline.set_data([x[0], x[-1], x[-1], x[0], x[0]], [-h, -h, h, h, -h])
     artists.dots.set_data([xp / L for _, xp in strip.particles], [0.0] * len(strip.particles))
-    lo, hi = sorted(artists.bar.axes.get_xlim())
+    ax = artists.bar.axes
+    lo, hi = sorted(ax.get_xlim())
     for text, (_, xp) in zip(artists.names, strip.particles):
         text.set_position((xp / L, artists.letter_y))
+        text.set_horizontalalignment("center")
         text.set_visible(bool(lo <= xp / L <= hi))  # a letter is not clipped (it may reach above the axes): hide it
+    _set_letters_apart(artists, strip, L)
     artists.flash.set_data([xf / L for xf in strip.flash_x], [0.0] * len(strip.flash_x))
     if artists.readout is not None:
         artists.readout.set_text(readout_text(strip, frame, L))
     return artists.moving
+
+
+def _set_letters_apart(artists: StripArtists, strip: Strip, L: float) -> None:
+    """Two particles closer on the page than a letter's width (A and B 2 L apart on an axis 10⁷ L wide): each
+    letter goes to its own side of its dot, a fifth of the type size away, so they never overprint."""
+    if len(artists.names) != 2:
+        return
+    ax = artists.bar.axes
+    (left, (_, xl)), (right, (_, xr)) = sorted(zip(artists.names, strip.particles), key=lambda n: n[1][1])
+    per_L = abs(ax.transData.transform((1.0, 0.0))[0] - ax.transData.transform((0.0, 0.0))[0])  # pixels per L
+    size = left.get_fontsize() * ax.figure.dpi / 72.0  # pixels
+    if per_L == 0.0 or (xr - xl) / L * per_L >= size:
+        return
+    nudge = 0.2 * size / per_L
+    left.set_horizontalalignment("right")
+    left.set_x(xl / L - nudge)
+    right.set_horizontalalignment("left")
+    right.set_x(xr / L + nudge)
 
 
 # --- a block of stills: the rod at successive instants ---------------------------------------------------
@@ -342,7 +372,7 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[lis
     from rodparadox.numbers import impact_name
 
     clock = coordinate_names(frame)[1]
-    labels = [f"{clock} = {shown(s.t / L, 4)} L" for s in strips]
+    labels = [clock_reading(clock, s.t / L) for s in strips]
     notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_name(f, math_text=True) for f in s.flashing)
              if s.flashing else "" for s in strips]
     return labels, notes
