@@ -379,7 +379,7 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
     room = pages.text_height - 0.5 * t.body - len(caption) * 1.3 * t.caption
     if isinstance(block, DiagramBlock):
         # no title above the panels: the section's heading and the caption say what it shows
-        untitled = render.Options(titled=False)
+        untitled = render.Options(titled=False, equal_scales=block.equal_scales)
         _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
