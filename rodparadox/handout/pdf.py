@@ -44,16 +44,28 @@ from matplotlib.figure import Figure
 
 from rodparadox import render
 from rodparadox.handout.document import PAPERS, Handout, Heading
-from rodparadox.handout.pdf_blocks import Break, Measured, Picture, TableSet, TextBlock, measure
+from rodparadox.handout.pdf_blocks import Break, Measured, Picture, QuestionSet, TableSet, TextBlock, measure
 from rodparadox.handout.pdf_text import Pages, Type
 from rodparadox.render.diagram import FIGURE_METADATA
 from rodparadox.render.styles import STYLES
+from rodparadox.tolerances import FIT_SLACK
+
+#: a page, but a section's last, is left at most this part empty (a picture shrinks, a question's lines stretch)
+EMPTY_MOST = 0.25
 
 # --- the document ------------------------------------------------------------------------------------------
 
 def _introduces(item: Measured, following: Measured | None) -> bool:
     """A paragraph before a table or a figure: its introduction, kept on the page where that starts."""
     return isinstance(item, TextBlock) and not item.heading and isinstance(following, (TableSet, Picture))
+
+
+def _kept_with_next(item: Measured, following: Measured | None) -> bool:
+    """A heading (with what follows it, unless a page break) or an introduction that moves whole (with its table or
+    figure): never set apart from the next block."""
+    heading = isinstance(item, TextBlock) and item.heading and following is not None and not isinstance(following,
+                                                                                                         Break)
+    return heading or (_introduces(item, following) and not item.breakable)
 
 
 def _needs(measured: list[Measured]) -> list[float]:
@@ -65,11 +77,43 @@ def _needs(measured: list[Measured]) -> list[float]:
         item = measured[k]
         following = measured[k + 1] if k + 1 < len(measured) else None
         needs[k] = item.lead
-        chained = (isinstance(item, TextBlock) and item.heading and following is not None
-                   and not isinstance(following, Break)) or (_introduces(item, following) and not item.breakable)
-        if chained:
+        if _kept_with_next(item, following):
             needs[k] += getattr(following, "gap", 0.0) + needs[k + 1]
     return needs
+
+
+def _gap(item: Measured) -> float:
+    """The space a block leaves above itself (dropped at the top of a page)."""
+    return item.text.gap if isinstance(item, QuestionSet) else getattr(item, "gap", 0.0)
+
+
+def _fit(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> bool:
+    """Before block k is set, rather than leave the page more than EMPTY_MOST empty (a book's way): a picture is set
+    smaller, down to its least, so that it fits the rest of the page with what is kept before it, or so that what
+    comes after it does; a worksheet's question takes the rest of its page as ruled lines when the next block does
+    not fit there. True if a block's size changed (the needs are then measured again)."""
+    item = measured[k]
+    if not pages.figures or pages.at_top or isinstance(item, Break):
+        return False
+    least_room = EMPTY_MOST * pages.text_height  # moving on with less room than this leaves the page full enough
+    short = _gap(item) + needs[k] - pages.room  # by how much the block (with what it keeps) misses this page
+    if short > FIT_SLACK:
+        end = k
+        while end + 1 < len(measured) and _kept_with_next(measured[end], measured[end + 1]):
+            end += 1
+        return pages.room > least_room and isinstance(measured[end], Picture) and measured[end].shrink(short)
+    if k + 1 == len(measured) or isinstance(measured[k + 1], Break) or not isinstance(item, (Picture, QuestionSet)):
+        return False
+    after = pages.room - _gap(item) - item.lead  # the page's rest once this block is set
+    missing = _gap(measured[k + 1]) + needs[k + 1] - after
+    if missing <= FIT_SLACK or after <= least_room:
+        return False
+    if isinstance(item, Picture):
+        return item.shrink(missing)
+    if not item.ruled:
+        return False
+    item.stretch(after)
+    return True
 
 
 class Placed(NamedTuple):
@@ -126,6 +170,8 @@ def _set_pages(handout: Handout, paper: str, style: str, drawing: bool = True
         plan = []
         needs = _needs(measured)
         for k, (item, following) in enumerate(zip(measured, measured[1:] + [None])):
+            if _fit(measured, needs, k, pages):
+                needs = _needs(measured)
             marks = len(pages.marks)
             keep = getattr(following, "gap", 0.0) + needs[k + 1] if following is not None else 0.0
             if isinstance(item, TextBlock) and item.heading and following and not isinstance(following, Break):

@@ -32,6 +32,11 @@ ANSWER_LINES = (3, 8)
 STRIP_ROWS = 1.25
 #: a table at most this part of a page high is short: it moves whole, with its introduction
 SHORT_TABLE = 0.25
+#: a picture may be set down to this part of its natural height to fit the rest of a page (a diagram's panels
+#: narrower, a strip's rows lower), never below what its drawing accepts
+PICTURE_LEAST = 0.75
+#: ... and a block of strips never below this many times the least row `draw_strips_into` accepts
+STRIP_ROWS_LEAST = 1.0
 
 
 class Measured:
@@ -140,8 +145,8 @@ class TableSet(Measured):
         # the least start on a page: a short table whole (it is never split), else its caption, header and first
         # two groups of rows (a longer table is split between groups rather than leave a page a quarter empty)
         whole = self.height(self.groups, True, True)
-        self.short = whole <= SHORT_TABLE * pages.text_height or len(self.groups) <= 2
-        least = min(2, len(self.groups))
+        self.short = whole <= SHORT_TABLE * pages.text_height or len(self.groups) == 1
+        least = 1 if len(self.groups) == 2 else min(2, len(self.groups))  # one instant each side, else two
         self.lead = whole if self.short and whole <= pages.text_height else self.height(self.groups[:least], True,
                                                                                         least == len(self.groups))
 
@@ -271,16 +276,28 @@ def _groups(table: Table) -> list[list[int]]:
 
 
 class Picture(Measured):
-    """A diagram or a block of strips over the full text width, its caption below; never split."""
+    """A diagram or a block of strips over the full text width, its caption below; never split. It may be set
+    smaller (`shrink`), down to `least` points high (its drawing's own least, at least PICTURE_LEAST of its
+    natural height), to fit the rest of a page."""
 
-    def __init__(self, height: float, caption: list[Line], pages: Pages, gap: float, draw: Callable):
+    def __init__(self, height: float, caption: list[Line], pages: Pages, gap: float, draw: Callable,
+                 least: float = 0.0):
         self.picture_h, self.caption, self.gap, self.draw = height, caption, gap, draw
+        self.natural_h, self.least = height, min(height, max(least, PICTURE_LEAST * height))
         t = pages.type
         self.caption_leading = 1.3 * t.caption
         self.caption_gap = 0.5 * t.body
         self.lead = height + self.caption_gap + len(caption) * self.caption_leading
 
     kind = "picture"
+
+    def shrink(self, by: float) -> bool:
+        """Set the picture `by` points lower, if that leaves it at least `least` high; False (unchanged) if not."""
+        if by <= 0.0 or self.picture_h - by < self.least - FIT_SLACK:
+            return False
+        self.picture_h -= by
+        self.lead -= by
+        return True
 
     def set(self, pages: Pages) -> None:
         y = pages.start(self.lead, self.gap)
@@ -312,6 +329,13 @@ class QuestionSet(Measured):
                                       t.leading, (0.3 if k == 0 else 0.4) * t.body, indent=1.5 * t.body)
                             for k, p in enumerate(question.answer)]
             self.lead = self.text.lead + (self.answers[0].lead if self.answers else 0.0)
+
+    def stretch(self, room: float) -> None:
+        """A worksheet's question: as many more ruled lines as `room` points hold (the rest of a page the next
+        block does not fit on is room to write, not an empty page)."""
+        more = int((room + FIT_SLACK) // ANSWER_LINE_GAP) if self.ruled else 0
+        self.count += more
+        self.lead += more * ANSWER_LINE_GAP
 
     def set(self, pages: Pages) -> None:
         if self.ruled:  # the question with all its lines on one page
@@ -365,5 +389,6 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
 
         def draw_strips(target, block=block):
             render.draw_strips_into(target, block.history, block.frame, block.times, style.name)
-        return Picture(height, caption, pages, 1.2 * t.body, draw_strips)
+        least = render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS_LEAST)[1]
+        return Picture(height, caption, pages, 1.2 * t.body, draw_strips, least)
     raise TypeError(f"a handout has no block of type {type(block).__name__}")
