@@ -52,6 +52,8 @@ from rodparadox.tolerances import FIT_SLACK
 
 #: a page, but a section's last, is left at most this part empty (a picture shrinks, a question's lines stretch)
 EMPTY_MOST = 0.25
+#: a picture shrunk to fit is made this much smaller again (points), so the sums of heights never miss by a rounding
+ROUNDING = 0.01
 
 # --- the document ------------------------------------------------------------------------------------------
 
@@ -101,7 +103,7 @@ def _fit(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> 
         end = k
         while end + 1 < len(measured) and _kept_with_next(measured[end], measured[end + 1]):
             end += 1
-        return pages.room > least_room and isinstance(measured[end], Picture) and measured[end].shrink(short)
+        return pages.room > least_room and isinstance(measured[end], Picture) and measured[end].shrink(short + ROUNDING)
     if k + 1 == len(measured) or isinstance(measured[k + 1], Break) or not isinstance(item, (Picture, QuestionSet)):
         return False
     after = pages.room - _gap(item) - item.lead  # the page's rest once this block is set
@@ -109,7 +111,7 @@ def _fit(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> 
     if missing <= FIT_SLACK or after <= least_room:
         return False
     if isinstance(item, Picture):
-        return item.shrink(missing)
+        return item.shrink(missing + ROUNDING)
     if not item.ruled:
         return False
     item.stretch(after)
