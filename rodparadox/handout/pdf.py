@@ -22,8 +22,11 @@ this module decides where each block goes (the page plan).
   table longer than a page is split only between rows (a ledger's rows of one
   impact stay together) with its header repeated; a worksheet's blank cells
   are empty ruled boxes at least as wide as the number they leave out;
-* diagrams and strips at the full text width, their captions below, never
-  split by a page break;
+* diagrams and strips at the full text width, their captions below; rather
+  than leave a page more than a quarter empty (EMPTY_MOST; a section's last
+  page may be), a diagram is set smaller (`pdf_blocks.PICTURE_LEAST`), a block
+  of strips is split between rows, a table of several instants between them,
+  and a worksheet's question takes the page's rest as ruled lines (`_fit`);
 * questions: in a worksheet followed by ruled lines to write the answer on,
   in the answer key (and in a handout that is not a worksheet) by the worked
   answer; the answer key starts on a new page.
@@ -106,7 +109,7 @@ def _fit(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> 
         return pages.room > least_room and isinstance(measured[end], Picture) and measured[end].shrink(short + ROUNDING)
     if k + 1 == len(measured) or isinstance(measured[k + 1], Break) or not isinstance(item, (Picture, QuestionSet)):
         return False
-    after = pages.room - _gap(item) - item.lead  # the page's rest once this block is set
+    after = pages.room - _gap(item) - getattr(item, "whole", item.lead)  # the page's rest once this block is set
     missing = _gap(measured[k + 1]) + needs[k + 1] - after
     if missing <= FIT_SLACK or after <= least_room:
         return False

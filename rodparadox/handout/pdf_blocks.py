@@ -146,7 +146,7 @@ class TableSet(Measured):
         # two groups of rows (a longer table is split between groups rather than leave a page a quarter empty)
         whole = self.height(self.groups, True, True)
         self.short = whole <= SHORT_TABLE * pages.text_height or len(self.groups) == 1
-        least = 1 if len(self.groups) == 2 else min(2, len(self.groups))  # one instant each side, else two
+        least = 1 if len(self.groups[0]) > 1 else 2  # on each side of a split: an instant's rows, or two rows
         self.lead = whole if self.short and whole <= pages.text_height else self.height(self.groups[:least], True,
                                                                                         least == len(self.groups))
 
@@ -307,6 +307,54 @@ class Picture(Measured):
                     self.caption_leading)
 
 
+class StripsSet(Picture):
+    """A block of strips: a picture that, of four rows or more, is split between rows (two at least on each side)
+    rather than leave the rest of a page empty; each part has its own x axis and colour bar (one scale, the whole
+    history's), the caption goes under the last. `whole` is its height unsplit, `lead` that of its first two rows."""
+
+    def __init__(self, block: Strips, style: str, caption: list[Line], pages: Pages, gap: float, room: float):
+        self.block, self.style = block, style
+        height = min(room, self._height(block.times))
+        least = render.strips_size(block.history, block.frame, block.times, style, STRIP_ROWS_LEAST)[1]
+        super().__init__(height, caption, pages, gap, self._draw_rows(block.times), least)
+        self.whole = self.lead
+        self.splits = len(block.times) >= 4
+        if self.splits:  # a split's first part may have rows as low as the drawing accepts
+            self.lead = min(self.whole, self._height(block.times[:2], STRIP_ROWS_LEAST))
+
+    def _height(self, times, rows: float = STRIP_ROWS) -> float:
+        return render.strips_size(self.block.history, self.block.frame, times, self.style, rows)[1]
+
+    def _draw_rows(self, times) -> Callable:
+        def draw(target, block=self.block, times=tuple(times)):
+            render.draw_strips_into(target, block.history, block.frame, times, self.style, span=block.times)
+        return draw
+
+    def shrink(self, by: float) -> bool:
+        """Only a block that cannot be split is set smaller: a longer one is split instead."""
+        if self.splits:
+            return False
+        ok = super().shrink(by)
+        self.whole = self.lead
+        return ok
+
+    def set(self, pages: Pages) -> None:
+        times, self.lead = self.block.times, self.whole
+        if self.splits and pages.figures and not pages.at_top and self.gap + self.whole > pages.room + FIT_SLACK:
+            room = pages.room - self.gap
+            rows = max((n for n in range(2, len(times) - 1)
+                        if self._height(times[:n], STRIP_ROWS_LEAST) <= room + FIT_SLACK), default=0)
+            if rows:  # the first rows here (as high as fits), the rest and the caption at the top of the next page
+                first = min(room, self._height(times[:rows]))
+                y = pages.start(first, self.gap)
+                if pages.drawing:
+                    self._draw_rows(times[:rows])(pages.target(y, first))
+                pages.new_page()
+                self.picture_h, self.draw = self._height(times[rows:]), self._draw_rows(times[rows:])
+                self.lead = self.picture_h + self.caption_gap + len(self.caption) * self.caption_leading
+        super().set(pages)
+
+
 class QuestionSet(Measured):
     """`Question k.` and its text; then ruled lines to write on (a worksheet) or the worked answer."""
 
@@ -385,10 +433,5 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
             block.retitle(render.draw_into(target, block.history, block.frames, style.name, untitled))
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
-        height = min(room, render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS)[1])
-
-        def draw_strips(target, block=block):
-            render.draw_strips_into(target, block.history, block.frame, block.times, style.name)
-        least = render.strips_size(block.history, block.frame, block.times, style.name, STRIP_ROWS_LEAST)[1]
-        return Picture(height, caption, pages, 1.2 * t.body, draw_strips, least)
+        return StripsSet(block, style.name, caption, pages, 1.2 * t.body, room)
     raise TypeError(f"a handout has no block of type {type(block).__name__}")
