@@ -40,6 +40,8 @@ HANDOUT_PAPER = "a4"
               show_default=True,
               help="With --worksheet: inline, the answer key at the end; separate, the key as its own PDF, "
                    "NAME_worksheet_key.pdf beside the worksheet.")
+@click.option("--equal-scales", is_flag=True, help="Draw the diagram's panels to one scale (the same length of L on "
+                                                    "the page), not each filling its panel, as plot's --equal-scales.")
 @format_option("pdf: one document to print; tex: a folder with handout.tex (pdflatex), the figures as PDF, the "
                "tables as .tex fragments and the world-lines as .dat files for pgfplots.",
                type=click.Choice(HANDOUT_FORMATS, case_sensitive=False), default="pdf", show_default=True)
@@ -50,8 +52,8 @@ HANDOUT_PAPER = "a4"
 @quiet_option
 @reports_errors
 def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, paper: str, worksheet: bool,
-            chosen: str | None, compare_v: float | None, key: str, fmt: str, style: str, output: str | None,
-            quiet: bool) -> None:
+            chosen: str | None, compare_v: float | None, key: str, equal_scales: bool, fmt: str, style: str,
+            output: str | None, quiet: bool) -> None:
     """Write a teaching handout (or --worksheet) of each SCENARIO, one section each, computed at the speed given.
 
     Each section holds the setup, the two-frame diagram with an explanation
@@ -73,7 +75,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
-                         extras=[paper] if paper != HANDOUT_PAPER else [])
+                         extras=([paper] if paper != HANDOUT_PAPER else []) + (["samescale"] if equal_scales else []))
     histories = [run_scenario(s, name, frames) for s, name, frames in zip(job.scenarios, job.names, job.frames)]
     planned.prepare([job], described, output)
 
@@ -82,7 +84,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     from rodparadox.io.output import write_atomic, write_folder
 
     document = build(list(zip(job.stems, histories, job.frames)), worksheet=worksheet, compare_v=compare_v,
-                     chosen=numbers)
+                     chosen=numbers, equal_scales=equal_scales)
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 

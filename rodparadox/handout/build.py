@@ -222,13 +222,15 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
 
 def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool,
              with_speed: bool = False, compare_v: float | None = None,
-             chosen: Sequence[int] | None = None) -> tuple[Section, list[Block]]:
+             chosen: Sequence[int] | None = None, equal_scales: bool = False) -> tuple[Section, list[Block]]:
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
     the questions again). A worksheet asks and never tells before its key: the explanation, the caption's sentences
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
     key; the tables are left blank."""
     caption = diagram_caption(history, frames, tell=not worksheet)
-    diagram = DiagramBlock(f"{stem}_diagram", history, frames, caption, tell=not worksheet)
+    if equal_scales and len(frames) > 1:
+        caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
+    diagram = DiagramBlock(f"{stem}_diagram", history, frames, caption, tell=not worksheet, equal_scales=equal_scales)
     title = neutral_heading if worksheet else heading
     blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet)),
                            diagram]
@@ -264,10 +266,11 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
 
 
 def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False,
-          compare_v: float | None = None, chosen: Sequence[int] | None = None) -> Handout:
+          compare_v: float | None = None, chosen: Sequence[int] | None = None, equal_scales: bool = False) -> Handout:
     """The handout (or, with `worksheet`, the worksheet and its answer key) of each (stem, history) item, one
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
-    scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames`."""
+    scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames`.
+    `equal_scales`: each diagram's panels drawn to one scale (`render.Options.equal_scales`)."""
     entries = []
     for item in items:
         stem, history, *own = item
@@ -282,7 +285,8 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
     sections, key = [worksheet_introduction() if worksheet else first], []
     several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
     for stem, history, shown_frames in entries:
-        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen)
+        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen,
+                                    equal_scales)
         sections.append(section)
         key += answers
     resolution = first.blocks[1:]  # the paradox, its resolution and the idealisation

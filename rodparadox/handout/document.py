@@ -54,6 +54,8 @@ class DiagramBlock:
     caption: str
     #: the panels' titles give the rod's velocity before and after (a worksheet asks it: only "(a) frame S" there)
     tell: bool = True
+    #: every panel drawn to one scale (one length of L as long on the page in each), as `plot --equal-scales`
+    equal_scales: bool = False
 
     def retitle(self, diagram) -> None:
         """After `render.draw_into` or `render.draw` (a `render.Diagram`): a block that does not tell names only

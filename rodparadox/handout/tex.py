@@ -264,7 +264,7 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
 
     if isinstance(block, DiagramBlock):
         # a worksheet's diagram without the scenario's title (a preset's may say what it asks) or the panels' velocities
-        options = render.Options() if block.tell else render.Options(titled=False)
+        options = render.Options(titled=block.tell, equal_scales=block.equal_scales)
         diagram = render.draw(block.history, block.frames, style, options)
         block.retitle(diagram)
         figure = diagram.figure

@@ -259,13 +259,16 @@ def _set_letters_apart(artists: StripArtists, strip: Strip, L: float) -> None:
 
 
 def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame, times: Sequence[float],
-                     style: str) -> tuple[Axes, ...]:
+                     style: str, span: Sequence[float] | None = None) -> tuple[Axes, ...]:
     """For one frame, the rod and the particles in that frame's space at each of `times` (the frame's own
     time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
     of L, named with the frame's coordinate, e.g. x′/L); each row is labelled with its time (t′ = 1.25 L)
     and marks the impacts at that instant (within ONE_INSTANT * L: rounding of the times passed); one colour bar under the block serves every row (the
     scale of the whole history, `render.colour_scale`, so a colour is the same velocity in every row and
     in the animation). Fills the target (a Figure or SubFigure the caller has sized).
+
+    `span`: the instants whose rod and particles the x axis spans (default `times`): the parts of one block set on
+    two pages pass the whole block's, so they share one x axis.
 
     Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid
     `strips-colour-bar`. A target too small for the rows, their labels and the colour bar is refused
@@ -298,7 +301,8 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
         # the x range: every rod end and particle at these instants, with a margin
-        xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in strips]) / L
+        spanned = strips if span is None else [strip_at(history, frame, float(t), ONE_INSTANT * L) for t in span]
+        xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
         lo, hi = lo - margin, hi + margin
