@@ -19,8 +19,9 @@ from matplotlib.legend_handler import HandlerTuple
 
 from rodparadox.physics import rod
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import PANEL_LETTERS, Frame
+from rodparadox.physics.frames import PANEL_LETTERS, Frame, time_window
 from rodparadox.render.styles import FORMATS, STYLES, Style
+from rodparadox.render.causal_layers import HANDLER_MAP
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, panel_of, tick_step
 from rodparadox.render.panel import draw_panel
@@ -76,6 +77,19 @@ def draw(history: History, frames: Sequence[Frame], style: str = "default", opti
     frames = _checked(frames)
     with style_context(style) as st:
         builder = _Builder(history, frames, st, options)
+        layout = builder.lay_out(Page.of_style(st))
+        figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
+        return builder.render(figure, layout, layout.width, layout.height)
+
+
+def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "default",
+              options: Options = Options()) -> Diagram:
+    """The two rod models of one scenario in one figure (`plot --rod both`): a row of panels for the rigid rod
+    above a row for the causal rod, one panel per frame, each frame's two panels on the same scales (their data
+    boxes joined), one legend for both."""
+    frames = _checked(tuple(frames) * 2)[:len(frames)]
+    with style_context(style) as st:
+        builder = _Builder((rigid, causal), frames, st, options)
         layout = builder.lay_out(Page.of_style(st))
         figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
         return builder.render(figure, layout, layout.width, layout.height)
@@ -150,19 +164,43 @@ def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
         return buffer.getvalue()
 
 
+def _same_scales(panels: list[Panel], per_row: int) -> None:
+    """Each frame's panels, one per rod model, get one data box (the union of theirs) and say their model."""
+    for k in range(per_row):
+        same = panels[k::per_row]
+        box = (min(p.data_box[0] for p in same), max(p.data_box[1] for p in same),
+               min(p.data_box[2] for p in same), max(p.data_box[3] for p in same))
+        for p in same:
+            p.data_box, p.box = box, list(box)
+            model = "causal rod" if p.history.rigid is None else "rigid rod"
+            p.title = p.title.replace(") frame ", f") {model}, frame ", 1)
+            p.title_lines = [p.title]
+
+
 class _Builder:
     """One diagram's panels, laid out and then drawn into a target."""
 
-    def __init__(self, history: History, frames: tuple[Frame, ...], style: Style, options: Options):
-        self.history, self.style, self.options = history, style, options
+    def __init__(self, history: History | tuple, frames: tuple[Frame, ...], style: Style, options: Options):
+        histories = history if isinstance(history, tuple) else (history,)  # two: the rigid row, the causal row
+        self.history, self.style, self.options = histories[0], style, options
         self.fs = font_sizes(style)
-        self.panels: list[Panel] = [panel_of(history, letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
+        letters = iter(PANEL_LETTERS)
+        windows = [None] * len(frames)
+        if len(histories) > 1:  # each frame's panels over one time window: the union of the models' own
+            spans = [[time_window(h, frame) for h in histories] for frame in frames]
+            windows = [(min(lo for lo, _ in s), max(hi for _, hi in s)) for s in spans]
+        self.panels: list[Panel] = [panel_of(h, next(letters), frame, window) for h in histories
+                                    for frame, window in zip(frames, windows)]
+        self.per_row = len(frames) if len(histories) > 1 else None
+        if self.per_row:
+            _same_scales(self.panels, len(frames))
         # one clock step for every panel (proper time is the same in every frame), from the longest time span
         self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
         self.legend = legend_entries(style, history, options, self.clock_step)
 
     def lay_out(self, page: Page) -> Layout:
-        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled)
+        return lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled,
+                       self.per_row)
 
     def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
         """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""
@@ -193,7 +231,7 @@ class _Builder:
                                bbox_to_anchor=(0.5, (oy + layout.legend_height - 2) / height),
                                ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
-                               handler_map={tuple: HandlerTuple(ndivide=1)})  # the rod: strip and line in one
+                               handler_map={tuple: HandlerTuple(ndivide=1), **HANDLER_MAP})  # the rod: strip and line in one
         legend.set_gid("legend")
         infos.sort(key=lambda info: info.letter)
         return Diagram(target, tuple(infos),

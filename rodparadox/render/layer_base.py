@@ -90,6 +90,11 @@ class PanelContext:
         """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
         return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
 
+    @property
+    def contact_labels(self) -> frozenset[str]:
+        """The labels of this frame's contacts (every rigid impact; a causal rod's separations are not)."""
+        return frozenset(e.impact.label for e in self.view.events if e.impact.kind == "contact")
+
     def plot(self, ax, points: np.ndarray, ink: Ink, zorder: float, gid: str):
         """A polyline in `ink`: the one way layers draw a line."""
         line, = ax.plot(points[:, 0], points[:, 1], **line_kwargs(ink), zorder=zorder, gid=gid)

@@ -16,6 +16,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
                options: Options, clock_step: float) -> dict[str, tuple]:
     """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name."""
     _axes(ax, p, steps, m)
+    history = p.history if p.history is not None else history
     panel = PanelContext(history, style, options, m.fs, p.letter, p.view, p.worldlines, tuple(p.box), steps,
                          clock_step)
     drawn: dict[str, list] = {}
