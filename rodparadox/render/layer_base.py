@@ -95,6 +95,18 @@ class PanelContext:
         """The labels of this frame's contacts (every rigid impact; a causal rod's separations are not)."""
         return frozenset(e.impact.label for e in self.view.events if e.impact.kind == "contact")
 
+    @property
+    def simultaneity_labels(self) -> frozenset[str]:
+        """The events lines of simultaneity go through: every rigid impact; a causal rod's first contact of each
+        particle (its re-contacts and separations crowd one end: more lines there would hide them)."""
+        if self.history.rigid is not None:
+            return self.contact_labels
+        first = {}
+        for e in self.view.events:
+            if e.impact.kind == "contact":
+                first.setdefault(e.impact.particle, e.impact.label)
+        return frozenset(first.values())
+
     def plot(self, ax, points: np.ndarray, ink: Ink, zorder: float, gid: str):
         """A polyline in `ink`: the one way layers draw a line."""
         line, = ax.plot(points[:, 0], points[:, 1], **line_kwargs(ink), zorder=zorder, gid=gid)

@@ -228,7 +228,7 @@ class Simultaneity(Layer):
 
     def draw(self, ax, panel):
         slope = relative_velocity(self.frame(panel.v).velocity, panel.view.frame.velocity)  # dt/dx of the line in this panel
-        events = [e for e in panel.events() if e[0] in panel.contact_labels]  # through contacts, not separations
+        events = [e for e in panel.events() if e[0] in panel.simultaneity_labels]  # a causal rod's first contacts
         drawn: list[tuple[float, str, list[str]]] = []
         for label, _, x, t in events:
             intercept = t - slope * x
