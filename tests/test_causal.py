@@ -136,10 +136,10 @@ def test_no_material_point_outruns_light(presets, generated):
     """Every sampled material line is time-like: |dx| < dt between consecutive points, in S and S'."""
     for h in [*presets.values(), *generated.values()]:
         lo, hi = _slices(h)[0], _slices(h)[-1]
-        for sigma in np.linspace(0.0, h.scenario.L, 5):
+        for sigma in (0.0, 0.4 * h.scenario.L, h.scenario.L):  # the ends, where contacts are, and one inside
             for f in (0.0, -math.atanh(h.scenario.v)):
                 w = h.material_worldline(sigma).seen_from(f)
-                pts = w.sample(lo * math.cosh(f) - 1, hi * math.cosh(f), 1e-4)
+                pts = w.sample(lo * math.cosh(f) - 1, hi * math.cosh(f), 1e-3)  # every front is a knot anyway
                 d = np.diff(pts, axis=0)
                 assert np.all(np.abs(d[:, 0]) < d[:, 1]), sigma
 
