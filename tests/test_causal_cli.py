@@ -88,6 +88,8 @@ def test_commands_not_yet_drawing_the_causal_rod_refuse_it(command, tmp_path):
     assert "does not take --rod both (the two rods side by side) yet" in out
 
 
-def test_ledger_refuses_the_causal_rod_for_now():
-    out = run("ledger", "fig1", "--rod", "causal", expect=2).output
-    assert out == "Error: ledger does not take the causal rod yet (from option --rod or the scenario's rod:); it takes rigid.\n"
+def test_ledgers_figure_refuses_the_causal_rod_for_now(tmp_path):
+    out = run("ledger", "fig1", "--rod", "causal", "-o", str(tmp_path / "x.svg"), expect=2).output
+    assert out == ("Error: the ledger figure draws the rigid rod only for now; give the causal rod's ledger as a "
+                   "table (--format text, json, csv, markdown or latex).\n")
+    assert list(tmp_path.iterdir()) == []
