@@ -26,7 +26,7 @@ ANIMATION_FORMATS = ("gif", "mp4", "png")
 
 
 @click.command()
-@scenario_options(rods=("rigid",))
+@scenario_options(rods=("rigid", "causal"))
 @frame_option("now: the panels, as plot's --frame (e.g. both,0.3); boost: the frames to boost between, "
               "A..B, each rest, moving or a velocity U (both is rest..moving).", metavar="rest|moving|both|U|A..B")
 @click.option("--mode", "mode", type=click.Choice(("now", "boost")), default="now", show_default=True,

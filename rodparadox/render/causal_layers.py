@@ -13,7 +13,6 @@ drawn over it.
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
@@ -25,6 +24,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from rodparadox.numbers import shown
+from rodparadox.render.colour_scale import compression_range
 from rodparadox.physics.frames import sampling_tolerance
 from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
 from rodparadox.render.styles import Style
@@ -42,30 +42,6 @@ def is_causal(history) -> bool:
 
 
 # --- the compression scale: pure numbers, shared by the layer, its legend entry and the tests ----------------
-
-@functools.lru_cache(maxsize=16)
-def compression_range(history) -> tuple[float, float]:
-    """The least and largest ln lam anywhere in the rod over its whole history (the ringing tail is periodic: one
-    period of it is all of it), with 0 (unstressed) always inside."""
-    sol, L = history.solution, history.scenario.L
-    lo = min(sol.plus.starts[0], sol.minus.starts[0]) - 2 * L
-    hi = max(sol.plus.tail_start, sol.minus.tail_start) + 3 * L
-    us, ws = _knots(sol.plus, lo, hi), _knots(sol.minus, lo, hi)
-    rp = np.array([sol.r_plus(u) for u in us])
-    rm = np.array([sol.r_minus(w) for w in ws])
-    inside = (us[None, :] - ws[:, None] >= -1e-12) & (us[None, :] - ws[:, None] <= 2 * L + 1e-12)
-    ln_lam = -0.5 * (rp[None, :] + rm[:, None])
-    return float(min(0.0, ln_lam[inside].min())), float(max(0.0, ln_lam[inside].max()))
-
-
-def _knots(invariant, lo: float, hi: float) -> np.ndarray:
-    """Points of s where r is read for the range: each piece's ends (both sides of a jump) and its inside."""
-    cuts = [lo, *invariant.breaks(lo, hi), hi]
-    out = []
-    for a, b in zip(cuts, cuts[1:]):
-        out += list(np.linspace(a, b, 9)[:-1]) + [np.nextafter(b, -math.inf)]
-    return np.array(out)
-
 
 def compression_norm(history) -> TwoSlopeNorm:
     """ln lam to [0, 1]: stretched below 0.5, unstressed at 0.5, compressed above (each side its own range)."""
@@ -169,6 +145,13 @@ def _clip_t(segment: np.ndarray, t_lo: float, t_hi: float) -> np.ndarray | None:
 
 # --- the layers --------------------------------------------------------------------------------------------------
 
+def sheet_window(panel) -> tuple[float, float]:
+    """The frame's times the panel draws the rod's ends over (a boost animation's window is wider than the
+    frame's own): the shading and the fronts fill the same stretch of the world-sheet."""
+    ends = np.concatenate([panel.worldlines["rod_left"], panel.worldlines["rod_right"]])
+    return float(ends[:, 1].min()) * panel.L, float(ends[:, 1].max()) * panel.L
+
+
 class _Ramp(HandlerBase):
     """A legend handle: the compression scale as a row of swatches, lightest (stretched) to darkest."""
 
@@ -198,8 +181,7 @@ class Compression(Layer):
         if not is_causal(history):
             return LayerArtists()
         L, f = panel.L, panel.view.frame.rapidity
-        t_lo, t_hi = panel.view.t_range
-        polygons, ln_lam, _ = compression_cells(history, f, t_lo, t_hi)
+        polygons, ln_lam, _ = compression_cells(history, f, *sheet_window(panel))
         cmap, norm = compression_colour_map(panel.style), compression_norm(history)
         colours = cmap(norm(ln_lam))
         mesh = PolyCollection(polygons / L, facecolors=colours, edgecolors=colours, linewidths=0.25, zorder=1.1,
@@ -220,8 +202,8 @@ class Compression(Layer):
         ramp = np.linspace(lo, hi, SWATCHES)
         handle = RampHandle([], [])
         handle.set_gid(",".join(_hex(cmap(norm(value))) for value in ramp))
-        return handle, (f"compression \N{GREEK SMALL LETTER LAMDA} from {shown(math.exp(lo), 2)} to "
-                        f"{shown(math.exp(hi), 2)} (1: unstressed)")
+        return handle, (f"compression \N{GREEK SMALL LETTER LAMDA}: {shown(math.exp(lo), 2)} to "
+                        f"{shown(math.exp(hi), 2)}, 1 unstressed")
 
 
 def _hex(rgba) -> str:
@@ -239,7 +221,7 @@ class Fronts(Layer):
             return LayerArtists()
         drawn, segments = [], []
         for k, (family, _s, segment) in enumerate(fronts(panel.history, panel.view.frame.rapidity,
-                                                         *panel.view.t_range)):
+                                                         *sheet_window(panel))):
             segment = segment / panel.L
             drawn.append(panel.plot(ax, segment, panel.style.front, 3.2, f"{panel.letter}-front-{k}"))
             segments.append(segment)
