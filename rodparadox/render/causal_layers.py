@@ -32,6 +32,8 @@ from rodparadox.render.styles import Style
 CELL = 1.0 / 24
 #: a jump of an invariant smaller than this is no front (a piece boundary where r is continuous: a kink)
 FRONT_JUMP = 1e-9
+#: shades of the compression scale a cell may differ from its neighbour by at most about one of
+SHADES = 64
 #: swatches in the legend's ramp of the compression scale
 SWATCHES = 7
 
@@ -77,14 +79,16 @@ def chart_window(history, f: float, t_lo: float, t_hi: float) -> tuple[float, fl
     return T["left", t_lo], T["right", t_hi] + L, T["right", t_lo] - L, T["left", t_hi]
 
 
-def _cell_edges(invariant, lo: float, hi: float, L: float) -> np.ndarray:
+def _cell_edges(invariant, lo: float, hi: float, L: float, step: float) -> np.ndarray:
+    """The cuts of [lo, hi]: every piece boundary, and inside a piece where r varies, cells no longer than CELL L
+    and enough of them that r changes by about `step` (a shade of the scale) from one to the next."""
     edges = [lo]
     cuts = [lo, *invariant.breaks(lo, hi), hi]
     for a, b in zip(cuts, cuts[1:]):
-        mid = 0.5 * (a + b)
-        varies = max(abs(invariant.r(s) - invariant.r(mid)) for s in (a + 1e-9 * (b - a), b - 1e-9 * (b - a)))
-        n = max(1, math.ceil((b - a) / (CELL * L))) if varies > FRONT_JUMP else 1
-        edges += list(np.linspace(a, b, n + 1)[1:])
+        ends = [invariant.r(s) for s in (a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a))]
+        varies = max(ends) - min(ends)
+        n = min(math.ceil((b - a) / (CELL * L)), math.ceil(2 * varies / step)) if varies > FRONT_JUMP else 1
+        edges += list(np.linspace(a, b, max(n, 1) + 1)[1:])
     return np.array(edges)
 
 
@@ -95,7 +99,9 @@ def compression_cells(history, f: float, t_lo: float, t_hi: float) -> tuple[np.n
     sol, L = history.solution, history.scenario.L
     u_lo, u_hi, w_lo, w_hi = chart_window(history, f, t_lo, t_hi)
     U_of, V_of = _frame_chart(history, f)
-    us, ws = _cell_edges(sol.plus, u_lo, u_hi, L), _cell_edges(sol.minus, w_lo, w_hi, L)
+    low, high = compression_range(history)
+    step = 2 * (high - low) / SHADES  # ln lam is -(r+ + r-)/2: a change of r by this is one shade
+    us, ws = _cell_edges(sol.plus, u_lo, u_hi, L, step), _cell_edges(sol.minus, w_lo, w_hi, L, step)
     U, V = np.array([U_of(u) for u in us]), np.array([V_of(w) for w in ws])
     um, wm = 0.5 * (us[1:] + us[:-1]), 0.5 * (ws[1:] + ws[:-1])
     rp, rm = np.array([sol.r_plus(u) for u in um]), np.array([sol.r_minus(w) for w in wm])
@@ -183,8 +189,9 @@ class Compression(Layer):
         polygons, ln_lam, _ = compression_cells(history, f, *sheet_window(panel))
         cmap, norm = compression_colour_map(panel.style), compression_norm(history)
         colours = cmap(norm(ln_lam))
+        # rasterised: thousands of cells would make a vector file megabytes (`diagram.RASTER_DPI`)
         mesh = PolyCollection(polygons / L, facecolors=colours, edgecolors=colours, linewidths=0.25, zorder=1.1,
-                              antialiaseds=False, gid=f"{panel.letter}-compression")
+                              antialiaseds=False, rasterized=True, gid=f"{panel.letter}-compression")
         ax.add_collection(mesh, autolim=False)
         left, right = panel.worldlines["rod_left"], panel.worldlines["rod_right"]
         from matplotlib.patches import Polygon

@@ -32,6 +32,8 @@ CONE_SHORT_DASH = (0, (2.0, 2.0))
 #: the rod's own lines of simultaneity (Options.rod_now): long dashes, so that in grey they are not taken for the
 #: material lines (thin, solid) they cross
 ROD_NOW_DASH = (0, (16.0, 4.0))
+#: the causal rod's light fronts: long thin dashes, told from the dotted lines of simultaneity in grey
+FRONT_DASH = (0, (7.0, 3.0))
 #: the ledger figure's particle B in print, where both particles are black and no label names the curves
 LEDGER_DASHDOT = (0, (6.0, 1.8, 1.5, 1.8))
 
@@ -82,7 +84,7 @@ class Style(NamedTuple):
     rc: Mapping[str, Any]  # rcParams set while drawing and saving
     #: the causal rod (README, "The causal rod"): its light fronts, thin light lines across the world-sheet, and
     #: the ends of its compression scale (most stretched, most compressed; the unstressed middle is `sheet`)
-    front: Ink = Ink("#1a1a1a", 0.45, (0, (4.0, 2.0)))
+    front: Ink = Ink("#1a1a1a", 0.45, FRONT_DASH)
     compression_ends: tuple[str, str] = ("#fff4cf", "#08306b")
 
 
@@ -160,7 +162,7 @@ _PRINT = Style(
     animation_dpi=150, animation_ticks=(2.5, 2.0), boost_size=(7.0, 6.0),
     handout_body_size=10.0,
     rc=_frozen({**_COMMON_RC, **_SERIF}),
-    front=Ink("#000000", 0.4, (0, (4.0, 2.0))),
+    front=Ink("#000000", 0.45, FRONT_DASH),
     compression_ends=("#ffffff", "#4d4d4d"),
 )
 
@@ -186,7 +188,7 @@ _SLIDES = _DEFAULT._replace(
     ledger_particles=_frozen(_SLIDES_PARTICLES),
     animation_dpi=100, animation_ticks=(4.0, 2.5), boost_size=(13.33, 7.5),
     handout_body_size=12.0,
-    front=Ink("#1a1a1a", 0.9, (0, (4.0, 2.0))),
+    front=Ink("#1a1a1a", 0.9, FRONT_DASH),
     rc=_frozen({**_DEFAULT.rc, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
                 "xtick.major.size": 6.0, "ytick.major.size": 6.0}),
 )
