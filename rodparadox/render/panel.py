@@ -31,7 +31,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size)
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=history.rigid is None)
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     return {name: tuple(artists) for name, artists in drawn.items()}
