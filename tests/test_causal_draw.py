@@ -172,7 +172,8 @@ def test_separations_are_hollow_and_labelled_with_a_prime_contacts_filled_and_th
         else:
             assert marker.get_markerfacecolor() != "white" and label == f"${i.particle}_{{{i.label[1:]}}}$"
     texts = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "contact (A\N{SUBSCRIPT ONE})" in texts and "separation (A\N{PRIME}\N{SUBSCRIPT ONE})" in texts
+    # named by fig2's first contact, B₁, and first separation, A′₁
+    assert "contact (B\N{SUBSCRIPT ONE})" in texts and "separation (A\N{PRIME}\N{SUBSCRIPT ONE})" in texts
     assert any(t.startswith("compression \N{GREEK SMALL LETTER LAMDA}: 0.3") for t in texts)
     assert any(t.startswith("light front") for t in texts)
     # lines of simultaneity only through each particle's first contact

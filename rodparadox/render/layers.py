@@ -412,8 +412,9 @@ class Impacts(Layer):
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if history.rigid is None:
-            return Line2D([], [], **impact_marker(style)), "contact (A\N{SUBSCRIPT ONE})"
+        if history.rigid is None:  # named by its first contact, so the legend shows how labels read
+            first = next(i for i in history.impacts if i.kind == "contact")
+            return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
         return Line2D([], [], **impact_marker(style)), "impact"
 
 
@@ -427,9 +428,11 @@ class Separations(Layer):
         return LayerArtists()
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not any(i.kind == "separation" for i in history.impacts):
+        first = next((i for i in history.impacts if i.kind == "separation"), None)
+        if first is None:
             return None
-        return Line2D([], [], **separation_marker(style)), "separation (A\N{PRIME}\N{SUBSCRIPT ONE})"
+        name = impact_name(first.label[:-1])
+        return Line2D([], [], **separation_marker(style)), f"separation ({name[0]}\N{PRIME}{name[1:]})"
 
 
 def separation_marker(style: Style) -> dict:
