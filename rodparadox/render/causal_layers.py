@@ -181,6 +181,9 @@ class Compression(Layer):
 
     name = "compression"
 
+    def applies(self, history):
+        return is_causal(history)
+
     def draw(self, ax, panel):
         history = panel.history
         if not is_causal(history):
@@ -228,6 +231,9 @@ class Fronts(Layer):
 
     name = "fronts"
 
+    def applies(self, history):
+        return is_causal(history)
+
     def draw(self, ax, panel):
         if not is_causal(panel.history):
             return LayerArtists()
@@ -250,6 +256,9 @@ class Contacts(Layer):
     """Each contact of the causal rod: a broad band in the particle's colour where it rides with the end."""
 
     name = "contacts"
+
+    def applies(self, history):
+        return is_causal(history)
 
     def draw(self, ax, panel):
         history = panel.history

@@ -131,6 +131,10 @@ class Layer:
     def enabled(self, options: Options) -> bool:
         return True
 
+    def applies(self, history) -> bool:
+        """Whether the layer draws anything for this rod model (the causal rod's own layers: only for it)."""
+        return True
+
     def draw(self, ax, panel: PanelContext) -> LayerArtists:
         raise NotImplementedError
 

@@ -424,6 +424,9 @@ class Separations(Layer):
 
     name = "separations"
 
+    def applies(self, history):
+        return history.rigid is None
+
     def draw(self, ax, panel):
         return LayerArtists()
 

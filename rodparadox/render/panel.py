@@ -22,7 +22,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
     drawn: dict[str, list] = {}
     obstacles, guides, labels = [], [], []
     for layer in LAYERS:
-        if not layer.enabled(options):
+        if not (layer.enabled(options) and layer.applies(history)):
             continue
         out = layer.draw(ax, panel)
         drawn[layer.name] = list(out.artists)
