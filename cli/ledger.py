@@ -148,7 +148,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         _check_times(history, frames, times)
         writers = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
                    "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}
-        if history.rigid is None or rod_asked() == "both":
+        if history.kind == "causal" or rod_asked() == "both":
             text = _causal_text(fmt, history, scenario, frames, times, writers)
         else:
             text = writers[fmt](history, frames, times)
@@ -185,7 +185,7 @@ def _causal_text(fmt: str, history, source: str, frames, times, writers) -> str:
 
     from rodparadox.tables import causal_ledger
 
-    causal = causal_ledger if history.rigid is None else None
+    causal = causal_ledger if history.kind == "causal" else None
     if causal is not None:
         return {"text": causal.to_text, "json": causal.to_json, "csv": causal.to_csv, "markdown": causal.to_markdown,
                 "latex": causal.to_latex}[fmt](history, frames, times)

@@ -64,7 +64,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     named = ([rod] if rod in ("causal", "both") else []) + named  # fig1_causal.svg beside fig1.svg
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
     histories = [_run(job, rod == "both") for job in jobs]
-    if proper_time and any(h.rigid is None for run in histories for h in run):
+    if proper_time and any(h.kind == "causal" for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
     planned.prepare(jobs, described, output)
 

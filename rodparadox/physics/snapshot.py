@@ -55,7 +55,7 @@ def strip_at(history: History, frame: Frame, t: float, flash: float, points: int
     """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
     the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
     eta = frame.rapidity
-    if history.rigid is None:  # the causal rod: read off its chart directly (`_on_chart`), not world-line by line
+    if getattr(history, "kind", "") == "causal":  # the causal rod: read off its chart directly (`_on_chart`), not world-line by line
         sigmas = np.linspace(0.0, history.scenario.L, points if material is None else len(material))
         x, rapidity = _on_chart(history, eta, t, sigmas)
     else:

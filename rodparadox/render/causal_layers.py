@@ -39,7 +39,8 @@ SWATCHES = 7
 
 
 def is_causal(history) -> bool:
-    return history.rigid is None
+    """The causal rod (its chart, `solution`, is what these layers read); any other model draws none of them."""
+    return getattr(history, "kind", "") == "causal"
 
 
 # --- the compression scale: pure numbers, shared by the layer, its legend entry and the tests ----------------

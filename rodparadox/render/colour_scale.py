@@ -49,7 +49,7 @@ def colour_scale(history: History, frame: Frame) -> ColourScale:
     of any material point's velocity over the whole history, so the colours mean the same at every instant."""
     centre = frame.rod_velocity()
     eta = frame.rapidity
-    extremes = rod_rapidities(history) if history.rigid is not None else causal_rapidity_range(history)
+    extremes = causal_rapidity_range(history) if getattr(history, "kind", "") == "causal" else rod_rapidities(history)
     rapidities = [r - eta for r in extremes]
     bound = max(abs(r - math.atanh(centre)) for r in rapidities)
     # a rod that never changes velocity, seen from a frame that leaves an ulp between its velocity and the centre

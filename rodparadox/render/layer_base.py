@@ -99,7 +99,7 @@ class PanelContext:
     def simultaneity_labels(self) -> frozenset[str]:
         """The events lines of simultaneity go through: every rigid impact; a causal rod's first contact of each
         particle (its re-contacts and separations crowd one end: more lines there would hide them)."""
-        if self.history.rigid is not None:
+        if getattr(self.history, "kind", "") != "causal":
             return self.contact_labels
         first = {}
         for e in self.view.events:

@@ -32,7 +32,7 @@ from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
-from rodparadox.render.causal_layers import Compression, Contacts, Fronts
+from rodparadox.render.causal_layers import Compression, Contacts, Fronts, is_causal
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
 
@@ -132,6 +132,9 @@ class Clocks(Layer):
 
     def enabled(self, options):
         return options.proper_time
+
+    def applies(self, history):
+        return not is_causal(history)  # a chart curve's proper time is not integrated yet (plot refuses it)
 
     def draw(self, ax, panel):
         st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
@@ -412,7 +415,7 @@ class Impacts(Layer):
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if history.rigid is None:  # named by its first contact, so the legend shows how labels read
+        if is_causal(history):  # named by its first contact, so the legend shows how labels read
             first = next(i for i in history.impacts if i.kind == "contact")
             return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
         return Line2D([], [], **impact_marker(style)), "impact"
@@ -425,7 +428,7 @@ class Separations(Layer):
     name = "separations"
 
     def applies(self, history):
-        return history.rigid is None
+        return is_causal(history)
 
     def draw(self, ax, panel):
         return LayerArtists()
@@ -471,7 +474,7 @@ def legend_entries(style: Style, history: History, options: Options, clock_step:
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
     time between clock ticks, chosen by the diagram from its panels' time spans)."""
     # two rod models in one figure (--rod both): each layer's entry for the causal rod, else for the rigid one
-    histories = sorted(history, key=lambda h: h.rigid is not None) if isinstance(history, tuple) else (history,)
+    histories = sorted(history, key=lambda h: not is_causal(h)) if isinstance(history, tuple) else (history,)
     entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
                      if e is not None), None) for layer in LEGEND if layer.enabled(options)]
     entries = [entry for entry in entries if entry is not None]

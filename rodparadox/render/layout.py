@@ -59,7 +59,7 @@ def panel_of(history: History, letter: str, frame: Frame, window: tuple[float, f
     margin = MARGIN * max(x1 - x0, t1 - t0)
     box = [x0 - margin, x1 + margin, t0 - margin, t1 + margin]
     fit_aspect(box, *ASPECT_RANGE)
-    ringing = None if history.rigid is not None else math.tanh(history.final_rapidity - frame.rapidity)
+    ringing = math.tanh(history.final_rapidity - frame.rapidity) if getattr(history, "kind", "") == "causal" else None
     panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing))
     panel.history = history
     return panel

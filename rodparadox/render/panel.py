@@ -6,6 +6,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.engine import History
 from rodparadox.render.styles import Style
+from rodparadox.render.causal_layers import is_causal
 from rodparadox.render.labels import Area, place
 from rodparadox.render.layers import LAYERS, Options, PanelContext, widest_line
 from rodparadox.render.layout import Metrics, Panel
@@ -31,7 +32,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size, crowded=history.rigid is None)
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=is_causal(history))
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     return {name: tuple(artists) for name, artists in drawn.items()}
