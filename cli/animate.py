@@ -16,7 +16,7 @@ from rodparadox.errors import OptionError
 
 from . import words
 from .common import (NUMBER, Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, run_scenario, scenario_options, style_option)
+                     reports_errors, rod_asked, run_scenario, scenario_options, style_option)
 
 #: the defaults: 6 seconds at 25 frames per second, a rate a GIF stores exactly (4 hundredths of a second)
 DEFAULT_FPS = 25
@@ -26,7 +26,7 @@ ANIMATION_FORMATS = ("gif", "mp4", "png")
 
 
 @click.command()
-@scenario_options(rods=("rigid",))
+@scenario_options(rods=("rigid", "causal"))
 @frame_option("now: the panels, as plot's --frame (e.g. both,0.3); boost: the frames to boost between, "
               "A..B, each rest, moving or a velocity U (both is rest..moving).", metavar="rest|moving|both|U|A..B")
 @click.option("--mode", "mode", type=click.Choice(("now", "boost")), default="now", show_default=True,
@@ -66,7 +66,7 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     described = planned.Outputs(formats=ANIMATION_FORMATS, default="gif", kind=mode, folders={"png": "the stills"},
                                 check=_check_output, frames=planned.frames_of if mode == "now" else boost_ends)
     [job] = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
-                         extras=length_names(fps, seconds))
+                         extras=(["causal"] if rod_asked() == "causal" else []) + list(length_names(fps, seconds)))
     check_fps(job.fmt, fps)
     count = image_count(seconds, fps)
     if job.fmt == "mp4":

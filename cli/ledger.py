@@ -20,8 +20,8 @@ from rodparadox.errors import OptionError
 from rodparadox.numbers import decimal
 
 from . import words
-from .common import (before_matplotlib, emit, format_option, frame_option, load_scenario, output_option, quiet_option,
-                     report, reports_errors, run_scenario, scenario_options, style_option)
+from .common import (BadInput, before_matplotlib, emit, format_option, frame_option, load_scenario, output_option,
+                     quiet_option, report, reports_errors, rod_asked, run_scenario, scenario_options, style_option)
 
 TABLE_FORMATS = ("text", "json", "csv", "markdown", "latex")
 _EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv", "md": "markdown", "markdown": "markdown",
@@ -100,7 +100,7 @@ def _check_agreement(kind: str, fmt: str | None, output: str | None) -> None:
 
 
 @click.command()
-@scenario_options(rods=("rigid",))
+@scenario_options(rods=("rigid", "causal", "both"))
 @frame_option("The frames: S, S', both, or the frame of velocity U relative to S; a comma-separated list "
               "gives several (e.g. both,0.3).")
 @click.option("--at", "at", default=None, metavar="T1,T2,...",
@@ -146,8 +146,12 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
 
         history = run_scenario(s, scenario, frames)
         _check_times(history, frames, times)
-        text = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
-                "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}[fmt](history, frames, times)
+        writers = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
+                   "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}
+        if history.kind == "causal" or rod_asked() == "both":
+            text = _causal_text(fmt, history, scenario, frames, times, writers)
+        else:
+            text = writers[fmt](history, frames, times)
         if output in (None, "-"):
             emit(text, nl=False)
             return
@@ -157,6 +161,9 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if times is not None:
         raise OptionError("at", at, TABLE_FORMATS, "{what} selects the slices of a table ({choices}); a figure shows "
                                                    "every instant.")
+    if rod_asked() in ("causal", "both") or load_scenario(scenario, v, L).rod == "causal":
+        raise BadInput("the ledger figure draws the rigid rod only for now; give the causal rod's ledger as a table "
+                       "(--format text, json, csv, markdown or latex).")
     described = planned.Outputs(formats=FIGURE_FORMATS, default="svg", kind="ledger")  # as plot's, named _ledger
     jobs = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style)
     histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
@@ -170,3 +177,27 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
         figure = ledger_figure.draw(history, job.frames[0], style)
         report(((path, write_atomic(path, render.figure_bytes(figure, f, style))) for f, path in job.paths.items()),
                quiet)
+
+
+def _causal_text(fmt: str, history, source: str, frames, times, writers) -> str:
+    """The causal rod's ledger (`tables.causal_ledger`), or with --rod both the rigid one's, then the causal one's."""
+    import json
+
+    from rodparadox.tables import causal_ledger
+
+    causal = causal_ledger if history.kind == "causal" else None
+    if causal is not None:
+        return {"text": causal.to_text, "json": causal.to_json, "csv": causal.to_csv, "markdown": causal.to_markdown,
+                "latex": causal.to_latex}[fmt](history, frames, times)
+    rigid = history
+    history = run_scenario(rigid.scenario.with_overrides(rod="causal"), source, frames)
+    _check_times(history, frames, times)
+    parts = [writers[fmt](rigid, frames, times), _causal_text(fmt, history, source, frames, times, writers)]
+    if fmt == "json":
+        return json.dumps({"format": causal_ledger.FORMAT, "rod": "both", "rigid": json.loads(parts[0]),
+                           "causal": json.loads(parts[1])}, indent=1, allow_nan=False) + "\n"
+    if fmt == "csv":  # one table: a first column says which rod
+        rows = [["rod"] + parts[0].splitlines()[0].split(",")]
+        rows += [[rod] + line.split(",") for rod, text in zip(("rigid", "causal"), parts) for line in text.splitlines()[1:]]
+        return "\n".join(",".join(row) for row in rows) + "\n"
+    return parts[0] + "\n" + parts[1]

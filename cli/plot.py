@@ -11,15 +11,15 @@ import click
 
 from rodparadox.render.styles import FORMATS
 
-from .common import (Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, run_scenario, scenario_options, style_option)
+from .common import (BadInput, Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option,
+                     report, reports_errors, rod_asked, run_scenario, scenario_options, style_option)
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
            ("rod_now", "now"), ("proper_time", "clocks"), ("equal_scales", "samescale"))
 
 
 @click.command()
-@scenario_options(several=True, rods=("rigid",))
+@scenario_options(several=True, rods=("rigid", "causal", "both"))
 @frame_option("Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
               "a comma-separated list gives several (e.g. both,0.3).")
 @format_option("One or more formats, comma-separated. [default: svg, or the extension of -o FILE]", default=None,
@@ -61,9 +61,13 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time, "equal_scales": equal_scales}
     described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
+    rod = rod_asked()
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
+    named = ([rod] if rod in ("causal", "both") else []) + named  # fig1_causal.svg beside fig1.svg
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
-    histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
+    histories = [_run(job, rod == "both") for job in jobs]
+    if proper_time and any(h.kind == "causal" for run in histories for h in run):
+        raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
     planned.prepare(jobs, described, output)
 
     before_matplotlib()
@@ -72,6 +76,15 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
-    figures = [render.draw(history, job.frames[0], style, options).figure for history, job in zip(histories, jobs)]
+    figures = [(render.draw_both(*run, job.frames[0], style, options) if len(run) == 2
+                else render.draw(run[0], job.frames[0], style, options)).figure for run, job in zip(histories, jobs)]
     report(((path, write_atomic(path, render.figure_bytes(figure, f, style)))
             for figure, job in zip(figures, jobs) for f, path in job.paths.items()), quiet)
+
+
+def _run(job, both: bool) -> tuple:
+    """The job's history, and with --rod both the causal rod's beside the rigid one."""
+    rigid = run_scenario(job.scenario, job.name, job.frames[0])
+    if not both:
+        return (rigid,)
+    return rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, job.frames[0])

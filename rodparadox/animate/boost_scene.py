@@ -23,17 +23,21 @@ from matplotlib.ticker import FuncFormatter, MaxNLocator, ScalarFormatter
 from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import BoostTimeline
 from rodparadox.numbers import impact_name, shown
-from rodparadox.physics.engine import History
+from rodparadox.physics.engine import WORLDLINE_NAMES, History
 from rodparadox.physics.frames import Frame, sampling_tolerance, view
 from rodparadox.physics.model import frame_velocity
-from rodparadox.render.layers import Impacts, Options, PanelContext, Particle, RodEnds, WorldSheet, line_kwargs
+from rodparadox.render.causal_layers import HANDLER_MAP, Compression, Fronts
+from rodparadox.render.layers import (Impacts, Options, PanelContext, Particle, RodEnds, Separations, WorldSheet,
+                                      line_kwargs, separation_text)
 from rodparadox.render.layout import font_sizes
 from rodparadox.render.styles import STYLES
 from rodparadox.render.text import text_size, tick_text
 
 #: plot's layers drawn at each instant: the world-sheet (under the axes of S and S'), then the bodies (the
 #: particles under the rod's ends), then the impacts' markers (over the bodies)
-SHEET, BODIES, IMPACTS = WorldSheet(), (Particle("A"), Particle("B"), RodEnds()), Impacts()
+#: the sheet: plain for the rigid rod; the causal rod's shaded by compression, crossed by its fronts (`causal_layers`)
+SHEET, BODIES, IMPACTS = (WorldSheet(), Compression(), Fronts()), (Particle("A"), Particle("B"), RodEnds()), Impacts()
+SEPARATIONS = Separations()
 #: the layers' options: none of plot's extras
 OPTIONS = Options()
 
@@ -68,6 +72,7 @@ class BoostScene:
         key = [(Line2D([], [], **line_kwargs(st.rod)), "rod")]
         key += [entry for entry in (layer.legend_entry(st, history, OPTIONS) for layer in BODIES[:2]) if entry]
         key += [IMPACTS.legend_entry(st, history, OPTIONS),
+                *(e for e in (layer.legend_entry(st, history, OPTIONS) for layer in (SEPARATIONS, *SHEET[1:])) if e),
                 (Line2D([], [], **line_kwargs(axis_inks["rest"])), "axes of S"),
                 (Line2D([], [], **line_kwargs(axis_inks["moving"])), "axes of S\N{PRIME}")]
         key_width = (3.4 * fs + max(render.text_size(text, fs)[0] for _, text in key)) / 72  # inches
@@ -110,12 +115,13 @@ class BoostScene:
                       for frame, axis in self.axes_of}
         self.particles = {name: ax.text(0, 0, name, ha="left", va="center", color=st.particles[name].colour,
                                         fontsize=big, style="italic", zorder=9, bbox=ground, animated=True)
-                          for name, _ in history.worldlines if not name.startswith("rod_")}
-        self.labels = [ax.text(0, 0, impact_name(i.label, math_text=True), fontsize=1.1 * fs, va="center", zorder=9,
+                          for name in ("A", "B") if history.worldline(name) is not None}
+        self.labels = [ax.text(0, 0, impact_name(i.label, math_text=True) if i.kind == "contact" else
+                               separation_text(i.label, fs)[0], fontsize=1.1 * fs, va="center", zorder=9,
                                bbox=ground, animated=True) for i in history.impacts]
         figure.legend([h for h, _ in key], [text for _, text in key], loc="upper left",
                       bbox_to_anchor=((left + side + 0.3) / width, 1 - top / height), fontsize=fs,
-                      handlelength=2.6, labelspacing=0.7, borderaxespad=0.0)
+                      handlelength=2.6, labelspacing=0.7, borderaxespad=0.0, handler_map=HANDLER_MAP)
         self.reach = 2.0 * max(abs(x0), abs(x1), abs(t0), abs(t1))  # the axes run past the panel's every side
         self.font_sizes = font_sizes(st)
         self.layered: tuple = ()  # what the layers drew at the last instant, taken away at the next
@@ -125,8 +131,9 @@ class BoostScene:
         window (the axes stay still while they move)."""
         history, L = self.history, self.history.scenario.L
         tolerance = sampling_tolerance(history)
+        named = ((name, history.worldline(name)) for name in WORLDLINE_NAMES)  # the rod interface's names
         points = {name: w.seen_from(frame.rapidity).sample(*self.timeline.t_window, tolerance) / L
-                  for name, w in history.worldlines}
+                  for name, w in named if w is not None}
         # no layer drawn here has ticks or clocks: their steps are not needed
         return PanelContext(history, self.style, OPTIONS, self.font_sizes, "boost", view(history, frame), points,
                             self.box, (math.nan, math.nan), math.nan)
@@ -141,7 +148,7 @@ class BoostScene:
         for artist in self.layered:
             artist.remove()
         panel = self.panel(frame)
-        sheet = SHEET.draw(ax, panel).artists
+        sheet = tuple(artist for layer in SHEET for artist in layer.draw(ax, panel).artists)
         bodies = tuple(artist for layer in BODIES for artist in layer.draw(ax, panel).artists)
         impacts = IMPACTS.draw(ax, panel).artists
         self.layered = (*sheet, *bodies, *impacts)

@@ -235,9 +235,10 @@ def time_window(history: History, frame: Frame) -> tuple[float, float]:
     return first - lead, last + lead
 
 
-def view(history: History, frame: Frame) -> FrameView:
+def view(history: History, frame: Frame, window: tuple[float, float] | None = None) -> FrameView:
+    """The history in the frame, over `window` (the frame's times) or its own `time_window`."""
     eta = frame.rapidity
-    t_lo, t_hi = time_window(history, frame)
+    t_lo, t_hi = window or time_window(history, frame)
     events = []
     for i in history.impacts:
         e = i.event.seen_from(eta)

@@ -21,8 +21,9 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   layer_base  what every layer shares: options, the panel context, the Layer class, inks as keywords
   layers   one class per element (world-sheet, rod ends, particles, impacts, lines of simultaneity, extras):
            it draws itself, names what labels must avoid, and gives its own legend entry; ink from the style
+  causal_layers  the causal rod's own layers: its sheet shaded by compression, its light fronts, its contacts
   panel    one panel: its axes, then every enabled layer, then the labels
-  diagram  `draw` (a Figure the layout sizes), `draw_into` (a Figure or SubFigure the caller sized), bytes
+  diagram  `draw` (a Figure the layout sizes), `draw_both` (two rod models, a row each), `draw_into` (a Figure or SubFigure the caller sized), bytes
   styles   the three styles as plain data (inks, dashes, rcParams, sizes): no matplotlib
   ledger_figure  the ledger as a figure (momentum and energy against each frame's time)
   colour_scale  which velocity each colour of a strip means, in one frame (pure: no matplotlib)
@@ -41,7 +42,7 @@ import importlib
 #: each public name, and the module of this package that defines it
 _HOME = {
     "PANEL_LETTERS": "rodparadox.physics.frames", "relative_velocity": "rodparadox.physics.frames",
-    **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_into", "draw_panel_into", "figure_bytes", "natural_size", "style_context",
+    **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_both", "draw_into", "draw_panel_into", "figure_bytes", "natural_size", "style_context",
                      "FIGURE_METADATA"), "rodparadox.render.diagram"),
     **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
                     "rodparadox.render.strip"),

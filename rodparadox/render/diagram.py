@@ -19,8 +19,9 @@ from matplotlib.legend_handler import HandlerTuple
 
 from rodparadox.physics import rod
 from rodparadox.physics.engine import History
-from rodparadox.physics.frames import PANEL_LETTERS, Frame
+from rodparadox.physics.frames import PANEL_LETTERS, Frame, time_window
 from rodparadox.render.styles import FORMATS, STYLES, Style
+from rodparadox.render.causal_layers import HANDLER_MAP, is_causal
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, one_scale, panel_of, tick_step
 from rodparadox.render.legibility import material_lines_that_fit
@@ -33,6 +34,11 @@ FIGURE_METADATA = {
     "pdf": {"Creator": None, "Producer": None, "CreationDate": None, "ModDate": None},
     "png": {"Software": None},
 }
+
+
+#: the resolution of a vector file's rasterised parts (the causal rod's compression shading, thousands of cells);
+#: the vector parts do not depend on it (the rigid figures' bytes are the same at any value)
+RASTER_DPI = 300
 
 
 @contextmanager
@@ -77,6 +83,19 @@ def draw(history: History, frames: Sequence[Frame], style: str = "default", opti
     frames = _checked(frames)
     with style_context(style) as st:
         builder = _Builder(history, frames, st, options)
+        layout = builder.lay_out(Page.of_style(st))
+        figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
+        return builder.render(figure, layout, layout.width, layout.height)
+
+
+def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "default",
+              options: Options = Options()) -> Diagram:
+    """The two rod models of one scenario in one figure (`plot --rod both`): a row of panels for the rigid rod
+    above a row for the causal rod, one panel per frame, each frame's two panels on the same scales (their data
+    boxes joined), one legend for both."""
+    frames = _checked(tuple(frames) * 2)[:len(frames)]
+    with style_context(style) as st:
+        builder = _Builder((rigid, causal), frames, st, options)
         layout = builder.lay_out(Page.of_style(st))
         figure = Figure(figsize=(layout.width / 72, layout.height / 72), dpi=72)
         return builder.render(figure, layout, layout.width, layout.height)
@@ -147,21 +166,45 @@ def figure_bytes(figure: Figure, fmt: str, style: str = "default") -> bytes:
         raise ValueError(f"unknown format {fmt!r}; use one of {', '.join(FORMATS)}")
     with style_context(style) as st:
         buffer = io.BytesIO()
-        figure.savefig(buffer, format=fmt, metadata=FIGURE_METADATA[fmt], dpi=st.png_dpi if fmt == "png" else 72)
+        figure.savefig(buffer, format=fmt, metadata=FIGURE_METADATA[fmt], dpi=st.png_dpi if fmt == "png" else RASTER_DPI)
         return buffer.getvalue()
+
+
+def _same_scales(panels: list[Panel], per_row: int) -> None:
+    """Each frame's panels, one per rod model, get one data box (the union of theirs) and say their model."""
+    for k in range(per_row):
+        same = panels[k::per_row]
+        box = (min(p.data_box[0] for p in same), max(p.data_box[1] for p in same),
+               min(p.data_box[2] for p in same), max(p.data_box[3] for p in same))
+        for p in same:
+            p.data_box, p.box = box, list(box)
+            model = "causal rod" if is_causal(p.history) else "rigid rod"
+            p.title = p.title.replace(") frame ", f") {model}, frame ", 1)
+            p.title_lines = [p.title]
 
 
 class _Builder:
     """One diagram's panels, laid out and then drawn into a target."""
 
-    def __init__(self, history: History, frames: tuple[Frame, ...], style: Style, options: Options):
-        self.history, self.style, self.options = history, style, options
+    def __init__(self, history: History | tuple, frames: tuple[Frame, ...], style: Style, options: Options):
+        histories = history if isinstance(history, tuple) else (history,)  # two: the rigid row, the causal row
+        self.history, self.style, self.options = histories[0], style, options
         self.fs = font_sizes(style)
-        self.panels: list[Panel] = [panel_of(history, letter, frame) for letter, frame in zip(PANEL_LETTERS, frames)]
+        letters = iter(PANEL_LETTERS)
+        windows = [None] * len(frames)
+        if len(histories) > 1:  # each frame's panels over one time window: the union of the models' own
+            spans = [[time_window(h, frame) for h in histories] for frame in frames]
+            windows = [(min(lo for lo, _ in s), max(hi for _, hi in s)) for s in spans]
+        self.panels: list[Panel] = [panel_of(h, next(letters), frame, window) for h in histories
+                                    for frame, window in zip(frames, windows)]
+        self.per_row = len(frames) if len(histories) > 1 else None
         if options.equal_scales:
             one_scale(self.panels)
+        elif self.per_row:
+            _same_scales(self.panels, len(frames))
         # one clock step for every panel (proper time is the same in every frame), from the longest time span
         self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
+        self.histories = history
         self.legend = legend_entries(style, history, options, self.clock_step)
         self.rod_lines = {p.letter: options.rod_lines for p in self.panels}  # material lines drawn in each panel
 
@@ -169,16 +212,18 @@ class _Builder:
         """The layout; with material lines, laid out again while the legend's count of them changes: the count
         follows each panel's width, and only falls, so this ends."""
         while True:
-            layout = lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled)
+            layout = lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled,
+                             self.per_row)
             if not self.options.rod_lines:
                 return layout
             fits = {p.letter: min(self.rod_lines[p.letter], material_lines_that_fit(
-                self.history, p.view, p.worldlines, p.width / (p.box[1] - p.box[0]), self.options.rod_lines))
+                p.history if p.history is not None else self.history, p.view, p.worldlines,
+                p.width / (p.box[1] - p.box[0]), self.options.rod_lines))
                 for p in self.panels}
             if fits == self.rod_lines:
                 return layout
             self.rod_lines = fits
-            self.legend = legend_entries(self.style, self.history, self.options, self.clock_step, fits)
+            self.legend = legend_entries(self.style, self.histories, self.options, self.clock_step, fits)
 
     def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
         """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""
@@ -210,7 +255,7 @@ class _Builder:
                                bbox_to_anchor=(0.5, (oy + layout.legend_height - 2) / height),
                                ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
-                               handler_map={tuple: HandlerTuple(ndivide=1)})  # the rod: strip and line in one
+                               handler_map={tuple: HandlerTuple(ndivide=1), **HANDLER_MAP})  # the rod: strip and line in one
         legend.set_gid("legend")
         infos.sort(key=lambda info: info.letter)
         return Diagram(target, tuple(infos),

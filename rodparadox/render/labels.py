@@ -39,6 +39,11 @@ def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
     """For each box (k, 4: xmin ymin xmax ymax), how many segments (n, 4: x0 y0 x1 y1) cross it (Liang-Barsky)."""
     if len(segments) == 0:
         return np.zeros(len(boxes), dtype=int)
+    return np.count_nonzero(_hits(boxes, segments), axis=1)
+
+
+def _hits(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """(k, n): whether segment n crosses box k."""
     x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
     dx, dy = x1 - x0, y1 - y0
     lo = np.zeros((len(boxes), len(segments)))
@@ -52,11 +57,11 @@ def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
             r = q / np.where(zero, 1.0, p)
             lo = np.where(p < 0, np.maximum(lo, r), lo)
             hi = np.where(p > 0, np.minimum(hi, r), hi)
-    return np.count_nonzero(ok & (lo <= hi), axis=1)
+    return ok & (lo <= hi)
 
 
 def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], guides: list[np.ndarray],
-          widest_line: float, impact_size: float, font_size: float) -> list[tuple]:
+          widest_line: float, impact_size: float, font_size: float, crowded: bool = False) -> list[tuple]:
     """Put each label near its anchor where its box crosses no line, marker or earlier label; returns each label's
     artists (its text, and its leader line if it has one), in the order of `labels`.
 
@@ -65,6 +70,8 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     Crossing a guide (an extra's line) costs as much as three rings outwards,
     and such a label gets a white ground; crossing anything else is a last resort.
     A leader is 0.6 pt wide for a label of `impact_size` in a style of 9 pt type, scaled with both.
+    `crowded` (the causal rod: contacts, separations and re-contacts at one end): two more rings, and a
+    candidate whose leader would cross a placed label or marker costs as a hundred guides.
     """
     x0, x1, t0, t1 = frame.box
     sx, st_ = frame.width / (x1 - x0), frame.height / (t1 - t0)  # points per unit of L (equal, up to rounding)
@@ -85,7 +92,7 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     hard, soft = segments_of(obstacles), segments_of(guides)
     taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
-    radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0])
+    radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0] + ([56.0, 67.0] if crowded else []))
     angles = np.arange(0.0, 360.0, 15.0)
     never = 10 ** 9
     drawn: list[tuple] = []
@@ -109,7 +116,9 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                   & (boxes[:, 3] <= frame.height - edge))
         cost = np.full(len(boxes), never)
         crossed_guides = np.zeros(len(boxes), dtype=int)
-        for first, last in ((0, 3), (3, 6), (6, len(radii))):  # nearest rings first; stop once one is free
+        for first, last in ((0, 3), (3, 6), (6, 9), (9, len(radii))):  # nearest rings first; stop once one is free
+            if first >= len(radii):
+                break
             chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
             if len(chunk) == 0:
                 continue
@@ -120,6 +129,9 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
                             & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
             crossed_guides[chunk] = crossings(b, soft)
+            if crowded and label.avoid_radius and taken:  # a leader it would need crossing a label or marker:
+                # free candidates first, then this before a box on a label (a leader across a word is still read)
+                crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken)
             if label.guides_block:
                 blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
             cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]
@@ -151,6 +163,24 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 hard = np.concatenate([hard, leader.reshape(1, 4)])
         drawn.append(artists)
     return drawn
+
+
+def _leaders_blocked(centre: np.ndarray, padded: np.ndarray, pad: float, radius: float, taken: list) -> np.ndarray:
+    """For each candidate box (padded by `pad`), how many taken boxes (other markers, placed labels) the leader
+    it would need (`_leader`) crosses; 0 for a candidate close enough to need none."""
+    boxes = padded + np.array([pad, pad, -pad, -pad])
+    nearest = np.column_stack([np.clip(centre[0], boxes[:, 0], boxes[:, 2]), np.clip(centre[1], boxes[:, 1], boxes[:, 3])])
+    distance = np.hypot(nearest[:, 0] - centre[0], nearest[:, 1] - centre[1])
+    needs = distance - (radius - 1.0) > LABEL_REACH
+    if not needs.any():
+        return np.zeros(len(boxes), dtype=int)
+    start = centre + (nearest - centre) * ((radius - 1.0) / np.where(distance > 0, distance, 1.0))[:, None]
+    own = _marker_box(centre, radius)
+    others = np.array([box for box in taken if tuple(box) != tuple(own)]).reshape(-1, 4)
+    if len(others) == 0:
+        return np.zeros(len(boxes), dtype=int)
+    hits = np.count_nonzero(_hits(others, np.column_stack([start, nearest])), axis=0)
+    return np.where(needs, hits, 0)
 
 
 def _leader(centre: np.ndarray, text_box: tuple[float, float, float, float], radius: float) -> np.ndarray | None:

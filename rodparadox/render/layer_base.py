@@ -94,6 +94,23 @@ class PanelContext:
         """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
         return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
 
+    @property
+    def contact_labels(self) -> frozenset[str]:
+        """The labels of this frame's contacts (every rigid impact; a causal rod's separations are not)."""
+        return frozenset(e.impact.label for e in self.view.events if e.impact.kind == "contact")
+
+    @property
+    def simultaneity_labels(self) -> frozenset[str]:
+        """The events lines of simultaneity go through: every rigid impact; a causal rod's first contact of each
+        particle (its re-contacts and separations crowd one end: more lines there would hide them)."""
+        if getattr(self.history, "kind", "") != "causal":
+            return self.contact_labels
+        first = {}
+        for e in self.view.events:
+            if e.impact.kind == "contact":
+                first.setdefault(e.impact.particle, e.impact.label)
+        return frozenset(first.values())
+
     def plot(self, ax, points: np.ndarray, ink: Ink, zorder: float, gid: str):
         """A polyline in `ink`: the one way layers draw a line."""
         line, = ax.plot(points[:, 0], points[:, 1], **line_kwargs(ink), zorder=zorder, gid=gid)
@@ -116,6 +133,10 @@ class Layer:
     label_rank = 0
 
     def enabled(self, options: Options) -> bool:
+        return True
+
+    def applies(self, history) -> bool:
+        """Whether the layer draws anything for this rod model (the causal rod's own layers: only for it)."""
         return True
 
     def draw(self, ax, panel: PanelContext) -> LayerArtists:

@@ -24,14 +24,15 @@ from matplotlib.patches import Patch, Polygon
 
 from rodparadox.physics import kinematics
 from rodparadox.physics import rod
-from rodparadox.physics.engine import History
+from rodparadox.physics.engine import WORLDLINE_NAMES, History
 from rodparadox.physics.frames import Frame, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.physics.kinematics import Event, HyperbolicArc
-from rodparadox.numbers import impact_name, shown
+from rodparadox.numbers import impact_name, impact_parts, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
+from rodparadox.render.causal_layers import Compression, Contacts, Fronts, is_causal
 from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
@@ -134,13 +135,17 @@ class Clocks(Layer):
     def enabled(self, options):
         return options.proper_time
 
+    def applies(self, history):
+        return not is_causal(history)  # a chart curve's proper time is not integrated yet (plot refuses it)
+
     def draw(self, ax, panel):
         st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
         # the same events in every panel: counted in S (tau = 0 at t = 0 there), then boosted
         x0, x1 = (value * L for value in panel.box[:2])
         drawn = []
-        for name, worldline in panel.history.worldlines:
+        named = ((name, panel.history.worldline(name)) for name in WORLDLINE_NAMES)  # the rod interface's names
+        for name, worldline in ((name, line) for name, line in named if line is not None):
             ink = st.rod if name.startswith("rod_") else st.particles[name]
             # the times in S at which this world-line enters and leaves the panel's window, a little widened for
             # rounding: only ticks there are sought, so their number is bounded by the window, not by t = 0's distance
@@ -228,7 +233,7 @@ class Simultaneity(Layer):
 
     def draw(self, ax, panel):
         slope = relative_velocity(self.frame(panel.v).velocity, panel.view.frame.velocity)  # dt/dx of the line in this panel
-        events = panel.events()
+        events = [e for e in panel.events() if e[0] in panel.simultaneity_labels]  # a causal rod's first contacts
         drawn: list[tuple[float, str, list[str]]] = []
         for label, _, x, t in events:
             intercept = t - slope * x
@@ -400,30 +405,70 @@ class Impacts(Layer):
         st, fs, letter = panel.style, panel.fs, panel.letter
         markers, labels = [], []
         for label, end, x, t in panel.events():
-            marker, = ax.plot([x], [t], **impact_marker(st), zorder=7, gid=f"{letter}-impact-{label}")
+            contact = label in panel.contact_labels
+            marker, = ax.plot([x], [t], **(impact_marker(st) if contact else separation_marker(st)), zorder=7,
+                              gid=f"{letter}-impact-{label}")
             markers.append(marker)
-            labels.append(Label(f"{letter}-impact-label-{label}", impact_name(label, math_text=True), ((x, t),),
+            text, size = (impact_name(label, math_text=True), impact_text_size(label, fs["impact"])[:2]) if contact \
+                else separation_text(label, fs["impact"])
+            labels.append(Label(f"{letter}-impact-label-{label}", text, ((x, t),),
                                 0.0 if end == "right" else 180.0, st.impact_colour, fs["impact"],
-                                avoid_radius=st.impact_size / 2 + 1.0,
-                                box_size=impact_text_size(label, fs["impact"])[:2]))
+                                avoid_radius=st.impact_size / 2 + 1.0, box_size=size))
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
+        if is_causal(history):  # named by its first contact, so the legend shows how labels read
+            first = next(i for i in history.impacts if i.kind == "contact")
+            return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
         return Line2D([], [], **impact_marker(style)), "impact"
+
+
+@dataclass(frozen=True)
+class Separations(Layer):
+    """The legend's entry for the causal rod's separations (the `impacts` layer draws their hollow markers)."""
+
+    name = "separations"
+
+    def applies(self, history):
+        return is_causal(history)
+
+    def draw(self, ax, panel):
+        return LayerArtists()
+
+    def legend_entry(self, style, history, options, clock_step=None):
+        first = next((i for i in history.impacts if i.kind == "separation"), None)
+        if first is None:
+            return None
+        name = impact_name(first.label[:-1])
+        return Line2D([], [], **separation_marker(style)), f"separation ({name[0]}\N{PRIME}{name[1:]})"
+
+
+def separation_marker(style: Style) -> dict:
+    """A separation: a hollow marker, told from a contact (filled) in any ink."""
+    return marker_kwargs(style.impact_size, "white", style.impact_colour, 1.0)
+
+
+def separation_text(label: str, size: float) -> tuple[str, tuple[float, float]]:
+    """A separation's label, mathtext (A1s -> A₁′), and a box at least as large as it draws."""
+    contact = label[:-1] if label.endswith("s") else label
+    w, h, _ = impact_text_size(contact, size)
+    letter, digits = impact_parts(contact)
+    return f"${letter}'_{{{digits}}}$", (w + 0.35 * size, h)
 
 
 _SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD = WorldSheet(), MaterialLines(), RodNow(), Clocks(), RodEnds()
 _A, _B = Particle("A"), Particle("B")
 _REST, _MOVING = Simultaneity("rest", 2.2), Simultaneity("moving", 2.1)
 _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS = OtherAxes(), LightCones(), Hyperbolae(), Impacts()
+_COMPRESSION, _FRONTS, _CONTACTS, _SEPARATIONS = Compression(), Fronts(), Contacts(), Separations()
 
 #: the drawing order: the grid behind, the world-sheet, the rod's inside, its ends, the particles, the lines of
 #: simultaneity, the extras' lines, the impacts on top (zorders decide what covers what; this order breaks ties)
-LAYERS: tuple[Layer, ...] = (Grid(), _SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD, _A, _B, _REST, _MOVING,
-                             _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS)
+LAYERS: tuple[Layer, ...] = (Grid(), _SHEET, _COMPRESSION, _ROD_LINES, _FRONTS, _ROD_NOW, _CLOCKS, _CONTACTS, _ROD,
+                             _A, _B, _REST, _MOVING, _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS, _SEPARATIONS)
 #: the legend's order, as the paper's caption reads: bodies, impacts, lines of simultaneity, then the extras
-LEGEND: tuple[Layer, ...] = (_ROD, _A, _B, _IMPACTS, _REST, _MOVING, _OTHER_AXES, _CONES, _ROD_LINES, _ROD_NOW,
-                             _CLOCKS, _HYPERBOLAE)
+LEGEND: tuple[Layer, ...] = (_ROD, _COMPRESSION, _A, _B, _IMPACTS, _SEPARATIONS, _CONTACTS, _FRONTS, _REST, _MOVING,
+                             _OTHER_AXES, _CONES, _ROD_LINES, _ROD_NOW, _CLOCKS, _HYPERBOLAE)
 assert set(LEGEND) <= set(LAYERS)
 
 
@@ -432,10 +477,14 @@ def legend_entries(style: Style, history: History, options: Options, clock_step:
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
     time between clock ticks, chosen by the diagram from its panels' time spans; `rod_lines`: the material lines
     drawn in each panel, when fewer than asked)."""
-    entries = [layer.legend_entry(style, history, options, clock_step) for layer in LEGEND if layer.enabled(options)]
+    # two rod models in one figure (--rod both): each layer's entry for the causal rod, else for the rigid one
+    histories = sorted(history, key=lambda h: not is_causal(h)) if isinstance(history, tuple) else (history,)
+    enabled = [layer for layer in LEGEND if layer.enabled(options)]
+    entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
+                     if e is not None), None) for layer in enabled]
     if rod_lines and options.rod_lines:
         thinned = material_lines_text(options.rod_lines, rod_lines)
-        entries = [(entry[0], thinned) if layer is _ROD_LINES else entry
-                   for layer, entry in zip((layer for layer in LEGEND if layer.enabled(options)), entries)]
+        entries = [(entry[0], thinned) if layer is _ROD_LINES and entry is not None else entry
+                   for layer, entry in zip(enabled, entries)]
     entries = [entry for entry in entries if entry is not None]
     return [handle for handle, _ in entries], [text for _, text in entries]

@@ -43,12 +43,14 @@ class Panel:
         self.box = list(box)  # the axes limits: the data box, widened where the title needs room
         self.width = self.height = 0.0  # points
         self.title_lines: list[str] = [title]
+        self.history = None  # the run this panel draws (`panel_of`): two rod models draw in one figure (--rod both)
 
 
-def panel_of(history: History, letter: str, frame: Frame) -> Panel:
-    """A frame's panel: its world-lines in units of L and its data box, before the layout sizes it."""
+def panel_of(history: History, letter: str, frame: Frame, window: tuple[float, float] | None = None) -> Panel:
+    """A frame's panel: its world-lines in units of L and its data box, before the layout sizes it (over the
+    frame's times `window`, else the history's own `frames.time_window`)."""
     L = history.scenario.L
-    fv = view(history, frame)
+    fv = view(history, frame, window)
     tolerance = sampling_tolerance(history)
     worldlines = {name: points / L for name, points in fv.worldline_points(tolerance).items()}
     everything = np.concatenate(list(worldlines.values()))
@@ -57,7 +59,10 @@ def panel_of(history: History, letter: str, frame: Frame) -> Panel:
     margin = MARGIN * max(x1 - x0, t1 - t0)
     box = [x0 - margin, x1 + margin, t0 - margin, t1 + margin]
     fit_aspect(box, *ASPECT_RANGE)
-    return Panel(letter, fv, worldlines, box, panel_title(letter, fv))
+    ringing = math.tanh(history.final_rapidity - frame.rapidity) if getattr(history, "kind", "") == "causal" else None
+    panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing))
+    panel.history = history
+    return panel
 
 
 def one_scale(panels: list[Panel]) -> None:
@@ -243,7 +248,7 @@ class Layout(NamedTuple):
 
 
 def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, float], legend_labels: list[str],
-            page: Page, titled: bool = True) -> Layout:
+            page: Page, titled: bool = True, per_row: int | None = None) -> Layout:
     """Lay the figure out in points: suptitle; rows of panels, each with its title, axes and tick labels; legend.
 
     The panels share one height (equal scales within a panel; one size for
@@ -252,13 +257,14 @@ def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, f
     row is taken whose panels are at least ROW_PREFERENCE of the tallest any
     arrangement allows: two panels side by side, eight in three rows. Tick
     steps are then widened until no two tick labels touch, and the layout
-    redone with them. Every panel's width, box and title lines are set.
+    redone with them. Every panel's width, box and title lines are set. `per_row`, if given, fixes the panels
+    to a row (two rod models: one row each).
     """
     m = Metrics(style, fs)
     steps = [(tick_step(p.data_box),) * 2 for p in panels]  # (x step, t step) of each panel
     for _ in range(6):  # steps only grow, and each growth is a nice step: this settles in two or three rounds
         rows, height, width, (legend_rows, legend_cols) = _arrange(history, panels, m, steps, fs, legend_labels, page,
-                                                                    titled)
+                                                                    titled, per_row)
         readable = [readable_steps(p, step, m) for p, step in zip(panels, steps)]
         if readable == steps:
             break
@@ -274,7 +280,8 @@ def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, f
 
 
 def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs: dict[str, float],
-             labels: list[str], page: Page, titled: bool = True) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
+             labels: list[str], page: Page, titled: bool = True,
+             per_row: int | None = None) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
     """(rows of panels, the panels' height, the figure's width, the legend's rows and columns).
 
     Every panel's width, box and title lines are set.
@@ -331,7 +338,7 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
     n = len(panels)
     # most panels to a row first; for each, a legend as wide as the panels, then one as wide as the page
     arrangements = [([panels[k:k + columns] for k in range(0, n, columns)], wide)
-                    for columns in range(n, 0, -1) for wide in (False, True)]
+                    for columns in ((per_row,) if per_row else range(n, 0, -1)) for wide in (False, True)]
     options = [(rows, wide, tallest(rows, wide, page_h)) for rows, wide in arrangements]
     best = max(h for *_, h in options)
     if best > 0.0:

@@ -6,6 +6,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.engine import History
 from rodparadox.render.styles import Style
+from rodparadox.render.causal_layers import is_causal
 from rodparadox.render.labels import Area, place
 from rodparadox.render.layers import LAYERS, Options, PanelContext, widest_line
 from rodparadox.render.layout import Metrics, Panel
@@ -19,6 +20,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
     and the magnified inset's (`inset`) when the world-sheet is thin on the page (`legibility.inset_plan`).
     `rod_lines`: the material lines to draw (the diagram thins them to what the panel holds); None: as asked."""
     _axes(ax, p, steps, m)
+    history = p.history if p.history is not None else history
     if rod_lines is None and options.rod_lines:
         rod_lines = material_lines_that_fit(history, p.view, p.worldlines, p.width / (p.box[1] - p.box[0]),
                                             options.rod_lines)
@@ -27,7 +29,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
     drawn: dict[str, list] = {}
     obstacles, guides, labels = [], [], []
     for layer in LAYERS:
-        if not layer.enabled(options):
+        if not (layer.enabled(options) and layer.applies(history)):
             continue
         out = layer.draw(ax, panel)
         drawn[layer.name] = list(out.artists)
@@ -36,7 +38,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size)
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=is_causal(history))
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     if options.insets:

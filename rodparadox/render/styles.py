@@ -37,6 +37,8 @@ HYPERBOLA_DASH = (0, (6.0, 2.0))
 #: particle B is long-and-short dashed in every style (not dash-dotted: that is S′'s simultaneity), so that a legend
 #: read in grey (a photocopy, the print style) tells A from B without colour
 B_DASH = (0, (8.0, 2.0, 3.0, 2.0))
+#: the causal rod's light fronts: long thin dashes, told from the dotted lines of simultaneity in grey
+FRONT_DASH = (0, (7.0, 3.0))
 #: the ledger figure's particle B in print, where both particles are black and no label names the curves
 LEDGER_DASHDOT = (0, (6.0, 1.8, 1.5, 1.8))
 
@@ -85,6 +87,10 @@ class Style(NamedTuple):
     boost_size: tuple[float, float]  # inches: a boost animation's width and its largest height
     handout_body_size: float  # points: a handout's body text
     rc: Mapping[str, Any]  # rcParams set while drawing and saving
+    #: the causal rod (README, "The causal rod"): its light fronts, thin light lines across the world-sheet, and
+    #: the ends of its compression scale (most stretched, most compressed; the unstressed middle is `sheet`)
+    front: Ink = Ink("#1a1a1a", 0.45, FRONT_DASH)
+    compression_ends: tuple[str, str] = ("#fff4cf", "#08306b")
 
 
 def _frozen(mapping: dict) -> Mapping:
@@ -158,6 +164,8 @@ _PRINT = Style(
     animation_dpi=150, animation_ticks=(2.5, 2.0), boost_size=(7.0, 6.0),
     handout_body_size=10.0,
     rc=_frozen({**_COMMON_RC, **_SERIF}),
+    front=Ink("#000000", 0.45, FRONT_DASH),
+    compression_ends=("#ffffff", "#4d4d4d"),
 )
 
 # slides: the default's colours and dashes, with large type, thick lines and a 16:9 canvas
@@ -182,6 +190,7 @@ _SLIDES = _DEFAULT._replace(
     ledger_particles=_frozen(_SLIDES_PARTICLES),
     animation_dpi=100, animation_ticks=(4.0, 2.5), boost_size=(13.33, 7.5),
     handout_body_size=12.0,
+    front=Ink("#1a1a1a", 0.9, FRONT_DASH),
     rc=_frozen({**_DEFAULT.rc, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
                 "xtick.major.size": 6.0, "ytick.major.size": 6.0}),
 )
