@@ -272,7 +272,13 @@ def _with_rod(scenario):
     rod, rods = meta.get(ROD_META) or scenario.rod, meta.get(RODS_META, ("rigid", "causal"))
     if rod not in rods:
         raise BadInput(words.rod_not_here(rod, context.info_name if context is not None else "this command", rods))
-    return scenario.with_overrides(rod=rod)
+    return scenario.with_overrides(rod="rigid" if rod == "both" else rod)  # both: the rigid run, the command adds the other
+
+
+def rod_asked() -> str | None:
+    """--rod as given on the command line (rigid, causal or both), or None."""
+    context = click.get_current_context(silent=True)
+    return context.meta.get(ROD_META) if context is not None else None
 
 
 def run_scenario(scenario, source: str, frames=()):
