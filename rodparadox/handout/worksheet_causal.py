@@ -113,8 +113,10 @@ def question_stress(c: Comparison) -> Asked:
               f"The stress carries {answer_numeral(s.total.p)} − ({' + '.join(summand(q) for q in terms)}) = "
               f"{answer_numeral(stress)} M c: the pressure of the compressed rod, moving, carries momentum "
               f"(p(uu − η) in its stress-energy).",
-              f"In the rigid rod the same role is played by the hidden part of the ledger, "
-              f"{answer_numeral(hidden)} M c on this slice: the stress part is its real, local version.")
+              f"In the rigid rod the same role is played by the hidden part of the ledger"
+              + (f", {answer_numeral(hidden)} M c on this slice" if hidden != 0.0 else
+                 ", zero on this slice")
+              + ": the stress part is its real, local version.")
     asks = [told_number(f"the causal rod's stress momentum on {slice_name}", stress),
             told_number(f"the bodies' total momentum in {symbol}", s.total.p)]
     if hidden != 0.0:
