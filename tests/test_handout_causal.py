@@ -197,3 +197,14 @@ def test_handout_takes_both_rods_and_names_the_file(tmp_path):
     result = CliRunner().invoke(main, ["handout", "single", "--rod", "causal", "--questions", "9", "-o",
                                        str(tmp_path / "x.pdf")])
     assert result.exit_code == 2 and "--worksheet" in result.output  # checked before the causal rod is run
+
+
+def test_a_scenario_file_of_the_causal_rod_gets_the_comparison(tmp_path):
+    """A file with `rod: causal` and no --rod: the rigid sections (the drawings) and the comparison, named as the file
+    (no _causal: the name says the options given, as plot's)."""
+    path = tmp_path / "one.yaml"
+    path.write_text("v: 0.6\nrod: causal\nparticles:\n  A: {gap: 0.5}\n")
+    result = CliRunner().invoke(main, ["handout", str(path), "--format", "tex", "-o", str(tmp_path / "out")])
+    assert result.exit_code == 0, result.output
+    tex = (tmp_path / "out" / "handout.tex").read_text()
+    assert HEADING in tex and "one_causal_events_rest" in tex
