@@ -73,8 +73,9 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
     rod = rod_asked()  # named as plot names: fig1_causal_handout.pdf, fig1_both_handout.pdf
+    extras = ([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else [])
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
-                         extras=([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else []))
+                         extras=extras)
     items = []
     for s, name, frames, stem in zip(job.scenarios, job.names, job.frames, job.stems):
         # the rigid rod's sections always (the diagrams draw it); the causal rod's run for the comparison

@@ -30,6 +30,9 @@ INTRODUCTION = (
     "a causal rod of the same rest mass M and length L; every number below is computed from its run. The diagrams, "
     "the rod at successive instants and the tables above are of the rigid rod: this handout does not draw the "
     "causal rod yet.")
+#: a worksheet shows the diagram and blank tables of the rigid rod (the strips wait for the key)
+WORKSHEET_INTRODUCTION = INTRODUCTION.replace("The diagrams, the rod at successive instants and the tables above",
+                                              "The diagram and the tables above").replace("this handout", "this sheet")
 
 
 def far_end_text(c: Comparison) -> str:
@@ -132,8 +135,8 @@ def table_text(frame: Frame) -> str:
             f"contact, not at its ends) and the struck end\u2019s, just before and just after.")
 
 
-def comparison(c: Comparison, causal, frames: tuple[Frame, ...], worksheet: bool = False) -> tuple[list[Block],
-                                                                                                   list[Block]]:
+def comparison(c: Comparison, causal, frames: tuple[Frame, ...],
+               worksheet: bool = False) -> tuple[list[Block], list[Block]]:
     """The comparison's blocks in the scenario's section, and those a worksheet's answer key prints (the told
     paragraphs and the filled tables: a worksheet keeps only the introduction and blank tables before its key)."""
     told: list[Block] = [Paragraph(far_end_text(c)), Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)),
@@ -143,4 +146,4 @@ def comparison(c: Comparison, causal, frames: tuple[Frame, ...], worksheet: bool
         return [Heading(HEADING, 2), Paragraph(INTRODUCTION), *told, *filled], []
     blank = [b for f in frames for b in (Paragraph(table_text(f) + " Fill in the numbers."),
                                          events_table(causal, f, blank=True))]
-    return [Heading(HEADING, 2), Paragraph(INTRODUCTION), *blank], [Heading(HEADING, 2), *told, *filled]
+    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION), *blank], [Heading(HEADING, 2), *told, *filled]
