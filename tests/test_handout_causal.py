@@ -208,3 +208,12 @@ def test_a_scenario_file_of_the_causal_rod_gets_the_comparison(tmp_path):
     assert result.exit_code == 0, result.output
     tex = (tmp_path / "out" / "handout.tex").read_text()
     assert HEADING in tex and "one_causal_events_rest" in tex
+
+
+def test_a_greek_capital_before_a_variable_stays_two_tokens_in_latex():
+    """(Δt, Δx) in the ringing paragraph: $\\Delta$ then $t$ merged as $\\Delta t$, not the undefined \\Deltat that
+    stopped pdflatex."""
+    from rodparadox.handout.tex import prose
+
+    assert prose("(Δt, Δx)") == r"($\Delta t$, $\Delta x$)"
+    assert prose("γt′ and −L") == r"$\gamma t'$ and $-L$"
