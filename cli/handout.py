@@ -56,7 +56,8 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
 
     Each section holds the setup, the two-frame diagram with an explanation
     generated from the computed history, the rod at successive instants in each
-    frame, and the events and energy-momentum tables. Writes
+    frame, and the events and energy-momentum tables; with --rod both (or
+    causal) it ends comparing the rigid rod with the causal rod. Writes
     OUTPUT/NAME_handout.pdf (NAME_worksheet.pdf), named as plot names figures,
     or with --format tex the folder OUTPUT/NAME_handout/; prints each path
     written, `PATH (unchanged)` for one left alone. The same command gives the
