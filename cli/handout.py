@@ -13,7 +13,7 @@ import click
 from rodparadox.errors import OptionError
 
 from .common import (before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, run_scenario, scenario_options, style_option)
+                     reports_errors, rod_asked, run_scenario, scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
@@ -24,7 +24,7 @@ HANDOUT_PAPER = "a4"
 
 
 @click.command()
-@scenario_options(several=True, rods=("rigid",))
+@scenario_options(several=True, rods=("rigid", "causal", "both"))
 @frame_option("The frames shown, as plot's --frame (e.g. both,0.3).")
 @click.option("--paper", "paper", type=click.Choice(PAPER_NAMES, case_sensitive=False), default=HANDOUT_PAPER,
               show_default=True, help="The paper size.")
@@ -58,7 +58,8 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
 
     Each section holds the setup, the two-frame diagram with an explanation
     generated from the computed history, the rod at successive instants in each
-    frame, and the events and energy-momentum tables. Writes
+    frame, and the events and energy-momentum tables; with --rod both (or
+    causal) it ends comparing the rigid rod with the causal rod. Writes
     OUTPUT/NAME_handout.pdf (NAME_worksheet.pdf), named as plot names figures,
     or with --format tex the folder OUTPUT/NAME_handout/; prints each path
     written, `PATH (unchanged)` for one left alone. The same command gives the
@@ -74,17 +75,23 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE)
+    rod = rod_asked()  # named as plot names: fig1_causal_handout.pdf, fig1_both_handout.pdf
+    extras = ([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else [])
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
-                         extras=([paper] if paper != HANDOUT_PAPER else []) + (["samescale"] if equal_scales else []))
-    histories = [run_scenario(s, name, frames) for s, name, frames in zip(job.scenarios, job.names, job.frames)]
+                         extras=extras + (["samescale"] if equal_scales else []))
+    items = []
+    for s, name, frames, stem in zip(job.scenarios, job.names, job.frames, job.stems):
+        # the rigid rod's sections always (the diagrams draw it); the causal rod's run for the comparison
+        compared = rod in ("causal", "both") or s.rod == "causal"
+        causal = run_scenario(s.with_overrides(rod="causal"), name, frames) if compared else None
+        items.append((stem, run_scenario(s.with_overrides(rod="rigid"), name, frames), frames, causal))
     planned.prepare([job], described, output)
 
     before_matplotlib()
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
 
-    document = build(list(zip(job.stems, histories, job.frames)), worksheet=worksheet, compare_v=compare_v,
-                     chosen=numbers, equal_scales=equal_scales)
+    document = build(items, worksheet=worksheet, compare_v=compare_v, chosen=numbers, equal_scales=equal_scales)
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 

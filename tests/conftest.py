@@ -41,6 +41,14 @@ def history(name: str, v: float | None = None, L: float | None = None) -> Histor
     return run(load(name).with_overrides(v=v, L=L))
 
 
+@functools.lru_cache(maxsize=None)
+def causal_history(name: str, v: float | None = None, L: float | None = None):
+    """A built-in scenario's causal rod (README, "The causal rod") at v and L, run once per process (fig2: ~0.3 s)."""
+    from rodparadox.physics.causal import run as run_causal
+
+    return run_causal(load(name).with_overrides(v=v, L=L, rod="causal"))
+
+
 @pytest.fixture
 def unwritable_folder(tmp_path):
     """A folder no new file can be written into: /sys for root (who writes through mode bits), else a locked one."""

@@ -1,7 +1,8 @@
 """A worksheet asks and never tells before its key (issue 14, item 1), read as the student gets it: the text of
 every page before the answer key (the pages' drawn text, tick labels and panel titles included; the PDF's own text
 at one speed; the LaTeX of --format tex) searched for every fact each question asks (`document.Fact`: a number in
-every printed form, a claim as its phrases), for every preset at v = 0.3, 0.6, 0.95.
+every printed form, a claim as its phrases), for every preset at v = 0.3, 0.6, 0.95; at 0.6 three with the causal rod's
+comparison and its questions (`handout --rod both --worksheet`).
 
 One worksheet of all the presets per speed, built once per session and split into its sections by their headings,
 so each question's facts are searched in its own scenario's pages."""
@@ -18,7 +19,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
-from conftest import history
+from conftest import causal_history, history
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Fact, Heading, Paragraph, Question
@@ -34,6 +35,9 @@ pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
 SPEEDS = (0.3, 0.6, 0.95)
 #: the speed whose worksheet is also saved as a PDF and read back with pypdf (saving is the costly part)
 PDF_SPEED = 0.95
+#: the speed and presets whose worksheet also compares the causal rod (`--rod both`) and asks its questions: one
+#: particle (its far end moved by light), two at once, two at different times (a re-contact); the pages cost 0.5 s each
+CAUSAL_SPEED, CAUSAL_PRESETS = 0.6, ("single", "fig1", "fig2")
 SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
@@ -96,7 +100,10 @@ def worksheets():
     (and at PDF_SPEED as the PDF's text), and as handout.tex and its tables give it."""
     out = {}
     for v in SPEEDS:
-        doc = build([(name, history(name, v)) for name in builtin_names()], worksheet=True)
+        # with the causal rod's comparison and its questions at one speed (a causal run and its pages cost)
+        doc = build([(name, history(name, v), None,
+                      causal_history(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
+                     for name in builtin_names()], worksheet=True)
         before_key = dataclasses.replace(doc, answer_key=())
         figures = page_figures(before_key)
         drawn = _by_section(doc, _page_texts(figures))

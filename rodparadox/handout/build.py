@@ -32,11 +32,14 @@ import re
 from dataclasses import replace
 from typing import Sequence
 
+from rodparadox.handout.causal_compare import comparison
+from rodparadox.handout.causal_reading import compare
 from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
 from rodparadox.handout.words import in_l, time_name, with_primes
 from rodparadox.handout.worksheet import questions
+from rodparadox.handout.worksheet_causal import causal_questions
 from rodparadox.numbers import exact, impact_name
 from rodparadox.physics.engine import History, Impact
 from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
@@ -222,11 +225,13 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
 
 def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool,
              with_speed: bool = False, compare_v: float | None = None,
-             chosen: Sequence[int] | None = None, equal_scales: bool = False) -> tuple[Section, list[Block]]:
+             chosen: Sequence[int] | None = None, equal_scales: bool = False,
+             causal=None) -> tuple[Section, list[Block]]:
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
     the questions again). A worksheet asks and never tells before its key: the explanation, the caption's sentences
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
-    key; the tables are left blank."""
+    key; the tables are left blank. With the `causal` rod's history, the section ends with the comparison of the
+    two rods (`causal_compare`), and a worksheet with its questions (`worksheet_causal`)."""
     caption = diagram_caption(history, frames, tell=not worksheet)
     if equal_scales and len(frames) > 1:
         caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
@@ -253,15 +258,28 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
             blocks += _tables(history, f, blank=False)
     section_title = title(history, with_speed=True)
     key: list[Block] = []
+    compared: tuple[list[Block], list[Block]] = ([], [])
+    numbers = compare(history, causal, frames) if causal is not None else None
+    if numbers is not None:
+        compared = comparison(numbers, causal, frames, worksheet)
+        if not worksheet:
+            blocks += compared[0]
     if worksheet:
         asked = questions(history, frames, compare_v, chosen)
         blocks.append(Heading("Questions", 2))
         blocks += asked
+        if numbers is not None:
+            more = causal_questions(numbers, len(asked) + 1)
+            blocks += compared[0] + [Heading("Questions on the causal rod", 2), *more]
+            asked += more
+            compared = ([], [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b
+                             for b in compared[1]])
         # the key: the scenario's own title and set-up (which may say what the questions asked), the numbers
         key += [Heading(heading(history, with_speed=True), 2), Paragraph(setup_text(history)),
                 Heading("The numbers", 2), *filled, Heading("Questions and answers", 2)]
         key += asked
         key += told
+        key += compared[1]
     return Section(stem, section_title, tuple(blocks)), key
 
 
@@ -269,28 +287,30 @@ def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, workshe
           compare_v: float | None = None, chosen: Sequence[int] | None = None, equal_scales: bool = False) -> Handout:
     """The handout (or, with `worksheet`, the worksheet and its answer key) of each (stem, history) item, one
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
-    scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames`.
+    scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames` (None: not),
+    or (stem, history, frames, causal), the causal rod's history of the same scenario: the section then compares
+    the two rods (README, "Teaching handouts").
     `equal_scales`: each diagram's panels drawn to one scale (`render.Options.equal_scales`)."""
     entries = []
     for item in items:
         stem, history, *own = item
-        if own:
+        if own and own[0] is not None:
             shown_frames = tuple(own[0])
         elif frames is None:
             shown_frames = paper_frames(history.scenario.v)
         else:
             shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
-        entries.append((stem, history, shown_frames))
-    first = introduction([history for _, history, _ in entries])
+        entries.append((stem, history, shown_frames, own[1] if len(own) > 1 else None))
+    first = introduction([history for _, history, _, _ in entries])
     sections, key = [worksheet_introduction() if worksheet else first], []
-    several_speeds = len({_speed(history) for _, history, _ in entries}) > 1
-    for stem, history, shown_frames in entries:
+    several_speeds = len({_speed(history) for _, history, _, _ in entries}) > 1
+    for stem, history, shown_frames, causal in entries:
         section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen,
-                                    equal_scales)
+                                    equal_scales, causal)
         sections.append(section)
         key += answers
     resolution = first.blocks[1:]  # the paradox, its resolution and the idealisation
     answer_key = (Heading("Answer key"), Heading("The paradox and its resolution", 2), *resolution, *key) \
         if worksheet else ()
-    return Handout(title([(stem, history) for stem, history, _ in entries]), tuple(sections), worksheet,
+    return Handout(title([(stem, history) for stem, history, _, _ in entries]), tuple(sections), worksheet,
                    tuple(answer_key))

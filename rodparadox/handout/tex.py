@@ -165,6 +165,8 @@ _PREAMBLE = r"""%% handout.tex, written by sears-paradox handout --format tex: c
 _PRIMES = re.compile(r"['′]")
 #: two pieces of math side by side ($-$ then $L$): one $...$ (never $$, which TeX reads as display math)
 _ADJACENT_MATH = re.compile(r"(?<!\\)\$\$")
+#: the same after a control word and before a letter ($\Delta$ then $t$): a space keeps \Delta t from \Deltat
+_ADJACENT_AFTER_WORD = re.compile(r"(?<!\\)(\\[A-Za-z]+)\$\$(?=[A-Za-z])")
 
 
 def _variable(token: str) -> str:
@@ -187,7 +189,7 @@ def prose(text: str) -> str:
     italics, as the PDF sets them; units (c, M), frames (S′) and labels (A, B₁) upright."""
     latex = "".join(_variable(piece) if variable else latex_text(piece).replace("$S'$", "S$'$")  # S′: a label
                     for piece, variable in math_pieces(text))
-    return _ADJACENT_MATH.sub("", latex)
+    return _ADJACENT_MATH.sub("", _ADJACENT_AFTER_WORD.sub(r"\1 ", latex))
 
 
 def _figure(stem: str, caption: str) -> str:

@@ -1,0 +1,184 @@
+"""The causal rod read beside the rigid one, for a handout's comparison (README, "The causal rod"): `compare`. Pure.
+
+A `Comparison` holds the numbers the comparison's sentences and questions quote, each read once from the two
+histories of one scenario (the rigid `engine.History` and the causal `causal.CausalHistory`): when each rod's far
+end first moves and when light from the first contact reaches it, how fast each particle leaves each rod, what
+the ringing causal rod carries after the last separation, and the hidden momentum against the stress momentum on
+one slice. Lengths and times are multiples of L, energies of M c², momenta of M c, velocities of c.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from rodparadox.physics.engine import Impact
+from rodparadox.physics.frames import Frame, rest_frame
+from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.tables import build as tables
+from rodparadox.tolerances import SAME_RAPIDITY
+
+#: a stress momentum below this, relative to the total energy, is none: the rod is unstressed on the slice
+UNSTRESSED = 1e-9
+
+
+@dataclass(frozen=True)
+class FarEnd:
+    """The first contact on the causal rod (on the rod at rest in S) and the other end: when each model moves it."""
+
+    contact: Impact
+    far: str
+    #: the contact's time in S, and when light from it reaches the far end (the rod at rest: light crosses L in L)
+    t_contact: float
+    t_light: float
+    #: when the causal rod's far end first moves in S, and whether the front from the contact moved it (else the
+    #: far end's own first contact, `own`, came first)
+    t_causal: float
+    by_light: bool
+    own: Impact | None
+    #: the causal far end's velocity in S just after it starts (the front from the contact: 2 θ of the struck end)
+    u_causal: float
+    #: the struck end's rapidity just after the contact, in S
+    rapidity_struck: float
+    #: when the rigid rod's far end starts to move in S (a turn from rest about the contact), or None
+    t_rigid: float | None
+
+
+@dataclass(frozen=True)
+class Leaving:
+    """A particle's velocity as it leaves for good, in each model and each frame (by frame name)."""
+
+    particle: str
+    rigid: dict
+    causal: dict
+    #: its contacts with the causal rod
+    contacts: int
+
+
+@dataclass(frozen=True)
+class Ringing:
+    """The causal rod after the last separation: it rings for ever, its motion repeating every 2L of chart time."""
+
+    #: the last separation's time in S
+    t_last: float
+    #: what every material point advances by in S over one period, in units of L
+    dt: float
+    dx: float
+    #: the rod's (E, p) in S, (M/2L)(Δt, Δx), its rest mass sqrt(E² − p²) and the velocity of its centre Δx/Δt
+    E: float
+    p: float
+    rest_mass: float
+    velocity: float
+    #: the rigid rod's velocity in S after its last impact
+    rigid_velocity: float
+    #: the particles' kinetic energy in S before the first impact, and after the last contact in each model
+    kinetic_before: float
+    kinetic_rigid: float
+    kinetic_causal: float
+
+
+@dataclass(frozen=True)
+class StressSlice:
+    """One slice of one frame: the rigid ledger's hidden part and the causal rod's matter and stress parts there."""
+
+    frame: Frame
+    t: float
+    hidden: EnergyMomentum
+    matter: EnergyMomentum
+    stress: EnergyMomentum
+    #: the particles' (E, p) on the slice in the causal run, by name, and the causal total before the first contact
+    particles: tuple[tuple[str, EnergyMomentum], ...]
+    total: EnergyMomentum
+
+
+@dataclass(frozen=True)
+class Comparison:
+    #: the rod's proper length, and each particle's (mass in M, velocity in S) before its first contact
+    L: float
+    particles: dict
+    far_end: FarEnd
+    leaving: tuple[Leaving, ...]
+    ringing: Ringing
+    stress: StressSlice
+
+
+def far_end(rigid, causal) -> FarEnd:
+    """When each model first moves the end the first contact did not strike (the rod at rest in S before it)."""
+    L = causal.scenario.L
+    contact = causal.impacts[0]
+    far = "left" if contact.end == "right" else "right"
+    line = causal.material_worldline(0.0 if far == "left" else L)
+    t_causal = line.first.t / L
+    own = next((i for i in causal.impacts if i.kind == "contact" and i.end == far), None)
+    by_light = own is None or own.event.t / L > t_causal + 1e-9 * (1.0 + abs(t_causal))
+    u_causal = math.tanh(line.rapidity_at_time(line.first.t, after=True))
+    turn = next(iter(rigid.rigid.turns), None)
+    t_rigid = turn.pivot.t / L if turn is not None and turn.rapidity_from == 0.0 else None
+    return FarEnd(contact, far, contact.event.t / L, contact.event.t / L + 1.0, t_causal, by_light,
+                  None if by_light else own, u_causal, contact.rod_rapidity_after, t_rigid)
+
+
+def _velocity(rapidity: float, frame: Frame) -> float:
+    """The velocity in the frame of a body of this rapidity in S; a rounding-sized one is 0 (`Reading.velocity`)."""
+    return 0.0 if abs(rapidity - frame.rapidity) <= SAME_RAPIDITY else math.tanh(rapidity - frame.rapidity)
+
+
+def leaving(rigid, causal, frames) -> tuple[Leaving, ...]:
+    """Each particle's velocity after its last impact (rigid) and its last separation (causal), in each frame."""
+    out = []
+    for p in causal.scenario.particles:
+        last_rigid = [i for i in rigid.impacts if i.particle == p.name][-1]
+        mine = [i for i in causal.impacts if i.particle == p.name]
+        last_causal = [i for i in mine if i.kind == "separation"][-1]
+        out.append(Leaving(p.name, {f.name: _velocity(last_rigid.particle_rapidity_after, f) for f in frames},
+                           {f.name: _velocity(last_causal.particle_rapidity_after, f) for f in frames},
+                           sum(i.kind == "contact" for i in mine)))
+    return tuple(out)
+
+
+def ringing(rigid, causal) -> Ringing:
+    """The ringing rod after the last separation, from its period's advance (README, "The causal rod")."""
+    L = causal.scenario.L
+    dt, dx = causal.period_advance()
+    E, p = dt / (2.0 * L), dx / (2.0 * L)  # (M/2L)(Δt, Δx), M = 1
+
+    def kinetic(history, after: bool) -> float:
+        total = 0.0
+        for q in history.scenario.particles:
+            mine = [i for i in history.impacts if i.particle == q.name]
+            th = mine[-1].particle_rapidity_after if after else mine[0].particle_rapidity_before
+            total += EnergyMomentum.of(q.mass, th).T
+        return total
+
+    last = max(i.event.t for i in causal.impacts if i.kind == "separation") / L
+    return Ringing(last, dt / L, dx / L, E, p, math.sqrt((E - p) * (E + p)), dx / dt,
+                   _velocity(rigid.final_rapidity, rest_frame()), kinetic(rigid, False), kinetic(rigid, True),
+                   kinetic(causal, True))
+
+
+def stress_slice(rigid, causal, frames) -> StressSlice:
+    """The slice of the first moving frame shown (else the first frame) where the rigid ledger's hidden momentum is
+    largest, unless the causal rod is unstressed there (no front has reached it yet); else halfway through the causal
+    rod's first contact in that frame."""
+    frame = next((f for f in frames if f.name != "rest"), frames[0])
+    f = frame.rapidity
+    instants = tables.hidden_instants(rigid, frame)
+    first = causal.impacts[0]
+    ended = next(i for i in causal.impacts if i.kind == "separation" and i.particle == first.particle)
+    candidates = [max(instants, key=lambda s: abs(rigid.energy_momentum(f, s).hidden.p))] if instants else []
+    candidates.append(0.5 * (first.event.time_in(f) + ended.event.time_in(f)))
+    for t in candidates:  # a slice the rigid rod's stress crosses, unless the causal rod's has not reached it yet
+        s = causal.energy_momentum(f, t, split=True)
+        parts = dict(s.rod_parts)
+        if abs(parts["stress"].p) > UNSTRESSED * s.kinetic.E:
+            break
+    return StressSlice(frame, t, rigid.energy_momentum(f, t).hidden, parts["matter"], parts["stress"],
+                       tuple((n, em) for n, em in s.bodies if n != "rod"), causal.initial_total(f))
+
+
+def compare(rigid, causal, frames) -> Comparison:
+    """The numbers of the comparison of one scenario's two rods, `frames` the handout's (S, S′ ...)."""
+    first = {p.name: (p.mass, math.tanh(next(i for i in causal.impacts if i.particle == p.name)
+                                        .particle_rapidity_before)) for p in causal.scenario.particles}
+    return Comparison(causal.scenario.L, first, far_end(rigid, causal), leaving(rigid, causal, frames), ringing(rigid, causal),
+                      stress_slice(rigid, causal, frames))
