@@ -24,7 +24,6 @@ import matplotlib.image
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.mathtext import MathTextParser
 from matplotlib.colors import to_rgb
 
 from conftest import history
@@ -385,27 +384,13 @@ def test_the_text_size_cache_is_bounded():
 
 # --- limits, clipping, overlaps -------------------------------------------------------------------------
 
-class _SharedMathtext(MathTextParser):
-    """Agg's mathtext parser with one cache for every figure of the suite: each new renderer otherwise parses
-    every $...$ label again (matplotlib keeps 50 parses, keyed by the renderer): a tenth of the grid's time.
-    The parse is the same code on the same input, so every extent is the one a new renderer measures."""
-
-    _parse_cached = lru_cache(4096)(MathTextParser._parse_cached.__wrapped__)
-
-
-_MATHTEXT = _SharedMathtext("agg")
-
-
 def _renderer(fig, style):
     """The figure laid out as Agg draws it, without rasterising: every text's extent and every tick is what a
     rendered PNG has (the same renderer measures them), at a third of a full draw's cost."""
     with render.style_context(style):
         canvas = FigureCanvasAgg(fig)
-        canvas.get_renderer().mathtext_parser = _MATHTEXT  # the renderer the layout below reuses
         fig.draw_without_rendering()
-    renderer = canvas.get_renderer()
-    assert renderer.mathtext_parser is _MATHTEXT
-    return renderer
+    return canvas.get_renderer()
 
 
 def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:
