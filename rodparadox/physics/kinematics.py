@@ -382,8 +382,15 @@ class ChartCurve:
         return self.point(self.chart_time(t))
 
     def phi_at_time(self, t: float) -> float:
-        """The rapidity at time t (named as HyperbolicArc's, so WorldLine.rapidity_at_time reads both)."""
-        return self.rapidity(self.chart_time(t))
+        """The rapidity at time t (named as HyperbolicArc's, so WorldLine.rapidity_at_time reads both). At a finite
+        end of the curve, the rapidity on the curve's side: a particle's contact ends where a front arrives (the
+        tension that separates it), and the end's rapidity after that front is not the particle's."""
+        T = self.chart_time(t)
+        if T == self.T_end:
+            T = math.nextafter(T, -math.inf)
+        elif T == self.T_start:
+            T = math.nextafter(T, math.inf)
+        return self.rapidity(T)
 
     def clipped(self, t_lo: float, t_hi: float) -> "ChartCurve | None":
         a = self.T_start if t_lo <= self.start.t else self.chart_time(t_lo)
