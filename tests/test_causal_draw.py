@@ -195,6 +195,7 @@ def _label_problems(fig, style) -> list:
     return [p for p in _collisions(fig, style, renderer) if "-front-" not in str(p[1])] + _far_labels(fig, style, renderer)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("style", ["default", "print"])
 @pytest.mark.parametrize("v", [0.3, 0.6, 0.95])
 @pytest.mark.parametrize("name", ["fig1", "fig2"])
@@ -207,6 +208,7 @@ def test_labels_touch_nothing_in_slides(v):
     assert _label_problems(drawn("fig1", v, "slides").figure, "slides") == []
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("style", STYLE_NAMES)
 def test_every_preset_draws_with_both_rods_rigid_row_above_causal_on_the_same_scales(style):
     for name in builtin_names():

@@ -33,6 +33,8 @@ from rodparadox.physics.frames import paper_frames
 pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
 
 SPEEDS = (0.3, 0.6, 0.95)
+#: the speeds as test parameters: 0.6 every day, the other two in the full run (`-m slow` leaves them out)
+SPEED_PARAMS = [pytest.param(0.3, marks=pytest.mark.slow), 0.6, pytest.param(0.95, marks=pytest.mark.slow)]
 #: the speed whose worksheet is also saved as a PDF and read back with pypdf (saving is the costly part)
 PDF_SPEED = 0.95
 #: the speed and presets whose worksheet also compares the causal rod (`--rod both`) and asks its questions: one
@@ -97,39 +99,54 @@ def _by_section(doc, pages: list[str]) -> list[str]:
 @pytest.fixture(scope="session")
 def worksheets():
     """Per speed: the worksheet of every preset, and per section the text before the key as the figures draw it
-    (and at PDF_SPEED as the PDF's text), and as handout.tex and its tables give it."""
-    out = {}
-    for v in SPEEDS:
-        # with the causal rod's comparison and its questions at one speed (a causal run and its pages cost)
-        doc = build([(name, history(name, v), None,
-                      causal_history(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
-                     for name in builtin_names()], worksheet=True)
-        before_key = dataclasses.replace(doc, answer_key=())
-        figures = page_figures(before_key)
-        drawn = _by_section(doc, _page_texts(figures))
-        pdf = None
-        if v == PDF_SPEED:
-            buffer = io.BytesIO()
-            with render.style_context("print"), PdfPages(buffer) as pages:
-                for figure in figures:
-                    pages.savefig(figure)
-            # the figures' labels (mathtext) come back as A1, the text's as A₁: read both as A1
-            pdf = _by_section(doc, [_ascii(" ".join(p.extract_text().split()))
-                                    for p in pypdf.PdfReader(io.BytesIO(buffer.getvalue())).pages])
-        sources = tex_sources(doc)
-        main = sources["handout.tex"].split(ANSWER_KEY_MARK)[0]
-        main = re.sub(r"\\input\{([^}]*)\}", lambda m: sources[m.group(1)].replace("\\", "\\\\"), main)
-        latex = main.split(r"\section*{")[1:]
-        assert len(latex) == len(doc.sections)
-        out[v] = doc, drawn, pdf, latex
-    return out
+    (and at PDF_SPEED as the PDF's text), and as handout.tex and its tables give it; each speed built when a test
+    first asks for it, once."""
+    return _Lazy(_worksheets_at)
+
+
+class _Lazy(dict):
+    """A dict whose values are made on first reading."""
+
+    def __init__(self, make):
+        super().__init__()
+        self.make = make
+
+    def __missing__(self, key):
+        self[key] = self.make(key)
+        return self[key]
+
+
+def _worksheets_at(v: float):
+    """The worksheets of every preset at v, read as the fixture `worksheets` says."""
+    # with the causal rod's comparison and its questions at one speed (a causal run and its pages cost)
+    doc = build([(name, history(name, v), None,
+                  causal_history(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
+                 for name in builtin_names()], worksheet=True)
+    before_key = dataclasses.replace(doc, answer_key=())
+    figures = page_figures(before_key)
+    drawn = _by_section(doc, _page_texts(figures))
+    pdf = None
+    if v == PDF_SPEED:
+        buffer = io.BytesIO()
+        with render.style_context("print"), PdfPages(buffer) as pages:
+            for figure in figures:
+                pages.savefig(figure)
+        # the figures' labels (mathtext) come back as A1, the text's as A₁: read both as A1
+        pdf = _by_section(doc, [_ascii(" ".join(p.extract_text().split()))
+                                for p in pypdf.PdfReader(io.BytesIO(buffer.getvalue())).pages])
+    sources = tex_sources(doc)
+    main = sources["handout.tex"].split(ANSWER_KEY_MARK)[0]
+    main = re.sub(r"\\input\{([^}]*)\}", lambda m: sources[m.group(1)].replace("\\", "\\\\"), main)
+    latex = main.split(r"\section*{")[1:]
+    assert len(latex) == len(doc.sections)
+    return doc, drawn, pdf, latex
 
 
 def _questions(section) -> list[Question]:
     return [b for b in section.blocks if isinstance(b, Question)]
 
 
-@pytest.mark.parametrize("v", SPEEDS)
+@pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_no_page_before_the_key_states_what_a_question_asks(worksheets, v):
     doc, drawn, pdf, latex = worksheets[v]
     found = []
@@ -152,7 +169,7 @@ def test_no_page_before_the_key_states_what_a_question_asks(worksheets, v):
     assert not found, "\n".join(map(str, found))
 
 
-@pytest.mark.parametrize("v", SPEEDS)
+@pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_the_facts_are_what_the_key_answers(worksheets, v):
     """The facts are real: every number is printed in the key's worked answer of its question (in one of its forms),
     and the rod's velocity after each collision in S′, computed here independently as tanh of the engine's rapidity
