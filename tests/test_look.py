@@ -18,3 +18,19 @@ def test_the_setup_counts_its_particles(name):
         assert "at which the particle is where this paragraph puts it." in text and "particles" not in text
     else:
         assert "at which the particles are where this paragraph puts them." in text
+
+
+@pytest.mark.parametrize("name", ["fig2", "single"])
+def test_every_sentence_of_a_ledger_tables_note_starts_with_a_capital(name):
+    """The note under every ledger table read "... one row group. rod, dynamical (not a summand): E and p ...":
+    a sentence starting in lower case. Each sentence of every note starts with a capital letter."""
+    import re
+
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.tables import build as tables
+
+    h = history(name, 0.6)
+    for frame in paper_frames(h.scenario.v):
+        for note in tables.ledger_table(h, frame).notes:
+            starts = [m.group(1) for m in re.finditer(r"(?:^|\.\s+)(\w)", note)]
+            assert starts and all(c.isupper() for c in starts), note
