@@ -34,3 +34,20 @@ def test_every_sentence_of_a_ledger_tables_note_starts_with_a_capital(name):
         for note in tables.ledger_table(h, frame).notes:
             starts = [m.group(1) for m in re.finditer(r"(?:^|\.\s+)(\w)", note)]
             assert starts and all(c.isupper() for c in starts), note
+
+
+@pytest.mark.parametrize("name", ["single", "fig2"])
+def test_the_last_question_before_the_key_takes_its_page_s_rest_to_write_on(name):
+    """Worksheets at v = 0.3 (A4) left question 7 with five lines on a page 72-80 % empty before the key (a
+    section's last page, so the page rules allowed it): its lines now fill the page, which is at most a quarter
+    empty. Read from the page plan (nothing drawn)."""
+    from rodparadox.handout.build import build
+    from rodparadox.handout.pdf import page_plan
+
+    plan = page_plan(build([(name, history(name, 0.3))], worksheet=True), "a4")
+    placed = [b for b in plan.blocks if b.pieces or b.kind == "break"]
+    last = next(b for b, f in zip(placed, placed[1:]) if f.kind == "break" and b.kind == "question")
+    page = last.pieces[-1][0]
+    bottom = max(bottom for b in plan.blocks for p, _, bottom in b.pieces if p == page)
+    assert bottom >= 0.75 * plan.text_height
+    assert len({p for p, _, _ in last.pieces}) == 1  # the question and all its lines on one page
