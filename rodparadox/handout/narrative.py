@@ -73,9 +73,10 @@ def setup_text(history: History, tell: bool = True) -> str:
                      f", so at t = 0 it is at x = {in_l(starts[p.name].x / s.L)}.")
         sentences.append(text)
     tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit L is given in, L = {exact(s.L)})"
+    where = "the particles are where this paragraph puts them" if len(particles) > 1 else \
+        "the particle is where this paragraph puts it"  # `single`: one particle
     sentences.append(f"Below, lengths and times are given as multiples of L{tables_unit}, speeds as fractions of c "
-                     f"(c = 1), masses in units of M; t = 0 is the instant of S at which the particles are where this "
-                     f"paragraph puts them.")
+                     f"(c = 1), masses in units of M; t = 0 is the instant of S at which {where}.")
     return " ".join(sentences)
 
 

@@ -96,11 +96,17 @@ def _fit(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> 
     """Before block k is set, rather than leave the page more than EMPTY_MOST empty (a book's way): a picture is set
     smaller, down to its least, so that it fits the rest of the page with what is kept before it, or so that what
     comes after it does; a worksheet's question takes the rest of its page as ruled lines when the next block does
-    not fit there. True if a block's size changed (the needs are then measured again)."""
+    not fit there, or when it is the last before the answer key. True if a block's size changed (the needs are then
+    measured again)."""
     item = measured[k]
+    least_room = EMPTY_MOST * pages.text_height  # moving on with less room than this leaves the page full enough
+    if isinstance(item, QuestionSet) and item.ruled and (k + 1 == len(measured) or isinstance(measured[k + 1], Break)):
+        # the last question before the key: the page's rest is room to write (single, v = 0.3: 72 % left empty)
+        after = pages.room - _gap(item) - item.lead  # on this page, or at the next one's top
+        after = after if after >= -FIT_SLACK else pages.text_height - item.lead
+        return after > least_room and item.stretch(after) is None
     if not pages.figures or pages.at_top or isinstance(item, Break):
         return False
-    least_room = EMPTY_MOST * pages.text_height  # moving on with less room than this leaves the page full enough
     short = _gap(item) + needs[k] - pages.room  # by how much the block (with what it keeps) misses this page
     if short > FIT_SLACK:
         end = k

@@ -118,7 +118,7 @@ def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
                  (f"E in M c², p in M c, M the rod's mass. Particles, the rod's kinetic part and the hidden part add "
                   f"up to the total, the total before the first impact (E = {fixed(total.E, zero)}, p = "
                   f"{fixed(total.p, zero)}); hidden: that total less every body's kinetic (E, p) on the frame's "
-                  f"slice. Impacts at one instant of the frame are one row group. {ROD_DYNAMICAL}: E and p of the "
+                  f"slice. Impacts at one instant of the frame are one row group. {ROD_DYNAMICAL.capitalize()}: E and p of the "
                   f"rod's momentum, which takes each impulse at once; shown apart, it is not a summand.",))
 
 
