@@ -51,3 +51,24 @@ def test_the_last_question_before_the_key_takes_its_page_s_rest_to_write_on(name
     bottom = max(bottom for b in plan.blocks for p, _, bottom in b.pieces if p == page)
     assert bottom >= 0.75 * plan.text_height
     assert len({p for p, _, _ in last.pieces}) == 1  # the question and all its lines on one page
+
+
+@pytest.mark.parametrize("name", builtin_names())
+def test_the_caption_names_each_particles_dashes_as_the_styles_draw_them(name):
+    """The caption said "the particles A and B are dashed" after B became long-and-short dashed (told from S′'s
+    dash-dotted lines in grey). Each particle's word is checked against its dash pattern in every style: A's an
+    even on-off dash, B's two dashes of different lengths."""
+    from rodparadox.handout.narrative import diagram_caption
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.render.styles import STYLES
+
+    h = history(name)
+    caption = diagram_caption(h, paper_frames(h.scenario.v))
+    words = {"A": "dashed", "B": "long-and-short dashed"}
+    for p in h.scenario.particles:
+        assert f"the particle {p.name} is {words[p.name]}" in caption
+        for style in STYLES.values():
+            offset, pattern = style.particles[p.name].dashes
+            dashes = set(pattern[0::2])
+            assert len(dashes) == (2 if p.name == "B" else 1), (style.name, p.name, pattern)
+    assert "are dashed" not in caption

@@ -98,8 +98,9 @@ def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True
     panels = "; ".join(f"({PANEL_LETTERS[k]}) in {_frame_described(f, s.v)}" for k, f in enumerate(frames))
     labels = impact_names(history.impacts)
     particles = sorted(p.name for p in s.particles)
-    dashed = f"the particle {particles[0]} is dashed" if len(particles) == 1 else \
-        f"the particles {listed(particles)} are dashed"
+    # as the styles draw them (render.styles: PARTICLE_DASH, B_DASH): A dashed, B long-and-short dashed
+    looks = {"A": "dashed", "B": "long-and-short dashed"}
+    dashed = " and ".join(f"the particle {name} is {looks[name]}" for name in particles)
     # a worksheet lists the labels without "and" (a ledger's row "B₁ and A₁" is a claim of simultaneity it asks)
     labels = labels if tell else ", ".join(impact_name(i.label) for i in history.impacts)
     impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
