@@ -1,9 +1,10 @@
 """Fixtures and helpers shared by the test files, hypothesis's profile, and how the suite spreads over processes.
 
 `python -m pytest` runs on two worker processes (pytest-xdist, `-n auto` capped at 2 in pyproject.toml and
-below) with `--dist load`: each worker fills the caches below and the test files' own (drawn figures, built PDFs)
-for itself. `--dist loadgroup`, which honours the `xdist_group(name)` marks and fills each cache once, measured
-slower (185 s against 155 s, one run each): a whole group on one worker leaves the other idle.
+below) with `--dist loadgroup`: tests are handed out one by one, except those of a file marked
+`xdist_group(name)` (html's browser, the worksheet search, the page rules, the causal histories), which run on
+one worker so that their session and module fixtures are built once. Every other cache below and in the test
+files (histories, drawn figures) is filled by each worker for itself.
 """
 
 import functools
