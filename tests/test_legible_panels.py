@@ -299,9 +299,12 @@ def test_plot_equal_scales_names_its_file_and_draws_one_scale(tmp_path):
 
 
 def test_a_clock_in_mathtext_reads_its_powers_of_ten_in_mathtext():
-    """`$t_u$ = 5×10⁶ L`: mathtext's fonts lack the superscript digits, so in a frame u the reading is mathtext."""
+    """`t_u = 5×10⁶ L`: mathtext's fonts lack the superscript digits, so a powers-of-ten reading is mathtext; the
+    clock's t (t′, t_u) and L are math italics (issue 14.6), the number upright."""
+    from rodparadox.physics.frames import Frame
     from rodparadox.render.strip import clock_reading
 
-    assert clock_reading("$t_u$", 5e6) == "$t_u$ = $5{\\times}10^{6}$ L"
-    assert clock_reading("$t_u$", -0.5) == "$t_u$ = $-0.5$ L"
-    assert clock_reading("t\N{PRIME}", 5e6) == "t\N{PRIME} = 5\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT SIX} L"
+    rest, moving, other = Frame("rest", 0.0), Frame("moving", -0.6), Frame("u=0.3", 0.3)
+    assert clock_reading(other, 5e6) == "$t_u$ = $5{\\times}10^{6}$ $L$"
+    assert clock_reading(rest, -0.5) == "$t$ = \N{MINUS SIGN}0.5 $L$"
+    assert clock_reading(moving, 1.25) == "$t$\N{PRIME} = 1.25 $L$"

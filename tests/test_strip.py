@@ -77,10 +77,10 @@ def test_rows_are_labelled_with_their_time_and_marked_impacts_only_at_their_inst
     figure, rows = block(h, Frame("moving", -v), [0.5, t_b, 3.291666666666667, 4.0])
     texts = [[t.get_text() for t in ax.texts if (t.get_gid() or "").startswith(("strips-time-", "strips-impacts-"))]
              for ax in rows]
-    assert texts[0] == ["t\N{PRIME} = 0.5 L"]
-    assert texts[1] == ["t\N{PRIME} = 1.417 L", "impacts $B_{1}$, $A_{1}$"]
-    assert texts[2] == ["t\N{PRIME} = 3.292 L", "impact $B_{2}$"]
-    assert texts[3] == ["t\N{PRIME} = 4 L"]
+    assert texts[0] == ["$t$\N{PRIME} = 0.5 $L$"]
+    assert texts[1] == ["$t$\N{PRIME} = 1.417 $L$", "impacts $B_{1}$, $A_{1}$"]
+    assert texts[2] == ["$t$\N{PRIME} = 3.292 $L$", "impact $B_{2}$"]
+    assert texts[3] == ["$t$\N{PRIME} = 4 $L$"]
     stars = [drawn(ax, "impacts").get_xdata() for ax in rows]
     assert len(stars[0]) == 0 and len(stars[3]) == 0
     # the impacts' x in S', by hand: x' = g(x + v t) of B1 = (L/2, L/2v) and A1 = (-3L/4, ...) (README's table)
@@ -135,4 +135,4 @@ def test_update_strip_moves_the_bar_to_the_exact_rod_at_another_instant():
         assert a == pytest.approx(h.worldline("rod_left").seen_from(eta).event_at_time(t).x, abs=1e-11)
         assert b == pytest.approx(h.worldline("rod_right").seen_from(eta).event_at_time(t).x, abs=1e-11)
         said = artists.readout.get_text()
-        assert said.startswith("t\N{PRIME} = ") and said.endswith(" L in S\N{PRIME}"), said
+        assert said.startswith("$t$\N{PRIME} = ") and said.endswith(" $L$ in S\N{PRIME}"), said

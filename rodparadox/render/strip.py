@@ -107,20 +107,24 @@ def colour_norm(scale: ColourScale, style: Style | str) -> FuncNorm:
 
 
 def readout_text(strip: Strip, frame: Frame, L: float) -> str:
-    """`t′ = 2.111 L in S′` (`$t_u$ = ... in the frame u = 0.3` for another frame), then the impacts flashing
-    now: `   A1, B2!`."""
-    clock = coordinate_names(frame)[1]
-    lit = f"   {', '.join(impact_name(name) for name in strip.flashing)}!" if strip.flashing else ""
-    return f"{clock_reading(clock, strip.t / L)} in {frame_name(frame)}{lit}"
+    """`t′ = 2.111 L in S′` (t, t′ and L in math italics; `t_u = ... in the frame u = 0.3` for another frame), then
+    the impacts flashing now: `   A₁, B₂!`."""
+    lit = f"   {', '.join(impact_name(name, math_text=True) for name in strip.flashing)}!" if strip.flashing else ""
+    return f"{clock_reading(frame, strip.t / L)} in {frame_name(frame)}{lit}"
 
 
-def clock_reading(clock: str, t: float) -> str:
-    """`t′ = 2.111 L`; with a clock named in mathtext (`$t_u$`) the number is mathtext too, as a powers-of-ten
-    number's superscripts outside $...$ would be set in mathtext's fonts, which lack them (`$t_u$ = 5×10⁶ L`
-    drew a missing-glyph box)."""
-    if "$" in clock:
-        return f"{clock} = ${shown(t, 4, math_text=True)}$ L"
-    return f"{clock} = {shown(t, 4)} L"
+#: a frame's clock in math italics: the prime after the mathtext t, as mathtext's own t' sets it too high in STIX
+CLOCKS = {"rest": "$t$", "moving": "$t$\N{PRIME}"}
+
+
+def clock_reading(frame: Frame, t: float) -> str:
+    """`t′ = 2.111 L`, the variables t, t′ (t_u in a frame u) and L in math italics, the number upright. A
+    powers-of-ten number is mathtext too: outside $...$ its superscripts would be set in mathtext's fonts, which
+    lack them (`t_u = 5×10⁶ L` drew a missing-glyph box)."""
+    number = shown(t, 4)
+    if "\N{MULTIPLICATION SIGN}" in number:
+        number = f"${shown(t, 4, math_text=True)}$"
+    return f"{CLOCKS.get(frame.name, '$t_u$')} = {number} $L$"
 
 
 #: room between two colour-bar tick labels, in multiples of the font size
@@ -375,8 +379,7 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[lis
     """Each row's time (t′ = 1.25 L) and the impacts at that instant (mathtext), or an empty note."""
     from rodparadox.numbers import impact_name
 
-    clock = coordinate_names(frame)[1]
-    labels = [clock_reading(clock, s.t / L) for s in strips]
+    labels = [clock_reading(frame, s.t / L) for s in strips]
     notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_name(f, math_text=True) for f in s.flashing)
              if s.flashing else "" for s in strips]
     return labels, notes
