@@ -101,3 +101,25 @@ def test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans):
             if page not in lasts and ends.get(page, 0.0) < (1 - QUARTER) * plan.text_height:
                 empty.append((label, page + 1, round(1 - ends.get(page, 0.0) / plan.text_height, 2)))
     assert not empty, empty
+
+
+def test_a_block_of_strips_split_between_pages_is_headed_again_on_the_next():
+    """A block of strips split between rows went on at the next page's top with no heading (fig1 and fig2 at
+    0.95): its rest is now headed "The rod at successive instants of S′ (continued)", a caption-sized line at the
+    top of the page, set before the rows. Read off the plan: the block's first piece on a later page starts at the
+    text area's top and is one line high (not a row of strips); at least one block is split, so this asks
+    something."""
+    from rodparadox.handout.pdf import page_plan
+
+    split = 0
+    for name in ("fig1", "fig2"):
+        doc = build([(name, history(name, 0.95))])
+        plan = page_plan(doc, "a4")
+        for placed, block in zip([b for b in plan.blocks if b.kind != "break"], doc.blocks()):
+            if type(block).__name__ != "Strips" or len({page for page, _, _ in placed.pieces}) < 2:
+                continue
+            split += 1
+            first_page = placed.pieces[0][0]
+            page, top, bottom = next(p for p in placed.pieces if p[0] > first_page)
+            assert top == 0.0 and 0.0 < bottom - top <= 2 * 1.3 * 12, (name, placed.pieces)
+    assert split >= 1

@@ -22,6 +22,7 @@ from typing import Callable
 from rodparadox import render
 from rodparadox.handout.document import (Block, DiagramBlock, Heading, PageBreak, Paragraph, Question, Strips, Table)
 from rodparadox.handout.pdf_text import MM, RULE_GREY, Line, Pages, width_of, words_of, wrap
+from rodparadox.physics.frames import frame_name
 from rodparadox.render.styles import Style
 from rodparadox.tolerances import FIT_SLACK
 
@@ -350,6 +351,12 @@ class StripsSet(Picture):
                 if pages.drawing:
                     self._draw_rows(times[:rows])(pages.target(y, first))
                 pages.new_page()
+                # the rest is headed again by its frame, as a table's continuation is (issue 14.5)
+                t = pages.type
+                more = wrap(words_of(f"The rod at successive instants of {frame_name(self.block.frame)} (continued)",
+                                     italic=True), t.caption, pages.text_width)
+                pages.lines(more, pages.left, pages.start(len(more) * 1.3 * t.caption, 0.0), t.caption,
+                            1.3 * t.caption)
                 self.picture_h, self.draw = self._height(times[rows:]), self._draw_rows(times[rows:])
                 self.lead = self.picture_h + self.caption_gap + len(self.caption) * self.caption_leading
         super().set(pages)
