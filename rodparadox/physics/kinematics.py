@@ -403,14 +403,21 @@ class ChartCurve:
         if not math.isfinite(self.T_end):
             raise ValueError("an endless chart curve is sampled only when clipped to a window")
         knots = [self.T_start, *self.chart.breaks(self.X, self.T_start, self.T_end), self.T_end]
-        out = [self.point(self.T_start)]
+        known: dict[float, Event] = {}  # each chart time's point once: a half's ends are its parent's end and middle
+
+        def at(T: float) -> Event:
+            if T not in known:
+                known[T] = self.point(T)
+            return known[T]
+
+        out = [at(self.T_start)]
         for a0, b0 in zip(knots, knots[1:]):
             if b0 - a0 <= 1e-14 * (abs(a0) + abs(b0) + 1e-300):
                 continue  # a front through an end of the curve, read an ulp apart
             stack = [(a0, b0, 0)]
             while stack:
                 a, b, depth = stack.pop()
-                pa, pb, pm = self.point(a), self.point(b), self.point(0.5 * (a + b))
+                pa, pb, pm = at(a), at(b), at(0.5 * (a + b))
                 dx, dt = pb.x - pa.x, pb.t - pa.t
                 chord = math.hypot(dx, dt)
                 error = abs(dx * (pm.t - pa.t) - dt * (pm.x - pa.x)) / chord if chord > 0 else 0.0
