@@ -7,7 +7,7 @@ refused in one sentence with exit status 1 or 2, with no traceback and nothing l
 """
 import os, subprocess, sys, tempfile, time, signal, shutil
 from pathlib import Path
-TOOL = sys.argv[1]
+TOOL = os.path.abspath(sys.argv[1]) if os.sep in sys.argv[1] else sys.argv[1]
 work = Path(tempfile.mkdtemp(prefix="c15-"))
 tmpdir = work / "tmp"; tmpdir.mkdir()
 env = dict(os.environ, TMPDIR=str(tmpdir))
@@ -54,4 +54,6 @@ for case in cases:
     bad += not ok
     print(f"{'ok ' if ok else 'BAD'} {rc!s:>4} {dt:5.1f}s  {case}\n      {(lines[-1] if lines else out.strip()[:150])[:200]}" + (f"\n      left in tmp: {left}" if left else ""))
 os.chmod(ro, 0o700)
+shutil.rmtree(work, ignore_errors=True)
 print("bad:", bad, "of", len(cases))
+sys.exit(1 if bad else 0)
