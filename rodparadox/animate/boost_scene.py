@@ -29,6 +29,7 @@ from rodparadox.physics.model import frame_velocity
 from rodparadox.render.causal_layers import HANDLER_MAP, Compression, Fronts
 from rodparadox.render.layers import (Impacts, Options, PanelContext, Particle, RodEnds, Separations, WorldSheet,
                                       line_kwargs, separation_text)
+from rodparadox.render.layer_base import line_in_box
 from rodparadox.render.layout import font_sizes
 from rodparadox.render.styles import STYLES
 from rodparadox.render.text import text_size, tick_text
@@ -201,17 +202,10 @@ def _inside_end(dx: float, dt: float, box) -> tuple[float, float] | None:
     """Where the axis through the origin along (dx, dt), its positive direction (x: dx > 0, t: dt > 0), leaves
     the box (x0, x1, t0, t1), pulled in by AXIS_NAME_AT from where it enters the box (from the origin, if that is
     inside): where the axis's name goes, at its positive end. None if its positive half misses the box."""
-    x0, x1, t0, t1 = box
-    lo, hi = 0.0, math.inf  # the positive half's parameters inside the box
-    for d, a, b in ((dt, t0, t1), (dx, x0, x1)):
-        if d == 0.0:
-            if not a <= 0.0 <= b:
-                return None
-            continue
-        s0, s1 = sorted((a / d, b / d))
-        lo, hi = max(lo, s0), min(hi, s1)
-    if not lo < hi:
+    inside = line_in_box(0.0, 0.0, dx, dt, box, lo=0.0)  # the positive half's parameters inside the box
+    if inside is None:
         return None
+    lo, hi = inside
     scale = lo + AXIS_NAME_AT * (hi - lo)
     return dx * scale, dt * scale
 

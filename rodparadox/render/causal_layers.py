@@ -176,14 +176,19 @@ HANDLER_MAP = {RampHandle: _Ramp()}
 
 
 @dataclass(frozen=True)
-class Compression(Layer):
+class CausalLayer(Layer):
+    """A layer only the causal rod has: it applies to a causal history alone."""
+
+    def applies(self, history):
+        return is_causal(history)
+
+
+@dataclass(frozen=True)
+class Compression(CausalLayer):
     """The causal rod's world-sheet shaded by compression lam (its own scale, greyscale-safe), clipped to the
     sheet (the `sheet` layer's polygon, drawn with no fill for the causal rod)."""
 
     name = "compression"
-
-    def applies(self, history):
-        return is_causal(history)
 
     def draw(self, ax, panel):
         history = panel.history
@@ -227,13 +232,10 @@ def _hex(rgba) -> str:
 
 
 @dataclass(frozen=True)
-class Fronts(Layer):
+class Fronts(CausalLayer):
     """The light fronts that carry each disturbance across the causal rod: thin light lines from end to end."""
 
     name = "fronts"
-
-    def applies(self, history):
-        return is_causal(history)
 
     def draw(self, ax, panel):
         if not is_causal(panel.history):
@@ -253,13 +255,10 @@ class Fronts(Layer):
 
 
 @dataclass(frozen=True)
-class Contacts(Layer):
+class Contacts(CausalLayer):
     """Each contact of the causal rod: a broad band in the particle's colour where it rides with the end."""
 
     name = "contacts"
-
-    def applies(self, history):
-        return is_causal(history)
 
     def draw(self, ax, panel):
         history = panel.history

@@ -147,10 +147,11 @@ class Layer:
         return None
 
 
-def clip_line(x: float, t: float, dx: float, dt: float, box) -> np.ndarray | None:
-    """The part inside box = (x0, x1, t0, t1) of the infinite line through (x, t) along (dx, dt), or None."""
+def line_in_box(x: float, t: float, dx: float, dt: float, box, lo: float = -math.inf) -> tuple[float, float] | None:
+    """The parameters (lo, hi) of the line (x, t) + s (dx, dt), s >= `lo`, inside box = (x0, x1, t0, t1), or None
+    if it misses the box."""
     x0, x1, t0, t1 = box
-    lo, hi = -math.inf, math.inf
+    hi = math.inf
     for p, a, b in ((dx, x0 - x, x1 - x), (dt, t0 - t, t1 - t)):
         if p == 0.0:
             if a > 0 or b < 0:
@@ -158,6 +159,13 @@ def clip_line(x: float, t: float, dx: float, dt: float, box) -> np.ndarray | Non
             continue
         s0, s1 = sorted((a / p, b / p))
         lo, hi = max(lo, s0), min(hi, s1)
-    if not lo < hi:
+    return (lo, hi) if lo < hi else None
+
+
+def clip_line(x: float, t: float, dx: float, dt: float, box) -> np.ndarray | None:
+    """The part inside box = (x0, x1, t0, t1) of the infinite line through (x, t) along (dx, dt), or None."""
+    inside = line_in_box(x, t, dx, dt, box)
+    if inside is None:
         return None
+    lo, hi = inside
     return np.array([[x + lo * dx, t + lo * dt], [x + hi * dx, t + hi * dt]])
