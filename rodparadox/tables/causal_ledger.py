@@ -60,8 +60,9 @@ def rows_at(history, frame: Frame, t: float, event=None) -> list[tuple[str, Ener
     parts = dict(s.rod_parts)
     rows = [(f"particle {name}", em) for name, em in s.bodies if name != "rod"]
     if event is not None:
-        # the event's own particle from the event: at a separation's instant the world-line reads the end's
-        # rapidity after the front that ended the contact (causal.CausalHistory.particle_energy_momentum)
+        # the event's own particle from the event's exact velocity: the world-line agrees with it to rounding (it is
+        # read a hair inside the contact, ChartCurve.phi_at_time), and the event's value keeps a particle at rest
+        # at exactly p = 0 in the CSV and JSON
         mass = history.scenario.particle(event.particle).mass
         rows = [(body, EnergyMomentum.of(mass, event.particle_rapidity_after - frame.rapidity)
                  if body == f"particle {event.particle}" else em) for body, em in rows]
