@@ -76,6 +76,9 @@ def width_of(text: str, size: float, bold: bool = False, italic: bool = False) -
     return render.text_size(text, size, italic=italic, ismath=False, bold=bold)[0]
 
 
+measured_width = width_of  # `wrap`'s own width_of keeps each paragraph's widths and asks this for new ones
+
+
 def wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
     """Words (text, bold, italic[, glued]) set in lines no wider than `width` points, ragged-right, each word measured
     once; a glued piece (a variable's italics inside a word: "t" of "t′") follows the one before it with no space
@@ -86,6 +89,14 @@ def wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
     lines: list[list[tuple[str, bool, bool, float, bool]]] = [[]]  # (word, bold, italic, x, glued)
     x = 0.0
     room = width - WRAP_SLACK
+    widths: dict[tuple[str, bool, bool], float] = {}  # a paragraph repeats its words and spaces: measure each once
+
+    def width_of(text: str, size: float, bold: bool, italic: bool) -> float:
+        key = (text, bold, italic)
+        if key not in widths:
+            widths[key] = measured_width(text, size, bold, italic)
+        return widths[key]
+
     for word in _whole_words(words):
         w = sum(width_of(text, size, bold, italic) for text, bold, italic in word)
         text, bold, italic = word[0]

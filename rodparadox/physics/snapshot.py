@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -41,10 +42,12 @@ class Strip:
     flash_x: tuple[float, ...] = ()
 
 
+@lru_cache(maxsize=32)
 def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
     """The exact world-lines, in `frame`, of `points` material points evenly spaced in proper distance from the
-    left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per frame, read
-    at every instant."""
+    left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per history,
+    frame and count, and kept (both are frozen): a handout reads the strips of one frame at many instants, first
+    to measure their block, then to draw it."""
     eta = frame.rapidity
     return tuple(history.material_worldline(float(sigma)).seen_from(eta)
                  for sigma in np.linspace(0.0, history.scenario.L, points))

@@ -19,6 +19,7 @@ Never pyplot; matplotlib is imported by the caller's choice of this module.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import NamedTuple, Sequence
 
 import math
@@ -292,7 +293,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     with style_context(style) as st:
         fs = font_sizes(st)
         scale = colour_scale(history, frame)
-        strips = [strip_at(history, frame, t, ONE_INSTANT * L) for t in times]
+        strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
         labels, notes = _stills_labels(strips, frame, L)
         room = _stills_room(labels, notes, fs)
@@ -305,7 +306,7 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
         # the x range: every rod end and particle at these instants, with a margin
-        spanned = strips if span is None else [strip_at(history, frame, float(t), ONE_INSTANT * L) for t in span]
+        spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
         xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
@@ -401,6 +402,17 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
                        small, bar_h)
 
 
+@lru_cache(maxsize=64)
+def strips_at(history: History, frame: Frame, times: tuple[float, ...], flash: float) -> tuple[Strip, ...]:
+    """The strips (`physics.snapshot.strip_at`) of these instants, kept: a handout measures a block of strips for
+    every row count it tries, then draws it. Their arrays are made read-only, as they are shared."""
+    strips = tuple(strip_at(history, frame, t, flash) for t in times)
+    for strip in strips:
+        for array in (strip.sigma, strip.x, strip.velocity):
+            array.flags.writeable = False
+    return strips
+
+
 def strips_size(history: History, frame: Frame, times: Sequence[float], style: str,
                 row_scale: float = 1.0) -> tuple[float, float]:
     """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
@@ -412,7 +424,7 @@ def strips_size(history: History, frame: Frame, times: Sequence[float], style: s
         raise ValueError("draw_strips_into needs at least one time")
     L = history.scenario.L
     with style_context(style) as st:
-        strips = [strip_at(history, frame, float(t), ONE_INSTANT * L) for t in sorted(times)]
+        strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
         return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st)).size(len(strips), row_scale)
 
 

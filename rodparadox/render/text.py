@@ -123,10 +123,11 @@ def text_size(text: str, size: float, italic: bool = False, ismath: bool | None 
     and the renderer parses each string again, so mathtext is sized from its
     glyphs instead (`approximate_size`, `impact_text_size`).
     """
+    value = dict.__getitem__  # the stored values, without RcParams' per-read checks: called ~10^5 times a handout
     rc = matplotlib.rcParams
     return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath), bool(bold),
-                     rc["mathtext.fontset"], tuple(rc["font.family"]), tuple(rc["font.sans-serif"]),
-                     tuple(rc["font.serif"]))
+                     value(rc, "mathtext.fontset"), tuple(value(rc, "font.family")),
+                     tuple(value(rc, "font.sans-serif")), tuple(value(rc, "font.serif")))
 
 
 @lru_cache(maxsize=2048)  # a figure measures a few hundred texts; bounded, as a long-lived process draws many
