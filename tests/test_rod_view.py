@@ -1,0 +1,121 @@
+"""The rod's own view (`--frame rod`, README "The rod's own view"): its charts, checked against hand derivations and
+independent computations (issue 16, item 6)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from conftest import causal_history, history
+from rodparadox.physics.kinematics import Event
+from rodparadox.physics.rod_view import CausalChart, RigidChart, chart_polyline
+
+pytestmark = pytest.mark.xdist_group("causal")  # the causal histories, built once on the worker that has them
+
+LN2 = math.log(2.0)  # the rapidity of v = 0.6
+
+
+@pytest.fixture(scope="module")
+def fig1_chart():
+    return CausalChart(causal_history("fig1"))
+
+
+def test_causal_chart_before_any_contact_is_s_with_the_left_end_at_zero(fig1_chart):
+    # fig1 at v = 0.6: the first contacts are at t = 5/6; events whose light rays meet the ends before then (inside
+    # the rod: no front has reached them) are charted as they are in S
+    for x, t in [(-0.5, 0.0), (0.1, 0.3), (0.5, -1.0), (-2.0, -1.5), (2.0, -1.5)]:
+        T, X = fig1_chart.to_chart(Event(x, t))
+        assert (T, X) == pytest.approx((t, x + 0.5), abs=1e-12)
+        e = fig1_chart.to_event(t, x + 0.5)
+        assert (e.x, e.t) == pytest.approx((x, t), abs=1e-12)
+
+
+def test_every_light_ray_is_drawn_at_45_degrees(fig1_chart):
+    # rays from the first contact (A1 at (-1/2, 5/6)) and from a point inside the ringing rod, both ways, inside
+    # and outside the rod: along t - x = const the chart's T - X is constant, along t + x = const its T + X
+    h = causal_history("fig1")
+    for origin in (h.impacts[0].event, Event(0.1, 3.0), Event(0.6, 2.7)):
+        for direction in (+1, -1):
+            points = [fig1_chart.to_chart(Event(origin.x + direction * s, origin.t + s)) for s in np.linspace(0, 2, 9)]
+            kept = [T - direction * X for T, X in points]
+            assert max(kept) - min(kept) <= 1e-12 * (1 + max(abs(k) for k in kept))
+            assert points[-1][0] - points[0][0] > 0.5  # the ray did move in the chart
+
+
+def test_a_material_clock_ticks_its_proper_time_along_the_world_line(fig1_chart):
+    # independent: d tau = sqrt(dt^2 - dx^2) summed along the history's world-line of X = 0.3, sampled in S
+    X, step = 0.3, 0.5
+    line = causal_history("fig1").material_worldline(X)
+    ticks = fig1_chart.clock_ticks(X, step, 0.0, 4.0)
+    assert [tau for tau, _ in ticks] == pytest.approx([k * step for k in range(len(ticks))], abs=1e-12)
+    assert len(ticks) >= 6  # the clock runs slow while compressed: fewer than 9 ticks in 4 L of chart time
+    end = fig1_chart.to_event(ticks[-1][1], X)
+    points = line.sample(0.0, end.t, 1e-6)
+    d = np.diff(points, axis=0)
+    cumulative = np.concatenate(([0.0], np.cumsum(np.sqrt(d[:, 1] ** 2 - d[:, 0] ** 2))))
+    for tau, T in ticks[1:]:
+        t = fig1_chart.to_event(T, X).t
+        assert np.interp(t, points[:, 1], cumulative) == pytest.approx(tau, abs=1e-6)
+    # and the chart's clock agrees with d tau = dT / lam integrated across the fronts to rounding
+    assert fig1_chart.proper_time(X, 0.0, ticks[-1][1]) == pytest.approx(ticks[-1][0], rel=1e-12)
+
+
+def test_a_contact_rides_the_end_line_of_the_chart():
+    h = causal_history("fig1")
+    chart = CausalChart(h)
+    A = h.worldline("A")
+    contact, separation = [i.event for i in h.impacts if i.particle == "A"]
+    for t in np.linspace(contact.t, separation.t, 5):
+        assert chart.to_chart(A.event_at_time(t))[1] == pytest.approx(0.0, abs=1e-9)
+
+
+def test_fig2_turns_last_L_times_their_change_of_rapidity():
+    # fig2 at v = 0.6 in S: B1 at t = 5/6 turns the rod from 0 to -ln 2 about the right end, A1 from -ln 2 to ln 2,
+    # B2 from ln 2 to 0; each turn follows the last with no rest between (A1 and B2 lie on the last line)
+    chart = RigidChart(history("fig2"))
+    expected = [(5 / 6, 5 / 6 + LN2, "right"), (5 / 6 + LN2, 5 / 6 + 3 * LN2, "left"),
+                (5 / 6 + 3 * LN2, 5 / 6 + 4 * LN2, "right")]
+    assert len(chart.turns) == 3
+    for (T0, T1, end), (a, b, pivot_end) in zip(chart.turns, expected):
+        assert (T0, T1, end) == (pytest.approx(a, abs=1e-12), pytest.approx(b, abs=1e-12), pivot_end)
+
+
+@pytest.mark.parametrize("name", ["fig2", "off_timing"])
+def test_a_turn_charts_the_fan_hyperbolae_as_vertical_lines_and_the_rod_as_0_to_L(name):
+    h = history(name)
+    chart = RigidChart(h)
+    for turn, (T0, T1, _) in zip(h.turns, chart.turns):
+        for sigma in (0.0, 0.25, 0.5, 1.0):
+            d = turn.distance(sigma)
+            for f in (0.1, 0.5, 0.9):
+                phi = turn.rapidity_from + f * (turn.rapidity_stop - turn.rapidity_from)
+                e = turn.pivot.displaced(turn.side * d, phi) if d > 0 else None
+                if e is None:
+                    continue
+                T, X = chart.to_chart(e)
+                assert X == pytest.approx(sigma, abs=1e-12)
+                assert T == pytest.approx(T0 + f * (T1 - T0), abs=1e-12)
+    # between and during turns the ends stay at X = 0 and X = L
+    for end, X_end in (("rod_left", 0.0), ("rod_right", 1.0)):
+        line = h.worldline(end)
+        for t in np.linspace(0.0, 3.0, 31):
+            point = chart.to_chart(line.event_at_time(t))
+            assert point is not None and point[1] == pytest.approx(X_end, abs=1e-12)
+
+
+def test_events_beyond_a_pivot_are_reported_not_placed():
+    # fig2 in S: during the first turn (about B1 = (1/2, 5/6), rod on its left) the fan's lines run from t = 5/6 to
+    # t - 5/6 = -0.6 (x - 1/2); right of B1 between them the rest frames before and after the turn both reach an
+    # event: beyond the pivot's horizon
+    chart = RigidChart(history("fig2"))
+    beyond = Event(0.8, 5 / 6 - 0.05)
+    assert chart.beyond_horizon(beyond) and chart.to_chart(beyond) is None
+    T0, T1, _ = chart.turns[0]
+    assert chart.to_event(0.5 * (T0 + T1), 1.3) is None  # past the pivot during the turn: no event there
+    assert not chart.beyond_horizon(Event(-0.2, 0.9))  # inside the rod, mid-turn
+    # a world-line through the pivot breaks there and goes on from the turn's end
+    # (B arrives at 0.6 and rests after B1; the point after B1 lies in the second turn's chart, beyond the rod)
+    drawn = chart_polyline(chart, np.array([[0.5 + 0.6 * 0.1, 5 / 6 - 0.1], [0.5, 5 / 6], [0.5, 5 / 6 + 0.1]]))
+    assert np.isnan(drawn).any(axis=1).sum() == 1
+    assert drawn[1] == pytest.approx([1.0, T0]) and drawn[3] == pytest.approx([1.0, T1])
+    assert drawn[4][0] > 1.0
