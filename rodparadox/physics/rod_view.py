@@ -49,22 +49,27 @@ def chart_of(history) -> "CausalChart | RigidChart":
     return RigidChart(history) if history.rigid is not None else CausalChart(history)
 
 
-def _inverse(f, y: float, scale: float) -> float:
-    """The s with f(s) = y, f increasing without bound both ways: bracketed, then bisected to the last bit."""
+def _inverse(f, slope, y: float, scale: float) -> float:
+    """The s with f(s) = y, f increasing without bound both ways with derivative `slope` (> 0; it may jump, f stays
+    continuous): bracketed, then Newton kept inside the bracket (bisection when a step would leave it), to the
+    last bit."""
     lo, hi, step = y - scale, y + scale, scale
     while f(lo) > y:
         lo, step = lo - step, 2 * step
     step = scale
     while f(hi) < y:
         hi, step = hi + step, 2 * step
+    s = 0.5 * (lo + hi)
     for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
+        g = f(s) - y
+        if g == 0:
+            return s
+        lo, hi = (s, hi) if g < 0 else (lo, s)
+        newton = s - g / slope(s)
+        following = newton if lo < newton < hi else 0.5 * (lo + hi)
+        if following in (lo, hi) or following == s:
             break
-        if f(mid) < y:
-            lo = mid
-        else:
-            hi = mid
+        s = following
     return lo if abs(f(lo) - y) <= abs(f(hi) - y) else hi
 
 
@@ -82,8 +87,9 @@ class CausalChart:
 
     def to_chart(self, event: Event) -> tuple[float, float]:
         """(T, X) of an event in S: the whole plane is charted (outside the rod, by light rays from its ends)."""
-        u = _inverse(self.solution.a, event.t + event.x, self.L)
-        w = _inverse(self.solution.b, event.t - event.x, self.L)
+        sol = self.solution
+        u = _inverse(sol.a, lambda s: math.exp(sol.r_plus(s)), event.t + event.x, self.L)
+        w = _inverse(sol.b, lambda s: math.exp(sol.r_minus(s)), event.t - event.x, self.L)
         return 0.5 * (u + w), 0.5 * (u - w)
 
     def compression(self, T: float, X: float) -> float:

@@ -1,0 +1,375 @@
+"""The rod's own view as a panel (`--frame rod`, README "The rod's own view"): the rod a fixed vertical strip.
+
+`draw_rod_panel(ax, history, style)` draws the chart of `physics.rod_view` into a caller's Axes and returns its
+artists by name: the strip (shaded by compression for the causal rod), the light fronts at 45 degrees, material
+lines with their clocks (ticks every `clock_step` of each point's own proper time), each contact as a band on
+the end it rides, the particles (through the chart's extension outside the rod), the impacts, and for the rigid
+rod each turn (horizontal lines where it starts and ends: the rod's own "now" is every horizontal line) and the
+region beyond its pivot's horizon, hatched. `draw_rod_view` adds the panels to a drawn diagram (`plot --frame
+rest,rod`) or makes a figure of them alone (`--frame rod`). Sampling is for drawing only: every point is an exact
+chart map of an exact world-line.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+import numpy as np
+from matplotlib.collections import PolyCollection
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
+from matplotlib.ticker import FixedLocator, FuncFormatter
+
+from rodparadox.physics.rod_view import chart_of, chart_polyline, densified
+from rodparadox.physics.rod import clock_step as nice_clock_step
+from rodparadox.render.causal_layers import FRONT_JUMP, compression_colour_map, compression_norm, is_causal
+from rodparadox.render.layout import font_sizes, tick_step
+from rodparadox.render.styles import STYLES, Style
+from rodparadox.render.text import tick_text, ticks_at
+
+#: the chart's X from this far left of the rod to as far right of it (units of L)
+X_MARGIN = 0.75
+#: cells of the compression shading, as a fraction of L (cut also at every front: the jumps stay sharp)
+CELL = 1.0 / 32
+#: interior material lines drawn with their clocks (the ends carry clocks too)
+MATERIAL_LINES = 3
+#: the grid the horizon's hatching is found on, per L
+HORIZON_GRID = 48
+
+
+def rod_box(history, chart=None) -> tuple[float, float, float, float]:
+    """(X0, X1, T0, T1) in units of L: the rod with X_MARGIN either side, from chart time 0 (where the particles
+    start) to a while after the last event (room above for the panel's key)."""
+    chart = chart or chart_of(history)
+    L = history.scenario.L
+    if chart.kind == "causal":
+        last = max(chart.to_chart(i.event)[0] for i in history.impacts)
+    else:
+        last = max([chart.to_chart(i.event)[0] for i in history.impacts] + [T1 for _, T1, _ in chart.turns])
+    return -X_MARGIN, 1 + X_MARGIN, 0.0, last / L + 1.5
+
+
+def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r", title: str | None = None,
+                   clock_step: float | None = None, box=None) -> dict[str, tuple]:
+    """Draw the rod's own view of a history into `ax`; returns the artists by name."""
+    st = STYLES[style] if isinstance(style, str) else style
+    fs = font_sizes(st)
+    chart = chart_of(history)
+    L = history.scenario.L
+    X0, X1, T0, T1 = box or rod_box(history, chart)
+    step = clock_step or nice_clock_step(T1 - T0, 8)
+    drawn: dict[str, list] = {}
+    _axes(ax, (X0, X1, T0, T1), st, fs, title or _title(history, letter))
+    drawn["strip"] = _strip(ax, history, chart, st, (X0, X1, T0, T1), letter)
+    if chart.kind == "causal":
+        drawn["fronts"] = _fronts(ax, chart, st, T0 * L, T1 * L, letter)
+        drawn["contacts"] = _contacts(ax, history, chart, st, letter)
+    else:
+        drawn["turns"] = _turns(ax, chart, st, (X0, X1), letter, fs)
+        drawn["horizon"] = _horizon(ax, chart, st, (X0, X1, T0, T1), letter)
+    drawn["clocks"] = _clocks(ax, chart, st, step, T0 * L, T1 * L, letter)
+    drawn["particles"] = _particles(ax, history, chart, st, (X0, X1, T0, T1), letter, fs)
+    drawn["impacts"] = _impacts(ax, history, chart, st, letter, fs)
+    drawn["key"] = [_key(ax, history, chart, st, fs, step)]
+    return {name: tuple(artists) for name, artists in drawn.items()}
+
+
+def _title(history, letter: str) -> str:
+    model = "causal" if is_causal(history) else "rigid"
+    return f"({letter}) the {model} rod's own view"
+
+
+def _axes(ax, box, st: Style, fs, title: str) -> None:
+    X0, X1, T0, T1 = box
+    step = tick_step(box)
+    ax.set_xlim(X0, X1)
+    ax.set_ylim(T0, T1)
+    ax.set_aspect("equal", adjustable="box")
+    for axis, lo, hi in ((ax.xaxis, X0, X1), (ax.yaxis, T0, T1)):
+        axis.set_major_locator(FixedLocator(ticks_at(lo, hi, step)))
+        axis.set_major_formatter(FuncFormatter(lambda value, _pos: tick_text(value, step)))
+    ax.tick_params(labelsize=fs["tick"], length=st.tick_length)
+    ax.set_xlabel("X/L  (material label)", fontsize=fs["label"], fontstyle="italic")
+    ax.set_ylabel("T/L  (the rod's own time)", fontsize=fs["label"], fontstyle="italic")
+    ax.set_title(title, fontsize=fs["title"])
+
+
+def _strip(ax, history, chart, st: Style, box, letter: str) -> list:
+    """The rod: a fixed strip, its ends solid; the causal rod's shaded by compression lam in light-line cells."""
+    X0, X1, T0, T1 = box
+    L = history.scenario.L
+    out = []
+    if chart.kind == "causal":
+        out += _compression(ax, history, chart, st, T0 * L, T1 * L, letter)
+    else:
+        out.append(ax.add_patch(Rectangle((0, T0), 1, T1 - T0, facecolor=st.sheet, edgecolor="none", zorder=1,
+                                          gid=f"{letter}-rod-sheet")))
+    for X, name in ((0.0, "left"), (1.0, "right")):
+        line, = ax.plot([X, X], [T0, T1], color=st.rod.colour, linewidth=st.rod.width, zorder=3,
+                        gid=f"{letter}-rod-{name}")
+        out.append(line)
+    return out
+
+
+def _compression(ax, history, chart, st: Style, T_lo: float, T_hi: float, letter: str) -> list:
+    """Diamond cells between light lines u = T + X and w = T - X, each filled with lam at its centre."""
+    L, sol = history.scenario.L, chart.solution
+
+    def edges(invariant, lo, hi):
+        cuts = sorted({lo, hi, *invariant.breaks(lo, hi), *np.arange(math.ceil(lo / (CELL * L)),
+                                                                       math.floor(hi / (CELL * L)) + 1) * CELL * L})
+        return np.array([c for c in cuts if lo <= c <= hi])
+
+    us, ws = edges(sol.plus, T_lo, T_hi + L), edges(sol.minus, T_lo - L, T_hi)
+    um, wm = 0.5 * (us[1:] + us[:-1]), 0.5 * (ws[1:] + ws[:-1])
+    rp, rm = np.array([sol.r_plus(u) for u in um]), np.array([sol.r_minus(w) for w in wm])
+    i, j = np.meshgrid(np.arange(len(um)), np.arange(len(wm)), indexing="ij")
+    keep = (us[1:][i] - ws[:-1][j] > 0) & (us[:-1][i] - ws[1:][j] < 2 * L)
+    i, j = i[keep], j[keep]
+    corners = [(us[i], ws[j]), (us[i + 1], ws[j]), (us[i + 1], ws[j + 1]), (us[i], ws[j + 1])]
+    polygons = np.stack([np.column_stack([(u - w) / 2, (u + w) / 2]) for u, w in corners], axis=1) / L
+    colours = compression_colour_map(st)(compression_norm(history)(-0.5 * (rp[i] + rm[j])))
+    mesh = PolyCollection(polygons, facecolors=colours, edgecolors=colours, linewidths=0.25, antialiaseds=False,
+                          rasterized=True, zorder=1, gid=f"{letter}-compression")
+    ax.add_collection(mesh, autolim=False)
+    mesh.set_clip_path(Rectangle((0, T_lo / L), 1, (T_hi - T_lo) / L, transform=ax.transData))
+    return [mesh]
+
+
+def _fronts(ax, chart, st: Style, T_lo: float, T_hi: float, letter: str) -> list:
+    """Each light front across the rod, where lam or the velocity jumps: a 45-degree line from end to end."""
+    L, sol = chart.L, chart.solution
+    us, ws = chart.fronts(T_lo, T_hi)
+    out = []
+    for family, values, invariant in (("+", us, sol.plus), ("-", ws, sol.minus)):
+        for s in values:
+            if abs(invariant.r(s) - invariant.r(np.nextafter(s, -math.inf))) <= FRONT_JUMP:
+                continue  # a kink, no jump
+            X = np.array([0.0, L])
+            T = s - X if family == "+" else s + X
+            line, = ax.plot(X / L, T / L, color=st.front.colour, linewidth=st.front.width, linestyle=st.front.dashes,
+                            zorder=2, gid=f"{letter}-front-{len(out)}")
+            out.append(line)
+    return out
+
+
+def _contacts(ax, history, chart, st: Style, letter: str) -> list:
+    """Each contact: a broad band in the particle's colour on the end it rides, from contact to separation."""
+    out = []
+    L = history.scenario.L
+    for contact in (i for i in history.impacts if i.kind == "contact"):
+        separation = next(i for i in history.impacts if i.kind == "separation" and i.particle == contact.particle
+                          and i.label == contact.label + "s")
+        (T_a, X), (T_b, _) = chart.to_chart(contact.event), chart.to_chart(separation.event)
+        X = 0.0 if contact.end == "left" else 1.0
+        ink = st.particles[contact.particle]
+        band, = ax.plot([X, X], [T_a / L, T_b / L], color=ink.colour, alpha=0.35, linewidth=st.rod.width * 3.2,
+                        solid_capstyle="butt", zorder=3.8, gid=f"{letter}-contact-{contact.label}")
+        out.append(band)
+    return out
+
+
+def _turns(ax, chart, st: Style, xs, letter: str, fs) -> list:
+    """Each turn of the rigid rod: its start and end as lines of the rod's own "now" (horizontal), and its pivot
+    (one event for the whole turn: its clock stands still) marked along the end it strikes."""
+    out = []
+    L = chart.L
+    for k, (T_a, T_b, end) in enumerate(chart.turns):
+        for T in (T_a, T_b):
+            line, = ax.plot([0, 1], [T / L, T / L], color=st.rod_now.colour, linewidth=st.rod_now.width,
+                            linestyle=st.rod_now.dashes, zorder=2.5, gid=f"{letter}-turn-{k}-{'ab'[T == T_b]}")
+            out.append(line)
+        X = 0.0 if end == "left" else 1.0
+        pivot, = ax.plot([X, X], [T_a / L, T_b / L], color=st.impact_colour, linewidth=st.rod.width * 0.6,
+                         linestyle=(0, (1.0, 1.5)), zorder=3.5, gid=f"{letter}-pivot-{k}")
+        out.append(pivot)
+    return out
+
+
+def _horizon(ax, chart, st: Style, box, letter: str) -> list:
+    """Hatch the chart where it holds no event, or an event the rod's time gives two places: beyond a pivot's
+    horizon during its turn (`RigidChart.to_event` is None there)."""
+    X0, X1, T0, T1 = box
+    L = chart.L
+    if not chart.turns:
+        return []
+    xs = np.linspace(X0, X1, max(2, round((X1 - X0) * HORIZON_GRID)) + 1)
+    # rows only where a turn, or the wedges beside it, can be: the turns' times with a margin of L either side
+    spans = [(a / L - 1.0, b / L + 1.0) for a, b, _ in chart.turns]
+    ts = np.linspace(T0, T1, max(2, round((T1 - T0) * HORIZON_GRID)) + 1)
+    mask = np.zeros((len(ts), len(xs)))
+    for r, T in enumerate(ts):
+        if any(a <= T <= b for a, b in spans):
+            for c, X in enumerate(xs):
+                if X < 0 or X > 1:  # inside the rod the chart always holds an event
+                    mask[r, c] = chart.to_event(T * L, X * L) is None
+    if not mask.any():
+        return []
+    filled = ax.contourf(xs, ts, mask, levels=[0.5, 1.5], colors="none", hatches=["////"], zorder=1.5)
+    filled.set_edgecolor(st.other_axes.colour)
+    filled.set_linewidth(0.0)
+    filled.set_gid(f"{letter}-horizon")
+    return [filled]
+
+
+def _clocks(ax, chart, st: Style, step: float, T_lo: float, T_hi: float, letter: str) -> list:
+    """Material lines (the ends and MATERIAL_LINES inside), each with a tick every `step` of its proper time."""
+    L = chart.L
+    out = []
+    for k in range(MATERIAL_LINES + 2):
+        X = k / (MATERIAL_LINES + 1)
+        if 0 < k < MATERIAL_LINES + 1:
+            line, = ax.plot([X, X], [T_lo / L, T_hi / L], color=st.rod_interior.colour,
+                            linewidth=st.rod_interior.width, zorder=2.2, gid=f"{letter}-material-{k}")
+            out.append(line)
+        ticks = chart.clock_ticks(X * L, step * L, T_lo, T_hi)
+        if ticks:
+            T = np.array([T for _, T in ticks]) / L
+            half = 0.035
+            segments = np.stack([np.column_stack([np.full_like(T, X - half), T]),
+                                 np.column_stack([np.full_like(T, X + half), T])], axis=1)
+            from matplotlib.collections import LineCollection
+
+            marks = LineCollection(segments, colors=st.rod.colour if k in (0, MATERIAL_LINES + 1) else
+                                   st.rod_interior.colour, linewidths=max(0.8, st.rod_interior.width * 1.6),
+                                   zorder=3.2, gid=f"{letter}-clock-{k}")
+            ax.add_collection(marks, autolim=False)
+            out.append(marks)
+    return out
+
+
+def _particles(ax, history, chart, st: Style, box, letter: str, fs) -> list:
+    """Each particle's world-line through the chart (outside the rod the causal chart is extended along light
+    rays from its ends; the rigid chart breaks where a world-line passes beyond a pivot's horizon)."""
+    X0, X1, T0, T1 = box
+    L = history.scenario.L
+    out = []
+    for name in sorted(st.particles):
+        line = history.worldline(name)
+        if line is None:
+            continue
+        t_hi = max(e.t for e in _corners(chart, box, L)) + L
+        points = densified(line.sample(min(0.0, line.first.t), t_hi, 1e-4 * L), 0.02 * L)
+        drawn = chart_polyline(chart, points) / L
+        ink = st.particles[name]
+        artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
+                          zorder=4, gid=f"{letter}-particle-{name}")
+        out.append(artist)
+        start = drawn[np.isfinite(drawn[:, 0])][0]
+        out.append(ax.text(min(max(start[0], X0 + 0.1), X1 - 0.1), start[1] + 0.08, name, color=ink.colour,
+                           fontsize=fs["particle"], fontstyle="italic", ha="center", va="bottom", zorder=6,
+                           gid=f"{letter}-label-{name}"))
+    return out
+
+
+def _corners(chart, box, L):
+    X0, X1, T0, T1 = box
+    events = []
+    for T, X in ((T1, X0), (T1, X1), (T1, 0.5)):
+        e = chart.to_event(T * L, X * L)
+        if e is not None:
+            events.append(e)
+    if not events:
+        events = [chart.to_event(T1 * L, 0.5 * L)]
+    return events
+
+
+def _impacts(ax, history, chart, st: Style, letter: str, fs) -> list:
+    """Every impact where the chart places it (a rigid turn's pivot at the turn's start, hollow at its end)."""
+    L = history.scenario.L
+    out = []
+    for impact in history.impacts:
+        if getattr(chart, "placed", None):
+            places = chart.placed(impact.event)
+        else:
+            places = [chart.to_chart(impact.event)]
+        for k, (T, X, *_) in enumerate(places):
+            hollow = k > 0 or impact.kind == "separation"
+            marker, = ax.plot([X / L], [T / L], marker="o", markersize=st.impact_size * (0.8 if hollow else 1.0),
+                              markerfacecolor="white" if hollow else st.impact_colour,
+                              markeredgecolor=st.impact_colour, linestyle="none", zorder=5,
+                              gid=f"{letter}-impact-{impact.label}-{k}")
+            out.append(marker)
+        if places:
+            T, X = places[0][0], places[0][1]
+            side = -1 if X < 0.5 * L else 1
+            out.append(ax.text(X / L + side * 0.09, T / L, impact.label, fontsize=fs["tick"], va="center",
+                               ha="right" if side < 0 else "left", zorder=6, gid=f"{letter}-impact-label-{impact.label}"))
+    return out
+
+
+def _key(ax, history, chart, st: Style, fs, step: float):
+    """What the panel shows, in a small key at its top: a teacher reads the picture without the code."""
+    handles = [Line2D([], [], color=st.rod_interior.colour, linewidth=st.rod_interior.width, marker="_",
+                      markersize=6, markeredgewidth=1.2)]
+    labels = [f"material point; tick every {tick_text(step, step)} L of its own time"]
+    if chart.kind == "causal":
+        handles.append(Line2D([], [], color=st.front.colour, linewidth=st.front.width, linestyle=st.front.dashes))
+        labels.append("light front: always at 45\N{DEGREE SIGN}")
+        handles.append(Line2D([], [], color="#777777", alpha=0.35, linewidth=st.rod.width * 3.2))
+        labels.append("contact: particle rides the end")
+    else:
+        handles.append(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width, linestyle=st.rod_now.dashes))
+        labels.append("a turn starts / ends (T = const: the rod's now)")
+        if chart.turns:
+            handles.append(Patch(facecolor="none", edgecolor=st.other_axes.colour, hatch="////", linewidth=0))
+            labels.append("beyond the pivot's horizon: no place")
+    legend = ax.legend(handles, labels, loc="upper center", fontsize=fs["tick"] * 0.85, handlelength=2.0,
+                       borderpad=0.3, labelspacing=0.25, frameon=True, framealpha=0.92, edgecolor="none")
+    legend.set_zorder(7)
+    return legend
+
+
+# --- the panels with a diagram, or alone --------------------------------------------------------------------------
+
+def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = False) -> Figure:
+    """The rod's own view of each history (one per row: rigid above causal with --rod both): beside the panels of
+    a drawn diagram (on its left when `first`, the figure widened), or, without one, in a figure of its own."""
+    st = STYLES[style]
+    fs = font_sizes(st)
+    boxes = [rod_box(h) for h in histories]
+    if diagram is None:
+        height = st.panel_height * 72
+        rows = [(height, 0.0)]
+        figure = Figure(dpi=72)
+        width_ax = [height * (b[1] - b[0]) / (b[3] - b[2]) for b in boxes]
+        margin_l, margin_r, bottom, top = 5.2 * fs["tick"], 1.2 * fs["tick"], 4.5 * fs["tick"], 3.5 * fs["title"]
+        W = margin_l + max(width_ax) + margin_r
+        H = len(histories) * (height + bottom + top)
+        figure.set_size_inches(W / 72, H / 72)
+        axes = []
+        for k, (h, box) in enumerate(zip(histories, boxes)):
+            y = H - (k + 1) * (height + bottom + top) + bottom
+            ax = figure.add_axes((margin_l / W, y / H, width_ax[k] / W, height / H))
+            ax.set_gid(f"rod{k}-axes")
+            draw_rod_panel(ax, h, st, letter=_letter(k, len(histories), 0), box=box)
+            axes.append(ax)
+        return figure
+    figure = diagram.figure
+    W0, H = figure.get_size_inches() * 72
+    per_row = len(diagram.panels) // len(histories)
+    rows = [diagram.panels[k * per_row].axes.get_position() for k in range(len(histories))]
+    width_ax = [r.height * H * (b[1] - b[0]) / (b[3] - b[2]) for r, b in zip(rows, boxes)]
+    margin_l, margin_r = 5.2 * fs["tick"], 1.5 * fs["tick"]
+    extra = margin_l + max(width_ax) + margin_r
+    W = W0 + extra
+    figure.set_size_inches(W / 72, H / 72)
+    shift = extra if first else 0.0
+    for ax in figure.axes:
+        p = ax.get_position()
+        ax.set_position((p.x0 * W0 / W + shift / W, p.y0, p.width * W0 / W, p.height))
+    x = margin_l if first else W0 + margin_l
+    for k, (h, box, r, w) in enumerate(zip(histories, boxes, rows, width_ax)):
+        ax = figure.add_axes((x / W, r.y0, w / W, r.height))
+        ax.set_gid(f"rod{k}-axes")
+        draw_rod_panel(ax, h, st, letter=_letter(k, len(histories), len(diagram.panels)), box=box)
+    return figure
+
+
+def _letter(k: int, rows: int, before: int) -> str:
+    from rodparadox.physics.frames import PANEL_LETTERS
+
+    letters = PANEL_LETTERS + "ijklmnop"
+    return letters[before + k] if before + k < len(letters) else "r"
