@@ -24,10 +24,12 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.rod_view import chart_of, chart_polyline, densified
 from rodparadox.physics.rod import clock_step as nice_clock_step
-from rodparadox.render.causal_layers import FRONT_JUMP, compression_colour_map, compression_norm, is_causal
+from rodparadox.render.causal_layers import (FRONT_JUMP, HANDLER_MAP, Compression, compression_colour_map,
+                                             compression_norm, is_causal)
 from rodparadox.render.layout import font_sizes, tick_step
 from rodparadox.render.styles import STYLES, Style
-from rodparadox.render.text import tick_text, ticks_at
+from rodparadox.numbers import impact_name
+from rodparadox.render.text import suptitle, tick_text, ticks_at
 
 #: the chart's X from this far left of the rod to as far right of it (units of L)
 X_MARGIN = 0.75
@@ -35,6 +37,8 @@ X_MARGIN = 0.75
 CELL = 1.0 / 32
 #: interior material lines drawn with their clocks (the ends carry clocks too)
 MATERIAL_LINES = 3
+#: the width of the panel's key, on its right, in units of the tick labels' size
+KEY_WIDTH = 14.0
 #: the grid the horizon's hatching is found on, per L
 HORIZON_GRID = 48
 
@@ -59,7 +63,7 @@ def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r
     chart = chart_of(history)
     L = history.scenario.L
     X0, X1, T0, T1 = box or rod_box(history, chart)
-    step = clock_step or nice_clock_step(T1 - T0, 8)
+    step = clock_step or nice_clock_step(T1 - T0, 12)
     drawn: dict[str, list] = {}
     _axes(ax, (X0, X1, T0, T1), st, fs, title or _title(history, letter))
     drawn["strip"] = _strip(ax, history, chart, st, (X0, X1, T0, T1), letter)
@@ -227,13 +231,13 @@ def _clocks(ax, chart, st: Style, step: float, T_lo: float, T_hi: float, letter:
         ticks = chart.clock_ticks(X * L, step * L, T_lo, T_hi)
         if ticks:
             T = np.array([T for _, T in ticks]) / L
-            half = 0.035
+            half = 0.06
             segments = np.stack([np.column_stack([np.full_like(T, X - half), T]),
                                  np.column_stack([np.full_like(T, X + half), T])], axis=1)
             from matplotlib.collections import LineCollection
 
             marks = LineCollection(segments, colors=st.rod.colour if k in (0, MATERIAL_LINES + 1) else
-                                   st.rod_interior.colour, linewidths=max(0.8, st.rod_interior.width * 1.6),
+                                   st.rod_interior.colour, linewidths=max(1.0, st.rod_interior.width * 2.2),
                                    zorder=3.2, gid=f"{letter}-clock-{k}")
             ax.add_collection(marks, autolim=False)
             out.append(marks)
@@ -251,7 +255,7 @@ def _particles(ax, history, chart, st: Style, box, letter: str, fs) -> list:
         if line is None:
             continue
         t_hi = max(e.t for e in _corners(chart, box, L)) + L
-        points = densified(line.sample(min(0.0, line.first.t), t_hi, 1e-4 * L), 0.02 * L)
+        points = densified(line.sample(min(0.0, line.first.t), t_hi, 1e-4 * L), 0.04 * L)
         drawn = chart_polyline(chart, points) / L
         ink = st.particles[name]
         artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
@@ -292,10 +296,11 @@ def _impacts(ax, history, chart, st: Style, letter: str, fs) -> list:
                               markeredgecolor=st.impact_colour, linestyle="none", zorder=5,
                               gid=f"{letter}-impact-{impact.label}-{k}")
             out.append(marker)
-        if places:
+        if places and impact.kind != "separation":  # a separation: hollow, named in the legend (A'1)
             T, X = places[0][0], places[0][1]
             side = -1 if X < 0.5 * L else 1
-            out.append(ax.text(X / L + side * 0.09, T / L, impact.label, fontsize=fs["tick"], va="center",
+            out.append(ax.text(X / L + side * 0.09, T / L, impact_name(impact.label, math_text=True), fontsize=fs["impact"],
+                               va="center",
                                ha="right" if side < 0 else "left", zorder=6, gid=f"{letter}-impact-label-{impact.label}"))
     return out
 
@@ -304,20 +309,29 @@ def _key(ax, history, chart, st: Style, fs, step: float):
     """What the panel shows, in a small key at its top: a teacher reads the picture without the code."""
     handles = [Line2D([], [], color=st.rod_interior.colour, linewidth=st.rod_interior.width, marker="_",
                       markersize=6, markeredgewidth=1.2)]
-    labels = [f"material point; tick every {tick_text(step, step)} L of its own time"]
+    labels = [f"material point: a tick\nevery {tick_text(step, step)} L of its\nown (proper) time"]
     if chart.kind == "causal":
         handles.append(Line2D([], [], color=st.front.colour, linewidth=st.front.width, linestyle=st.front.dashes))
-        labels.append("light front: always at 45\N{DEGREE SIGN}")
+        labels.append("light front: always\nat 45\N{DEGREE SIGN} here")
         handles.append(Line2D([], [], color="#777777", alpha=0.35, linewidth=st.rod.width * 3.2))
-        labels.append("contact: particle rides the end")
+        labels.append("contact: particle\nrides the end")
+        ramp, text = Compression().legend_entry(st, history, None)
+        handles.append(ramp)
+        labels.append(text.replace(": ", ":\n", 1).replace(", 1 unstressed", "\n(1 unstressed)"))
+        handles.append(Line2D([], [], linestyle="none"))
+        labels.append("outside the rod: the\nchart carried out along\nlight rays from its ends")
     else:
         handles.append(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width, linestyle=st.rod_now.dashes))
-        labels.append("a turn starts / ends (T = const: the rod's now)")
+        labels.append("a turn starts or ends;\nevery level line is\nthe rod's own \"now\"")
         if chart.turns:
+            handles.append(Line2D([], [], color=st.impact_colour, linewidth=st.rod.width * 0.6,
+                                  linestyle=(0, (1.0, 1.5))))
+            labels.append("pivot: one event all\nturn, its clock stopped")
             handles.append(Patch(facecolor="none", edgecolor=st.other_axes.colour, hatch="////", linewidth=0))
-            labels.append("beyond the pivot's horizon: no place")
-    legend = ax.legend(handles, labels, loc="upper center", fontsize=fs["tick"] * 0.85, handlelength=2.0,
-                       borderpad=0.3, labelspacing=0.25, frameon=True, framealpha=0.92, edgecolor="none")
+            labels.append("beyond the pivot's\nhorizon: no place in\nthe rod's chart")
+    legend = ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.04, 1.0), borderaxespad=0.0,
+                       fontsize=fs["tick"] * 0.85, handlelength=2.0, borderpad=0.0, labelspacing=0.6,
+                       frameon=False, handler_map=HANDLER_MAP)
     legend.set_zorder(7)
     return legend
 
@@ -329,13 +343,14 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
     a drawn diagram (on its left when `first`, the figure widened), or, without one, in a figure of its own."""
     st = STYLES[style]
     fs = font_sizes(st)
-    boxes = [rod_box(h) for h in histories]
+    each = [rod_box(h) for h in histories]  # one box for every row: the two models on the same scales
+    boxes = [(min(b[0] for b in each), max(b[1] for b in each), min(b[2] for b in each), max(b[3] for b in each))] * len(each)
     if diagram is None:
         height = st.panel_height * 72
         rows = [(height, 0.0)]
         figure = Figure(dpi=72)
         width_ax = [height * (b[1] - b[0]) / (b[3] - b[2]) for b in boxes]
-        margin_l, margin_r, bottom, top = 5.2 * fs["tick"], 1.2 * fs["tick"], 4.5 * fs["tick"], 3.5 * fs["title"]
+        margin_l, margin_r, bottom, top = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"], 4.5 * fs["tick"], 3.5 * fs["title"]
         W = margin_l + max(width_ax) + margin_r
         H = len(histories) * (height + bottom + top)
         figure.set_size_inches(W / 72, H / 72)
@@ -344,15 +359,17 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
             y = H - (k + 1) * (height + bottom + top) + bottom
             ax = figure.add_axes((margin_l / W, y / H, width_ax[k] / W, height / H))
             ax.set_gid(f"rod{k}-axes")
-            draw_rod_panel(ax, h, st, letter=_letter(k, len(histories), 0), box=box)
+            draw_rod_panel(ax, h, st, letter="abcdefgh"[k], box=box)
             axes.append(ax)
+        figure.text(0.5, 1 - 6 / H, suptitle(histories[0].scenario, W, fs["suptitle"]), ha="center", va="top",
+                    fontsize=fs["suptitle"], gid="title")
         return figure
     figure = diagram.figure
     W0, H = figure.get_size_inches() * 72
     per_row = len(diagram.panels) // len(histories)
     rows = [diagram.panels[k * per_row].axes.get_position() for k in range(len(histories))]
     width_ax = [r.height * H * (b[1] - b[0]) / (b[3] - b[2]) for r, b in zip(rows, boxes)]
-    margin_l, margin_r = 5.2 * fs["tick"], 1.5 * fs["tick"]
+    margin_l, margin_r = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"]
     extra = margin_l + max(width_ax) + margin_r
     W = W0 + extra
     figure.set_size_inches(W / 72, H / 72)
@@ -361,15 +378,29 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
         p = ax.get_position()
         ax.set_position((p.x0 * W0 / W + shift / W, p.y0, p.width * W0 / W, p.height))
     x = margin_l if first else W0 + margin_l
+    letters = _relettered(diagram, len(histories), first)
     for k, (h, box, r, w) in enumerate(zip(histories, boxes, rows, width_ax)):
         ax = figure.add_axes((x / W, r.y0, w / W, r.height))
         ax.set_gid(f"rod{k}-axes")
-        draw_rod_panel(ax, h, st, letter=_letter(k, len(histories), len(diagram.panels)), box=box)
+        draw_rod_panel(ax, h, st, letter=letters[k], box=box)
     return figure
 
 
-def _letter(k: int, rows: int, before: int) -> str:
+def _relettered(diagram, rows: int, first: bool) -> list[str]:
+    """Letter the panels again in reading order, row by row, now that each row has the rod's own view at its start
+    (`first`) or end; returns the letters of the rod's panels, one per row."""
     from rodparadox.physics.frames import PANEL_LETTERS
 
-    letters = PANEL_LETTERS + "ijklmnop"
-    return letters[before + k] if before + k < len(letters) else "r"
+    letters = iter(PANEL_LETTERS + "ijklmnopqrstuvwxyz")
+    per_row = len(diagram.panels) // rows
+    mine = []
+    for r in range(rows):
+        if first:
+            mine.append(next(letters))
+        for info in diagram.panels[r * per_row:(r + 1) * per_row]:
+            title = info.axes.title.get_text()
+            if title.startswith("("):
+                info.axes.title.set_text(f"({next(letters)})" + title[title.index(")") + 1:])
+        if not first:
+            mine.append(next(letters))
+    return mine
