@@ -119,3 +119,45 @@ def test_events_beyond_a_pivot_are_reported_not_placed():
     assert np.isnan(drawn).any(axis=1).sum() == 1
     assert drawn[1] == pytest.approx([1.0, T0]) and drawn[3] == pytest.approx([1.0, T1])
     assert drawn[4][0] > 1.0
+
+
+# --- drawn, and asked for on the command line ------------------------------------------------------------------
+
+def test_the_rigid_panel_shows_the_rod_as_the_strip_and_hatches_only_where_turns_are(tmp_path, monkeypatch):
+    from click.testing import CliRunner
+    from matplotlib.figure import Figure
+
+    from rodparadox.render.rod_panel import draw_rod_panel
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    drawn = {}
+    for name in ("fig1", "fig2"):
+        ax = Figure().add_subplot()
+        drawn[name] = draw_rod_panel(ax, history(name, 0.6), "print")
+        left, right = (line.get_xdata() for line in drawn[name]["strip"][-2:])
+        assert list(left) == [0.0, 0.0] and list(right) == [1.0, 1.0]
+    assert drawn["fig1"]["horizon"] == () and len(drawn["fig2"]["horizon"]) == 1
+    assert len(drawn["fig2"]["turns"]) == 9  # each of 3 turns: its start, its end, its pivot
+    result = CliRunner().invoke(main, ["plot", "fig1", "--frame", "rod,rest", "-o", "."])
+    assert result.exit_code == 0, result.output
+    svg = (tmp_path / "fig1_rod_rest.svg").read_text()
+    assert 'id="rod0-view"' in svg and 'id="a-axes"' in svg
+
+
+@pytest.mark.parametrize("args, message", [
+    (["ledger", "fig1", "--frame", "rod"], "--frame rod (the rod's own view) is drawn by plot, animate and handout "
+     "only; ledger reads slices of Lorentz frames: give rest, moving, both or a velocity U."),
+    (["events", "fig1", "--frame-velocity", "rod"], "rod (the rod's own view) is drawn by plot, animate and handout "
+     "only; these tables need a Lorentz frame: give a velocity U relative to S."),
+    (["plot", "fig1", "--frame", "rod,sideways"], "a frame must be rest, moving, both, rod (the rod's own view) or"),
+])
+def test_what_cannot_show_the_rod_view_refuses_it_in_one_sentence(args, message, tmp_path, monkeypatch):
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 2 and message in " ".join(result.output.split())
+    assert list(tmp_path.iterdir()) == []

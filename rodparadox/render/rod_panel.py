@@ -40,7 +40,7 @@ MATERIAL_LINES = 3
 #: the width of the panel's key, on its right, in units of the tick labels' size
 KEY_WIDTH = 14.0
 #: the grid the horizon's hatching is found on, per L
-HORIZON_GRID = 48
+HORIZON_GRID = 32
 
 
 def rod_box(history, chart=None) -> tuple[float, float, float, float]:
@@ -358,7 +358,7 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
         for k, (h, box) in enumerate(zip(histories, boxes)):
             y = H - (k + 1) * (height + bottom + top) + bottom
             ax = figure.add_axes((margin_l / W, y / H, width_ax[k] / W, height / H))
-            ax.set_gid(f"rod{k}-axes")
+            ax.set_gid(f"rod{k}-view")
             draw_rod_panel(ax, h, st, letter="abcdefgh"[k], box=box)
             axes.append(ax)
         figure.text(0.5, 1 - 6 / H, suptitle(histories[0].scenario, W, fs["suptitle"]), ha="center", va="top",
@@ -367,6 +367,8 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
     figure = diagram.figure
     W0, H = figure.get_size_inches() * 72
     per_row = len(diagram.panels) // len(histories)
+    for info in diagram.panels:
+        info.axes.apply_aspect()  # the drawn box (equal scales), not the one the axes were given
     rows = [diagram.panels[k * per_row].axes.get_position() for k in range(len(histories))]
     width_ax = [r.height * H * (b[1] - b[0]) / (b[3] - b[2]) for r, b in zip(rows, boxes)]
     margin_l, margin_r = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"]
@@ -381,7 +383,7 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
     letters = _relettered(diagram, len(histories), first)
     for k, (h, box, r, w) in enumerate(zip(histories, boxes, rows, width_ax)):
         ax = figure.add_axes((x / W, r.y0, w / W, r.height))
-        ax.set_gid(f"rod{k}-axes")
+        ax.set_gid(f"rod{k}-view")
         draw_rod_panel(ax, h, st, letter=letters[k], box=box)
     return figure
 
