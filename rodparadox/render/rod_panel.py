@@ -374,10 +374,10 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
     margin_l, margin_r = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"]
     extra = margin_l + max(width_ax) + margin_r
     W = W0 + extra
+    given = [(ax, ax.get_position(original=True)) for ax in figure.axes]  # read before the figure widens
     figure.set_size_inches(W / 72, H / 72)
     shift = extra if first else 0.0
-    for ax in figure.axes:
-        p = ax.get_position()
+    for ax, p in given:
         ax.set_position((p.x0 * W0 / W + shift / W, p.y0, p.width * W0 / W, p.height))
     x = margin_l if first else W0 + margin_l
     letters = _relettered(diagram, len(histories), first)
