@@ -91,9 +91,10 @@ def _axes(ax, box, st: Style, fs, title: str) -> None:
     ax.set_xlim(X0, X1)
     ax.set_ylim(T0, T1)
     ax.set_aspect("equal", adjustable="box")
-    for axis, lo, hi in ((ax.xaxis, X0, X1), (ax.yaxis, T0, T1)):
-        axis.set_major_locator(FixedLocator(ticks_at(lo, hi, step)))
-        axis.set_major_formatter(FuncFormatter(lambda value, _pos: tick_text(value, step)))
+    # across, the rod's own labels only (its ends and middle): the panel is narrow
+    for axis, ticks, tick in ((ax.xaxis, [0.0, 0.5, 1.0], 0.5), (ax.yaxis, ticks_at(T0, T1, step), step)):
+        axis.set_major_locator(FixedLocator(ticks))
+        axis.set_major_formatter(FuncFormatter(lambda value, _pos, tick=tick: tick_text(value, tick)))
     ax.tick_params(labelsize=fs["tick"], length=st.tick_length)
     ax.set_xlabel("X/L  (material label)", fontsize=fs["label"], fontstyle="italic")
     ax.set_ylabel("T/L  (the rod's own time)", fontsize=fs["label"], fontstyle="italic")
@@ -343,26 +344,14 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
     a drawn diagram (on its left when `first`, the figure widened), or, without one, in a figure of its own."""
     st = STYLES[style]
     fs = font_sizes(st)
-    each = [rod_box(h) for h in histories]  # one box for every row: the two models on the same scales
-    boxes = [(min(b[0] for b in each), max(b[1] for b in each), min(b[2] for b in each), max(b[3] for b in each))] * len(each)
+    boxes = [_union([rod_box(h) for h in histories])] * len(histories)  # the two models on the same scales
     if diagram is None:
-        height = st.panel_height * 72
-        rows = [(height, 0.0)]
-        figure = Figure(dpi=72)
-        width_ax = [height * (b[1] - b[0]) / (b[3] - b[2]) for b in boxes]
-        margin_l, margin_r, bottom, top = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"], 4.5 * fs["tick"], 3.5 * fs["title"]
-        W = margin_l + max(width_ax) + margin_r
-        H = len(histories) * (height + bottom + top)
-        figure.set_size_inches(W / 72, H / 72)
-        axes = []
-        for k, (h, box) in enumerate(zip(histories, boxes)):
-            y = H - (k + 1) * (height + bottom + top) + bottom
-            ax = figure.add_axes((margin_l / W, y / H, width_ax[k] / W, height / H))
-            ax.set_gid(f"rod{k}-view")
-            draw_rod_panel(ax, h, st, letter="abcdefgh"[k], box=box)
-            axes.append(ax)
-        figure.text(0.5, 1 - 6 / H, suptitle(histories[0].scenario, W, fs["suptitle"]), ha="center", va="top",
-                    fontsize=fs["suptitle"], gid="title")
+        title_band = 2.2 * fs["suptitle"]
+        width, height = rod_view_size(histories, style, st.max_width * 72)
+        figure = Figure(figsize=(width / 72, (height + title_band) / 72), dpi=72)
+        _into(figure, histories, st, boxes[0], (0.0, 0.0, width, height), width, height + title_band)
+        figure.text(0.5, 1 - 6 / (height + title_band), suptitle(histories[0].scenario, width, fs["suptitle"]),
+                    ha="center", va="top", fontsize=fs["suptitle"], gid="title")
         return figure
     figure = diagram.figure
     W0, H = figure.get_size_inches() * 72
@@ -371,7 +360,7 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
         info.axes.apply_aspect()  # the drawn box (equal scales), not the one the axes were given
     rows = [diagram.panels[k * per_row].axes.get_position() for k in range(len(histories))]
     width_ax = [r.height * H * (b[1] - b[0]) / (b[3] - b[2]) for r, b in zip(rows, boxes)]
-    margin_l, margin_r = 5.2 * fs["tick"], KEY_WIDTH * fs["tick"]
+    margin_l, margin_r = _margins(st)[:2]
     extra = margin_l + max(width_ax) + margin_r
     W = W0 + extra
     given = [(ax, ax.get_position(original=True)) for ax in figure.axes]  # read before the figure widens
@@ -386,6 +375,58 @@ def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = F
         ax.set_gid(f"rod{k}-view")
         draw_rod_panel(ax, h, st, letter=letters[k], box=box)
     return figure
+
+
+def _margins(st: Style) -> tuple[float, float, float, float]:
+    """(left, key, bottom, top) around one panel of the rod's own view, in points: tick labels and the axis name,
+    the key on its right, the x axis's ticks and name, the title."""
+    fs = font_sizes(st)
+    return 5.2 * fs["tick"], KEY_WIDTH * fs["tick"], 4.5 * fs["tick"], 2.6 * fs["title"]
+
+
+def rod_view_size(histories: Sequence, style: str, width: float) -> tuple[float, float]:
+    """(width, height) in points of the rod's own view of each history, side by side, at most `width` wide and its
+    panels at most the style's panel height."""
+    st = STYLES[style]
+    left, key, bottom, top = _margins(st)
+    X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
+    aspect = (X1 - X0) / (T1 - T0)
+    h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
+    return len(histories) * (left + h_ax * aspect + key), h_ax + bottom + top
+
+
+def _union(boxes):
+    return (min(b[0] for b in boxes), max(b[1] for b in boxes), min(b[2] for b in boxes), max(b[3] for b in boxes))
+
+
+def draw_rod_view_into(target, histories: Sequence, style: str) -> None:
+    """The rod's own view of each history, side by side, into a Figure or SubFigure the caller has sized (a
+    handout's text width), centred in it."""
+    st = STYLES[style]
+    root = target.get_figure(root=True) if hasattr(target, "get_figure") else target
+    dpi = root.dpi
+    W, H = target.bbox.width * 72 / dpi, target.bbox.height * 72 / dpi
+    width, height = rod_view_size(histories, style, W)
+    if height > H:  # the target is lower than the natural size: the panels shrink to fit it
+        left, key, bottom, top = _margins(st)
+        X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
+        h_ax = H - bottom - top
+        width, height = len(histories) * (left + h_ax * (X1 - X0) / (T1 - T0) + key), H
+    _into(target, histories, st, _union([rod_box(h) for h in histories]),
+          ((W - width) / 2, (H - height) / 2, width, height), W, H)
+
+
+def _into(target, histories, st: Style, box, area, W: float, H: float) -> None:
+    """The panels side by side in `area` (x, y, width, height in points from the target's lower left)."""
+    left, key, bottom, top = _margins(st)
+    x, y, width, height = area
+    h_ax = height - bottom - top
+    w_ax = h_ax * (box[1] - box[0]) / (box[3] - box[2])
+    for k, h in enumerate(histories):
+        x0 = x + k * (left + w_ax + key) + left
+        ax = target.add_axes(((x0) / W, (y + bottom) / H, w_ax / W, h_ax / H))
+        ax.set_gid(f"rod{k}-view")
+        draw_rod_panel(ax, h, st, letter="abcdefgh"[k], box=box)
 
 
 def _relettered(diagram, rows: int, first: bool) -> list[str]:
