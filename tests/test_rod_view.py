@@ -161,3 +161,21 @@ def test_what_cannot_show_the_rod_view_refuses_it_in_one_sentence(args, message,
     result = CliRunner().invoke(main, args)
     assert result.exit_code == 2 and message in " ".join(result.output.split())
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_caption():
+    from rodparadox.handout.document import DiagramBlock, Handout, Paragraph, RodViewBlock, Section
+    from rodparadox.handout.own_view import with_rod_views
+    from rodparadox.physics.frames import paper_frames
+
+    h = history("fig2", 0.6)
+    section = Section("fig2", "Fig. 2", (Paragraph("set-up"), DiagramBlock("diagram", h, paper_frames(0.6), "c"),
+                                         Paragraph("explanation")))
+    out = with_rod_views(Handout("t", (section,)), {"fig2": (h,)})
+    blocks = out.sections[0].blocks
+    assert [type(b).__name__ for b in blocks] == ["Paragraph", "DiagramBlock", "RodViewBlock", "Paragraph"]
+    assert isinstance(blocks[2], RodViewBlock) and blocks[2].histories == (h,)
+    # fig2 at v = 0.6: the turns about B1, A1, B2 last L ln 2, 2 L ln 2, L ln 2 (hand: atanh 0.6 = ln 2)
+    assert "about B\N{SUBSCRIPT ONE}, 0.6931 L long, about A\N{SUBSCRIPT ONE}, 1.386 L long, about " \
+           "B\N{SUBSCRIPT TWO}, 0.6931 L long" in blocks[2].caption
+    assert with_rod_views(Handout("t", (section,)), {}).sections[0].blocks == section.blocks

@@ -91,8 +91,8 @@ def _axes(ax, box, st: Style, fs, title: str) -> None:
     ax.set_xlim(X0, X1)
     ax.set_ylim(T0, T1)
     ax.set_aspect("equal", adjustable="box")
-    # across, the rod's own labels only (its ends and middle): the panel is narrow
-    for axis, ticks, tick in ((ax.xaxis, [0.0, 0.5, 1.0], 0.5), (ax.yaxis, ticks_at(T0, T1, step), step)):
+    # across, the rod's ends only: the panel is narrow
+    for axis, ticks, tick in ((ax.xaxis, [0.0, 1.0], 1.0), (ax.yaxis, ticks_at(T0, T1, step), step)):
         axis.set_major_locator(FixedLocator(ticks))
         axis.set_major_formatter(FuncFormatter(lambda value, _pos, tick=tick: tick_text(value, tick)))
     ax.tick_params(labelsize=fs["tick"], length=st.tick_length)
