@@ -44,15 +44,16 @@ HORIZON_GRID = 32
 
 
 def rod_box(history, chart=None) -> tuple[float, float, float, float]:
-    """(X0, X1, T0, T1) in units of L: the rod with X_MARGIN either side, from chart time 0 (where the particles
-    start) to a while after the last event (room above for the panel's key)."""
+    """(X0, X1, T0, T1) in units of L: the rod with X_MARGIN either side, in time from a lead before the first
+    impact (as the frames' panels: the time from the start, at least L/2 and at most 2L) to 1.5 L after the last
+    event (a turn's end, or a separation)."""
     chart = chart or chart_of(history)
     L = history.scenario.L
-    if chart.kind == "causal":
-        last = max(chart.to_chart(i.event)[0] for i in history.impacts)
-    else:
-        last = max([chart.to_chart(i.event)[0] for i in history.impacts] + [T1 for _, T1, _ in chart.turns])
-    return -X_MARGIN, 1 + X_MARGIN, 0.0, last / L + 1.5
+    times = [chart.to_chart(i.event)[0] / L for i in history.impacts]
+    if chart.kind == "rigid":
+        times += [T1 / L for _, T1, _ in chart.turns]
+    first = min(times)
+    return -X_MARGIN, 1 + X_MARGIN, first - min(2.0, max(0.5, first)), max(times) + 1.5
 
 
 def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r", title: str | None = None,
@@ -255,30 +256,27 @@ def _particles(ax, history, chart, st: Style, box, letter: str, fs) -> list:
         line = history.worldline(name)
         if line is None:
             continue
-        t_hi = max(e.t for e in _corners(chart, box, L)) + L
-        points = densified(line.sample(min(0.0, line.first.t), t_hi, 1e-4 * L), 0.04 * L)
+        t_lo = min(e.t for e in _corners(chart, box, L, T0)) - L
+        t_hi = max(e.t for e in _corners(chart, box, L, T1)) + L
+        points = densified(line.sample(t_lo, t_hi, 1e-4 * L), 0.04 * L)
         drawn = chart_polyline(chart, points) / L
         ink = st.particles[name]
         artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
                           zorder=4, gid=f"{letter}-particle-{name}")
         out.append(artist)
-        start = drawn[np.isfinite(drawn[:, 0])][0]
+        inside = (drawn[:, 0] >= X0) & (drawn[:, 0] <= X1) & (drawn[:, 1] >= T0)
+        start = drawn[inside][0] if inside.any() else drawn[np.isfinite(drawn[:, 0])][0]
         out.append(ax.text(min(max(start[0], X0 + 0.1), X1 - 0.1), start[1] + 0.08, name, color=ink.colour,
                            fontsize=fs["particle"], fontstyle="italic", ha="center", va="bottom", zorder=6,
                            gid=f"{letter}-label-{name}"))
     return out
 
 
-def _corners(chart, box, L):
-    X0, X1, T0, T1 = box
-    events = []
-    for T, X in ((T1, X0), (T1, X1), (T1, 0.5)):
-        e = chart.to_event(T * L, X * L)
-        if e is not None:
-            events.append(e)
-    if not events:
-        events = [chart.to_event(T1 * L, 0.5 * L)]
-    return events
+def _corners(chart, box, L, T):
+    """The events at the box's corners and middle at chart time T (those the chart holds; the rod's middle always)."""
+    X0, X1, _, _ = box
+    events = [chart.to_event(T * L, X * L) for X in (X0, X1)]
+    return [e for e in events if e is not None] + [chart.to_event(T * L, 0.5 * L)]
 
 
 def _impacts(ax, history, chart, st: Style, letter: str, fs) -> list:
@@ -322,9 +320,13 @@ def _key(ax, history, chart, st: Style, fs, step: float):
         handles.append(Line2D([], [], linestyle="none"))
         labels.append("outside the rod: the\nchart carried out along\nlight rays from its ends")
     else:
-        handles.append(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width, linestyle=st.rod_now.dashes))
-        labels.append("a turn starts or ends;\nevery level line is\nthe rod's own \"now\"")
-        if chart.turns:
+        if not chart.turns:
+            handles.append(Line2D([], [], linestyle="none"))
+            labels.append("no turn: the chart is\nS throughout, every\nlevel line the rod's \"now\"")
+        else:
+            handles.append(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width,
+                                  linestyle=st.rod_now.dashes))
+            labels.append("a turn starts or ends;\nevery level line is\nthe rod's own \"now\"")
             handles.append(Line2D([], [], color=st.impact_colour, linewidth=st.rod.width * 0.6,
                                   linestyle=(0, (1.0, 1.5))))
             labels.append("pivot: one event all\nturn, its clock stopped")
