@@ -20,6 +20,21 @@ def fig1_chart():
     return CausalChart(causal_history("fig1"))
 
 
+def test_the_chart_of_a_rod_never_struck_is_s_with_the_left_end_at_zero():
+    # no contact: both invariants vanish, a(u) = u - L/2, b(w) = w + L/2, so t = T and x = X - L/2 everywhere
+    from types import SimpleNamespace
+
+    from rodparadox.physics.causal_solve import Invariant, Solution
+
+    L = 2.0
+    chart = CausalChart(SimpleNamespace(solution=Solution(L, Invariant(), Invariant(), [], {}),
+                                        scenario=SimpleNamespace(L=L)))
+    for x, t in [(-1.0, 0.0), (0.3, 0.7), (5.0, -2.0), (-4.0, 3.5)]:
+        assert chart.to_chart(Event(x, t)) == pytest.approx((t, x + 1.0), abs=1e-12)
+    assert chart.proper_time(0.7, 0.0, 3.0) == pytest.approx(3.0, rel=1e-14)  # at rest: tau = T
+    assert [T for _, T in chart.clock_ticks(0.7, 0.5, 0.0, 2.0)] == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
+
+
 def test_causal_chart_before_any_contact_is_s_with_the_left_end_at_zero(fig1_chart):
     # fig1 at v = 0.6: the first contacts are at t = 5/6; events whose light rays meet the ends before then (inside
     # the rod: no front has reached them) are charted as they are in S
