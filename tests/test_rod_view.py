@@ -154,6 +154,12 @@ def test_the_rigid_panel_shows_the_rod_as_the_strip_and_hatches_only_where_turns
         assert list(left) == [0.0, 0.0] and list(right) == [1.0, 1.0]
     assert drawn["fig1"]["horizon"] == () and len(drawn["fig2"]["horizon"]) == 1
     assert len(drawn["fig2"]["turns"]) == 9  # each of 3 turns: its start, its end, its pivot
+    assert len(drawn["fig2"]["light"]) == 3  # from each impact
+    # fig1 never turns: its chart is S (left end at X = 0), so A1's light (X = 0, T = 5/6) runs X = T - 5/6
+    ray = drawn["fig1"]["light"][0].get_xydata()
+    ray = ray[np.isfinite(ray[:, 0])]
+    assert ray[:, 1] - ray[:, 0] == pytest.approx(np.full(len(ray), 5 / 6), abs=1e-12)
+    assert (ray[0, 0], ray[-1, 0]) == (pytest.approx(0.0, abs=1e-12), pytest.approx(1.0, abs=0.03))
     result = CliRunner().invoke(main, ["plot", "fig1", "--frame", "rod,rest", "-o", "."])
     assert result.exit_code == 0, result.output
     svg = (tmp_path / "fig1_rod_rest.svg").read_text()

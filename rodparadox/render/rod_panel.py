@@ -74,6 +74,7 @@ def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r
     else:
         drawn["turns"] = _turns(ax, chart, st, (X0, X1), letter, fs)
         drawn["horizon"] = _horizon(ax, chart, st, (X0, X1, T0, T1), letter)
+        drawn["light"] = _light(ax, history, chart, st, letter)
     drawn["clocks"] = _clocks(ax, chart, st, step, T0 * L, T1 * L, letter)
     drawn["particles"] = _particles(ax, history, chart, st, (X0, X1, T0, T1), letter, fs)
     drawn["impacts"] = _impacts(ax, history, chart, st, letter, fs)
@@ -191,6 +192,26 @@ def _turns(ax, chart, st: Style, xs, letter: str, fs) -> list:
         pivot, = ax.plot([X, X], [T_a / L, T_b / L], color=st.impact_colour, linewidth=st.rod.width * 0.6,
                          linestyle=(0, (1.0, 1.5)), zorder=3.5, gid=f"{letter}-pivot-{k}")
         out.append(pivot)
+    return out
+
+
+def _light(ax, history, chart, st: Style, letter: str) -> list:
+    """The light from each impact into the rigid rod, through the chart: the rod turns at once (a level line)
+    while the light still crosses it."""
+    L = history.scenario.L
+    out = []
+    for impact in (i for i in history.impacts if i.kind == "contact"):
+        inward = 1.0 if impact.end == "left" else -1.0
+        ray = densified(np.array([[impact.event.x, impact.event.t],
+                                  [impact.event.x + inward * 6 * L, impact.event.t + 6 * L]]), 0.02 * L)
+        drawn = chart_polyline(chart, ray) / L
+        inside = (drawn[:, 0] >= -1e-9) & (drawn[:, 0] <= 1 + 1e-9)  # NaN (beyond a horizon) is not inside
+        if inside.sum() < 2:
+            continue
+        segment = np.where(inside[:, None], drawn, np.nan)  # across the rod only; a break where the chart has none
+        line, = ax.plot(segment[:, 0], segment[:, 1], color=st.light_cone.colour,
+                        linewidth=1.5 * st.light_cone.width, linestyle=st.light_cone.dashes, zorder=2.6, gid=f"{letter}-light-{impact.label}")
+        out.append(line)
     return out
 
 
@@ -327,6 +348,9 @@ def _key(ax, history, chart, st: Style, fs, step: float):
             handles.append(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width,
                                   linestyle=st.rod_now.dashes))
             labels.append("a turn starts or ends;\nevery level line is\nthe rod's own \"now\"")
+            handles.append(Line2D([], [], color=st.light_cone.colour, linewidth=1.5 * st.light_cone.width,
+                                  linestyle=st.light_cone.dashes))
+            labels.append("light from an impact:\nthe rod turns before\nit has crossed")
             handles.append(Line2D([], [], color=st.impact_colour, linewidth=st.rod.width * 0.6,
                                   linestyle=(0, (1.0, 1.5))))
             labels.append("pivot: one event all\nturn, its clock stopped")
