@@ -200,3 +200,27 @@ def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_ca
     assert "about B\N{SUBSCRIPT ONE}, 0.6931 L long, about A\N{SUBSCRIPT ONE}, 1.386 L long, about " \
            "B\N{SUBSCRIPT TWO}, 0.6931 L long" in blocks[2].caption
     assert with_rod_views(Handout("t", (section,)), {}).sections[0].blocks == section.blocks
+
+
+def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():
+    from rodparadox.animate.now_scene import NowScene
+    from rodparadox.animate.timeline import timeline
+    from rodparadox.physics.frames import parse_frames
+    from rodparadox.render.styles import STYLES
+    from rodparadox.render.diagram import style_context
+
+    h = history("fig1", 0.6)
+    frames = parse_frames("rest", 0.6)
+    with style_context("default"):
+        scene = NowScene(h, timeline(h, frames, "now", 3), "default", rod_view="first")
+    [now] = scene.rod_now
+    T0, T1 = now.axes.get_ylim()
+    heights = []
+    for k in range(3):
+        assert now in scene.update(k)
+        heights.append(now.get_ydata()[0])
+    assert heights == pytest.approx([T0, (T0 + T1) / 2, T1])
+    assert now.get_color() == STYLES["default"].flash_colour
+    # the rod's panel on the left: its axes start left of the frame's panel
+    view = now.axes.get_position().x0
+    assert view < min(ax.get_position().x0 for ax in scene.figure.axes if ax.get_gid() == "a-axes")
