@@ -367,7 +367,15 @@ def _key(ax, history, chart, st: Style, fs, step: float):
 
 def draw_rod_view(histories: Sequence, style: str, diagram=None, first: bool = False) -> Figure:
     """The rod's own view of each history (one per row: rigid above causal with --rod both): beside the panels of
-    a drawn diagram (on its left when `first`, the figure widened), or, without one, in a figure of its own."""
+    a drawn diagram (on its left when `first`, the figure widened), or, without one, in a figure of its own. Drawn
+    in the style's rcParams (its fonts), as the diagram is."""
+    from rodparadox.render.diagram import style_context
+
+    with style_context(style):
+        return _rod_view(histories, style, diagram, first)
+
+
+def _rod_view(histories: Sequence, style: str, diagram, first: bool) -> Figure:
     st = STYLES[style]
     fs = font_sizes(st)
     boxes = [_union([rod_box(h) for h in histories])] * len(histories)  # the two models on the same scales
@@ -427,7 +435,14 @@ def _union(boxes):
 
 def draw_rod_view_into(target, histories: Sequence, style: str) -> None:
     """The rod's own view of each history, side by side, into a Figure or SubFigure the caller has sized (a
-    handout's text width), centred in it."""
+    handout's text width), centred in it, in the style's rcParams."""
+    from rodparadox.render.diagram import style_context
+
+    with style_context(style):
+        _rod_view_into(target, histories, style)
+
+
+def _rod_view_into(target, histories: Sequence, style: str) -> None:
     st = STYLES[style]
     root = target.get_figure(root=True) if hasattr(target, "get_figure") else target
     dpi = root.dpi
