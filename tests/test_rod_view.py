@@ -200,6 +200,8 @@ def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_ca
     assert "about B\N{SUBSCRIPT ONE}, 0.6931 L long, about A\N{SUBSCRIPT ONE}, 1.386 L long, about " \
            "B\N{SUBSCRIPT TWO}, 0.6931 L long" in blocks[2].caption
     assert with_rod_views(Handout("t", (section,)), {}).sections[0].blocks == section.blocks
+    worksheet = with_rod_views(Handout("t", (section,), worksheet=True), {"fig2": (h,)})
+    assert "0.6931" not in worksheet.sections[0].blocks[2].caption  # a worksheet may ask how long a turn lasts
 
 
 def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():

@@ -12,8 +12,9 @@ from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.rod_view import chart_of
 
 
-def rod_view_caption(histories: Sequence) -> str:
-    """What the figure shows, for a reader who has not seen the code: the chart's two axes, then each model."""
+def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
+    """What the figure shows, for a reader who has not seen the code: the chart's two axes, then each model; with
+    `tell` (not in a worksheet, which may ask them) how long each turn lasts."""
     parts = ["The rod's own view: across, each material point's label X (its distance from the left end when "
              "unstressed), so the rod is the fixed strip 0 \N{LESS-THAN OR EQUAL TO} X \N{LESS-THAN OR EQUAL TO} L; "
              "up, the rod's own time T. Every level line is one \"now\" of the rod, and the ticks on each material "
@@ -27,7 +28,8 @@ def rod_view_caption(histories: Sequence) -> str:
                          "grows by L for each unit of rapidity the rod's lines turn through, and a point at distance d "
                          "from the pivot keeps its X while its clock runs at d/L of T's rate: the pivot's clock stops, "
                          "and the far end's runs on, as if it knew of the impact at once. "
-                         + (f"Turns: {', '.join(turns)}. " if turns else "No turns: the rod never moves. ")
+                         + (f"Turns: {', '.join(turns)}. " if turns and tell else "")
+                         + ("" if turns else "No turns: the rod never moves. ")
                          + ("Hatched: beyond the pivot during its turn, where the rod's own time gives an event no "
                             "single place (the rest frames before and after the turn both reach it, or neither does)."
                             if turns else ""))
@@ -54,6 +56,7 @@ def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
         blocks = list(section.blocks)
         if histories:
             at = next((k for k, b in enumerate(blocks) if isinstance(b, DiagramBlock)), len(blocks) - 1)
-            blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), rod_view_caption(histories)))
+            caption = rod_view_caption(histories, tell=not handout.worksheet)
+            blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), caption))
         sections.append(replace(section, blocks=tuple(blocks)))
     return replace(handout, sections=tuple(sections))
