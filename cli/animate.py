@@ -27,8 +27,9 @@ ANIMATION_FORMATS = ("gif", "mp4", "png")
 
 @click.command()
 @scenario_options(rods=("rigid", "causal"))
-@frame_option("now: the panels, as plot's --frame (e.g. both,0.3); boost: the frames to boost between, "
-              "A..B, each rest, moving or a velocity U (both is rest..moving).", metavar="rest|moving|both|U|A..B")
+@frame_option("now: the panels, as plot's --frame (e.g. both,0.3, or rest,rod: the rod's own view too); boost: "
+              "the frames to boost between, A..B, each rest, moving or a velocity U (both is rest..moving).",
+              metavar="rest|moving|both|U|rod|A..B")
 @click.option("--mode", "mode", type=click.Choice(("now", "boost")), default="now", show_default=True,
               help="now: each frame's line of simultaneity sweeps up, with its space below; boost: the frame "
                    "velocity runs smoothly from A to B.")
@@ -64,24 +65,26 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     from rodparadox.animate.encoders import check_fps, check_stills, require_ffmpeg
 
     described = planned.Outputs(formats=ANIMATION_FORMATS, default="gif", kind=mode, folders={"png": "the stills"},
-                                check=_check_output, frames=planned.frames_of if mode == "now" else boost_ends)
+                                check=_check_output, frames=planned.frames_with_rod if mode == "now" else boost_ends)
     [job] = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
                          extras=(["causal"] if rod_asked() == "causal" else []) + list(length_names(fps, seconds)))
     check_fps(job.fmt, fps)
     count = image_count(seconds, fps)
     if job.fmt == "mp4":
         require_ffmpeg()
-    history = run_scenario(job.scenario, job.name, job.frames[0])
+    frames = planned.lorentz_frames(job.frames[0]) if mode == "now" else job.frames[0]
+    rod_view = None if frames == job.frames[0] else ("first" if job.frames[0][0] not in frames else "last")
+    history = run_scenario(job.scenario, job.name, frames)
     planned.prepare([job], described, output)
     if job.fmt == "png":
         check_stills(job.path, job.stem, count)  # a clash with any still is said before the first is drawn
-    line = timeline(history, job.frames[0], mode, count)
+    line = timeline(history, frames, mode, count)
 
     before_matplotlib()
     from rodparadox.animate.scenes import images_of  # matplotlib: only now, after every input has been checked
     from rodparadox.animate.encoders import write_images
 
-    drawn = images_of(history, job.frames[0], mode, style, line)
+    drawn = images_of(history, frames, mode, style, line, rod_view)
     first = next(drawn)  # the scene laid out and its first image drawn: the size is known, nothing is written yet
     check_cost(count, first.shape[1], first.shape[0], seconds, fps, allow_long)
     with progress(itertools.chain([first], drawn), count, str(job.path), quiet) as bar:

@@ -355,6 +355,18 @@ class Whole(click.IntRange):
 NUMBER = Decimal()
 
 
+class FrameVelocity(Decimal):
+    """--frame-velocity of events and export: a number; the word rod (the rod's own view, a drawing's) is refused
+    in a sentence of its own."""
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, str) and value.strip() == "rod":
+            self.fail("rod (the rod's own view) is drawn by plot, animate and handout only; these tables need a "
+                      "Lorentz frame: give a velocity U relative to S.", param, ctx)
+        return super().convert(value, param, ctx)
+
+
+
 # --- the options the commands share ----------------------------------------------------------------
 # Each declared once, named as `words` names it in messages; where commands word an option differently, the
 # command gives its own help (and metavar).
@@ -364,7 +376,7 @@ scenarios_argument = click.argument("scenarios", nargs=-1, required=True, metava
 v_option = click.option(option("v"), "v", type=NUMBER, metavar="V",
                         help="Speed of the moving frame S' and default particle speed, 0 < V < 1 (overrides the scenario).")
 L_option = click.option(option("L"), "L", type=NUMBER, metavar="L", help="The rod's proper length, L > 0 (overrides the scenario).")
-frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=NUMBER, metavar="U",
+frame_velocity_option = click.option(option("frame_velocity"), "frame_velocity", type=FrameVelocity(), metavar="U",
                                      help="Also show the frame of velocity U relative to S, |U| <= 0.9999999.")
 quiet_option = click.option("-q", "--quiet", is_flag=True,
                             help="Print nothing on success (the paths written are printed otherwise).")

@@ -12,7 +12,7 @@ import click
 
 from rodparadox.errors import OptionError
 
-from .common import (before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
+from .common import (BadInput, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
                      reports_errors, rod_asked, run_scenario, scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
@@ -25,7 +25,8 @@ HANDOUT_PAPER = "a4"
 
 @click.command()
 @scenario_options(several=True, rods=("rigid", "causal", "both"))
-@frame_option("The frames shown, as plot's --frame (e.g. both,0.3).")
+@frame_option("The frames shown, as plot's --frame (e.g. both,0.3); rod beside them (both,rod) adds the rod's own "
+              "view after each diagram.", metavar="rest|moving|both|U|rod")
 @click.option("--paper", "paper", type=click.Choice(PAPER_NAMES, case_sensitive=False), default=HANDOUT_PAPER,
               show_default=True, help="The paper size.")
 @click.option("--worksheet", is_flag=True,
@@ -74,17 +75,23 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     numbers = _worksheet_options(worksheet, chosen, compare_v, key, fmt.lower())
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
-                                together=True, default_style=HANDOUT_STYLE)
+                                together=True, default_style=HANDOUT_STYLE, frames=planned.frames_with_rod)
     rod = rod_asked()  # named as plot names: fig1_causal_handout.pdf, fig1_both_handout.pdf
     extras = ([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else [])
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=extras + (["samescale"] if equal_scales else []))
-    items = []
-    for s, name, frames, stem in zip(job.scenarios, job.names, job.frames, job.stems):
+    items, views = [], {}
+    for s, name, shown_frames, stem in zip(job.scenarios, job.names, job.frames, job.stems):
+        frames = planned.lorentz_frames(shown_frames)
+        if not frames:
+            raise BadInput("--frame rod needs a frame beside it in a handout, whose tables are read in frames: give "
+                           "e.g. both,rod.")
         # the rigid rod's sections always (the diagrams draw it); the causal rod's run for the comparison
         compared = rod in ("causal", "both") or s.rod == "causal"
         causal = run_scenario(s.with_overrides(rod="causal"), name, frames) if compared else None
         items.append((stem, run_scenario(s.with_overrides(rod="rigid"), name, frames), frames, causal))
+        if frames != shown_frames:  # the rod's own view: of the rigid rod, and of the causal rod when compared
+            views[stem] = (items[-1][1],) + ((causal,) if causal is not None else ())
     planned.prepare([job], described, output)
 
     before_matplotlib()
@@ -92,6 +99,10 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     from rodparadox.io.output import write_atomic, write_folder
 
     document = build(items, worksheet=worksheet, compare_v=compare_v, chosen=numbers, equal_scales=equal_scales)
+    if views:
+        from rodparadox.handout.own_view import with_rod_views
+
+        document = with_rod_views(document, views)
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked
 

@@ -129,6 +129,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
 
     if output is not None and not output.strip():
         raise words.empty_output(output)
+    planned.refuse_rod_view(frame, "ledger")
     times = _times(at)
     kind = _kind(fmt, output)
     _check_agreement(kind, fmt, output)

@@ -18,6 +18,7 @@ from typing import Callable, NamedTuple, Sequence
 from rodparadox.errors import FrameError, OptionError
 from rodparadox.physics.frames import Frame, frame_word, parse_frames
 from rodparadox.physics.model import Scenario
+from rodparadox.physics.rod_view import ROD_VIEW, ROD_WORD
 from rodparadox.numbers import exact
 from rodparadox.io.output import check_folder, check_target, is_stream
 from rodparadox.io.scenario import load, stem_of
@@ -30,8 +31,9 @@ DEFAULT_FOLDER = "outputs"
 
 
 def frame_suffix(frames: Sequence[Frame]) -> str:
-    """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`."""
-    name = "_".join(frame_word(f) for f in frames)
+    """The frames' part of a file name: empty for S then S' (`both`), else e.g. `_rest`, `_both_u0.3`, `_moving_rest`,
+    `_rest_rod` (the rod's own view, `RodView`, named by its word)."""
+    name = "_".join(frame_word(f) if isinstance(f, Frame) else f.name for f in frames)
     name = name.replace("rest_moving", "both")  # each frame appears once, so at most one `both`
     return "" if name == "both" else f"_{name}"
 
@@ -63,6 +65,35 @@ def frames_of(spec: str, v: float) -> tuple[Frame, ...]:
         return parse_frames(spec, v)
     except FrameError as e:
         raise words.frame_error(e, "frame", spec) from None
+
+
+def frames_with_rod(spec: str, v: float) -> tuple:
+    """--frame of the commands that draw the rod's own view too (`plot`, `animate`, `handout`): the word `rod`
+    (`rod_view.ROD_VIEW`, once, where it first appears in the list) beside the frames `frames_of` reads."""
+    items = [item.strip() for item in spec.split(",")]
+    try:
+        if ROD_WORD not in items:
+            return parse_frames(spec, v)
+        at = items.index(ROD_WORD)
+        others = [item for item in items if item != ROD_WORD]
+        frames = parse_frames(",".join(others), v) if others else ()
+        before = len(parse_frames(",".join(items[:at]), v)) if at else 0
+    except FrameError as e:  # the library's sentence, with the word it does not know of
+        said = str(e).replace("rest, moving, both or", f"rest, moving, both, {ROD_WORD} (the rod's own view) or")
+        raise words.frame_error(FrameError(said), "frame", spec) from None
+    return (*frames[:before], ROD_VIEW, *frames[before:])
+
+
+def lorentz_frames(frames: Sequence) -> tuple[Frame, ...]:
+    """The Lorentz frames of a list that may name the rod's own view (`frames_with_rod`)."""
+    return tuple(f for f in frames if isinstance(f, Frame))
+
+
+def refuse_rod_view(spec: str, command: str) -> None:
+    """A command whose tables need Lorentz frames (`ledger`) refuses `--frame rod` in one sentence."""
+    if ROD_WORD in (item.strip() for item in spec.split(",")):
+        raise BadInput(f"--frame rod (the rod's own view) is drawn by plot, animate and handout only; {command} "
+                       f"reads slices of Lorentz frames: give rest, moving, both or a velocity U.")
 
 
 # --- what a command writes ---------------------------------------------------------------------------

@@ -20,8 +20,9 @@ _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyp
 
 @click.command()
 @scenario_options(several=True, rods=("rigid", "causal", "both"))
-@frame_option("Panels, left to right: S, S', both, or the frame of velocity U relative to S; "
-              "a comma-separated list gives several (e.g. both,0.3).")
+@frame_option("Panels, left to right: S, S', both, the frame of velocity U relative to S, or rod (the rod's own "
+              "view: it a fixed strip); a comma-separated list gives several (e.g. both,0.3 or rest,rod).",
+              metavar="rest|moving|both|U|rod")
 @format_option("One or more formats, comma-separated. [default: svg, or the extension of -o FILE]", default=None,
                metavar="svg,pdf,png")
 @output_option("A folder to write into (it must exist), or a file name for one scenario in one format. "
@@ -60,7 +61,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time, "equal_scales": equal_scales}
-    described = planned.Outputs(formats=FORMATS, default="svg")  # a figure per scenario, in one or more formats
+    described = planned.Outputs(formats=FORMATS, default="svg", frames=planned.frames_with_rod)  # a figure each
     rod = rod_asked()
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
     named = ([rod] if rod in ("causal", "both") else []) + named  # fig1_causal.svg beside fig1.svg
@@ -76,15 +77,33 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
 
     options = render.Options(**extras, rod_lines=rod_lines)
     # every figure laid out before any file is written: one that cannot be drawn leaves no file behind
-    figures = [(render.draw_both(*run, job.frames[0], style, options) if len(run) == 2
-                else render.draw(run[0], job.frames[0], style, options)).figure for run, job in zip(histories, jobs)]
+    figures = [_figure(run, job.frames[0], style, options) for run, job in zip(histories, jobs)]
     report(((path, write_atomic(path, render.figure_bytes(figure, f, style)))
             for figure, job in zip(figures, jobs) for f, path in job.paths.items()), quiet)
 
 
 def _run(job, both: bool) -> tuple:
     """The job's history, and with --rod both the causal rod's beside the rigid one."""
-    rigid = run_scenario(job.scenario, job.name, job.frames[0])
+    from sears_paradox_cli.planning import lorentz_frames
+
+    frames = lorentz_frames(job.frames[0])
+    rigid = run_scenario(job.scenario, job.name, frames)
     if not both:
         return (rigid,)
-    return rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, job.frames[0])
+    return rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, frames)
+
+
+def _figure(run: tuple, frames: tuple, style: str, options):
+    """The figure of one scenario: the frames' panels, and the rod's own view (`--frame rod`) beside them (on
+    their left when it comes first in the list) or alone."""
+    from rodparadox import render
+    from sears_paradox_cli.planning import lorentz_frames
+
+    lorentz = lorentz_frames(frames)
+    diagram = None
+    if lorentz:
+        diagram = (render.draw_both(*run, lorentz, style, options) if len(run) == 2
+                   else render.draw(run[0], lorentz, style, options))
+    if len(lorentz) == len(frames):
+        return diagram.figure
+    return render.draw_rod_view(run, style, diagram, first=frames[0] not in lorentz)

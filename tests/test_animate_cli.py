@@ -120,8 +120,8 @@ def test_mp4_has_its_frames(here):
     (["--mode", "boost", "--frame", "rest"], "option --frame: in boost mode give the frames to boost between as "
                                              "A..B (each rest, moving or a velocity U relative to S), e.g. "
                                              "rest..moving, got 'rest'."),
-    (["--frame", "fast"], "option --frame: a frame must be rest, moving, both or a velocity U with -0.9999999 <= "
-                          "U <= 0.9999999 (or a comma-separated list of these), got 'fast'."),
+    (["--frame", "fast"], "option --frame: a frame must be rest, moving, both, rod (the rod's own view) or a velocity U "
+                          "with -0.9999999 <= U <= 0.9999999 (or a comma-separated list of these), got 'fast'."),
     (["--v", "1"], None),
 ])
 def test_bad_input_is_one_sentence_exit_2_and_writes_nothing(here, args, message):

@@ -195,8 +195,8 @@ def test_unwritable_output_folder(in_tmp, unwritable_folder):
 
 def test_bad_frame():
     assert error_of("fig2", "--frame", "sideways") == (
-        "option --frame: a frame must be rest, moving, both or a velocity U with -0.9999999 <= U <= 0.9999999 "
-        "(or a comma-separated list of these), got 'sideways'.")
+        "option --frame: a frame must be rest, moving, both, rod (the rod's own view) or a velocity U with "
+        "-0.9999999 <= U <= 0.9999999 (or a comma-separated list of these), got 'sideways'.")
     assert error_of("fig2", "--frame", "rest,1.5") == (
         "option --frame: a frame velocity must be a number U with -0.9999999 <= U <= 0.9999999 (units of c) "
         "for double precision to place the events, got 1.5.")

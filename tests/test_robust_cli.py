@@ -167,9 +167,9 @@ def test_a_decimal_number_in_yaml_is_read_as_written(tmp_path, text, L):
                                           "in), comma-separated, got '1_000'."),
     (["ledger", "fig2", "--at", "0x10"], "option --at must be one or more times (numbers, in the unit L is given "
                                          "in), comma-separated, got '0x10'."),
-    (["plot", "fig2", "--frame", "both,0_3"], "option --frame: a frame must be rest, moving, both or a velocity U with "
-                                              "-0.9999999 <= U <= 0.9999999 (or a comma-separated list of these), got "
-                                              "'0_3'."),
+    (["plot", "fig2", "--frame", "both,0_3"], "option --frame: a frame must be rest, moving, both, rod (the rod's own "
+                                              "view) or a velocity U with -0.9999999 <= U <= 0.9999999 (or a "
+                                              "comma-separated list of these), got '0_3'."),
     (["animate", "fig2", "--mode", "boost", "--frame", "0_1..0.5"],
      "option --frame: each end of A..B must be rest, moving or a velocity U relative to S; not a velocity: '0_1'."),
 ])

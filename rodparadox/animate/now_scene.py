@@ -26,15 +26,19 @@ from rodparadox.physics.frames import Frame
 from rodparadox.render.styles import STYLES
 
 
-def now_images(history: History, timeline: NowTimeline, style: str) -> Iterator[np.ndarray]:
+def now_images(history: History, timeline: NowTimeline, style: str, rod_view: str | None = None) -> Iterator[np.ndarray]:
     """The diagram as `plot` draws it, with each frame's own line of simultaneity (its "now", horizontal in its
     own panel) sweeping up, and under each panel a strip of that frame's space at that instant, on the panel's
-    x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting)."""
+    x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting).
+    `rod_view` ("first", "last"): the rod's own view beside the panels (alone without frames), its "now" a level
+    line sweeping its chart time at an even pace, in lock-step with the panels."""
     from rodparadox import render
 
     with render.style_context(style):
-        scene = NowScene(history, timeline, style)
-        yield from blitted(scene.canvas, (scene.update(k) for k in range(len(timeline))))
+        scene = NowScene(history, timeline, style, rod_view) if timeline.frames else RodNowScene(history, style)
+        count = len(timeline)
+        yield from blitted(scene.canvas, (scene.update(k, count) if not timeline.frames else scene.update(k)
+                                          for k in range(count)))
 
 
 #: a lens is added under a strip whose rod is never longer than this fraction of the strip's width
@@ -74,7 +78,7 @@ class NowScene:
     bar.
     """
 
-    def __init__(self, history: History, timeline: NowTimeline, style: str):
+    def __init__(self, history: History, timeline: NowTimeline, style: str, rod_view: str | None = None):
         from rodparadox import render
         from rodparadox.render.strip import draw_strip
 
@@ -82,7 +86,10 @@ class NowScene:
         self.history, self.timeline, self.L = history, timeline, history.scenario.L
         L = self.L
         # no inset: the strips' lens magnifies the rod, and an inset would not follow the now-line
-        figure = render.draw(history, timeline.frames, style, render.Options(insets=False)).figure
+        diagram = render.draw(history, timeline.frames, style, render.Options(insets=False))
+        figure = diagram.figure
+        if rod_view:
+            render.draw_rod_view((history,), style, diagram, first=rod_view == "first")
         width, height = figure.get_size_inches()
         panels = [ax for ax in figure.axes if (ax.get_gid() or "").endswith("-axes")]
         rows = sorted({round(ax.get_position().y0, 6) for ax in panels}, reverse=True)
@@ -146,6 +153,7 @@ class NowScene:
                     self.panels.append(PanelMotion(frame, now, strip, lens, m, title))
                     continue
             self.panels.append(PanelMotion(frame, now, strip, lens, m))
+        self.rod_now = _rod_now(figure, st)
 
     def _readout_size(self, p: int, frame: Frame, room: float, size: float) -> float:
         """The readout's type size: the style's, or less so that its longest text (the window's ends, with every
@@ -173,7 +181,7 @@ class NowScene:
     def update(self, k: int) -> list:
         from rodparadox.render.strip import update_strip
 
-        L, moved = self.L, []
+        L, moved = self.L, list(_move_rod_now(self.rod_now, k, len(self.timeline)))
         for p, motion in enumerate(self.panels):
             shown_now = self.timeline.strip(self.history, k, p)
             motion.now.set_ydata([shown_now.t / L, shown_now.t / L])
@@ -193,6 +201,42 @@ class NowScene:
         ks = np.unique(np.linspace(0, len(self.timeline) - 1, LENS_SAMPLES).round().astype(int))
         lengths = [float(np.ptp(self.timeline.strip(self.history, int(k), p).x)) / self.L for k in ks]
         return min(lengths), max(lengths)
+
+
+def _rod_now(figure: Figure, st) -> list:
+    """The rod's own "now" on each panel of its own view (`render.rod_panel`): a level line of its chart."""
+    out = []
+    for ax in figure.axes:
+        if (ax.get_gid() or "").endswith("-view"):
+            T0 = ax.get_ylim()[0]
+            out.append(ax.axhline(T0, color=st.flash_colour, linewidth=2.0 * st.rod.width / 1.7, zorder=8,
+                                  animated=True, gid=f"{ax.get_gid()}-now"))
+    return out
+
+
+def _move_rod_now(lines: list, k: int, count: int) -> list:
+    """The rod's "now" at instant k: its chart time sweeps the panel's window at an even pace (`timeline.sweep`)."""
+    s = k / max(count - 1, 1)
+    for line in lines:
+        T0, T1 = line.axes.get_ylim()
+        line.set_ydata([T0 + s * (T1 - T0)] * 2)
+    return lines
+
+
+class RodNowScene:
+    """Now mode with the rod's own view alone (`--frame rod`): its panel, its "now" sweeping up."""
+
+    def __init__(self, history: History, style: str):
+        from rodparadox import render
+
+        st = STYLES[style]
+        self.figure = render.draw_rod_view((history,), style)
+        self.figure.set_dpi(st.animation_dpi)
+        self.canvas = FigureCanvasAgg(self.figure)
+        self.rod_now = _rod_now(self.figure, st)
+
+    def update(self, k: int, count: int) -> list:
+        return _move_rod_now(self.rod_now, k, count)
 
 
 def _scaled(strip, factor: float):

@@ -31,8 +31,9 @@ from rodparadox.physics.frames import Frame
 
 
 def images_of(history: History, frames: tuple[Frame, ...], mode: str, style: str,
-              timeline: NowTimeline | BoostTimeline) -> Iterator[np.ndarray]:
-    """Each instant of the timeline as an RGB image (see the module's docstring)."""
+              timeline: NowTimeline | BoostTimeline, rod_view: str | None = None) -> Iterator[np.ndarray]:
+    """Each instant of the timeline as an RGB image (see the module's docstring). `rod_view` ("first" or "last",
+    now mode): the rod's own view (`--frame rod`) beside the panels, its own "now" (a level line) sweeping up."""
     if mode == "now":
-        return now_images(history, timeline, style)
+        return now_images(history, timeline, style, rod_view)
     return boost_images(history, timeline, style)

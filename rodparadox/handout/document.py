@@ -66,6 +66,20 @@ class DiagramBlock:
 
 
 @dataclass(frozen=True)
+class RodViewBlock:
+    """The rod's own view (`--frame rod`): each history's chart, the rod a fixed strip, side by side (the rigid rod
+    first, then the causal rod), full text width (`render.draw_rod_view_into`)."""
+
+    name: str
+    histories: tuple
+    caption: str
+
+    @property
+    def history(self):
+        return self.histories[0]
+
+
+@dataclass(frozen=True)
 class Strips:
     """The rod and the particles in one frame's space at successive instants of that frame's time (the strip of
     `animate`, as stills), earliest first."""
@@ -104,7 +118,7 @@ class PageBreak:
     """Start a new page here."""
 
 
-Block = Union[Heading, Paragraph, Table, DiagramBlock, Strips, Question, PageBreak]
+Block = Union[Heading, Paragraph, Table, DiagramBlock, RodViewBlock, Strips, Question, PageBreak]
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,8 @@ from __future__ import annotations
 from typing import Callable
 
 from rodparadox import render
-from rodparadox.handout.document import (Block, DiagramBlock, Heading, PageBreak, Paragraph, Question, Strips, Table)
+from rodparadox.handout.document import (Block, DiagramBlock, Heading, PageBreak, Paragraph, Question, RodViewBlock,
+                                         Strips, Table)
 from rodparadox.handout.pdf_text import MM, RULE_GREY, Line, Pages, width_of, words_of, wrap
 from rodparadox.physics.frames import frame_name
 from rodparadox.render.styles import Style
@@ -441,4 +442,10 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         return StripsSet(block, style.name, caption, pages, 1.2 * t.body, room)
+    if isinstance(block, RodViewBlock):
+        _, height = render.rod_view_size(block.histories, style.name, pages.text_width)
+
+        def draw_rod_view(target, block=block):
+            render.draw_rod_view_into(target, block.histories, style.name)
+        return Picture(min(height, room), caption, pages, 1.2 * t.body, draw_rod_view)
     raise TypeError(f"a handout has no block of type {type(block).__name__}")

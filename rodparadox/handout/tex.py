@@ -27,7 +27,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from rodparadox.handout.document import PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
+from rodparadox.handout.document import (PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question,
+                                         RodViewBlock, Section, Strips, Table)
 from rodparadox.handout.words import math_pieces
 from rodparadox.physics.engine import History
 from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
@@ -85,6 +86,8 @@ def _content_key(block: Block) -> tuple:
         return ("table", to_latex(block))
     if isinstance(block, DiagramBlock):
         return ("diagram", id(block.history), block.frames)
+    if isinstance(block, RodViewBlock):
+        return ("rod view", tuple(id(h) for h in block.histories))
     assert isinstance(block, Strips)
     return ("strips", id(block.history), block.frame, tuple(block.times))
 
@@ -120,13 +123,13 @@ def _place(handout: Handout) -> list[_Placed]:
     for section in handout.sections:
         for block in section.blocks:
             stem = None
-            if isinstance(block, (Table, DiagramBlock, Strips)):
+            if isinstance(block, (Table, DiagramBlock, RodViewBlock, Strips)):
                 stem = claim(file_stem(_prefixed(section, block.name)), _content_key(block), False)
             placed.append(_Placed(block, stem, False))
     in_sections = [p for p in placed if p.stem is not None]
     for block in handout.answer_key:
         stem = None
-        if isinstance(block, (Table, DiagramBlock, Strips)):
+        if isinstance(block, (Table, DiagramBlock, RodViewBlock, Strips)):
             origin = next((p.stem for p in in_sections if _same_origin(p.block, block)), None)
             stem = claim(origin or file_stem(block.name), _content_key(block), True)
         placed.append(_Placed(block, stem, True))
@@ -227,7 +230,7 @@ def _block(p: _Placed, worksheet: bool) -> str:
         return prose(b.text) + "\n"
     if isinstance(b, Table):
         return _table(p.stem, b)
-    if isinstance(b, (DiagramBlock, Strips)):
+    if isinstance(b, (DiagramBlock, RodViewBlock, Strips)):
         return _figure(p.stem, b.caption)
     if isinstance(b, Question):
         return _question(b, worksheet, p.in_answer_key)
@@ -259,7 +262,7 @@ def text_width_in(paper: str) -> float:
     return PAPERS[paper][0] - 2 * MARGIN_MM / 25.4
 
 
-def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
+def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: str) -> bytes:
     """A figure block as PDF bytes: the diagram as `plot` draws it, or the strips as `animate` draws them, at the
     width of the text so their type prints at its size."""
     from rodparadox import render
@@ -270,6 +273,12 @@ def figure_pdf(block: DiagramBlock | Strips, paper: str, style: str) -> bytes:
         diagram = render.draw(block.history, block.frames, style, options)
         block.retitle(diagram)
         figure = diagram.figure
+    elif isinstance(block, RodViewBlock):
+        from matplotlib.figure import Figure
+
+        width, height = render.rod_view_size(block.histories, style, text_width_in(paper) * 72)
+        figure = Figure(figsize=(text_width_in(paper), height / 72))
+        render.draw_rod_view_into(figure, block.histories, style)
     else:
         from matplotlib.figure import Figure
 
@@ -386,7 +395,7 @@ def tex_files(handout: Handout, paper: str = "a4", style: str = "print") -> dict
     figures = {}
     for p in placed:
         name = f"{p.stem}.pdf"
-        if isinstance(p.block, (DiagramBlock, Strips)) and name not in figures:
+        if isinstance(p.block, (DiagramBlock, RodViewBlock, Strips)) and name not in figures:
             figures[name] = figure_pdf(p.block, paper, style)
     text.update(data_files(handout))
     text["README.txt"] = readme(handout)

@@ -27,6 +27,7 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   styles   the three styles as plain data (inks, dashes, rcParams, sizes): no matplotlib
   ledger_figure  the ledger as a figure (momentum and energy against each frame's time)
   colour_scale  which velocity each colour of a strip means, in one frame (pure: no matplotlib)
+  rod_panel  the rod's own view (`--frame rod`): its chart, the rod a fixed strip, as a panel beside a diagram's
   strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
            particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
            block of stills, the rod at successive instants
@@ -47,6 +48,8 @@ _HOME = {
     **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
                     "rodparadox.render.strip"),
     "LABEL_REACH": "rodparadox.render.labels",
+    **dict.fromkeys(("draw_rod_panel", "draw_rod_view", "draw_rod_view_into", "rod_view_size"),
+                    "rodparadox.render.rod_panel"),
     **dict.fromkeys(("LAYERS", "LEGEND", "Layer", "LayerArtists", "Options", "PanelContext"), "rodparadox.render.layers"),
     **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol",
                      "impact_text_size", "text_size", "text_size_cache_info"), "rodparadox.render.text"),

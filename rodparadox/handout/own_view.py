@@ -1,0 +1,62 @@
+"""The rod's own view in a handout (`handout --frame both,rod`): a figure after each section's diagram, and its
+caption, generated from the histories (README, "The rod's own view"). Pure: no matplotlib.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Sequence
+
+from rodparadox.handout.document import DiagramBlock, Handout, RodViewBlock
+from rodparadox.numbers import impact_name, shown
+from rodparadox.physics.rod_view import chart_of
+
+
+def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
+    """What the figure shows, for a reader who has not seen the code: the chart's two axes, then each model; with
+    `tell` (not in a worksheet, which may ask them) how long each turn lasts."""
+    parts = ["The rod's own view: across, each material point's label X (its distance from the left end when "
+             "unstressed), so the rod is the fixed strip 0 \N{LESS-THAN OR EQUAL TO} X \N{LESS-THAN OR EQUAL TO} L; "
+             "up, the rod's own time T. Every level line is one \"now\" of the rod, and the ticks on each material "
+             "line are its own clock."]
+    for h in histories:
+        chart = chart_of(h)
+        if chart.kind == "rigid":
+            turns = [f"about {impact_name(_pivot_label(h, t))}, {shown((b - a) / h.scenario.L, 4)} L long"
+                     for t, (a, b, _) in zip(h.turns, chart.turns)]
+            parts.append("Rigid rod: between turns T is the time of its rest frame. During a turn about an impact, T "
+                         "grows by L for each unit of rapidity the rod's lines turn through, and a point at distance d "
+                         "from the pivot keeps its X while its clock runs at d/L of T's rate: the pivot's clock stops, "
+                         "and the far end's runs on, as if it knew of the impact at once. "
+                         + (f"Turns: {', '.join(turns)}. " if turns and tell else "")
+                         + ("" if turns else "No turns: the rod never moves. ")
+                         + ("Hatched: beyond the pivot during its turn, where the rod's own time gives an event no "
+                            "single place (the rest frames before and after the turn both reach it, or neither does)."
+                            if turns else ""))
+        else:
+            parts.append("Causal rod: the chart in which every material point stands still and every light ray runs "
+                         "at 45\N{DEGREE SIGN}, so each front that carries a push or a pull crosses the rod in a time "
+                         "L; a clock runs slow where the rod is compressed (d\N{GREEK SMALL LETTER TAU} = dT/"
+                         "\N{GREEK SMALL LETTER LAMDA}). A particle in contact rides the end (a band); outside the rod "
+                         "the chart is carried out along light rays from its ends, so the particles' approach and "
+                         "departure are drawn where those rays place them.")
+    return " ".join(parts)
+
+
+def _pivot_label(history, turn) -> str:
+    return next(i.label for i in history.impacts if i.event == turn.pivot)
+
+
+def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
+    """The handout with the rod's own view after the first diagram of each section named in `views` (section
+    name -> its histories, the rigid rod first)."""
+    sections = []
+    for section in handout.sections:
+        histories = views.get(section.name)
+        blocks = list(section.blocks)
+        if histories:
+            at = next((k for k, b in enumerate(blocks) if isinstance(b, DiagramBlock)), len(blocks) - 1)
+            caption = rod_view_caption(histories, tell=not handout.worksheet)
+            blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), caption))
+        sections.append(replace(section, blocks=tuple(blocks)))
+    return replace(handout, sections=tuple(sections))
