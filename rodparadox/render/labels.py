@@ -99,7 +99,11 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     never = 10 ** 9
     drawn: list[tuple] = []
     for label in labels:
-        w, h = label.box_size or text_size(label.text, label.size, label.italic)[:2]
+        if label.box_size:
+            w, h = label.box_size
+        else:  # crowded: as tall as a line of its type (a text's drawn box, its ground's too), not as its glyphs
+            w, h = text_size(label.text, label.size, label.italic)[:2]
+            h = max(h, label.size) if crowded else h
         anchors = to_pt(np.array(label.anchors))
         turn = np.abs((angles - label.preferred + 180) % 360 - 180)
         order = angles[np.lexsort((angles, turn))]
