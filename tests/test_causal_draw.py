@@ -203,14 +203,14 @@ def test_labels_touch_nothing_and_sit_by_their_markers(name, v, style):
     assert _label_problems(drawn(name, v, style).figure, style) == []
 
 
-@pytest.mark.parametrize("name, v", [("fig1", 0.95), ("fig2", 0.3), ("fig2", 0.6)])  # the slides that collided:
-def test_labels_touch_nothing_in_slides(name, v):  # a label across a leader, on a front, S' squeezed by S's title
+@pytest.mark.parametrize("name, v", [("fig1", 0.95), ("fig2", 0.6)])  # slides that collided: a label across a
+def test_labels_touch_nothing_in_slides(name, v):  # leader, on a front, S' squeezed to a third by S's long title
     assert _label_problems(drawn(name, v, "slides").figure, "slides") == []
 
 
 def test_labels_of_both_rods_sit_on_no_front():
-    """fig1 at 0.95 with both rods: the causal row's A₂ sat on a light front (fronts were guides then)."""
-    assert _label_problems(both("fig1", 0.95, "default").figure, "default") == []
+    """fig1 at 0.95 with both rods, frame S: the causal row's A′₂ sat on a light front (fronts were guides then)."""
+    assert _label_problems(both("fig1", 0.95, "default", ("rest",)).figure, "default") == []
 
 
 @pytest.mark.slow
