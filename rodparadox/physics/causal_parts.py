@@ -99,7 +99,7 @@ def _tabulated(invariant, chart, lo: float, hi: float, L: float):
     cuts = set(invariant.breaks(lo, hi))
     if invariant.period is not None:  # where the periodic tail repeats, r may turn a corner the breaks do not list
         n = math.ceil((lo - invariant.tail_start) / invariant.period)
-        cuts.update(s for s in invariant.tail_start + invariant.period * np.arange(max(n, 1), max(n, 1) + 
+        cuts.update(s for s in invariant.tail_start + invariant.period * np.arange(max(n, 1), max(n, 1) +
                     math.ceil((hi - lo) / invariant.period) + 1) if lo < s < hi)
     cuts = [lo, *sorted(cuts), hi]
     xs, cs = [], []
