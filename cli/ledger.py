@@ -162,20 +162,26 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if times is not None:
         raise OptionError("at", at, TABLE_FORMATS, "{what} selects the slices of a table ({choices}); a figure shows "
                                                    "every instant.")
-    if rod_asked() in ("causal", "both") or load_scenario(scenario, v, L).rod == "causal":
-        raise BadInput("the ledger figure draws the rigid rod only for now; give the causal rod's ledger as a table "
-                       "(--format text, json, csv, markdown or latex).")
+    rod = rod_asked()
     described = planned.Outputs(formats=FIGURE_FORMATS, default="svg", kind="ledger")  # as plot's, named _ledger
-    jobs = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style)
-    histories = [run_scenario(job.scenario, job.name, job.frames[0]) for job in jobs]
+    jobs = planned.plan([scenario], described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style,
+                        extras=[rod] if rod in ("causal", "both") else [])  # fig1_ledger_causal.svg
+    if rod == "both" and any(len(job.frames[0]) > 4 for job in jobs):
+        raise OptionError("frame", frame, template="{what}: the ledger figure of both rods takes at most 4 frames "
+                                                   "(a row of each rod per frame); give fewer.")
+    histories = [(run_scenario(job.scenario, job.name, job.frames[0]),) for job in jobs]
+    if rod == "both":  # the causal rod's beside the rigid one
+        histories = [(rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, job.frames[0]))
+                     for (rigid,), job in zip(histories, jobs)]
     planned.prepare(jobs, described, output)
 
     before_matplotlib()
     from rodparadox import render
     from rodparadox.render import ledger_figure  # matplotlib: only now, after every input has been checked
 
-    for history, job in zip(histories, jobs):
-        figure = ledger_figure.draw(history, job.frames[0], style)
+    for run, job in zip(histories, jobs):
+        figure = (ledger_figure.draw_both(*run, job.frames[0], style) if len(run) == 2
+                  else ledger_figure.draw(run[0], job.frames[0], style))
         report(((path, write_atomic(path, render.figure_bytes(figure, f, style))) for f, path in job.paths.items()),
                quiet)
 

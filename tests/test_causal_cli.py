@@ -90,9 +90,3 @@ def test_commands_not_yet_drawing_the_causal_rod_refuse_it(command, name, tmp_pa
     out = run("events", "fig1", "--rod", "both", expect=2).output
     assert "does not take --rod both (the two rods side by side) yet" in out
 
-
-def test_ledgers_figure_refuses_the_causal_rod_for_now(tmp_path):
-    out = run("ledger", "fig1", "--rod", "causal", "-o", str(tmp_path / "x.svg"), expect=2).output
-    assert out == ("Error: the ledger figure draws the rigid rod only for now; give the causal rod's ledger as a "
-                   "table (--format text, json, csv, markdown or latex).\n")
-    assert list(tmp_path.iterdir()) == []

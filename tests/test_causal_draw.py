@@ -191,8 +191,8 @@ def test_the_titles_give_the_ringing_rods_centre_of_momentum_velocity():
 
 def _label_problems(fig, style) -> list:
     renderer = _renderer(fig, style)
-    # fronts are guides (a label may sit on one on a white ground, as on an extra's line)
-    return [p for p in _collisions(fig, style, renderer) if "-front-" not in str(p[1])] + _far_labels(fig, style, renderer)
+    # a front is a line like any other: no label sits on one (over the shading it may)
+    return _collisions(fig, style, renderer) + _far_labels(fig, style, renderer)
 
 
 @pytest.mark.slow
@@ -203,9 +203,15 @@ def test_labels_touch_nothing_and_sit_by_their_markers(name, v, style):
     assert _label_problems(drawn(name, v, style).figure, style) == []
 
 
-@pytest.mark.parametrize("v", [0.3, 0.6])  # at 0.95 S′'s A′₁ sits across A′₂'s leader: the slide's type is large
-def test_labels_touch_nothing_in_slides(v):
-    assert _label_problems(drawn("fig1", v, "slides").figure, "slides") == []
+def test_labels_touch_nothing_in_slides():
+    """fig2 at 0.6 in slides collided every way: labels on fronts, across leaders, S' squeezed to a third by S's
+    long title (every preset at 0.01 to 0.99 in every style was checked by hand; this is the worst of them)."""
+    assert _label_problems(drawn("fig2", 0.6, "slides").figure, "slides") == []
+
+
+def test_labels_of_both_rods_sit_on_no_front():
+    """fig1 at 0.95 with both rods, frame S: the causal row's A′₂ sat on a light front (fronts were guides then)."""
+    assert _label_problems(both("fig1", 0.95, "default", ("rest",)).figure, "default") == []
 
 
 @pytest.mark.slow
@@ -231,7 +237,7 @@ def test_the_extreme_speeds_draw_and_keep_their_labels_apart(v):
     assert gids(fig, "a-compression") == ["a-compression"]
     legend = " ".join(t.get_text() for t in fig.legends[0].get_texts())
     assert "e+" not in legend and "e-" not in legend
-    assert [p for p in _collisions(fig, "default") if "-front-" not in str(p[1])] == []
+    assert _collisions(fig, "default") == []
 
 
 # --- the command line -----------------------------------------------------------------------------------------
@@ -322,13 +328,16 @@ def test_the_printed_ledgers_rows_add_up_to_their_total_within_the_printed_round
     assert "real, local version of the rigid model" in out.replace("\n  ", " ").replace("\n", " ")
 
 
-def test_ledger_both_gives_the_rigid_ledger_then_the_causal_one_and_the_figure_waits():
+def test_ledger_both_gives_the_rigid_ledger_then_the_causal_one_and_the_figure_is_drawn(tmp_path):
     result = CliRunner().invoke(main, ["ledger", "single", "--rod", "both", "--frame", "rest"])
     assert result.exit_code == 0, result.output
     out = result.output
     assert out.index("hidden") < out.index("the causal rod") and "rod, stress" in out
-    result = CliRunner().invoke(main, ["ledger", "single", "--rod", "causal", "--format", "svg", "-o", "-"])
-    assert result.exit_code == 2 and "Traceback" not in result.output and result.output.count(".") <= 2
+    # the figure is no longer refused (test_causal_look checks what it draws); named after its rod, as plot's
+    result = CliRunner().invoke(main, ["ledger", "single", "--rod", "causal", "--frame", "rest", "--format", "svg",
+                                       "-o", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert result.output == f"{tmp_path / 'single_ledger_rest_causal.svg'}\n"
 
 
 @pytest.mark.parametrize("lam, text", [(114.63, "115"), (6.49, "6.5"), (1.0, "1.0"), (0.381, "0.38"),

@@ -233,7 +233,8 @@ def _hex(rgba) -> str:
 
 @dataclass(frozen=True)
 class Fronts(CausalLayer):
-    """The light fronts that carry each disturbance across the causal rod: thin light lines from end to end."""
+    """The light fronts that carry each disturbance across the causal rod: thin light lines from end to end, which
+    no label may cross."""
 
     name = "fronts"
 
@@ -246,7 +247,8 @@ class Fronts(CausalLayer):
             segment = segment / panel.L
             drawn.append(panel.plot(ax, segment, panel.style.front, 3.2, f"{panel.letter}-front-{k}"))
             segments.append(segment)
-        return LayerArtists(artists=tuple(drawn), guides=tuple(segments))
+        # obstacles: a label on a front would hide where the signal runs (over the shading it may sit)
+        return LayerArtists(artists=tuple(drawn), obstacles=tuple(segments))
 
     def legend_entry(self, style, history, options, clock_step=None):
         if not is_causal(history):

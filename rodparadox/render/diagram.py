@@ -242,7 +242,7 @@ class _Builder:
                 x += p.width + m.gap
                 ax.set_gid(f"{p.letter}-axes")
                 drawn = draw_panel(ax, p, step, m, self.history, self.style, self.options, self.clock_step,
-                                   self.rod_lines[p.letter])
+                                   self.rod_lines[p.letter], crowded=self.per_row is not None)
                 for name, layer_artists in drawn.items():
                     artists.setdefault(name, {})[p.letter] = layer_artists
                 infos.append(PanelInfo(p.view.frame, p.letter, tuple(p.data_box), tuple(p.box), ax))

@@ -70,8 +70,9 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     Crossing a guide (an extra's line) costs as much as three rings outwards,
     and such a label gets a white ground; crossing anything else is a last resort.
     A leader is 0.6 pt wide for a label of `impact_size` in a style of 9 pt type, scaled with both.
-    `crowded` (the causal rod: contacts, separations and re-contacts at one end): two more rings, and a
-    candidate whose leader would cross a placed label or marker costs as a hundred guides.
+    `crowded` (the causal rod: contacts, separations and re-contacts at one end): four more rings, and a
+    candidate whose leader would cross a marker costs as a hundred guides, one whose leader would cross a placed
+    label is blocked as by a line.
     """
     x0, x1, t0, t1 = frame.box
     sx, st_ = frame.width / (x1 - x0), frame.height / (t1 - t0)  # points per unit of L (equal, up to rounding)
@@ -91,13 +92,18 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
 
     hard, soft = segments_of(obstacles), segments_of(guides)
     taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
+    markers = len(taken)  # the markers' boxes, then each placed label's
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
-    radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0] + ([56.0, 67.0] if crowded else []))
+    radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0] + ([56.0, 67.0, 79.0, 92.0] if crowded else []))
     angles = np.arange(0.0, 360.0, 15.0)
     never = 10 ** 9
     drawn: list[tuple] = []
     for label in labels:
-        w, h = label.box_size or text_size(label.text, label.size, label.italic)[:2]
+        if label.box_size:
+            w, h = label.box_size
+        else:  # crowded: as tall as a line of its type (a text's drawn box, its ground's too), not as its glyphs
+            w, h = text_size(label.text, label.size, label.italic)[:2]
+            h = max(h, label.size) if crowded else h
         anchors = to_pt(np.array(label.anchors))
         turn = np.abs((angles - label.preferred + 180) % 360 - 180)
         order = angles[np.lexsort((angles, turn))]
@@ -116,7 +122,7 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                   & (boxes[:, 3] <= frame.height - edge))
         cost = np.full(len(boxes), never)
         crossed_guides = np.zeros(len(boxes), dtype=int)
-        for first, last in ((0, 3), (3, 6), (6, 9), (9, len(radii))):  # nearest rings first; stop once one is free
+        for first, last in ((0, 3), (3, 6), (6, 9), (9, 11), (11, len(radii))):  # nearest rings first; stop once one is free
             if first >= len(radii):
                 break
             chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
@@ -129,9 +135,10 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
                             & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
             crossed_guides[chunk] = crossings(b, soft)
-            if crowded and label.avoid_radius and taken:  # a leader it would need crossing a label or marker:
-                # free candidates first, then this before a box on a label (a leader across a word is still read)
-                crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken)
+            if crowded and label.avoid_radius and taken:  # a leader it would need crossing a marker or a label:
+                # across a marker, free candidates first (a hundred guides); across a word it strikes it out: blocked
+                crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[:markers])
+                blocked += _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[markers:])
             if label.guides_block:
                 blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
             cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]

@@ -353,11 +353,9 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
     width = figure_width(rows, wide, height)
     for row in rows:
         spare = width - row_width(row, height)  # room the figure has anyway (a wide legend): titles may use it
-        row_widths = []
-        for p, w in zip(row, widths(row, height)):
-            grow = min(max(0.0, m.one_line(p.title) - w), spare)
-            row_widths.append(w + grow)
-            spare -= grow
+        # the causal rod's long titles ("finally at ..., ringing") share the room; the rigid rod's figures keep theirs
+        fair = per_row is not None or getattr(history, "kind", "") == "causal"
+        row_widths = _share(widths(row, height), [m.one_line(p.title) for p in row], spare, fair)
         for p, w in zip(row, row_widths):
             p.height, p.width = height, w
             p.box = list(p.data_box)
@@ -368,3 +366,26 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
             p.title_lines = m.wrap(p.title, w)
     m.gutters, m.rights = gutters, rights
     return rows, height, width, legend(rows, wide)[:2]
+
+
+def _share(widths: list[float], wanted: list[float], spare: float, fair: bool = True) -> list[float]:
+    """The panels' widths grown towards `wanted` (their titles on one line) out of `spare` points, shared evenly
+    among those still wanting (water-filling: a first panel's long title no longer takes all the room, leaving
+    its neighbour's title on three lines and its labels crowded); not `fair`: first come, first served."""
+    out = list(widths)
+    if not fair:
+        for k in range(len(out)):
+            grow = min(max(0.0, wanted[k] - out[k]), spare)
+            out[k] += grow
+            spare -= grow
+        return out
+    for _ in range(len(out)):
+        wanting = [k for k in range(len(out)) if wanted[k] - out[k] > 1e-9]
+        if not wanting or spare <= 1e-9:
+            break
+        share = spare / len(wanting)
+        for k in wanting:
+            grow = min(wanted[k] - out[k], share)
+            out[k] += grow
+            spare -= grow
+    return out

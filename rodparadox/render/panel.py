@@ -15,10 +15,13 @@ from rodparadox.render.text import axis_label, coordinate_names, tick_text, tick
 
 
 def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: History, style: Style,
-               options: Options, clock_step: float, rod_lines: int | None = None) -> dict[str, tuple]:
+               options: Options, clock_step: float, rod_lines: int | None = None,
+               crowded: bool = False) -> dict[str, tuple]:
     """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name,
     and the magnified inset's (`inset`) when the world-sheet is thin on the page (`legibility.inset_plan`).
-    `rod_lines`: the material lines to draw (the diagram thins them to what the panel holds); None: as asked."""
+    `rod_lines`: the material lines to draw (the diagram thins them to what the panel holds); None: as asked.
+    `crowded`: labels placed as for the causal rod's crowded ends (`labels.place`), as the causal rod's own panels
+    always are (a figure of both rods: its rigid rows too, drawn small beside them)."""
     _axes(ax, p, steps, m)
     history = p.history if p.history is not None else history
     if rod_lines is None and options.rod_lines:
@@ -38,7 +41,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Hi
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size, crowded=is_causal(history))
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or is_causal(history))
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     if options.insets:
