@@ -269,12 +269,20 @@ class Solution:
 
     def __init__(self, L: float, plus: Invariant, minus: Invariant, events: list, riders: dict):
         self.L, self.plus, self.minus, self.events, self.riders = L, plus, minus, events, riders
+        self._a: dict[float, float] = {}  # the chart map at each u and w read: every frame, every layer and
+        self._b: dict[float, float] = {}  # the contacts (the ends' own curves) read the same chart times again
 
     def a(self, u: float) -> float:
-        return -0.5 * self.L + self.plus.integrals(u)[0]
+        value = self._a.get(u)
+        if value is None:
+            value = self._a[u] = -0.5 * self.L + self.plus.integrals(u)[0]
+        return value
 
     def b(self, w: float) -> float:
-        return 0.5 * self.L + self.minus.integrals(w)[0]
+        value = self._b.get(w)
+        if value is None:
+            value = self._b[w] = 0.5 * self.L + self.minus.integrals(w)[0]
+        return value
 
     def r_plus(self, u: float) -> float:
         return self.plus.r(u)
