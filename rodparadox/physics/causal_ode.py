@@ -95,9 +95,23 @@ class Solved:
         return st.minus0 + 0.5 * (st.b - st.a) * _clenshaw(st.minus, st.x(s))
 
 
-def _tail(coef: np.ndarray, scale: float) -> bool:
-    """The interpolant is the function to the tolerance: its last three coefficients are negligible."""
-    return float(np.max(np.abs(coef[-3:]))) <= ODE_RTOL * scale
+def _tail(coef: np.ndarray, scale: float, noise: float = 0.0) -> bool:
+    """The interpolant is the function to the tolerance (relative to `scale`, or the input's own `noise` where
+    that is larger): its last three coefficients are negligible."""
+    return float(np.max(np.abs(coef[-3:]))) <= max(ODE_RTOL, noise) * scale
+
+
+def _roughness(inp, lo: float, hi: float) -> float:
+    """Ten times the rounding noise of the input (in units of r): its last Chebyshev coefficients on spans far too
+    short for the smooth part to reach them, at the start, the middle and the end. No step makes the solution
+    smoother than its input: where the input is known to less than the tolerance (a contact's closed form near
+    lam's extremes loses digits), this sets the tolerance instead."""
+    span = 1e-9 * (hi - lo)
+    worst = 0.0
+    for a in (lo, 0.5 * (lo + hi) - 0.5 * span, hi - span):
+        r_in = np.array([inp.r(float(x)) for x in a + 0.5 * span * (_X + 1.0)])
+        worst = max(worst, float(np.max(np.abs((_TO_COEF @ r_in)[-3:]))))
+    return 10.0 * worst
 
 
 def _collocate(r_in: np.ndarray, psi_a: float, half: float, c: float) -> np.ndarray | None:
@@ -132,6 +146,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float) -> tuple[Sol
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
     halvings = 0
+    noise = _roughness(inp, lo, hi)
     while a < hi:
         b = hi if a + h >= hi else a + h
         s = a + 0.5 * (b - a) * (_X + 1.0)
@@ -142,8 +157,8 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float) -> tuple[Sol
             out = r_in - 2.0 * psi
             ep, em = np.exp(out), np.exp(-out)
             cp, cep, cem = _TO_COEF @ psi, _TO_COEF @ ep, _TO_COEF @ em
-            good = (_tail(cp, max(1.0, float(np.max(np.abs(psi))))) and _tail(cep, float(np.max(ep)))
-                    and _tail(cem, float(np.max(em))))
+            good = (_tail(cp, max(1.0, float(np.max(np.abs(psi)))), noise) and _tail(cep, float(np.max(ep)), noise)
+                    and _tail(cem, float(np.max(em)), noise))
         if psi is None or not good:
             halvings += 1
             if halvings > MAX_HALVINGS:
