@@ -6,8 +6,8 @@
    against the same command on the rigid rod. `plot fig1 --rod causal` against `plot fig1` (target <= 1.5) where
    plot draws the causal rod; until then (plot refuses it, exit status 2) `events` and `export`, which run it; and
    `handout --rod both` against `handout`.
-2. In this process: the causal solve alone (`physics.causal.run`) against the rigid engine's run, scipy's import
-   timed apart (a process pays it once), and a profile of the solve: where its time goes.
+2. In this process: the causal solve alone (`physics.causal.run`) against the rigid engine's run, the import of
+   the causal modules timed apart (a process pays it once), and a profile of the solve: where its time goes.
 
 It prints the ratios of median wall-clock times, of the best (minimum) wall-clock times and of median CPU times
 (user + system, which other jobs on the machine disturb least).
@@ -53,13 +53,12 @@ def timed(args: list[str], cwd: Path) -> tuple[float, float, int]:
 
 def in_process(name: str, repeat: int) -> None:
     """The causal solve against the rigid run, in this process, and its profile."""
-    t0 = time.perf_counter()
-    import scipy.integrate  # noqa: F401  (what the first causal run of a process pays once)
-    scipy_import = time.perf_counter() - t0
-
     from rodparadox.io.scenario import load
-    from rodparadox.physics.causal import run as run_causal
     from rodparadox.physics.engine import run as run_rigid
+
+    t0 = time.perf_counter()
+    from rodparadox.physics.causal import run as run_causal  # what the first causal run of a process pays once
+    causal_import = time.perf_counter() - t0
 
     scenario = load(name)
     causal = scenario.with_overrides(rod="causal")
@@ -74,7 +73,7 @@ def in_process(name: str, repeat: int) -> None:
 
     run_causal(causal)  # warm: every module imported
     rigid_s, causal_s = best(run_rigid, scenario), best(run_causal, causal)
-    print(f"in this process, {name}: scipy's import {scipy_import:.3f} s (once a process); the rigid run "
+    print(f"in this process, {name}: the causal modules' import {causal_import:.3f} s (once a process); the rigid run "
           f"{rigid_s * 1e3:.1f} ms, the causal solve {causal_s * 1e3:.1f} ms (best of {repeat})")
     profile = cProfile.Profile()
     profile.enable()

@@ -97,6 +97,7 @@ class CausalHistory:
 
     def __init__(self, scenario: Scenario, solution: Solution, starts: dict[str, Event]):
         self.scenario, self.solution = scenario, solution
+        self._end_times: dict[tuple[str, float, float], float] = {}
         self.starts = tuple(sorted(starts.items()))
         L = scenario.L
         first = {"left": math.inf, "right": math.inf}
@@ -159,9 +160,12 @@ class CausalHistory:
     # --- energy and momentum -----------------------------------------------------------------------------------
 
     def end_chart_time(self, end: str, frame_rapidity: float, t: float) -> float:
-        X = 0.0 if end == "left" else self.scenario.L
-        line = ChartCurve(self.solution, X, -math.inf, math.inf, frame_rapidity)
-        return line.chart_time(t)
+        key = (end, frame_rapidity, t)  # each slice's ends are asked for by every layer: found once
+        if key not in self._end_times:
+            X = 0.0 if end == "left" else self.scenario.L
+            line = ChartCurve(self.solution, X, -math.inf, math.inf, frame_rapidity)
+            self._end_times[key] = line.chart_time(t)
+        return self._end_times[key]
 
     def rod_energy_momentum(self, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The rod's (E, p) on the slice t of the frame, from its stress-energy (module docstring), exactly."""

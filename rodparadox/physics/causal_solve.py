@@ -15,7 +15,7 @@ left, -th at the right) and delta = ln lam at the end, both ends read alike (der
   frame (m d th / d tau = -p at the left end, +p at the right, d tau = dT / lam):
   d psi / dT = -(mu/L) sinh(psi - in),  mu = M/m,  delta = psi - in,  out = in - 2 psi = -in - 2 delta.
   With `in` constant: tanh(delta/2) = k exp(-mu (T - T0)/L), k = tanh(delta0/2) (closed form, `_Contact`);
-  otherwise solve_ivp (DOP853, rtol 1e-12, `_Ode`), with the integrals of exp(+-out) as extra components.
+  otherwise Chebyshev collocation to 1e-12 relative with the integrals of exp(+-out) (`causal_ode`).
 * contact starts where the particle's world-line meets the free end's (a root of an exact expression), with
   delta0 = psi_particle - in > 0 (lam jumps to the Doppler factor); it ends where delta reaches 0 (an ODE event)
   or where a front arriving in `in` leaves delta <= 0 (lam never falls below 1: no adhesion).
@@ -35,9 +35,7 @@ import math
 from dataclasses import dataclass, field
 
 from rodparadox.errors import ScenarioError
-
-#: the relative tolerance of the contact ODE (issue 16: 1e-12 relative); the absolute one is scaled by L
-ODE_RTOL = 1e-12
+from rodparadox.physics.causal_ode import falling_root, solve_contact
 #: windows of chart time L processed before a scenario is refused as never settling
 MAX_WINDOWS = 5000
 
@@ -89,25 +87,6 @@ class _Contact:
     def em(self, s: float) -> float:
         q, q0 = self.q(s), self.k
         return math.exp(self.r_in) * ((s - self.lo) + 4.0 / self.c * (q0 - q) / ((1.0 - q) * (1.0 - q0)))
-
-
-class _Ode:
-    """An end in contact while its input varies: the dense solution of [psi, int exp(out), int exp(-out)]."""
-
-    def __init__(self, lo: float, hi: float, r_in, sol):
-        self.lo, self.hi, self.r_in, self.sol = lo, hi, r_in, sol
-
-    def psi(self, s: float) -> float:
-        return float(self.sol(s)[0])
-
-    def r(self, s: float) -> float:
-        return self.r_in(s) - 2.0 * float(self.sol(s)[0])
-
-    def ep(self, s: float) -> float:
-        return float(self.sol(s)[1])
-
-    def em(self, s: float) -> float:
-        return float(self.sol(s)[2])
 
 
 class _View:
@@ -290,12 +269,20 @@ class Solution:
 
     def __init__(self, L: float, plus: Invariant, minus: Invariant, events: list, riders: dict):
         self.L, self.plus, self.minus, self.events, self.riders = L, plus, minus, events, riders
+        self._a: dict[float, float] = {}  # the chart map at each u and w read: every frame, every layer and
+        self._b: dict[float, float] = {}  # the contacts (the ends' own curves) read the same chart times again
 
     def a(self, u: float) -> float:
-        return -0.5 * self.L + self.plus.integrals(u)[0]
+        value = self._a.get(u)
+        if value is None:
+            value = self._a[u] = -0.5 * self.L + self.plus.integrals(u)[0]
+        return value
 
     def b(self, w: float) -> float:
-        return 0.5 * self.L + self.minus.integrals(w)[0]
+        value = self._b.get(w)
+        if value is None:
+            value = self._b[w] = 0.5 * self.L + self.minus.integrals(w)[0]
+        return value
 
     def r_plus(self, u: float) -> float:
         return self.plus.r(u)
@@ -317,9 +304,6 @@ def _end_coordinates(sol_a, sol_b, end: str, T: float, L: float) -> tuple[float,
 
 def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_first: float) -> Solution:
     """Run the rod from chart time T_first (the first contact; before it the rod rests unstressed)."""
-    from scipy.integrate import solve_ivp  # only a causal rod needs an integrator
-    from scipy.optimize import brentq
-
     plus, minus = Invariant(), Invariant()
     # undisturbed before the first contact; the windows start one crossing time early
     plus.append(_Const(T_first - 2 * L, T_first, 0.0))
@@ -368,7 +352,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
         for T in grid[1:]:
             g = gap(rider, T)
             if prev_g > 0.0 and g <= 0.0:
-                return brentq(lambda s: gap(rider, s), prev_T, T, xtol=1e-15 * (L + abs(T)), rtol=8.9e-16)
+                return falling_root(lambda s: gap(rider, s), prev_T, T, 1e-15 * (L + abs(T)), 8.9e-16)
             prev_T, prev_g = T, g
         return None
 
@@ -403,7 +387,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                             state[end] = piece.psi(hi)
                             T = hi
                             continue
-                        piece, T_sep = _ode_piece(solve_ivp, T, hi, inp, psi, c, L)
+                        piece, T_sep = solve_contact(T, hi, inp, psi, c)
                         out_append(end, piece)
                         if T_sep is None:
                             state[end] = piece.psi(hi)
@@ -470,26 +454,3 @@ def _separate(rider, end, T, psi, r_in, events, state, a_of, b_of, L) -> float:
     events.append(ContactEvent("separation", rider.name, end, T, rider.contacts, rider.th, rider.th, side * r_in))
     rider.t0, rider.x0 = 0.5 * (U + V), 0.5 * (U - V)  # it leaves on a straight line from here
     return T
-
-
-def _ode_piece(solve_ivp, lo: float, hi: float, inp, psi0: float, c: float, L: float):
-    """Integrate d psi/dT = -c sinh(psi - in(T)) with int exp(out), int exp(-out) from lo to hi, stopping where
-    delta = psi - in reaches 0 (the end unstressed: the particle leaves)."""
-
-    def rhs(T, y):
-        r_in = inp.r(T)
-        out = r_in - 2.0 * y[0]
-        return [-c * math.sinh(y[0] - r_in), math.exp(out), math.exp(-out)]
-
-    def unstressed(T, y):
-        return y[0] - inp.r(T)
-
-    unstressed.terminal, unstressed.direction = True, -1
-    atol = [ODE_RTOL * 1e-3, ODE_RTOL * 1e-3 * L, ODE_RTOL * 1e-3 * L]
-    sol = solve_ivp(rhs, (lo, hi), [psi0, 0.0, 0.0], method="DOP853", rtol=ODE_RTOL, atol=atol,
-                    dense_output=True, events=unstressed)
-    if sol.status == -1:
-        raise ScenarioError(f"the contact of a particle with the rod could not be integrated ({sol.message}).")
-    T_sep = float(sol.t_events[0][0]) if sol.t_events[0].size else None
-    end = T_sep if T_sep is not None else hi
-    return _Ode(lo, end, inp.r, sol.sol), T_sep

@@ -9,7 +9,7 @@ from rodparadox.physics.model import Scenario
 
 def run_rod(scenario: Scenario):
     """The history of the scenario in its rod model: `engine.History` (rigid) or `causal.CausalHistory`; both
-    implement `history.RodHistory`. The causal rod's module (and scipy) is imported only when asked for."""
+    implement `history.RodHistory`. The causal rod's modules are imported only when asked for."""
     if scenario.rod == "causal":
         from rodparadox.physics.causal import run
 
