@@ -29,11 +29,14 @@ def data_json(data: dict) -> str:
         "<", "\\u003c")
 
 
-def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default") -> str:
-    """The whole page for the scenarios (name as the user gave it, scenario with --v and --L applied)."""
+def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default", shown: str | None = None) -> str:
+    """The whole page for the scenarios (name as the user gave it, scenario with --v and --L applied); `shown`:
+    the rod it opens on, rigid, causal or both (by default each scenario's own `rod`)."""
     if style not in STYLE_NAMES:
         raise ValueError(f"style must be one of {', '.join(STYLE_NAMES)}, got {style!r}")
-    data = page_data(scenarios, style)
+    if shown not in (None, "rigid", "causal", "both"):
+        raise ValueError(f"shown must be rigid, causal or both, got {shown!r}")
+    data = page_data(scenarios, style, shown)
     first = data["scenarios"][0]
     title = " · ".join(s["name"] for s in data["scenarios"])
     about = first["description"] if len(data["scenarios"]) == 1 else "Choose a scenario below."
