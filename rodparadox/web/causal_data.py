@@ -480,5 +480,5 @@ def model_data(history, v: float, frames, reach: float, tolerance: float, materi
         "tables": {"rest": table_rows(history, frames[1]), "moving": table_rows(history, frames[0])},
         "ledger": ledger, "fronts": fronts(history, tables, T_lo, T_hi),
         "cells": cells(history, tables, T_lo, T_hi, compression),
-        "total": [fixed(history.initial_total(0.0).E), fixed(history.initial_total(0.0).p)],
+        "final": history.final_rapidity,
     }

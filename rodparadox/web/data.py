@@ -81,11 +81,6 @@ def fixed(value: float) -> float:
     return round(value, LEDGER_DECIMALS) + 0.0
 
 
-def causal_fixed(value: float) -> float:
-    """A causal ledger number with the 4 decimals the page prints, never -0 (its slices are integrated to 1e-5)."""
-    return round(value, 4) + 0.0
-
-
 def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAWN_DIGITS) -> dict[str, Any]:
     """The world-line's exact segments as points (x, t in units of L, and the rapidity phi there; the polyline within
     `tolerance` L of the curve in S), a kink given twice with the rapidity before and after it, and its rapidity
@@ -144,7 +139,7 @@ def model_data(history, v: float) -> dict[str, Any]:
 
         return causal_data.model_data(history, v, frames[1:2] + frames[:1] + frames[2:], FRAME_REACH,
                                       CAUSAL_LINE_TOLERANCE, MATERIAL_TOLERANCE, DRAWN_DIGITS, MATERIAL_DIGITS,
-                                      LEDGER_INSTANTS, table_rows, causal_fixed)
+                                      LEDGER_INSTANTS, table_rows, fixed)
     worldlines = {name: history.worldline(name) for name in WORLDLINE_NAMES if history.worldline(name) is not None}
     impacts = [{"label": i.label, "name": impact_name(i.label), "particle": i.particle, "end": i.end,
                 "x": i.event.x / L, "t": i.event.t / L, "particle_before": i.particle_rapidity_before,
