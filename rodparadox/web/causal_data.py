@@ -468,11 +468,10 @@ def model_data(history, v: float, frames, reach: float, tolerance: float, materi
     for j, frame in enumerate(frames):
         rows = []
         for k in range(j * instants, (j + 1) * instants):
-            row = [drawn(tt[k] / L, digits)]
-            for name in bodies:
-                row += [fixed(sums[f"{name}_E"][k] - (1.0 if name == "matter" else 0.0) * 0.0), fixed(sums[f"{name}_p"][k])]
-            rows.append(row)
-        ledger.append({"u": frame.velocity + 0.0, "bodies": bodies, "slices": rows})
+            rows.append([fixed(sums[f"{name}_{part}"][k]) for name in bodies for part in ("E", "p")])
+        # the slices evenly spread over the window: the page reads slice k's time from the window, as it is built
+        ledger.append({"u": frame.velocity + 0.0, "bodies": bodies, "slices": rows,
+                       "window": [spans[j, 0] / L, spans[j, 1] / L]})
     return {
         "model": "causal", "impacts": impacts, "worldlines": lines, "material": material,
         "colour_bound": bound, "changes": [[drawn(x, digits), drawn(t, digits)] for x, t in changes_L],

@@ -50,6 +50,10 @@ MATERIAL_TOLERANCE = 1e-3
 #: the causal rod's ends and particles: within 1e-3 L of the curve in every frame up to FRAME_REACH (a fifth of a
 #: pixel on a projector; its curves bend at every contact and ring for ever, and 1e-4 would double the page)
 CAUSAL_LINE_TOLERANCE = 1e-3 / math.exp(math.atanh(FRAME_REACH))
+#: its material lines (three, drawn thin) within 2e-3 L in S; its points with 6 significant digits (a millionth of
+#: the panel, far below a pixel)
+CAUSAL_MATERIAL_TOLERANCE = 2e-3
+CAUSAL_DIGITS = 6
 #: the rod models every page embeds, in the switch's order
 MODELS = ("rigid", "causal")
 #: the ledger's frames (velocities relative to S) besides S', and its instants per frame's time window
@@ -138,7 +142,7 @@ def model_data(history, v: float) -> dict[str, Any]:
         from rodparadox.web import causal_data
 
         return causal_data.model_data(history, v, frames[1:2] + frames[:1] + frames[2:], FRAME_REACH,
-                                      CAUSAL_LINE_TOLERANCE, MATERIAL_TOLERANCE, DRAWN_DIGITS, MATERIAL_DIGITS,
+                                      CAUSAL_LINE_TOLERANCE, CAUSAL_MATERIAL_TOLERANCE, CAUSAL_DIGITS, MATERIAL_DIGITS,
                                       LEDGER_INSTANTS, table_rows, fixed)
     worldlines = {name: history.worldline(name) for name in WORLDLINE_NAMES if history.worldline(name) is not None}
     impacts = [{"label": i.label, "name": impact_name(i.label), "particle": i.particle, "end": i.end,

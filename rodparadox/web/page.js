@@ -588,18 +588,20 @@
   function drawLedger(panel, g, view) {
     const m = g.model;
     let best = m.ledger[0];
+    // a slice's time: its first number, or (the causal rod's) read from the window its slices spread evenly over
+    const timeOf = (f, k) => f.window ? f.window[0] + (f.window[1] - f.window[0]) * k / (f.slices.length - 1) : f.slices[k][0];
     for (const f of m.ledger) if (Math.abs(Math.atanh(f.u) - g.eta) < Math.abs(Math.atanh(best.u) - g.eta)) best = f;
     // in its own frame the slice nearest the now-line; in another, the same fraction of that frame's window
     let k = Math.round(state.time * (best.slices.length - 1));
     if (Math.abs(Math.atanh(best.u) - g.eta) < 1e-12) {
       const now = nowTime(view);
-      best.slices.forEach((row, n) => { if (Math.abs(row[0] - now) < Math.abs(best.slices[k][0] - now)) k = n; });
+      best.slices.forEach((row, n) => { if (Math.abs(timeOf(best, n) - now) < Math.abs(timeOf(best, k) - now)) k = n; });
     }
-    const slice = best.slices[k];
+    const slice = best.slices[k], first = best.window ? 0 : 1;
     const rows = [];
     let E = 0, p = 0;
     best.bodies.forEach((name, b) => {
-      const e = slice[1 + 2 * b], q = slice[2 + 2 * b];
+      const e = slice[first + 2 * b], q = slice[first + 1 + 2 * b];
       E += e; p += q;
       rows.push([BODY[name] || "particle " + name, fixed4(e), fixed4(q)]);
     });
@@ -608,7 +610,7 @@
     const clock = best.u === 0 ? "t" : best.u === -v() ? "t\u2032" : "t\u1d64";
     const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
     const causal = m.model === "causal";
-    fillTable(panel.ledger, `Energy and momentum of the ${m.model} rod on the slice ${clock} = ${shown(slice[0], 4)} L of ${frameU}` +
+    fillTable(panel.ledger, `Energy and momentum of the ${m.model} rod on the slice ${clock} = ${shown(timeOf(best, k), 4)} L of ${frameU}` +
               (exact ? " (of the tabulated slices, the nearest the now-line)" :
                ` (the ledger is tabulated in S\u2032, S and u = ${m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ")}: ` +
                "this is the nearest frame, at the same fraction of its time window)"),
