@@ -315,7 +315,7 @@ def ledger_sums(history, tables: ChartTables, f: np.ndarray, t: np.ndarray) -> d
 #: the rod's matter and stress (E, p) densities, per unit of u along a slice
 PARTS = ("matter_E", "matter_p", "stress_E", "stress_p")
 #: a stretch is halved until its halves agree with it to this (M c^2; the page prints 4 decimals)
-SLICE_TOLERANCE = 1e-7
+SLICE_TOLERANCE = 1e-6
 
 
 def _gauss(tables: ChartTables, f, t, k, lo, hi, w_R, w_L) -> np.ndarray:
@@ -364,7 +364,7 @@ def _invert(table: _Table, target: np.ndarray, k: np.ndarray, lo_k: np.ndarray, 
     if len(target) == 0:
         return np.zeros(0)
     lo, hi = lo_k[k].copy(), hi_k[k].copy()
-    grid = np.linspace(lo.min(), hi.max(), 2049)
+    grid = np.linspace(lo.min(), hi.max(), 257)
     s = np.clip(np.interp(target, table.m(grid), grid), lo, hi)
     for _ in range(100):
         r, m = table.both(s)
