@@ -58,6 +58,8 @@ CAUSAL_DIGITS = 6
 MODELS = ("rigid", "causal")
 #: the ledger's frames (velocities relative to S) besides S', and its instants per frame's time window
 LEDGER_FRAMES = (-0.9, -0.6, -0.3, 0.3, 0.6, 0.9)
+#: the causal rod's (its matter and stress are integrated across each slice: half the frames, half the cost)
+CAUSAL_LEDGER_FRAMES = (-0.6, 0.6)
 LEDGER_INSTANTS = 41
 #: decimals of the ledger's numbers (the ledger prints 4)
 LEDGER_DECIMALS = 5
@@ -141,7 +143,8 @@ def model_data(history, v: float) -> dict[str, Any]:
     if history.kind == "causal":
         from rodparadox.web import causal_data
 
-        return causal_data.model_data(history, v, frames[1:2] + frames[:1] + frames[2:], FRAME_REACH,
+        ledger_frames = (frames[1], frames[0], *(frame_of_velocity(u) for u in CAUSAL_LEDGER_FRAMES if u != -v))
+        return causal_data.model_data(history, v, ledger_frames, FRAME_REACH,
                                       CAUSAL_LINE_TOLERANCE, CAUSAL_MATERIAL_TOLERANCE, CAUSAL_DIGITS, MATERIAL_DIGITS,
                                       LEDGER_INSTANTS, table_rows, fixed)
     worldlines = {name: history.worldline(name) for name in WORLDLINE_NAMES if history.worldline(name) is not None}
