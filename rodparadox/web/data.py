@@ -177,11 +177,12 @@ def model_data(history, v: float) -> dict[str, Any]:
 
 
 def scenario_data(name: str, scenario: Scenario, extra: Sequence[float] = (), shown: str | None = None,
-                  models: Sequence[str] = MODELS) -> dict[str, Any]:
+                  models: Sequence[str] | None = None) -> dict[str, Any]:
     """One scenario at every speed of its grid that the engine runs, in each rod model of `models` (a speed a
     model refuses, or at which some body would move at c in double precision in a frame of the page, is left out
     of that model and named in `left_out`). `shown`: the rod the page opens on (rigid, causal or both; by default
     the scenario's own)."""
+    models = MODELS if models is None else models
     entries, left_out = [], {model: [] for model in models}
     for v in speeds(scenario, extra):
         ran = []
