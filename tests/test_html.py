@@ -230,12 +230,12 @@ def test_causal_lines_and_their_repeated_periods_lie_on_the_exact_world_lines(fi
             points = unrolled(line)
             repeated += len(points) - len(line["x"])
             exact = h.worldline(name)
-            for x, t in points[::max(1, len(points) // 12)] + points[-1:]:
+            for x, t in points[::max(1, len(points) // 6)] + points[-1:]:
                 assert exact.event_at_time(t).x == pytest.approx(x, abs=6e-6 * (1 + abs(x) + abs(t)))  # 6 digits
         eta = math.atanh(-v)  # S': the chords' midpoints against the exact line, boosted
         seen, c, s = h.worldline("rod_right").seen_from(eta), math.cosh(eta), math.sinh(eta)
         boosted = [(c * x - s * t, c * t - s * x) for x, t in unrolled(m["worldlines"]["rod_right"])]
-        for (xa, ta), (xb, tb) in list(zip(boosted, boosted[1:]))[::7]:
+        for (xa, ta), (xb, tb) in list(zip(boosted, boosted[1:]))[::13]:
             if tb - ta > 1e-9:
                 mid = 0.5 * (ta + tb)
                 assert abs(xa + (xb - xa) * (mid - ta) / (tb - ta) - seen.event_at_time(mid).x) < 1.1e-3
@@ -522,7 +522,7 @@ def test_every_control_has_a_label_and_works_from_the_keyboard(opened):
     for _ in range(16):
         opened.tab.keyboard.press("Tab")
         reached.add(opened.tab.evaluate("document.activeElement.id"))
-    assert {"speed", "frame", "frame-rest", "frame-moving", "time", "play", "cones", "style"} <= reached
+    assert {"rod-rigid", "speed", "frame", "frame-rest", "frame-moving", "time", "play", "cones", "style"} <= reached
     before = opened.state()
     opened.press("speed", "ArrowLeft")
     assert opened.state()["speed"] == before["speed"] - 1
@@ -556,5 +556,59 @@ def test_the_layout_follows_the_window_in_every_style(browser, page_file, screen
             x, y = tab.tab.evaluate("[window.searsParadox.column(-0.5), window.searsParadox.row(0.3)]")  # S: at rest
             assert tab.pixel(x, y)[:3] == [int(rod[k:k + 2], 16) for k in (1, 3, 5)]
             tab.tab.screenshot(path=str(screenshots / f"fig2_{viewport['width']}_{style}.png"), full_page=True)
+        finally:
+            tab.close()
+
+
+def markdown_rows(text: str, heading: str) -> dict[str, list[str]]:
+    """The rows of the Markdown table under `heading` in `events --format markdown`, by their first cell."""
+    part = text.split(heading, 1)[1].split("\n\n", 2)[1]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in part.splitlines()[2:]]
+    return {row[0]: row for row in rows if row and row[0]}
+
+
+def test_the_rod_switch_from_the_keyboard_and_the_causal_contacts_and_separations_in_s_prime(opened, fig2_data,
+                                                                                              screenshots):
+    """The rod radio buttons by the arrow keys: rigid -> causal -> both. At v = 0.6 in S' the causal table is
+    `events --rod causal --v 0.6`'s S' table, row by row, and A1 and B1 sit on the pixel row of t' = 17/12."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("frame-moving", "Enter")
+    assert opened.state()["rod"] == "rigid" and opened.tab.is_hidden("#panel-2")
+    opened.press("rod-rigid", "ArrowRight")
+    assert opened.state()["rod"] == "causal" and opened.tab.is_checked("#rod-causal")
+    assert opened.tab.is_hidden("#panel-2") and "causal" in opened.tab.inner_text("#panel-1-heading")
+    printed = markdown_rows(run("events", "fig2", "--rod", "causal", "--v", "0.6", "--format", "markdown").output,
+                            "**The impacts in frame S\u2032**")
+    rows = opened.rows("events")
+    assert rows == printed and len(rows) == 8
+    assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)" and rows["A1s"][3] == "+2.652648"
+    dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
+    row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
+    assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
+    assert [name for name, *_ in opened.rows("ledger").values()][2:4] == ["rod, matter",
+                                                                          "rod, stress (the real hidden momentum)"]
+    opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_moving_causal.png"), full_page=True)
+    opened.press("rod-causal", "ArrowRight")
+    assert opened.state()["rod"] == "both" and opened.tab.is_visible("#panel-2")
+    assert opened.rows("events-2") == printed and opened.rows("events")["A\u2081"][3] == "+1.416667 (17/12)"
+    assert len(opened.rows("events")) == 3  # the rigid rod's B1, A1, B2 beside it
+
+
+def test_rigid_causal_and_both_on_a_projector_and_a_phone(browser, page_file, screenshots):
+    """Each rod in each window: nothing wider than the window; both side by side on a projector, one under the
+    other on a phone; a screenshot of the causal rod and of both (the rigid rod's: `test_the_layout_follows...`)."""
+    for viewport, name in (({"width": 1920, "height": 1080}, "projector"), ({"width": 390, "height": 844}, "phone")):
+        tab = Opened(browser, page_file, viewport)
+        try:
+            tab.press("frame-moving", "Enter")
+            for rod, keys in (("rigid", ()), ("causal", ("ArrowRight",)), ("both", ("ArrowRight",))):
+                tab.press(f"rod-{tab.state()['rod']}", *keys)
+                assert tab.state()["rod"] == rod
+                assert tab.tab.evaluate("document.documentElement.scrollWidth <= window.innerWidth + 1")
+                if rod != "rigid":
+                    tab.tab.screenshot(path=str(screenshots / f"fig2_{name}_{rod}.png"), full_page=True)
+            one, two = (tab.tab.locator(f"#panel-{k}").bounding_box() for k in (1, 2))
+            assert (one["y"] == two["y"]) == (name == "projector") and (two["y"] >= one["y"] + one["height"]) == \
+                (name == "phone")
         finally:
             tab.close()

@@ -133,23 +133,25 @@
 
   // The causal rod's cells of compression in the frame of rapidity eta: each edge u_i (w_j) at t + x = e^-eta a_i
   // (t - x = e^eta b_j); cell (i, j) lies in the rod where 0 < u - w < 2 (X between 0 and L); its shade from
-  // ln lam = -(r+_i + r-_j)/2 on the figures' two-sided scale. Corners as (x, t), grouped by shade.
+  // ln lam = -(r+_i + r-_j)/2 on the figures' two-sided scale. Which cells and their shades are the same in every
+  // frame: found once per model (i, j, shade); a frame only scales the edges.
   const SHADES = 64;
-  function causalCells(cells, eta) {
-    const U = cells.a.map((a) => Math.exp(-eta) * a), V = cells.b.map((b) => Math.exp(eta) * b);
-    const [low, high] = [Math.min(cells.ln_lam[0], -1e-3), Math.max(cells.ln_lam[1], 1e-3)];
-    const byShade = Array.from({length: SHADES}, () => []);
+  function keptCells(cells) {
+    if (cells.kept) return cells.kept;
+    const [low, high] = [Math.min(cells.ln_lam[0], -1e-3), Math.max(cells.ln_lam[1], 1e-3)], kept = [];
     for (let i = 0; i + 1 < cells.u.length; i++) {
       for (let j = 0; j + 1 < cells.w.length; j++) {
         if (!(cells.u[i + 1] - cells.w[j] > 0 && cells.u[i] - cells.w[j + 1] < 2)) continue;
         const lnLam = -0.5 * (cells.r_plus[i] + cells.r_minus[j]);
         const f = lnLam < 0 ? 0.5 * (lnLam - low) / -low : 0.5 + 0.5 * lnLam / high;
-        const shade = Math.max(0, Math.min(SHADES - 1, Math.floor(f * SHADES)));
-        byShade[shade].push((U[i] - V[j]) / 2, (U[i] + V[j]) / 2, (U[i + 1] - V[j]) / 2, (U[i + 1] + V[j]) / 2,
-                            (U[i + 1] - V[j + 1]) / 2, (U[i + 1] + V[j + 1]) / 2, (U[i] - V[j + 1]) / 2, (U[i] + V[j + 1]) / 2);
+        kept.push(i, j, Math.max(0, Math.min(SHADES - 1, Math.floor(f * SHADES))));
       }
     }
-    return {U, V, byShade, low, high};
+    cells.kept = Int32Array.from(kept);
+    return cells.kept;
+  }
+  function causalCells(cells, eta) {
+    return {U: cells.a.map((a) => Math.exp(-eta) * a), V: cells.b.map((b) => Math.exp(eta) * b), kept: keptCells(cells)};
   }
   // A shade's colour: the compression scale (stretched, unstressed as the sheet, compressed), linear between.
   function shadeColour(stops, f) {
@@ -201,7 +203,8 @@
 
   function canvasSized(canvas, width, height) {
     const ratio = window.devicePixelRatio || 1;
-    canvas.style.width = width + "px"; canvas.style.height = height + "px";
+    if (canvas.style.width !== width + "px") canvas.style.width = width + "px";  // a style written is a layout
+    if (canvas.style.height !== height + "px") canvas.style.height = height + "px";
     if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
       canvas.width = Math.round(width * ratio); canvas.height = Math.round(height * ratio);
     }
@@ -216,7 +219,7 @@
   function layout(panel, box) {
     const size = fontSize();
     const margin = {left: 4.2 * size, right: 1.2 * size, top: 2.4 * size, bottom: 2.8 * size};
-    const holder = panel.box;
+    const holder = {clientWidth: panel.width};  // measured before any drawing (`drawPanels`)
     const avail = Math.max(holder.clientWidth - margin.left - margin.right, 120);
     const share = state.style === "slides" ? 0.8 : 0.62;  // on a projector the diagram is the point
     const tallest = Math.max(window.innerHeight * share - margin.top - margin.bottom, 120);
@@ -253,26 +256,24 @@
   function drawCells(ctx, place, g, st, sheet) {
     const sign = [g.key, state.style, place.scale, place.column(0), place.row(0)].join("/");
     if (!g.paths || g.paths.sign !== sign) {
-      const [lo, hi] = [place.box[2], place.box[3]], paths = [];
-      g.cells.byShade.forEach((q, shade) => {
-        if (!q.length) return;
-        const path = new Path2D();
-        for (let k = 0; k < q.length; k += 8) {
-          const ts = [q[k + 1], q[k + 3], q[k + 5], q[k + 7]];
-          if (Math.max(...ts) < lo || Math.min(...ts) > hi) continue;
-          path.moveTo(place.column(q[k]), place.row(q[k + 1]));
-          for (let c = 2; c < 8; c += 2) path.lineTo(place.column(q[k + c]), place.row(q[k + c + 1]));
-          path.closePath();
-        }
-        paths.push([shadeColour(st.compression, (shade + 0.5) / SHADES), path]);
-      });
-      g.paths = {sign, paths};
+      // in pixels, a point (U, V) is at column(0) + scale (U - V)/2, row(0) - scale (U + V)/2: each edge's share once
+      const {U, V, kept} = g.cells, h = place.scale / 2, c0 = place.column(0), r0 = place.row(0);
+      const uc = U.map((x) => h * x), vc = V.map((x) => h * x);
+      const top = place.row(place.box[3]), bottom = place.row(place.box[2]);
+      const paths = Array.from({length: SHADES}, () => null);
+      for (let k = 0; k < kept.length; k += 3) {
+        const i = kept[k], j = kept[k + 1];
+        const rows = [r0 - uc[i] - vc[j], r0 - uc[i + 1] - vc[j], r0 - uc[i + 1] - vc[j + 1], r0 - uc[i] - vc[j + 1]];
+        if (Math.min(...rows) > bottom || Math.max(...rows) < top) continue;  // outside the panel's time window
+        const path = paths[kept[k + 2]] || (paths[kept[k + 2]] = new Path2D());
+        path.moveTo(c0 + uc[i] - vc[j], rows[0]); path.lineTo(c0 + uc[i + 1] - vc[j], rows[1]);
+        path.lineTo(c0 + uc[i + 1] - vc[j + 1], rows[2]); path.lineTo(c0 + uc[i] - vc[j + 1], rows[3]); path.closePath();
+      }
+      g.paths = {sign, paths: paths.map((path, shade) => path && [shadeColour(st.compression, (shade + 0.5) / SHADES), path])
+                                   .filter((p) => p)};
     }
     ctx.save(); ctx.clip(sheet);
-    ctx.lineWidth = 0.6;
-    for (const [colour, path] of g.paths.paths) {
-      ctx.fillStyle = colour; ctx.strokeStyle = colour; ctx.fill(path); ctx.stroke(path);  // no seams between cells
-    }
+    for (const [colour, path] of g.paths.paths) { ctx.fillStyle = colour; ctx.fill(path); }
     ctx.restore();
   }
 
@@ -628,6 +629,7 @@
     return `<svg width="44" height="14" aria-hidden="true">${extra || ""}<line x1="2" y1="7" x2="42" y2="7" ` +
       `stroke="${ink.colour}" stroke-width="${w}" stroke-dasharray="${dash || "none"}"/></svg>`;
   }
+  let legendShown = null;
   function drawLegend(gs) {
     const st = inks(), items = [], causal = gs.find((g) => g.model.model === "causal");
     items.push([swatch(st.rod, `<rect x="2" y="1" width="40" height="12" fill="${st.sheet}"/>`), "rod: its ends (solid), world-sheet shaded"]);
@@ -657,7 +659,8 @@
     items.push([swatch(st.moving), "line of simultaneity of S\u2032"]);
     if (state.cones) items.push([swatch(st.light_cone), "light cone of an impact"]);
     items.push([swatch({colour: st.flash, width: 2 * st.rod.width / 1.7, dashes: []}), "now: the frame's instant under the scrubber"]);
-    $("legend").innerHTML = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
+    const html = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
+    if (legendShown !== html) { legendShown = html; $("legend").innerHTML = html; }
   }
 
   // --- the controls ----------------------------------------------------------------------------------------
@@ -712,10 +715,16 @@
 
   // Each shown panel: its heading, diagram, strip, ledger and (with `all`) its events table; the second panel and
   // its tables hidden when one rod is shown; side by side when the window is wide enough, else one under the other.
+  let widths = null;  // the panels' widths, measured again only when the window, the style or the panels change
   function drawPanels(all) {
     const view = shared(), two = view.gs.length === 2;
     $("panels").classList.toggle("two", two);
     PANELS[1].box.hidden = !two; PANELS[1].tables.hidden = !two;
+    const sign = [window.innerWidth, window.innerHeight, state.style, two].join("/");
+    if (!widths || widths.sign !== sign) {  // a measurement forces a layout of the whole page: once, before any drawing
+      widths = {sign, px: view.gs.map((g, k) => PANELS[k].box.clientWidth)};
+    }
+    view.gs.forEach((g, k) => { PANELS[k].width = widths.px[k]; });
     view.gs.forEach((g, k) => {
       const panel = PANELS[k];
       panel.heading.textContent = g.model.model === "causal" ? "The causal rod (sound at c)" : "The rigid rod (the paper's)";
@@ -769,6 +778,10 @@
     if (state.playing) requestAnimationFrame(tick);
   });
   window.addEventListener("resize", () => soon(render));
+  // a panel whose width changes without a resize (a scroll bar comes with the tables): measured again
+  new ResizeObserver((seen) => {
+    if (widths && seen.some((e) => !widths.px.includes(Math.round(e.target.clientWidth)))) { widths = null; soon(render); }
+  }).observe($("panel-1"));
 
   // --- start -------------------------------------------------------------------------------------------------
   controls.scenario.innerHTML = DATA.scenarios.map((s, k) => `<option value="${k}">${s.name}: ${s.title}</option>`).join("");
@@ -778,6 +791,9 @@
   state.rod = scenario().rod;
   state.time = 0.5;
   render();
+  // the causal rod's cells of every speed sorted while nobody is dragging yet: one speed a tick
+  const unsorted = DATA.scenarios.flatMap((sc) => sc.speeds.flatMap((e) => e.models.filter((m) => m.cells)));
+  (function sortSome() { const m = unsorted.shift(); if (m) { keptCells(m.cells); setTimeout(sortSome, 0); } })();
   // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took; row and
   // column of the first panel, or of panel k (0 or 1)
   window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(shared()),
