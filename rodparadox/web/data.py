@@ -2,7 +2,7 @@
 `sears-paradox html`"). Pure: no matplotlib, no file.
 
 The page never solves the physics. Per scenario, per speed v of a grid (the scenario's own v included), per rod
-model (a list: the rigid rod now, a second model beside it later), this gives:
+model (`MODELS`: the rigid rod, then the causal rod, whose part `causal_data` gives), this gives:
 
 * the impacts in S, every digit (`repr`), with their rapidities: boosting an event is exact, so the page places
   them in any frame;
