@@ -28,7 +28,6 @@
   // what each drawing took (ms, performance.now()); drawnAt: the first drawing's end, from the page's start
   const timings = {first: null, drawnAt: null, redraws: []};
   const cache = new Map();  // the geometry of each scenario, speed, model and frame drawn lately
-  let placed = null;  // where the last drawing put the first panel
 
   // --- numbers as the tool writes them ------------------------------------------------------------------
   function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
@@ -733,7 +732,6 @@
       drawLedger(panel, g, view);
       if (all) drawEvents(panel, g);
     });
-    placed = PANELS[0].placed;
     if (all) drawLegend(view.gs);
   }
 
