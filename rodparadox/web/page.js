@@ -418,11 +418,16 @@
     ctx.save(); ctx.translate(place.column(x0) - 3.4 * size, place.row((t0 + t1) / 2)); ctx.rotate(-Math.PI / 2);
     ctx.fillText(names[1] + "/L", 0, 0); ctx.restore();
     ctx.textAlign = "left";
-    const title = panelTitle(g), room = place.width - place.column(x0) - 0.3 * size;
+    fitted(ctx, panelTitle(g), place.column(x0), place.row(t1) - 0.7 * size, place.width, size, family);
+  }
+
+  // Text from x on, in a smaller type where the panel is too narrow for it (side by side, a phone): never cut.
+  function fitted(ctx, text, x, y, width, size, family) {
+    const room = width - x - 0.3 * size;
     ctx.font = `${size}px ${family}`;
-    const wide = ctx.measureText(title).width;  // a narrow panel (side by side, a phone): smaller type, never cut
-    if (wide > room) ctx.font = `${Math.max(0.6, room / wide) * size}px ${family}`;
-    ctx.fillText(title, place.column(x0), place.row(t1) - 0.7 * size);
+    const wide = ctx.measureText(text).width;
+    if (wide > room) ctx.font = `${Math.max(0.55, room / wide) * size}px ${family}`;
+    ctx.fillText(text, x, y);
   }
 
   function panelTitle(g) {
@@ -483,8 +488,8 @@
     const clock = coordinateNames(state.u)[1];
     ctx.fillStyle = "black"; ctx.font = `${size}px ${family}`; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
     const where = frameName(state.u) === "u" ? "the frame " + frameSymbol(state.u) : frameSymbol(state.u);
-    ctx.fillText(`${clock} = ${shown(t, 4)} L in ${where}` + (lit.length ? "   " + lit.map((i) => i.name).join(", ") + "!" : ""),
-                 place.column(x0), 1.1 * size);
+    fitted(ctx, `${clock} = ${shown(t, 4)} L in ${where}` + (lit.length ? "   " + lit.map((i) => i.name).join(", ") + "!" : ""),
+           place.column(x0), 1.1 * size, place.width, size, family);
     let ends;
     if (m.model === "causal") {
       const pieces = causalPieces(g, t);
@@ -524,7 +529,7 @@
       ctx.textAlign = align; ctx.fillText(speed(Math.abs(u) < 1e-12 ? 0 : u, 3), cx0 + f * cw, cy + 0.75 * size);
     });
     ctx.textAlign = "left";
-    ctx.fillText("velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size);
+    fitted(ctx, "velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size, place.width, 0.85 * size, family);
   }
 
   function star(ctx, x, y, r, colour) {
