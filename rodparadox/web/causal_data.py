@@ -20,7 +20,7 @@ between its fronts, every slice of a speed at once.
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -180,19 +180,10 @@ class ChartTables:
         return T
 
 
-def chart_range(history, frames: Sequence[float], windows: Sequence[tuple[float, float]]) -> tuple[float, float]:
-    """The chart times the page's frames (rapidities) and their time windows (units of L) reach, with a margin."""
-    L = history.scenario.L
-    lo, hi = math.inf, -math.inf
-    for f, (t0, t1) in zip(frames, windows):
-        lo = min(lo, history.end_chart_time("left", f, t0 * L), history.end_chart_time("right", f, t0 * L))
-        hi = max(hi, history.end_chart_time("left", f, t1 * L), history.end_chart_time("right", f, t1 * L))
-    return lo - L, hi + L
-
-
 # --- the page's data ----------------------------------------------------------------------------------------------
 
 def drawn(value: float, digits: int) -> float:
+    """As `data.drawn`: `digits` significant digits, never -0."""
     return float(f"{value:.{digits}g}") + 0.0
 
 
