@@ -133,7 +133,8 @@
   // The causal rod's cells of compression in the frame of rapidity eta: each edge u_i (w_j) at t + x = e^-eta a_i
   // (t - x = e^eta b_j); cell (i, j) lies in the rod where 0 < u - w < 2 (X between 0 and L); its shade from
   // ln lam = -(r+_i + r-_j)/2 on the figures' two-sided scale. Which cells and their shades are the same in every
-  // frame: found once per model (i, j, shade); a frame only scales the edges.
+  // frame: found once per model, neighbours along w of one shade joined into one parallelogram (i, j from, j to,
+  // shade): its sides are light lines still; a frame only scales the edges.
   const SHADES = 64;
   function keptCells(cells) {
     if (cells.kept) return cells.kept;
@@ -143,7 +144,9 @@
         if (!(cells.u[i + 1] - cells.w[j] > 0 && cells.u[i] - cells.w[j + 1] < 2)) continue;
         const lnLam = -0.5 * (cells.r_plus[i] + cells.r_minus[j]);
         const f = lnLam < 0 ? 0.5 * (lnLam - low) / -low : 0.5 + 0.5 * lnLam / high;
-        kept.push(i, j, Math.max(0, Math.min(SHADES - 1, Math.floor(f * SHADES))));
+        const shade = Math.max(0, Math.min(SHADES - 1, Math.floor(f * SHADES))), n = kept.length;
+        if (n && kept[n - 4] === i && kept[n - 2] === j && kept[n - 1] === shade) kept[n - 2] = j + 1;
+        else kept.push(i, j, j + 1, shade);
       }
     }
     cells.kept = Int32Array.from(kept);
@@ -260,13 +263,14 @@
       const uc = U.map((x) => h * x), vc = V.map((x) => h * x);
       const top = place.row(place.box[3]), bottom = place.row(place.box[2]);
       const paths = Array.from({length: SHADES}, () => null);
-      for (let k = 0; k < kept.length; k += 3) {
-        const i = kept[k], j = kept[k + 1];
-        const rows = [r0 - uc[i] - vc[j], r0 - uc[i + 1] - vc[j], r0 - uc[i + 1] - vc[j + 1], r0 - uc[i] - vc[j + 1]];
-        if (Math.min(...rows) > bottom || Math.max(...rows) < top) continue;  // outside the panel's time window
-        const path = paths[kept[k + 2]] || (paths[kept[k + 2]] = new Path2D());
-        path.moveTo(c0 + uc[i] - vc[j], rows[0]); path.lineTo(c0 + uc[i + 1] - vc[j], rows[1]);
-        path.lineTo(c0 + uc[i + 1] - vc[j + 1], rows[2]); path.lineTo(c0 + uc[i] - vc[j + 1], rows[3]); path.closePath();
+      for (let k = 0; k < kept.length; k += 4) {
+        const i = kept[k], j = kept[k + 1], J = kept[k + 2];
+        // rows fall with U and V: the highest corner is (i + 1, J), the lowest (i, j)
+        if (r0 - uc[i + 1] - vc[J] > bottom || r0 - uc[i] - vc[j] < top) continue;  // outside the time window
+        const path = paths[kept[k + 3]] || (paths[kept[k + 3]] = new Path2D());
+        path.moveTo(c0 + uc[i] - vc[j], r0 - uc[i] - vc[j]); path.lineTo(c0 + uc[i + 1] - vc[j], r0 - uc[i + 1] - vc[j]);
+        path.lineTo(c0 + uc[i + 1] - vc[J], r0 - uc[i + 1] - vc[J]); path.lineTo(c0 + uc[i] - vc[J], r0 - uc[i] - vc[J]);
+        path.closePath();
       }
       g.paths = {sign, paths: paths.map((path, shade) => path && [shadeColour(st.compression, (shade + 0.5) / SHADES), path])
                                    .filter((p) => p)};
