@@ -70,6 +70,11 @@
   // times it repeats, each copy moved by `period` (dx, dt).
   function unrolled(w) {
     if (!w.repeats) return w;
+    if (w.unrolled) return w.unrolled;  // the same in every frame: once per line
+    w.unrolled = unrolledOnce(w);
+    return w.unrolled;
+  }
+  function unrolledOnce(w) {
     const x = w.x.slice(), t = w.t.slice(), n = w.x.length;
     for (let r = 1; r <= w.repeats; r++) {
       for (let k = w.repeat_from + 1; k < n; k++) { x.push(w.x[k] + r * w.period[0]); t.push(w.t[k] + r * w.period[1]); }
