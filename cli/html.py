@@ -9,14 +9,15 @@ from __future__ import annotations
 
 import click
 
-from .common import output_option, quiet_option, report, reports_errors, run_scenario, scenario_options, style_option
+from .common import (output_option, quiet_option, report, reports_errors, rod_asked, run_scenario, scenario_options,
+                     style_option)
 
 #: what `html` writes: one page
 HTML_FORMATS = ("html",)
 
 
 @click.command()
-@scenario_options(several=True, rods=("rigid",))
+@scenario_options(several=True, rods=("rigid", "causal", "both"))
 @output_option("A folder to write into (it must exist), or a file name .html. [default: outputs/, created if "
                "missing]", metavar="PATH_OR_DIR")
 @style_option(help="The style the page opens in (it has a switch for the others): default: colour; print: black "
@@ -28,8 +29,10 @@ def html(scenarios: tuple[str, ...], v: float | None, L: float | None, output: s
     """Write one offline HTML page to explore the SCENARIOs: drag the speed, the frame and the time.
 
     Every number is computed here and embedded (speeds 0.05 to 0.95 and the
-    scenario's own); the page needs no network and opens from file://. Several
-    scenarios give one page with a chooser. Writes OUTPUT/NAME.html, named as
+    scenario's own, the rigid rod and the causal rod); the page needs no network
+    and opens from file://. --rod (or the scenario's rod:) picks the rod it opens
+    on, both side by side with --rod both. Several scenarios give one page with a
+    chooser. Writes OUTPUT/NAME.html, named as
     plot names figures, and prints its path, `PATH (unchanged)` when the file
     already held these bytes.
 
@@ -38,13 +41,18 @@ def html(scenarios: tuple[str, ...], v: float | None, L: float | None, output: s
     from sears_paradox_cli import planning as planned
 
     described = planned.Outputs(formats=HTML_FORMATS, default="html", together=True)
-    [job] = planned.plan(scenarios, described, v=v, L=L, frame="both", fmt=None, output=output, style=style)
+    rod = rod_asked()
+    named = [rod] if rod in ("causal", "both") else []  # fig2_causal.html beside fig2.html, as plot names them
+    [job] = planned.plan(scenarios, described, v=v, L=L, frame="both", fmt=None, output=output, style=style,
+                         extras=named)
     for s, name, frames in zip(job.scenarios, job.names, job.frames):
-        run_scenario(s, name, frames)  # the one verdict at the scenario's own v, before any other speed is run
+        # the one verdict at the scenario's own v, in the rod it opens on, before any other speed is run
+        for model in (("rigid", "causal") if rod == "both" else (s.rod,)):
+            run_scenario(s.with_overrides(rod=model), name, frames)
     planned.prepare([job], described, output)
 
     from rodparadox.io.output import write_atomic
     from rodparadox.web.page import page
 
-    text = page(list(zip(job.stems, job.scenarios)), style)
+    text = page(list(zip(job.stems, job.scenarios)), style, shown=rod)
     report([(job.path, write_atomic(job.path, text.encode("utf-8")))], quiet)

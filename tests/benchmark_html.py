@@ -1,11 +1,12 @@
 """How fast the html page draws in headless Chromium (issue 17: the first drawing under 1 s, each redraw while a
 slider is dragged under 16 ms), measured in the browser with performance.now(); run on demand, not by pytest.
 
-    python tests/benchmark_html.py [SCENARIO] [--drags N]
+    python tests/benchmark_html.py [SCENARIO] [--drags N] [--rod rigid|causal|both]
 
-Builds the page (and says how long that took and its size), opens it from file:// in /usr/bin/chromium through
-playwright with every non-file request refused, and reports: the first drawing's end from the page's start
-(parsing the embedded data included) and the drawing alone; then, for each slider (speed, frame, time), the
+Builds the page (and says how long that took and its size, and how long the rigid rod's part alone took), opens
+it from file:// in /usr/bin/chromium through playwright with every non-file request refused, on the rod asked
+for (both, side by side, by default: the dearest to draw), and reports: the first drawing's end from the page's
+start (parsing the embedded data included) and the drawing alone; then, for each slider (speed, frame, time), the
 mouse dragging it from end to end in N steps, and the median, 95th percentile and largest redraw time.
 """
 
@@ -26,16 +27,28 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scenario", nargs="?", default="fig2")
     parser.add_argument("--drags", type=int, default=60, help="mouse steps per drag")
+    parser.add_argument("--rod", choices=("rigid", "causal", "both"), default="both", help="the rod the page opens on")
     options = parser.parse_args()
 
     from playwright.sync_api import sync_playwright
 
     from rodparadox.io.scenario import load
+    from rodparadox.web import data
     from rodparadox.web.page import page
 
+    import rodparadox.physics.causal  # noqa: F401  (scipy's import, once, outside the timings)
+
+    scenario = [(options.scenario, load(options.scenario))]
     start = time.perf_counter()
-    text = page([(options.scenario, load(options.scenario))])
-    print(f"page built in {time.perf_counter() - start:.2f} s: {len(text.encode('utf-8')):,} bytes")
+    text = page(scenario, shown=options.rod)
+    built = time.perf_counter() - start
+    models, data.MODELS = data.MODELS, ("rigid",)
+    start = time.perf_counter()
+    rigid = page(scenario)
+    rigid_built = time.perf_counter() - start
+    data.MODELS = models
+    print(f"page built in {built:.2f} s: {len(text.encode('utf-8')):,} bytes (the rigid rod alone: {rigid_built:.2f} s, "
+          f"{len(rigid.encode('utf-8')):,} bytes)")
     with tempfile.TemporaryDirectory() as folder, sync_playwright() as driver:
         path = Path(folder) / f"{options.scenario}.html"
         path.write_text(text, encoding="utf-8")

@@ -82,11 +82,7 @@ def test_rod_key_and_option(tmp_path):
     assert "sound_speed must be 1" in out and "shocks" in out and "Traceback" not in out
 
 
-@pytest.mark.parametrize("command, name", [("html", "x.html")])
-def test_commands_not_yet_drawing_the_causal_rod_refuse_it(command, name, tmp_path):
-    out = run(command, "fig1", "--rod", "causal", "-o", str(tmp_path / name), expect=2).output
-    assert out.startswith(f"Error: {command} does not take the causal rod yet") and out.count(".") <= 2
-    assert list(tmp_path.iterdir()) == []
+def test_commands_without_both_refuse_it():  # (html takes the causal rod and both now: tests/test_html.py)
     out = run("events", "fig1", "--rod", "both", expect=2).output
     assert "does not take --rod both (the two rods side by side) yet" in out
 

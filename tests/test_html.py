@@ -29,7 +29,7 @@ from rodparadox.web import data as web_data
 from rodparadox.web.page import asset, page
 from sears_paradox_cli.main import main
 
-from conftest import history
+from conftest import causal_history, history
 
 #: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
 pytestmark = pytest.mark.xdist_group("html")
@@ -50,11 +50,10 @@ def fig2_data(fig2_page) -> dict:
     return json.loads(text)
 
 
-def at_speed(data: dict, v: float) -> dict:
+def at_speed(data: dict, v: float, model: str = "rigid") -> dict:
     [entry] = [e for e in data["scenarios"][0]["speeds"] if e["v"] == v]
-    [rigid] = entry["models"]  # a list of models per speed; only the rigid rod so far
-    assert rigid["model"] == "rigid"
-    return rigid
+    assert [m["model"] for m in entry["models"]] == ["rigid", "causal"]  # a list of models per speed
+    return next(m for m in entry["models"] if m["model"] == model)
 
 
 @pytest.fixture
@@ -62,6 +61,12 @@ def small_grid(monkeypatch):
     """Two speeds besides the scenario's and a coarse ledger: the command's behaviour, built in a moment."""
     monkeypatch.setattr(web_data, "SPEED_STEPS", 2)
     monkeypatch.setattr(web_data, "LEDGER_INSTANTS", 3)
+
+
+@pytest.fixture
+def rigid_grid(small_grid, monkeypatch):
+    """The small grid with the rigid rod only: the command's naming and options, not the causal rod's data."""
+    monkeypatch.setattr(web_data, "MODELS", ("rigid",))
 
 
 def run(*args, expect=0):
@@ -185,7 +190,118 @@ def test_the_page_is_self_contained_small_and_carries_its_script_verbatim(fig2_p
     assert fig2_page.count("</script>") == 2  # the data's own `<` are escaped
 
 
-def test_html_writes_outputs_named_as_plot_names_them_and_leaves_equal_bytes_alone(small_grid, tmp_path, monkeypatch):
+# --- the causal rod's data (README, "The causal rod"), against the engine and hand derivations ----------------
+
+def test_causal_impacts_at_v_0_6_by_hand_and_as_events_rod_causal_prints_them(fig2_data):
+    """By hand: B reaches the resting rod's right end at (1/2, 5/6), as for the rigid rod; A is timed to strike in S'
+    at B1's t' = 1.25 (5/6 + 0.6 / 2) = 17/12, and the left end rests until a front from B1 reaches it (t = 11/6), so
+    A1 is at x = -1/2, t = 17/15 + 0.3 = 43/30. The tables are `events --rod causal`'s, row by row."""
+    m = at_speed(fig2_data, 0.6, "causal")
+    impacts = {i["label"]: i for i in m["impacts"]}
+    assert (impacts["B1"]["x"], impacts["B1"]["t"]) == pytest.approx((0.5, 5 / 6), abs=1e-14)
+    assert (impacts["A1"]["x"], impacts["A1"]["t"]) == pytest.approx((-0.5, 43 / 30), abs=1e-13)
+    assert [i["kind"] for i in m["impacts"]].count("separation") == [i["kind"] for i in m["impacts"]].count("contact")
+    assert impacts["A1s"]["name"] == "A\u2032\u2081" and impacts["A1s"]["kind"] == "separation"
+    markdown = run("events", "fig2", "--rod", "causal", "--v", "0.6", "--format", "markdown").output
+    for table in m["tables"].values():
+        for row in table["rows"]:
+            assert re.search(r"\| " + r"\s*\|\s*".join(map(re.escape, row)) + r"\s*\|", markdown), row
+    moving = {row[0]: row for row in m["tables"]["moving"]["rows"]}
+    assert moving["A\u2081"][3] == moving["B\u2081"][3] == "+1.416667 (17/12)"
+    assert {row[0]: row for row in m["tables"]["rest"]["rows"]}["A\u2081"][3] == "+1.433333 (43/30)"
+
+
+def unrolled(line: dict) -> list[tuple[float, float]]:
+    """A causal line's points with its ringing periods unrolled, as the page does."""
+    points = list(zip(line["x"], line["t"]))
+    dx, dt = line.get("period", (0.0, 0.0))
+    for r in range(1, line.get("repeats", 0) + 1):
+        points += [(x + r * dx, t + r * dt) for x, t in points[line["repeat_from"] + 1:len(line["x"])]]
+    return points
+
+
+def test_causal_lines_and_their_repeated_periods_lie_on_the_exact_world_lines(fig2_data):
+    """Every few points of each end and particle, and of the periods the page repeats, against the engine's exact
+    world-line (`event_at_time`); each chord within the stated 1e-3 L in S' at v = 0.95."""
+    repeated = 0
+    for v in (0.3, 0.95):
+        h, m = causal_history("fig2", v), at_speed(fig2_data, v, "causal")
+        for name, line in m["worldlines"].items():
+            points = unrolled(line)
+            repeated += len(points) - len(line["x"])
+            exact = h.worldline(name)
+            for x, t in points[::max(1, len(points) // 6)] + points[-1:]:
+                assert exact.event_at_time(t).x == pytest.approx(x, abs=6e-6 * (1 + abs(x) + abs(t)))  # 6 digits
+        eta = math.atanh(-v)  # S': the chords' midpoints against the exact line, boosted
+        seen, c, s = h.worldline("rod_right").seen_from(eta), math.cosh(eta), math.sinh(eta)
+        boosted = [(c * x - s * t, c * t - s * x) for x, t in unrolled(m["worldlines"]["rod_right"])]
+        for (xa, ta), (xb, tb) in list(zip(boosted, boosted[1:]))[::13]:
+            if tb - ta > 1e-9:
+                mid = 0.5 * (ta + tb)
+                assert abs(xa + (xb - xa) * (mid - ta) / (tb - ta) - seen.event_at_time(mid).x) < 1.1e-3
+    assert repeated > 0  # the ends ring on past their sampled period, and the copies were checked
+
+
+def test_causal_fronts_are_light_lines_between_the_ends_and_cells_carry_the_engines_invariants(fig2_data):
+    """A front runs at c from end to end; a cell's edges are at the engine's a(u), b(w), its invariants the engine's
+    r+, r- at its middle (so lam = exp(-(r+ + r-)/2) there)."""
+    h, m = causal_history("fig2", 0.6), at_speed(fig2_data, 0.6, "causal")
+    sol = h.solution
+    assert len(m["fronts"]) >= 4
+    for xl, tl, xr, tr in m["fronts"]:
+        assert abs(xr - xl) == pytest.approx(abs(tr - tl), abs=2e-6)
+        assert h.worldline("rod_left").event_at_time(tl).x == pytest.approx(xl, abs=2e-6)
+        assert h.worldline("rod_right").event_at_time(tr).x == pytest.approx(xr, abs=2e-6)
+    cells = m["cells"]
+    for i in range(0, len(cells["u"]) - 1, 9):
+        assert cells["a"][i] == pytest.approx(sol.a(cells["u"][i]), abs=2e-5)
+        assert cells["r_plus"][i] == pytest.approx(sol.r_plus(0.5 * (cells["u"][i] + cells["u"][i + 1])), rel=5e-3, abs=1e-3)
+    for j in range(0, len(cells["w"]) - 1, 9):
+        assert cells["b"][j] == pytest.approx(sol.b(cells["w"][j]), abs=2e-5)
+        assert cells["r_minus"][j] == pytest.approx(sol.r_minus(0.5 * (cells["w"][j] + cells["w"][j + 1])), rel=5e-3, abs=1e-3)
+
+
+def test_causal_ledger_adds_up_to_the_total_before_the_first_contact_and_the_rod_to_the_engines(fig2_data):
+    """Conservation on every slice of every tabulated frame (the total by hand: the rod at rest, each particle at
+    its speed, boosted); before any contact the rod is all matter, unstressed; the rod's matter and stress together
+    are the engine's exact (E, p) of the rod (`rod_energy_momentum`, one-variable integrals, not the page's
+    integration across the slice)."""
+    for v in (0.3, 0.6, 0.95):
+        s, m, h = load("fig2").with_overrides(v=v), at_speed(fig2_data, v, "causal"), causal_history("fig2", v)
+        frames = [f["u"] for f in m["ledger"]]
+        assert frames[:2] == [-v, 0.0] and sorted(frames) == sorted({-v, 0.0, *web_data.CAUSAL_LEDGER_FRAMES})
+        for frame in m["ledger"]:
+            eta = math.atanh(frame["u"])
+            total = EnergyMomentum.of(1.0, -eta)
+            for p in s.particles:
+                total += EnergyMomentum.of(p.mass, (1 if p.name == "A" else -1) * math.atanh(s.speed(p)) - eta)
+            assert frame["bodies"] == ["A", "B", "matter", "stress"]
+            for row in frame["slices"]:
+                assert sum(row[0::2]) == pytest.approx(total.E, abs=4e-5)
+                assert sum(row[1::2]) == pytest.approx(total.p, abs=4e-5)
+            lo, hi = frame["window"]
+            assert frame["slices"][0][4:] == pytest.approx([math.cosh(eta), -math.sinh(eta), 0.0, 0.0], abs=1e-5)
+            for k in (13, 27):
+                rod = h.rod_energy_momentum(eta, lo + (hi - lo) * k / (len(frame["slices"]) - 1))
+                row = frame["slices"][k]
+                assert row[4] + row[6] == pytest.approx(rod.E, abs=2e-5)
+                assert row[5] + row[7] == pytest.approx(rod.p, abs=2e-5)
+
+
+def test_the_rod_the_page_opens_on_is_the_scenarios_or_rods(rigid_grid):
+    """`shown` (the command's --rod) or the scenario's own rod: what the page's switch starts on."""
+    def opens_on(*args, **kwargs):
+        text = page(*args, **kwargs)
+        return json.loads(re.search(r'id="page-data">(.*?)</script>', text, re.S).group(1))["scenarios"][0]["rod"]
+
+    assert opens_on([("fig2", load("fig2"))]) == "rigid"
+    assert opens_on([("fig2", load("fig2").with_overrides(rod="causal"))]) == "causal"
+    assert opens_on([("fig2", load("fig2"))], shown="both") == "both"
+    with pytest.raises(ValueError, match="shown must be rigid, causal or both"):
+        page([("fig2", load("fig2"))], shown="elastic")
+
+
+def test_html_writes_outputs_named_as_plot_names_them_and_leaves_equal_bytes_alone(rigid_grid, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert run("html", "fig2").output == "outputs/fig2.html\n"
     first = (tmp_path / "outputs" / "fig2.html").read_bytes()
@@ -196,6 +312,9 @@ def test_html_writes_outputs_named_as_plot_names_them_and_leaves_equal_bytes_alo
     assert run("html", "fig2", "-o", "mine.html", "-q").output == ""
     assert (tmp_path / "mine.html").read_bytes() == first
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mine.html", "outputs"]
+    # --rod names the page as plot names figures, and is the rod the page opens on
+    assert run("html", "fig2", "--rod", "both").output == "outputs/fig2_both.html\n"
+    assert '"rod":"both"' in (tmp_path / "outputs" / "fig2_both.html").read_text()
 
 
 @pytest.mark.parametrize("args, sentence", [
@@ -403,7 +522,7 @@ def test_every_control_has_a_label_and_works_from_the_keyboard(opened):
     for _ in range(16):
         opened.tab.keyboard.press("Tab")
         reached.add(opened.tab.evaluate("document.activeElement.id"))
-    assert {"speed", "frame", "frame-rest", "frame-moving", "time", "play", "cones", "style"} <= reached
+    assert {"rod-rigid", "speed", "frame", "frame-rest", "frame-moving", "time", "play", "cones", "style"} <= reached
     before = opened.state()
     opened.press("speed", "ArrowLeft")
     assert opened.state()["speed"] == before["speed"] - 1
@@ -437,5 +556,60 @@ def test_the_layout_follows_the_window_in_every_style(browser, page_file, screen
             x, y = tab.tab.evaluate("[window.searsParadox.column(-0.5), window.searsParadox.row(0.3)]")  # S: at rest
             assert tab.pixel(x, y)[:3] == [int(rod[k:k + 2], 16) for k in (1, 3, 5)]
             tab.tab.screenshot(path=str(screenshots / f"fig2_{viewport['width']}_{style}.png"), full_page=True)
+        finally:
+            tab.close()
+
+
+def markdown_rows(text: str, heading: str) -> dict[str, list[str]]:
+    """The rows of the Markdown table under `heading` in `events --format markdown`, by their first cell."""
+    part = text.split(heading, 1)[1].split("\n\n", 2)[1]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in part.splitlines()[2:]]
+    return {row[0]: row for row in rows if row and row[0]}
+
+
+def test_the_rod_switch_from_the_keyboard_and_the_causal_contacts_and_separations_in_s_prime(opened, fig2_data,
+                                                                                              screenshots):
+    """The rod radio buttons by the arrow keys: rigid -> causal -> both. At v = 0.6 in S' the causal table is
+    `events --rod causal --v 0.6`'s S' table, row by row, and A1 and B1 sit on the pixel row of t' = 17/12."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("frame-moving", "Enter")
+    assert opened.state()["rod"] == "rigid" and opened.tab.is_hidden("#panel-2")
+    opened.press("rod-rigid", "ArrowRight")
+    assert opened.state()["rod"] == "causal" and opened.tab.is_checked("#rod-causal")
+    assert opened.tab.is_hidden("#panel-2") and "causal" in opened.tab.inner_text("#panel-1-heading")
+    printed = markdown_rows(run("events", "fig2", "--rod", "causal", "--v", "0.6", "--format", "markdown").output,
+                            "**The impacts in frame S\u2032**")
+    rows = opened.rows("events")
+    assert rows == printed and len(rows) == 8
+    assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)" and rows["A1s"][3] == "+2.652648"
+    dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
+    row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
+    assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
+    assert [name for name, *_ in opened.rows("ledger").values()][2:4] == ["rod, matter",
+                                                                          "rod, stress (the real hidden momentum)"]
+    opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_moving_causal.png"), full_page=True)
+    opened.press("rod-causal", "ArrowRight")
+    assert opened.state()["rod"] == "both" and opened.tab.is_visible("#panel-2")
+    assert opened.rows("events-2") == printed and opened.rows("events")["A\u2081"][3] == "+1.416667 (17/12)"
+    assert len(opened.rows("events")) == 3  # the rigid rod's B1, A1, B2 beside it
+
+
+def test_rigid_causal_and_both_on_a_projector_and_a_phone(browser, page_file, screenshots):
+    """Each rod in each window: nothing wider than the window; both side by side on a projector, one under the
+    other on a phone; a screenshot of the causal rod and of both (the rigid rod's: `test_the_layout_follows...`)."""
+    for viewport, name in (({"width": 1920, "height": 1080}, "projector"), ({"width": 390, "height": 844}, "phone")):
+        tab = Opened(browser, page_file, viewport)
+        try:
+            tab.press("frame-moving", "Enter")
+            for rod, keys in (("rigid", ()), ("causal", ("ArrowRight",)), ("both", ("ArrowRight",))):
+                tab.press(f"rod-{tab.state()['rod']}", *keys)
+                assert tab.state()["rod"] == rod
+                assert tab.tab.evaluate("document.documentElement.scrollWidth <= window.innerWidth + 1")
+                if rod != "rigid":  # the phone's first screen: the diagrams (a whole page there is 3000 pixels tall)
+                    tab.tab.evaluate("window.scrollTo(0, 0)")
+                    tab.tab.screenshot(path=str(screenshots / f"fig2_{name}_{rod}.png"), full_page=name == "projector")
+            one, two = (tab.tab.locator(f"#panel-{k}").bounding_box() for k in (1, 2))
+            assert (one["y"] == two["y"]) == (name == "projector") and (two["y"] >= one["y"] + one["height"]) == \
+                (name == "phone")
         finally:
             tab.close()

@@ -2,7 +2,7 @@
 `sears-paradox html`"). Pure: no matplotlib, no file.
 
 The page never solves the physics. Per scenario, per speed v of a grid (the scenario's own v included), per rod
-model (a list: the rigid rod now, a second model beside it later), this gives:
+model (`MODELS`: the rigid rod, then the causal rod, whose part `causal_data` gives), this gives:
 
 * the impacts in S, every digit (`repr`), with their rapidities: boosting an event is exact, so the page places
   them in any frame;
@@ -22,13 +22,14 @@ model (a list: the rigid rod now, a second model beside it later), this gives:
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 from typing import Any, Sequence
 
 from rodparadox.errors import RodParadoxError
 from rodparadox.numbers import impact_name
-from rodparadox.physics.engine import WORLDLINE_NAMES, run
-from rodparadox.physics.frames import (Frame, check_below_c, frame_of_velocity, moving_frame, rest_frame, time_window,
-                                       view)
+from rodparadox.physics.engine import WORLDLINE_NAMES
+from rodparadox.physics.rod_models import run_rod
+from rodparadox.physics.frames import Frame, check_below_c, frame_of_velocity, moving_frame, rest_frame, time_window
 from rodparadox.physics.kinematics import HyperbolicArc, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.tables.build import events_table
@@ -46,8 +47,19 @@ LINE_TOLERANCE = SAMPLING_TOLERANCE / math.exp(math.atanh(FRAME_REACH))
 #: pixels wide, about a hundredth of L to a pixel
 MATERIAL_POINTS = 33
 MATERIAL_TOLERANCE = 1e-3
+#: the causal rod's ends and particles: within 1e-3 L of the curve in every frame up to FRAME_REACH (a fifth of a
+#: pixel on a projector; its curves bend at every contact and ring for ever, and 1e-4 would double the page)
+CAUSAL_LINE_TOLERANCE = 1e-3 / math.exp(math.atanh(FRAME_REACH))
+#: its material lines (three, drawn thin) within 2e-3 L in S; its points with 6 significant digits (a millionth of
+#: the panel, far below a pixel)
+CAUSAL_MATERIAL_TOLERANCE = 2e-3
+CAUSAL_DIGITS = 6
+#: the rod models every page embeds, in the switch's order
+MODELS = ("rigid", "causal")
 #: the ledger's frames (velocities relative to S) besides S', and its instants per frame's time window
 LEDGER_FRAMES = (-0.9, -0.6, -0.3, 0.3, 0.6, 0.9)
+#: the causal rod's (its matter and stress are integrated across each slice: half the frames, half the cost)
+CAUSAL_LEDGER_FRAMES = (-0.6, 0.6)
 LEDGER_INSTANTS = 41
 #: decimals of the ledger's numbers (the ledger prints 4)
 LEDGER_DECIMALS = 5
@@ -126,8 +138,15 @@ def model_data(history, v: float) -> dict[str, Any]:
     s = history.scenario
     L = s.L
     frames = (rest_frame(), moving_frame(v), *(frame_of_velocity(u) for u in LEDGER_FRAMES if u != -v))
-    for frame in frames:
-        check_below_c(view(history, frame))
+    for frame in frames:  # the check reads the frame and the impacts only: no need to sample a view
+        check_below_c(SimpleNamespace(frame=frame, events=[SimpleNamespace(impact=i) for i in history.impacts]))
+    if history.kind == "causal":
+        from rodparadox.web import causal_data
+
+        ledger_frames = (frames[1], frames[0], *(frame_of_velocity(u) for u in CAUSAL_LEDGER_FRAMES if u != -v))
+        return causal_data.model_data(history, v, ledger_frames, FRAME_REACH,
+                                      CAUSAL_LINE_TOLERANCE, CAUSAL_MATERIAL_TOLERANCE, CAUSAL_DIGITS, MATERIAL_DIGITS,
+                                      LEDGER_INSTANTS, table_rows, fixed)
     worldlines = {name: history.worldline(name) for name in WORLDLINE_NAMES if history.worldline(name) is not None}
     impacts = [{"label": i.label, "name": impact_name(i.label), "particle": i.particle, "end": i.end,
                 "x": i.event.x / L, "t": i.event.t / L, "particle_before": i.particle_rapidity_before,
@@ -157,26 +176,34 @@ def model_data(history, v: float) -> dict[str, Any]:
     }
 
 
-def scenario_data(name: str, scenario: Scenario, extra: Sequence[float] = ()) -> dict[str, Any]:
-    """One scenario at every speed of its grid that the engine runs (a speed it refuses, or at which some body
-    would move at c in double precision in a frame of the page, is left out and named in `left_out`)."""
-    entries, left_out = [], []
+def scenario_data(name: str, scenario: Scenario, extra: Sequence[float] = (), shown: str | None = None,
+                  models: Sequence[str] | None = None) -> dict[str, Any]:
+    """One scenario at every speed of its grid that the engine runs, in each rod model of `models` (a speed a
+    model refuses, or at which some body would move at c in double precision in a frame of the page, is left out
+    of that model and named in `left_out`). `shown`: the rod the page opens on (rigid, causal or both; by default
+    the scenario's own)."""
+    models = MODELS if models is None else models
+    entries, left_out = [], {model: [] for model in models}
     for v in speeds(scenario, extra):
-        try:
-            history = run(scenario.with_overrides(v=v))
-            entries.append({"v": v, "models": [model_data(history, v)]})
-        except RodParadoxError:
-            if v == scenario.v or v in extra:
-                raise
-            left_out.append(v)
+        ran = []
+        for model in models:
+            try:
+                ran.append(model_data(run_rod(scenario.with_overrides(v=v, rod=model)), v))
+            except RodParadoxError:
+                if (v == scenario.v or v in extra) and model == scenario.rod:
+                    raise
+                left_out[model].append(v)
+        if ran:
+            entries.append({"v": v, "models": ran})
     return {"name": name, "title": scenario.title or name, "description": scenario.description.strip(),
-            "v": scenario.v, "L": scenario.L, "speeds": entries, "left_out": left_out,
+            "v": scenario.v, "L": scenario.L, "speeds": entries, "left_out": left_out, "rod": shown or scenario.rod,
             "one_instant": ONE_INSTANT, "frame_reach": FRAME_REACH}
 
 
-def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str) -> dict[str, Any]:
-    """Everything a page embeds: its scenarios (name, scenario with --v and --L) and the styles' inks."""
+def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str | None = None) -> dict[str, Any]:
+    """Everything a page embeds: its scenarios (name, scenario with --v and --L) and the styles' inks; `shown`:
+    the rod the page opens on (rigid, causal or both; by default each scenario's own)."""
     from rodparadox.web.inks import inks
 
     return {"format": FORMAT, "style": style, "styles": inks(),
-            "scenarios": [scenario_data(name, s) for name, s in scenarios]}
+            "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}

@@ -33,5 +33,8 @@ def inks() -> dict[str, Any]:
             "rest": ink(style.rest_simultaneity), "moving": ink(style.moving_simultaneity),
             "light_cone": ink(style.light_cone), "grid": ink(style.grid), "flash": style.flash_colour,
             "colours": list(PRINT_GREYS if style.velocity_colour_map == "print-greys" else RDBU_R),
+            # the causal rod (`render.causal_layers`): its light fronts, material lines and compression scale
+            "front": ink(style.front), "rod_interior": ink(style.rod_interior),
+            "compression": [style.compression_ends[0], style.sheet, style.compression_ends[1]],
         }
     return out

@@ -1,20 +1,33 @@
 // sears-paradox html: the page's script (README, "One page to explore: `sears-paradox html`").
 // Plain JavaScript, no build step, no network. Every number comes from the data Python embedded: the page only
 // Lorentz-transforms embedded points (exact for each point) and interpolates along the sampled lines to draw.
+// Two rod models per speed: the rigid rod and the causal rod (README, "The causal rod"), shown alone or side by
+// side. The causal rod's cells of compression are bounded by light lines: a boost scales t + x by e^-eta and
+// t - x by e^eta, so the page scales their embedded edges (exact), and reads lam = exp(-(r+ + r-)/2) from the
+// invariants embedded at each cell's middle; after its last separation the rod rings with a period, each
+// period's points the last one's moved by the same (dx, dt), which the page adds (exact for points).
 "use strict";
 (function () {
   const DATA = JSON.parse(document.getElementById("page-data").textContent);
   const MINUS = "\u2212", PRIME = "\u2032";
   const $ = (id) => document.getElementById(id);
   const controls = {
-    scenario: $("scenario"), model: $("model"), speed: $("speed"), frame: $("frame"), time: $("time"),
+    scenario: $("scenario"), speed: $("speed"), frame: $("frame"), time: $("time"),
     play: $("play"), rest: $("frame-rest"), moving: $("frame-moving"), cones: $("cones"), style: $("style"),
   };
-  const state = {scenario: 0, speed: 0, model: 0, u: 0, time: 0, cones: false, style: DATA.style, playing: false};
+  const state = {scenario: 0, speed: 0, rod: "rigid", u: 0, time: 0, cones: false, style: DATA.style, playing: false};
+  const RODS = ["rigid", "causal", "both"];
+  const rodControls = RODS.map((r) => $("rod-" + r));
+  // the two panels: the first shows the rigid rod (or the causal rod alone), the second the causal rod beside it
+  const PANELS = [1, 2].map((n) => {
+    const suffix = n === 1 ? "" : "-" + n;
+    return {box: $("panel-" + n), heading: $("panel-" + n + "-heading"), diagram: $("diagram" + suffix),
+            strip: $("strip" + suffix), events: $("events" + suffix), ledger: $("ledger" + suffix),
+            tables: $("tables-" + n), placed: null};
+  });
   // what each drawing took (ms, performance.now()); drawnAt: the first drawing's end, from the page's start
   const timings = {first: null, drawnAt: null, redraws: []};
-  let cache = null;  // the geometry of the current scenario, speed, model and frame
-  let placed = null;  // where the last drawing put the panel
+  const cache = new Map();  // the geometry of each scenario, speed, model and frame drawn lately
 
   // --- numbers as the tool writes them ------------------------------------------------------------------
   function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
@@ -39,7 +52,11 @@
   // --- frames and boosts ----------------------------------------------------------------------------------
   const scenario = () => DATA.scenarios[state.scenario];
   const entry = () => scenario().speeds[state.speed];
-  const model = () => entry().models[Math.min(state.model, entry().models.length - 1)];
+  function shownModels() {  // the models the switch asks for that ran at this speed (the other if none did)
+    const asked = (state.rod === "both" ? ["rigid", "causal"] : [state.rod]).filter((n) => modelNamed(n) !== null);
+    return asked.length ? asked : [entry().models[0].model];
+  }
+  const modelNamed = (name) => entry().models.find((m) => m.model === name) || null;
   const v = () => entry().v;
   function frameName(u) { return u === 0 ? "rest" : (u === -v() ? "moving" : "u"); }
   function frameSymbol(u) { const n = frameName(u); return n === "rest" ? "S" : n === "moving" ? "S" + PRIME : "u = " + speed(u, 4); }
@@ -49,22 +66,41 @@
   }
   function boost(x, t, c, s) { return [c * x - s * t, c * t - s * x]; }
 
-  // The current frame's geometry: every embedded point boosted once, the time window as Python's
+  // A line in S with its periods unrolled: a causal line gives one period from `repeat_from` and how many
+  // times it repeats, each copy moved by `period` (dx, dt).
+  function unrolled(w) {
+    if (!w.repeats) return w;
+    if (w.unrolled) return w.unrolled;  // the same in every frame: once per line
+    w.unrolled = unrolledOnce(w);
+    return w.unrolled;
+  }
+  function unrolledOnce(w) {
+    const x = w.x.slice(), t = w.t.slice(), n = w.x.length;
+    for (let r = 1; r <= w.repeats; r++) {
+      for (let k = w.repeat_from + 1; k < n; k++) { x.push(w.x[k] + r * w.period[0]); t.push(w.t[k] + r * w.period[1]); }
+    }
+    return {x, t, before: w.before, after: w.after};
+  }
+
+  // A model's geometry in the current frame: every embedded point boosted once, the time window as Python's
   // frames.time_window computes it, each line extended straight to the window's ends.
-  function geometry() {
-    const key = [state.scenario, state.speed, state.model, state.u].join("/");
-    if (cache && cache.key === key) return cache;
-    const m = model(), eta = Math.atanh(state.u), c = Math.cosh(eta), s = Math.sinh(eta);
+  function geometry(name) {
+    name = name || shownModels()[0];
+    const key = [state.scenario, state.speed, name, state.u].join("/");
+    if (cache.has(key)) return cache.get(key);
+    if (cache.size > 12) cache.clear();
+    const m = modelNamed(name), eta = Math.atanh(state.u), c = Math.cosh(eta), s = Math.sinh(eta);
+    if (m === null) return null;
     const times = m.changes.map(([x, t]) => c * t - s * x);
     const first = Math.min(...times), last = Math.max(...times);
     const atStart = m.starts.map(([x, t]) => c * t - s * x);
     const lead = Math.min(Math.max(first - Math.min(...atStart), 0.5), 2.0);
     const lo = first - lead, hi = last + lead;
-    const line = (w) => {
-      const X = [], T = [], P = [];
+    const line = (given) => {
+      const X = [], T = [], P = [], w = unrolled(given);
       for (let k = 0; k < w.x.length; k++) {
         const [x, t] = boost(w.x[k], w.t[k], c, s);
-        X.push(x); T.push(t); P.push(w.phi[k] - eta);
+        X.push(x); T.push(t); P.push(w.phi ? w.phi[k] - eta : 0);
       }
       return {X, T, P, before: w.before - eta, after: w.after - eta};
     };
@@ -81,9 +117,55 @@
       for (const x of drawn[name][0]) { xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); }
     }
     const pad = Math.max(0.08 * (xmax - xmin), 0.25);
-    cache = {key, eta, c, s, lo, hi, worldlines, drawn, impacts, material: m.material.map(line),
-             box: [xmin - pad, xmax + pad, lo, hi]};
-    return cache;
+    const g = {key, name, model: m, eta, c, s, lo, hi, worldlines, drawn, impacts, material: m.material.map(line),
+               box: [xmin - pad, xmax + pad, lo, hi]};
+    if (m.model === "causal") {
+      g.fronts = m.fronts.map(([xl, tl, xr, tr]) => [...boost(xl, tl, c, s), ...boost(xr, tr, c, s)]);
+      g.cells = causalCells(m.cells, eta);
+    }
+    cache.set(key, g);
+    return g;
+  }
+
+  // What the shown panels share: one time window and one box, so that side by side they read alike.
+  function shared() {
+    const gs = shownModels().map(geometry).filter((g) => g !== null);
+    const box = [Math.min(...gs.map((g) => g.box[0])), Math.max(...gs.map((g) => g.box[1])),
+                 Math.min(...gs.map((g) => g.lo)), Math.max(...gs.map((g) => g.hi))];
+    return {gs, box, lo: box[2], hi: box[3]};
+  }
+
+  // The causal rod's cells of compression in the frame of rapidity eta: each edge u_i (w_j) at t + x = e^-eta a_i
+  // (t - x = e^eta b_j); cell (i, j) lies in the rod where 0 < u - w < 2 (X between 0 and L); its shade from
+  // ln lam = -(r+_i + r-_j)/2 on the figures' two-sided scale. Which cells and their shades are the same in every
+  // frame: found once per model, neighbours along w of one shade joined into one parallelogram (i, j from, j to,
+  // shade): its sides are light lines still; a frame only scales the edges.
+  const SHADES = 64;
+  function keptCells(cells) {
+    if (cells.kept) return cells.kept;
+    const [low, high] = [Math.min(cells.ln_lam[0], -1e-3), Math.max(cells.ln_lam[1], 1e-3)], kept = [];
+    for (let i = 0; i + 1 < cells.u.length; i++) {
+      for (let j = 0; j + 1 < cells.w.length; j++) {
+        if (!(cells.u[i + 1] - cells.w[j] > 0 && cells.u[i] - cells.w[j + 1] < 2)) continue;
+        const lnLam = -0.5 * (cells.r_plus[i] + cells.r_minus[j]);
+        const f = lnLam < 0 ? 0.5 * (lnLam - low) / -low : 0.5 + 0.5 * lnLam / high;
+        const shade = Math.max(0, Math.min(SHADES - 1, Math.floor(f * SHADES))), n = kept.length;
+        if (n && kept[n - 4] === i && kept[n - 2] === j && kept[n - 1] === shade) kept[n - 2] = j + 1;
+        else kept.push(i, j, j + 1, shade);
+      }
+    }
+    cells.kept = Int32Array.from(kept);
+    return cells.kept;
+  }
+  function causalCells(cells, eta) {
+    return {U: cells.a.map((a) => Math.exp(-eta) * a), V: cells.b.map((b) => Math.exp(eta) * b), kept: keptCells(cells)};
+  }
+  // A shade's colour: the compression scale (stretched, unstressed as the sheet, compressed), linear between.
+  function shadeColour(stops, f) {
+    const k = Math.max(0, Math.min(1, f)) * (stops.length - 1), a = Math.floor(Math.min(k, stops.length - 2)), w = k - a;
+    const rgb = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16));
+    const p = rgb(stops[a]), q = rgb(stops[a + 1]);
+    return `rgb(${p.map((v, i) => Math.round(v + w * (q[i] - v))).join(",")})`;
   }
 
   // A boosted line's points from t = lo to t = hi: straight before its first point and after its last (its
@@ -128,7 +210,8 @@
 
   function canvasSized(canvas, width, height) {
     const ratio = window.devicePixelRatio || 1;
-    canvas.style.width = width + "px"; canvas.style.height = height + "px";
+    if (canvas.style.width !== width + "px") canvas.style.width = width + "px";  // a style written is a layout
+    if (canvas.style.height !== height + "px") canvas.style.height = height + "px";
     if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
       canvas.width = Math.round(width * ratio); canvas.height = Math.round(height * ratio);
     }
@@ -140,14 +223,14 @@
 
   // The panel's place on the page: equal scales (light at 45 degrees), as wide as the column allows and no
   // taller than most of the window.
-  function layout(g) {
+  function layout(panel, box) {
     const size = fontSize();
     const margin = {left: 4.2 * size, right: 1.2 * size, top: 2.4 * size, bottom: 2.8 * size};
-    const holder = $("diagram-box");
+    const holder = {clientWidth: panel.width};  // measured before any drawing (`drawPanels`)
     const avail = Math.max(holder.clientWidth - margin.left - margin.right, 120);
     const share = state.style === "slides" ? 0.8 : 0.62;  // on a projector the diagram is the point
     const tallest = Math.max(window.innerHeight * share - margin.top - margin.bottom, 120);
-    const [x0, x1, t0, t1] = g.box;
+    const [x0, x1, t0, t1] = box;
     const scale = Math.min(avail / (x1 - x0), tallest / (t1 - t0));
     const extra = (avail - scale * (x1 - x0)) / 2;
     return {margin, scale, width: holder.clientWidth, height: margin.top + margin.bottom + scale * (t1 - t0),
@@ -175,32 +258,81 @@
     polyline(ctx, place, [x + lo * dx, x + hi * dx], [t + lo * dt, t + hi * dt]);
   }
 
-  function drawDiagram() {
-    const g = geometry(), st = inks(), place = layout(g), size = fontSize();
-    const canvas = $("diagram"), ctx = canvasSized(canvas, place.width, place.height);
-    const [x0, x1, t0, t1] = g.box;
-    const family = fontFamily();
+  // The causal rod's shading: its cells, clipped to its world-sheet, one path per shade (kept while only the
+  // time moves: the panel's place and the frame are the same).
+  function drawCells(ctx, place, g, st, sheet) {
+    const sign = [g.key, state.style, place.scale, place.column(0), place.row(0)].join("/");
+    if (!g.paths || g.paths.sign !== sign) {
+      // in pixels, a point (U, V) is at column(0) + scale (U - V)/2, row(0) - scale (U + V)/2: each edge's share once
+      const {U, V, kept} = g.cells, h = place.scale / 2, c0 = place.column(0), r0 = place.row(0);
+      const uc = U.map((x) => h * x), vc = V.map((x) => h * x);
+      const top = place.row(place.box[3]), bottom = place.row(place.box[2]);
+      const paths = Array.from({length: SHADES}, () => null);
+      for (let k = 0; k < kept.length; k += 4) {
+        const i = kept[k], j = kept[k + 1], J = kept[k + 2];
+        // rows fall with U and V: the highest corner is (i + 1, J), the lowest (i, j)
+        if (r0 - uc[i + 1] - vc[J] > bottom || r0 - uc[i] - vc[j] < top) continue;  // outside the time window
+        const path = paths[kept[k + 3]] || (paths[kept[k + 3]] = new Path2D());
+        path.moveTo(c0 + uc[i] - vc[j], r0 - uc[i] - vc[j]); path.lineTo(c0 + uc[i + 1] - vc[j], r0 - uc[i + 1] - vc[j]);
+        path.lineTo(c0 + uc[i + 1] - vc[J], r0 - uc[i + 1] - vc[J]); path.lineTo(c0 + uc[i] - vc[J], r0 - uc[i] - vc[J]);
+        path.closePath();
+      }
+      g.paths = {sign, paths: paths.map((path, shade) => path && [shadeColour(st.compression, (shade + 0.5) / SHADES), path])
+                                   .filter((p) => p)};
+    }
+    ctx.save(); ctx.clip(sheet);
+    for (const [colour, path] of g.paths.paths) { ctx.fillStyle = colour; ctx.fill(path); }
+    ctx.restore();
+  }
+
+  // Where a contact's particle rides with its end: the particle's line between its contact and its separation.
+  function contactStretches(g, p) {
+    const mine = g.impacts.filter((i) => i.particle === p), w = g.worldlines[p], out = [];
+    for (let k = 0; k + 1 < mine.length; k += 2) {
+      const [a, b] = [mine[k].T, mine[k + 1].T], X = [mine[k].X], T = [a];
+      for (let n = 0; n < w.T.length; n++) if (w.T[n] > a && w.T[n] < b) { X.push(w.X[n]); T.push(w.T[n]); }
+      X.push(mine[k + 1].X); T.push(b);
+      out.push([X, T]);
+    }
+    return out;
+  }
+
+  function drawDiagram(panel, g, view) {
+    const st = inks(), place = layout(panel, view.box), size = fontSize();
+    place.box = view.box;
+    const canvas = panel.diagram, ctx = canvasSized(canvas, place.width, place.height);
+    const [x0, x1, t0, t1] = view.box;
+    const family = fontFamily(), causal = g.model.model === "causal";
     ctx.save();
     ctx.beginPath();
     ctx.rect(place.column(x0), place.row(t1), (x1 - x0) * place.scale, (t1 - t0) * place.scale);
     ctx.clip();
-    // the rod's world-sheet, between its ends
-    const left = g.drawn.rod_left, right = g.drawn.rod_right;
-    ctx.fillStyle = st.sheet;
-    ctx.beginPath();
-    for (let k = 0; k < left[0].length; k++) ctx.lineTo(place.column(left[0][k]), place.row(left[1][k]));
-    for (let k = right[0].length - 1; k >= 0; k--) ctx.lineTo(place.column(right[0][k]), place.row(right[1][k]));
-    ctx.closePath(); ctx.fill();
-    // lines of simultaneity of S and S' through every impact (impacts on one line share it)
+    // the rod's world-sheet, between its ends (the causal rod's shaded by compression)
+    const left = clipped(g.worldlines.rod_left, t0, t1), right = clipped(g.worldlines.rod_right, t0, t1);
+    const sheet = new Path2D();
+    for (let k = 0; k < left[0].length; k++) sheet.lineTo(place.column(left[0][k]), place.row(left[1][k]));
+    for (let k = right[0].length - 1; k >= 0; k--) sheet.lineTo(place.column(right[0][k]), place.row(right[1][k]));
+    sheet.closePath();
+    ctx.fillStyle = st.sheet; ctx.fill(sheet);
+    if (causal) {
+      drawCells(ctx, place, g, st, sheet);
+      setInk(ctx, st.rod_interior, 1);
+      for (const w of g.material) polyline(ctx, place, ...clipped(w, t0, t1));
+      setInk(ctx, st.front, 1);
+      for (const [xl, tl, xr, tr] of g.fronts) polyline(ctx, place, [xl, xr], [tl, tr]);
+    }
+    // lines of simultaneity of S and S' through every impact (impacts on one line share it); the causal rod's
+    // through each particle's first contact (its later contacts and separations crowd one end)
+    const through = causal ? g.impacts.filter((i) => i.kind === "contact" && /^[AB]1$/.test(i.label)) : g.impacts;
     for (const [which, frameU] of [["rest", 0], ["moving", -v()]]) {
       setInk(ctx, st[which], 1);
       const seen = [];
-      for (const i of g.impacts) {
+      for (const i of through) {
         const own = Math.cosh(Math.atanh(frameU)) * (i.t - frameU * i.x);
         if (seen.some((o) => Math.abs(o - own) <= 1e-9 * (1 + Math.abs(own)))) continue;
         seen.push(own);
         const [dx, dt] = boost(1, frameU, g.c, g.s);
-        infinite(ctx, place, g.box, i.X, i.T, dx, dt);
+        infinite(ctx, place, view.box, i.X, i.T, dx, dt);
       }
     }
     if (state.cones) {  // arms a sixth of the panel's shorter side each way
@@ -210,21 +342,30 @@
         polyline(ctx, place, [i.X - d[0] * arm, i.X + d[0] * arm], [i.T - d[1] * arm, i.T + d[1] * arm]);
       }
     }
+    if (causal) for (const p of ["A", "B"]) if (g.worldlines[p]) {  // contacts: a broad band under the line
+      ctx.strokeStyle = st.particles[p].colour; ctx.globalAlpha = 0.35; ctx.setLineDash([]);
+      ctx.lineWidth = st.rod.width * 3.2 * pt; ctx.lineCap = "butt";
+      for (const [X, T] of contactStretches(g, p)) polyline(ctx, place, X, T);
+      ctx.globalAlpha = 1;
+    }
     setInk(ctx, st.rod, 1);
     polyline(ctx, place, ...left); polyline(ctx, place, ...right);
-    for (const p of ["A", "B"]) if (g.drawn[p]) { setInk(ctx, st.particles[p], 1); polyline(ctx, place, ...g.drawn[p]); }
+    for (const p of ["A", "B"]) if (g.worldlines[p]) {
+      setInk(ctx, st.particles[p], 1); polyline(ctx, place, ...clipped(g.worldlines[p], t0, t1));
+    }
     ctx.setLineDash([]);
     // the now-line: the frame's instant under the scrubber
-    const now = nowTime(g), nowRow = place.row(now);
+    const now = nowTime(view), nowRow = place.row(now);
     ctx.strokeStyle = st.flash; ctx.lineWidth = 2 * st.rod.width * pt / 1.7;
     ctx.beginPath(); ctx.moveTo(place.column(x0), nowRow); ctx.lineTo(place.column(x1), nowRow); ctx.stroke();
     // impacts: a dot with a white rim, its label beside it on the side of its end
     const dots = [];
     const radius = st.impact_size * pt / 2;
     ctx.font = `italic ${size}px ${family}`;
-    for (const i of g.impacts) {
-      const px = place.column(i.X), py = place.row(i.T);
-      ctx.fillStyle = st.impact_colour; ctx.strokeStyle = "white"; ctx.lineWidth = 0.8;
+    for (const i of g.impacts) {  // a separation of the causal rod: hollow
+      const px = place.column(i.X), py = place.row(i.T), hollow = i.kind === "separation";
+      ctx.fillStyle = hollow ? "white" : st.impact_colour; ctx.strokeStyle = hollow ? st.impact_colour : "white";
+      ctx.lineWidth = hollow ? 1.3 : 0.8;
       ctx.beginPath(); ctx.arc(px, py, radius, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       dots.push({label: i.label, x: px, y: py});
     }
@@ -232,8 +373,8 @@
       const px = place.column(i.X), py = place.row(i.T), right = i.end === "right";
       label(ctx, i.name, px + (right ? 1 : -1) * (radius + 0.3 * size), py - 0.35 * size, right ? "left" : "right", size);
     }
-    for (const p of ["A", "B"]) if (g.drawn[p]) {  // the letter beside the first part of its line
-      const [X, T] = g.drawn[p];
+    for (const p of ["A", "B"]) if (g.worldlines[p]) {  // the letter beside the first part of its line
+      const [X, T] = clipped(g.worldlines[p], t0, t1);
       const k = Math.min(1, X.length - 1);
       const t = T[0] + 0.12 * (t1 - t0), x = at(g.worldlines[p], t)[0];
       ctx.fillStyle = st.particles[p].colour;
@@ -242,11 +383,11 @@
       ctx.fillText(p, place.column(x) + (ctx.textAlign === "left" ? 0.5 : -0.5) * size, place.row(t));
     }
     ctx.restore();
-    axes(ctx, place, g, size, family);
-    placed = place;
+    axes(ctx, place, g, view.box, size, family);
+    panel.placed = place;
     canvas.dataset.impacts = JSON.stringify(dots);
     canvas.dataset.nowRow = String(nowRow);
-    canvas.dataset.window = JSON.stringify([g.lo, g.hi]);
+    canvas.dataset.window = JSON.stringify([view.lo, view.hi]);
     return place;
   }
 
@@ -263,8 +404,8 @@
     ctx.font = `${size}px ${fontFamily()}`; ctx.strokeText(digits, start + w1, y); ctx.fillText(digits, start + w1, y);
   }
 
-  function axes(ctx, place, g, size, family) {
-    const [x0, x1, t0, t1] = g.box, names = coordinateNames(state.u);
+  function axes(ctx, place, g, box, size, family) {
+    const [x0, x1, t0, t1] = box, names = coordinateNames(state.u);
     ctx.strokeStyle = "black"; ctx.lineWidth = 1; ctx.setLineDash([]);
     ctx.strokeRect(place.column(x0), place.row(t1), (x1 - x0) * place.scale, (t1 - t0) * place.scale);
     ctx.fillStyle = "black"; ctx.font = `${0.9 * size}px ${family}`;
@@ -285,20 +426,31 @@
     ctx.fillText(names[0] + "/L", place.column((x0 + x1) / 2), place.row(t0) + 2.5 * size);
     ctx.save(); ctx.translate(place.column(x0) - 3.4 * size, place.row((t0 + t1) / 2)); ctx.rotate(-Math.PI / 2);
     ctx.fillText(names[1] + "/L", 0, 0); ctx.restore();
-    ctx.font = `${size}px ${family}`; ctx.textAlign = "left";
-    ctx.fillText(panelTitle(g), place.column(x0), place.row(t1) - 0.7 * size);
+    ctx.textAlign = "left";
+    fitted(ctx, panelTitle(g), place.column(x0), place.row(t1) - 0.7 * size, place.width, size, family);
+  }
+
+  // Text from x on, in a smaller type where the panel is too narrow for it (side by side, a phone): never cut.
+  function fitted(ctx, text, x, y, width, size, family) {
+    const room = width - x - 0.3 * size;
+    ctx.font = `${size}px ${family}`;
+    const wide = ctx.measureText(text).width;
+    if (wide > room) ctx.font = `${Math.max(0.55, room / wide) * size}px ${family}`;
+    ctx.fillText(text, x, y);
   }
 
   function panelTitle(g) {
     const before = -state.u, last = g.impacts[g.impacts.length - 1];
-    const after = last ? Math.tanh(last.rod_after - g.eta) : before;
+    const after = g.model.final !== undefined ? Math.tanh(g.model.final - g.eta)
+      : last ? Math.tanh(last.rod_after - g.eta) : before;
     const phrase = (u) => Math.abs(u) < 5e-13 ? "at rest" : "at " + (u > 0 ? "+" : "") + speed(u, 4);
-    const said = Math.abs(before - after) < 5e-13 ? `rod ${phrase(before)} before and after`
-      : `rod first ${phrase(before)}, finally ${phrase(after)}`;
+    const ringing = g.model.model === "causal" ? " on average" : "";  // it rings for ever
+    const said = Math.abs(before - after) < 5e-13 ? `rod ${phrase(before)} before and after${ringing}`
+      : `rod first ${phrase(before)}, finally ${phrase(after)}${ringing}`;
     return `frame ${frameSymbol(state.u)}: ${said}`;
   }
 
-  function nowTime(g) { return g.lo + state.time * (g.hi - g.lo); }
+  function nowTime(view) { return view.lo + state.time * (view.hi - view.lo); }
 
   // The strip: the frame's space at the now-line's instant, on the panel's x scale: the rod coloured by the
   // velocity of its material points (the colour scale even in rapidity, centred on the rod's first velocity, the
@@ -311,26 +463,60 @@
     return `rgb(${p.map((c, i) => Math.round(c + w * (q[i] - c))).join(",")})`;
   }
 
-  function drawStrip(place) {
-    const g = geometry(), st = inks(), size = fontSize(), family = fontFamily(), m = model();
-    const height = 8.2 * size, canvas = $("strip"), ctx = canvasSized(canvas, place.width, height);
-    const t = nowTime(g), bar = 2.4 * size, barH = 0.9 * size, bound = m.colour_bound || 0.1;
-    const [x0, x1, t0, t1] = g.box;
+  // The causal rod at time t of the frame, piece by piece: where the slice crosses the cells' edges (u-edge i at
+  // x = e^-eta a_i - t, w-edge j at x = t - e^eta b_j) it enters another cell, whose material rapidity in S is
+  // (r+_i - r-_j)/2. Returns [x from, x to, rapidity in S] between the rod's ends.
+  function causalPieces(g, t) {
+    const xl = at(g.worldlines.rod_left, t)[0], xr = at(g.worldlines.rod_right, t)[0], cells = g.model.cells;
+    const cuts = [xl, xr];
+    for (const U of g.cells.U) if (U - t > xl && U - t < xr) cuts.push(U - t);
+    for (const V of g.cells.V) if (t - V > xl && t - V < xr) cuts.push(t - V);
+    cuts.sort((a, b) => a - b);
+    const find = (edges, value) => {  // the last edge at or below value (edges increase)
+      let a = 0, b = edges.length - 1;
+      if (value < edges[0]) return 0;
+      while (b - a > 1) { const mid = (a + b) >> 1; if (edges[mid] <= value) a = mid; else b = mid; }
+      return Math.min(a, edges.length - 2);
+    };
+    const pieces = [];
+    for (let k = 0; k + 1 < cuts.length; k++) {
+      const xm = 0.5 * (cuts[k] + cuts[k + 1]);
+      const i = find(g.cells.U, t + xm), j = find(g.cells.V, t - xm);
+      pieces.push([cuts[k], cuts[k + 1], 0.5 * (cells.r_plus[i] - cells.r_minus[j])]);
+    }
+    return pieces;
+  }
+
+  function drawStrip(panel, place, g, view) {
+    const st = inks(), size = fontSize(), family = fontFamily(), m = g.model;
+    const height = 8.2 * size, canvas = panel.strip, ctx = canvasSized(canvas, place.width, height);
+    const t = nowTime(view), bar = 2.4 * size, barH = 0.9 * size, bound = m.colour_bound || 0.1;
+    const [x0, x1, t0, t1] = view.box;
     const flash = 0.02 * (t1 - t0);
     const lit = g.impacts.filter((i) => Math.abs(i.T - t) <= flash);
     const clock = coordinateNames(state.u)[1];
     ctx.fillStyle = "black"; ctx.font = `${size}px ${family}`; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
     const where = frameName(state.u) === "u" ? "the frame " + frameSymbol(state.u) : frameSymbol(state.u);
-    ctx.fillText(`${clock} = ${shown(t, 4)} L in ${where}` + (lit.length ? "   " + lit.map((i) => i.name).join(", ") + "!" : ""),
-                 place.column(x0), 1.1 * size);
-    const points = g.material.map((w) => at(w, t));
-    for (let k = 0; k + 1 < points.length; k++) {
-      const phiS = 0.5 * (points[k][1] + points[k + 1][1]) + g.eta;  // the departure from the first velocity
-      ctx.fillStyle = colourAt(0.5 + 0.5 * phiS / bound);
-      const a = place.column(points[k][0]), b = place.column(points[k + 1][0]);
-      ctx.fillRect(a, bar, b - a + 0.5, barH);
+    fitted(ctx, `${clock} = ${shown(t, 4)} L in ${where}` + (lit.length ? "   " + lit.map((i) => i.name).join(", ") + "!" : ""),
+           place.column(x0), 1.1 * size, place.width, size, family);
+    let ends;
+    if (m.model === "causal") {
+      const pieces = causalPieces(g, t);
+      for (const [a, b, phiS] of pieces) {  // phiS: the departure from the first velocity (at rest in S)
+        ctx.fillStyle = colourAt(0.5 + 0.5 * phiS / bound);
+        ctx.fillRect(place.column(a), bar, place.column(b) - place.column(a) + 0.5, barH);
+      }
+      ends = [place.column(pieces[0][0]), place.column(pieces[pieces.length - 1][1])];
+    } else {
+      const points = g.material.map((w) => at(w, t));
+      for (let k = 0; k + 1 < points.length; k++) {
+        const phiS = 0.5 * (points[k][1] + points[k + 1][1]) + g.eta;  // the departure from the first velocity
+        ctx.fillStyle = colourAt(0.5 + 0.5 * phiS / bound);
+        const a = place.column(points[k][0]), b = place.column(points[k + 1][0]);
+        ctx.fillRect(a, bar, b - a + 0.5, barH);
+      }
+      ends = [place.column(points[0][0]), place.column(points[points.length - 1][0])];
     }
-    const ends = [place.column(points[0][0]), place.column(points[points.length - 1][0])];
     setInk(ctx, st.rod, 0.6); ctx.strokeRect(ends[0], bar, ends[1] - ends[0], barH);
     ctx.setLineDash([]);
     for (const p of ["A", "B"]) if (g.worldlines[p]) {
@@ -348,10 +534,11 @@
     ctx.fillStyle = "black"; ctx.font = `${0.85 * size}px ${family}`; ctx.textBaseline = "top";
     const centre = -g.eta;
     [[0, "left", centre - bound], [0.5, "center", centre], [1, "right", centre + bound]].forEach(([f, align, r]) => {
-      ctx.textAlign = align; ctx.fillText(speed(Math.tanh(r), 3), cx0 + f * cw, cy + 0.75 * size);
+      const u = Math.tanh(r);  // a rounding's 1e-16 is 0
+      ctx.textAlign = align; ctx.fillText(speed(Math.abs(u) < 1e-12 ? 0 : u, 3), cx0 + f * cw, cy + 0.75 * size);
     });
     ctx.textAlign = "left";
-    ctx.fillText("velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size);
+    fitted(ctx, "velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size, place.width, 0.85 * size, family);
   }
 
   function star(ctx, x, y, r, colour) {
@@ -382,12 +569,13 @@
     $(table.id + "-notes").textContent = notes.join(" ");
   }
 
-  function drawEvents() {
-    const g = geometry(), m = model(), name = frameName(state.u), L = scenario().L;
+  function drawEvents(panel, g) {
+    const m = g.model, name = frameName(state.u), L = scenario().L, causal = m.model === "causal";
+    const rod = causal ? ", the causal rod: each contact and its separation (B1s)" : ", the rigid rod";
     if (name !== "u") {
       const t = m.tables[name];
-      fillTable($("events"), `${t.caption} (v = ${shown(v(), 10)}): the digits and exact fractions of sears-paradox events`,
-                t.header, t.rows, t.notes);
+      fillTable(panel.events, `${t.caption} (v = ${shown(v(), 10)}${rod}): the digits and exact fractions of ` +
+                `sears-paradox events${causal ? " --rod causal" : ""}`, t.header, t.rows, t.notes);
       return;
     }
     const scale = 1 + Math.max(...g.impacts.map((i) => Math.abs(i.T)));
@@ -400,36 +588,52 @@
     order.sort((a, b) => instant[a] - instant[b] || a - b);
     const rows = order.map((k) => {
       const i = g.impacts[k];
-      return [i.name, i.end, coordinate(i.X * L), coordinate(i.T * L),
+      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L),
               ...[i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => velocity(Math.tanh(r - g.eta)))];
     });
     const names = coordinateNames(state.u);
-    fillTable($("events"), `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}): decimals boosted in ` +
+    fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted in ` +
               "this page from the exact events (choose S or S\u2032 for sears-paradox events' table with its fractions)",
               ["impact", "end", names[0], names[1], "particle before", "particle after", "rod before", "rod after"], rows, []);
   }
 
-  function drawLedger() {
-    const g = geometry(), m = model();
+  const BODY = {rod: "rod (kinetic)", hidden: "hidden (stress)", matter: "rod, matter",
+                stress: "rod, stress (the real hidden momentum)"};
+  function drawLedger(panel, g, view) {
+    const m = g.model;
     let best = m.ledger[0];
+    // a slice's time: its first number, or (the causal rod's) read from the window its slices spread evenly over
+    const timeOf = (f, k) => f.window ? f.window[0] + (f.window[1] - f.window[0]) * k / (f.slices.length - 1) : f.slices[k][0];
     for (const f of m.ledger) if (Math.abs(Math.atanh(f.u) - g.eta) < Math.abs(Math.atanh(best.u) - g.eta)) best = f;
-    const k = Math.round(state.time * (best.slices.length - 1)), slice = best.slices[k];
+    // in its own frame the slice nearest the now-line; in another, the same fraction of that frame's window
+    let k = Math.round(state.time * (best.slices.length - 1));
+    if (Math.abs(Math.atanh(best.u) - g.eta) < 1e-12) {
+      const now = nowTime(view);
+      best.slices.forEach((row, n) => { if (Math.abs(timeOf(best, n) - now) < Math.abs(timeOf(best, k) - now)) k = n; });
+    }
+    const slice = best.slices[k], first = best.window ? 0 : 1;
     const rows = [];
     let E = 0, p = 0;
     best.bodies.forEach((name, b) => {
-      const e = slice[1 + 2 * b], q = slice[2 + 2 * b];
+      const e = slice[first + 2 * b], q = slice[first + 1 + 2 * b];
       E += e; p += q;
-      rows.push([name === "rod" ? "rod (kinetic)" : name === "hidden" ? "hidden (stress)" : "particle " + name, fixed4(e), fixed4(q)]);
+      rows.push([BODY[name] || "particle " + name, fixed4(e), fixed4(q)]);
     });
     rows.push(["total", fixed4(E), fixed4(p)]);
     const frameU = best.u === 0 ? "S" : best.u === -v() ? "S\u2032" : "u = " + shown(best.u, 4);
     const clock = best.u === 0 ? "t" : best.u === -v() ? "t\u2032" : "t\u1d64";
     const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
-    fillTable($("ledger"), `Energy and momentum on the slice ${clock} = ${shown(slice[0], 4)} L of ${frameU}` +
+    const causal = m.model === "causal";
+    fillTable(panel.ledger, `Energy and momentum of the ${m.model} rod on the slice ${clock} = ${shown(timeOf(best, k), 4)} L of ${frameU}` +
               (exact ? " (of the tabulated slices, the nearest the now-line)" :
                ` (the ledger is tabulated in S\u2032, S and u = ${m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ")}: ` +
                "this is the nearest frame, at the same fraction of its time window)"),
-              ["body", "E (M c\u00b2)", "p (M c)"], rows, []);
+              ["body", "E (M c\u00b2)", "p (M c)"], rows,
+              causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
+                        "elastic energy included) and its stress part (its pressure's p (u u \u2212 \u03b7) across the " +
+                        "slice): the stress part is the real, local version of the rigid rod's hidden momentum; nothing " +
+                        "is hidden. Computed in Python on 41 slices of each tabulated frame (to 10\u207b\u2075 M c\u00b2), " +
+                        "not by this page."] : []);
   }
 
   // --- the legend: the same elements and inks as the SVG figures --------------------------------------------
@@ -438,16 +642,38 @@
     return `<svg width="44" height="14" aria-hidden="true">${extra || ""}<line x1="2" y1="7" x2="42" y2="7" ` +
       `stroke="${ink.colour}" stroke-width="${w}" stroke-dasharray="${dash || "none"}"/></svg>`;
   }
-  function drawLegend() {
-    const st = inks(), items = [];
+  let legendShown = null;
+  function drawLegend(gs) {
+    const st = inks(), items = [], causal = gs.find((g) => g.model.model === "causal");
     items.push([swatch(st.rod, `<rect x="2" y="1" width="40" height="12" fill="${st.sheet}"/>`), "rod: its ends (solid), world-sheet shaded"]);
-    for (const p of ["A", "B"]) if (model().worldlines[p]) items.push([swatch(st.particles[p]), "particle " + p]);
-    items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`, "impact"]);
+    if (causal) {
+      const [lo, hi] = causal.model.cells.ln_lam, ramp = [];
+      for (let k = 0; k < 7; k++) {
+        const f = k / 6, lnLam = f < 0.5 ? lo * (1 - 2 * f) : hi * (2 * f - 1);
+        const g = lnLam < 0 ? 0.5 * (lnLam - Math.min(lo, -1e-3)) / -Math.min(lo, -1e-3) : 0.5 + 0.5 * lnLam / Math.max(hi, 1e-3);
+        ramp.push(`<rect x="${2 + 40 * k / 7}" y="1" width="${40 / 7 + 0.3}" height="12" fill="${shadeColour(st.compression, g)}"/>`);
+      }
+      const lam = (x) => x.toFixed(Math.max(0, 1 - Math.floor(Math.log10(x))));
+      items.push([`<svg width="44" height="14" aria-hidden="true">${ramp.join("")}</svg>`,
+                  `causal rod's compression \u03bb: ${lam(Math.exp(lo))} to ${lam(Math.exp(hi))}, 1 unstressed`]);
+      items.push([swatch(st.rod_interior), "causal rod's material lines (L/4, L/2, 3L/4)"]);
+      items.push([swatch(st.front), "light front (a jump in \u03bb)"]);
+    }
+    for (const p of ["A", "B"]) if (gs[0].model.worldlines[p]) items.push([swatch(st.particles[p]), "particle " + p]);
+    items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`,
+                causal ? "impact; for the causal rod a contact (B\u2081)" : "impact"]);
+    if (causal) {
+      items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="white" stroke="${st.impact_colour}" stroke-width="1.3"/></svg>`,
+                  "separation (B\u2032\u2081)"]);
+      items.push([`<svg width="44" height="14" aria-hidden="true"><line x1="2" y1="7" x2="42" y2="7" stroke="#777777" stroke-opacity="0.35" stroke-width="${st.rod.width * 3.2 * pt}"/></svg>`,
+                  "contact: particle rides with end"]);
+    }
     items.push([swatch(st.rest), "line of simultaneity of S"]);
     items.push([swatch(st.moving), "line of simultaneity of S\u2032"]);
     if (state.cones) items.push([swatch(st.light_cone), "light cone of an impact"]);
     items.push([swatch({colour: st.flash, width: 2 * st.rod.width / 1.7, dashes: []}), "now: the frame's instant under the scrubber"]);
-    $("legend").innerHTML = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
+    const html = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
+    if (legendShown !== html) { legendShown = html; $("legend").innerHTML = html; }
   }
 
   // --- the controls ----------------------------------------------------------------------------------------
@@ -459,8 +685,10 @@
     $("speed-value").textContent = shown(v(), 10);
     const reach = Math.max(scenario().frame_reach, ...speeds.map((e) => e.v));
     controls.frame.min = String(-Math.ceil(reach * 100)); controls.frame.max = String(Math.ceil(reach * 100));
-    controls.model.innerHTML = entry().models.map((m, k) => `<option value="${k}">${m.model} rod</option>`).join("");
-    controls.model.value = String(state.model); controls.model.disabled = entry().models.length < 2;
+    rodControls.forEach((input, k) => {
+      input.checked = RODS[k] === state.rod;
+      input.disabled = RODS[k] !== "rigid" && !modelNamed("causal") || RODS[k] !== "causal" && !modelNamed("rigid");
+    });
   }
   function setFrameControl() {
     controls.frame.value = String(Math.round(state.u * 100));
@@ -471,7 +699,7 @@
     controls.moving.setAttribute("aria-pressed", String(frameName(state.u) === "moving"));
   }
   function setTimeControl() {
-    const g = geometry(), t = nowTime(g), clock = coordinateNames(state.u)[1];
+    const t = nowTime(shared()), clock = coordinateNames(state.u)[1];
     controls.time.value = String(Math.round(state.time * 1000));
     controls.time.setAttribute("aria-valuetext", `${clock} = ${shown(t, 4)} L`);
     $("time-value").textContent = `${clock} = ${shown(t, 4)} L`;
@@ -485,9 +713,7 @@
     $("heading").textContent = scenario().title;
     $("about").textContent = DATA.scenarios.length > 1 ? "Choose a scenario below." : scenario().description;
     setSpeedControl(); setFrameControl(); setTimeControl();
-    const place = drawDiagram();
-    drawStrip(place);
-    drawEvents(); drawLedger(); drawLegend();
+    drawPanels(true);
     const took = performance.now() - start;
     if (timings.first === null) { timings.first = took; timings.drawnAt = performance.now(); }
     else timings.redraws.push(took);
@@ -496,9 +722,31 @@
   function renderTime() {
     const start = performance.now();
     setTimeControl();
-    drawStrip(drawDiagram());
-    drawLedger();
+    drawPanels(false);
     timings.redraws.push(performance.now() - start);
+  }
+
+  // Each shown panel: its heading, diagram, strip, ledger and (with `all`) its events table; the second panel and
+  // its tables hidden when one rod is shown; side by side when the window is wide enough, else one under the other.
+  let widths = null;  // the panels' widths, measured again only when the window, the style or the panels change
+  function drawPanels(all) {
+    const view = shared(), two = view.gs.length === 2;
+    $("panels").classList.toggle("two", two);
+    PANELS[1].box.hidden = !two; PANELS[1].tables.hidden = !two;
+    const sign = [window.innerWidth, window.innerHeight, state.style, two].join("/");
+    if (!widths || widths.sign !== sign) {  // a measurement forces a layout of the whole page: once, before any drawing
+      widths = {sign, px: view.gs.map((g, k) => PANELS[k].box.clientWidth)};
+    }
+    view.gs.forEach((g, k) => { PANELS[k].width = widths.px[k]; });
+    view.gs.forEach((g, k) => {
+      const panel = PANELS[k];
+      panel.heading.textContent = g.model.model === "causal" ? "The causal rod (sound at c)" : "The rigid rod (the paper's)";
+      const place = drawDiagram(panel, g, view);
+      drawStrip(panel, place, g, view);
+      drawLedger(panel, g, view);
+      if (all) drawEvents(panel, g);
+    });
+    if (all) drawLegend(view.gs);
   }
 
   let pending = null;
@@ -510,9 +758,11 @@
   controls.scenario.addEventListener("change", () => {
     state.scenario = Number(controls.scenario.value);
     state.speed = scenario().speeds.findIndex((e) => e.v === scenario().v);
-    state.model = 0; state.u = 0; soon(render);
+    state.rod = scenario().rod; state.u = 0; soon(render);
   });
-  controls.model.addEventListener("change", () => { state.model = Number(controls.model.value); soon(render); });
+  rodControls.forEach((input) => input.addEventListener("change", () => {
+    if (input.checked) { state.rod = input.value; soon(render); }
+  }));
   controls.speed.addEventListener("input", () => {
     const moving = frameName(state.u) === "moving";
     state.speed = Number(controls.speed.value);
@@ -540,15 +790,24 @@
     if (state.playing) requestAnimationFrame(tick);
   });
   window.addEventListener("resize", () => soon(render));
+  // a panel whose width changes without a resize (a scroll bar comes with the tables): measured again
+  new ResizeObserver((seen) => {
+    if (widths && seen.some((e) => !widths.px.includes(Math.round(e.target.clientWidth)))) { widths = null; soon(render); }
+  }).observe($("panel-1"));
 
   // --- start -------------------------------------------------------------------------------------------------
   controls.scenario.innerHTML = DATA.scenarios.map((s, k) => `<option value="${k}">${s.name}: ${s.title}</option>`).join("");
   controls.scenario.disabled = DATA.scenarios.length < 2;
   controls.style.value = state.style;
   state.speed = scenario().speeds.findIndex((e) => e.v === scenario().v);
+  state.rod = scenario().rod;
   state.time = 0.5;
   render();
-  // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took
-  window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(geometry()),
-                         row: (t) => placed.row(t), column: (x) => placed.column(x)};
+  // the causal rod's cells of every speed sorted while nobody is dragging yet: one speed a tick
+  const unsorted = DATA.scenarios.flatMap((sc) => sc.speeds.flatMap((e) => e.models.filter((m) => m.cells)));
+  (function sortSome() { const m = unsorted.shift(); if (m) { keptCells(m.cells); setTimeout(sortSome, 0); } })();
+  // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took; row and
+  // column of the first panel, or of panel k (0 or 1)
+  window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(shared()),
+                         row: (t, k) => PANELS[k || 0].placed.row(t), column: (x, k) => PANELS[k || 0].placed.column(x)};
 })();

@@ -29,11 +29,14 @@ def data_json(data: dict) -> str:
         "<", "\\u003c")
 
 
-def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default") -> str:
-    """The whole page for the scenarios (name as the user gave it, scenario with --v and --L applied)."""
+def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default", shown: str | None = None) -> str:
+    """The whole page for the scenarios (name as the user gave it, scenario with --v and --L applied); `shown`:
+    the rod it opens on, rigid, causal or both (by default each scenario's own `rod`)."""
     if style not in STYLE_NAMES:
         raise ValueError(f"style must be one of {', '.join(STYLE_NAMES)}, got {style!r}")
-    data = page_data(scenarios, style)
+    if shown not in (None, "rigid", "causal", "both"):
+        raise ValueError(f"shown must be rigid, causal or both, got {shown!r}")
+    data = page_data(scenarios, style, shown)
     first = data["scenarios"][0]
     title = " · ".join(s["name"] for s in data["scenarios"])
     about = first["description"] if len(data["scenarios"]) == 1 else "Choose a scenario below."
@@ -60,10 +63,16 @@ TEMPLATE = """<!DOCTYPE html>
 <noscript><p>This page draws with JavaScript; allow scripts for this file to explore it.</p></noscript>
 </header>
 <main>
-<section aria-label="Minkowski diagram and the rod at one instant">
-<div id="diagram-box">
+<section aria-label="Minkowski diagrams and the rod at one instant">
+<div id="panels">
+<div class="panel" id="panel-1"><h2 id="panel-1-heading"></h2>
 <canvas id="diagram" role="img" aria-label="Minkowski diagram: the rod's world-sheet and ends, the particles, the impacts and the lines of simultaneity, in the chosen frame"></canvas>
 <canvas id="strip" role="img" aria-label="The rod and the particles at the now-line's instant, the rod coloured by the velocity of its material points"></canvas>
+</div>
+<div class="panel" id="panel-2" hidden><h2 id="panel-2-heading"></h2>
+<canvas id="diagram-2" role="img" aria-label="Minkowski diagram of the causal rod beside the rigid one: its world-sheet shaded by compression, its light fronts, material lines and contacts, in the chosen frame"></canvas>
+<canvas id="strip-2" role="img" aria-label="The causal rod and the particles at the now-line's instant, coloured by the velocity of its material points"></canvas>
+</div>
 </div>
 <ul id="legend" aria-label="Legend"></ul>
 </section>
@@ -71,7 +80,7 @@ TEMPLATE = """<!DOCTYPE html>
 <fieldset>
 <legend class="group">Explore</legend>
 <div class="control"><label for="scenario">scenario</label><select id="scenario"></select></div>
-<div class="control"><label for="model">rod model</label><select id="model"></select></div>
+<fieldset class="control" id="rod"><legend>rod</legend><label><input type="radio" name="rod" id="rod-rigid" value="rigid"> rigid</label><label><input type="radio" name="rod" id="rod-causal" value="causal"> causal (sound at c)</label><label><input type="radio" name="rod" id="rod-both" value="both"> both, side by side</label></fieldset>
 <div class="control"><label for="speed">speed v of S′</label><input type="range" id="speed" min="0" max="0" step="1" value="0"><output id="speed-value" for="speed"></output></div>
 <div class="control"><label for="frame">frame: velocity u relative to S</label><input type="range" id="frame" min="-95" max="95" step="1" value="0"><output id="frame-value" for="frame"></output></div>
 <div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
@@ -81,10 +90,18 @@ TEMPLATE = """<!DOCTYPE html>
 </fieldset>
 </section>
 <section class="tables" aria-label="The impacts and the ledger">
+<div class="table-set" id="tables-1">
 <div><table id="events"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
 <p class="notes" id="events-notes"></p></div>
 <div><table id="ledger"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
 <p class="notes" id="ledger-notes"></p></div>
+</div>
+<div class="table-set" id="tables-2" hidden>
+<div><table id="events-2"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<p class="notes" id="events-2-notes"></p></div>
+<div><table id="ledger-2"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<p class="notes" id="ledger-2-notes"></p></div>
+</div>
 </section>
 </main>
 <script type="application/json" id="page-data">{data}</script>
