@@ -157,10 +157,7 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
             level = total.p if q == "p" else total.E
             _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
             ax.set_xlim(t[0], t[-1])
-            for axis in (ax.xaxis, ax.yaxis):  # numbers as every figure writes them: no offsets, no 1e-06
-                axis.set_major_formatter(FuncFormatter(lambda value, _pos: shown(value, 6)))
-            ax.tick_params(labelsize=fs)
-            ax.set_ylabel("p / M c" if q == "p" else "E / M c²", fontsize=fs * 1.05)
+            _axis_words(ax, q, frame, fs)
             if q == "p":
                 ax.set_title(f"({letter}) frame {frame_symbol(frame)}", fontsize=fs * 1.1, pad=fs * 1.5 + 4)
                 ax.tick_params(labelbottom=False)
@@ -178,8 +175,6 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
                                     xytext=((k - (len(group) - 1) / 2) * fs * 1.6, 2), textcoords="offset points",
                                     ha="center", va="bottom", fontsize=fs, gid=f"{letter}-label-{e.impact.label}",
                                     zorder=5, style="italic")
-            else:
-                ax.set_xlabel(f"{axis_label(coordinate_names(frame)[1])}", fontsize=fs * 1.05)
     handles = [Line2D([], [], color=particle_inks[n].colour, linewidth=particle_inks[n].width,
                       linestyle=particle_inks[n].dashes) for n in names]
     labels = [f"particle {n}" for n in names]
@@ -190,6 +185,17 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
                            fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
     legend.set_gid("legend")
     return figure
+
+
+def _axis_words(ax, q: str, frame, fs: float) -> None:
+    """A ledger panel's numbers (as every figure writes them: no offsets, no 1e-06) and its axes' names: p above,
+    E below with the frame's time under it."""
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(FuncFormatter(lambda value, _pos: shown(value, 6)))
+    ax.tick_params(labelsize=fs)
+    ax.set_ylabel("p / M c" if q == "p" else "E / M c²", fontsize=fs * 1.05)
+    if q != "p":
+        ax.set_xlabel(f"{axis_label(coordinate_names(frame)[1])}", fontsize=fs * 1.05)
 
 
 def _hidden_fill(st: Style) -> dict:
@@ -320,18 +326,13 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                     _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
                 ax.set_xlim(t[0], t[-1])
                 shared.setdefault((k, q), []).append(ax)
-                for axis in (ax.xaxis, ax.yaxis):  # numbers as every figure writes them: no offsets, no 1e-06
-                    axis.set_major_formatter(FuncFormatter(lambda value, _pos: shown(value, 6)))
-                ax.tick_params(labelsize=fs)
-                ax.set_ylabel("p / M c" if q == "p" else "E / M c²", fontsize=fs * 1.05)
+                _axis_words(ax, q, frame, fs)
                 if q == "p":
                     model = ("causal rod, " if causal else "rigid rod, ") if both else ""
                     ax.set_title(f"({letter}) {model}frame {frame_symbol(frame)}", fontsize=fs * 1.1,
                                  pad=fs * 2.8 + 4)
                     ax.tick_params(labelbottom=False)
                     _event_labels(ax, events, L, fs, column_w / (t[-1] - t[0]), letter)
-                else:
-                    ax.set_xlabel(f"{axis_label(coordinate_names(frame)[1])}", fontsize=fs * 1.05)
     for axes in shared.values():  # the two rods' panels of one frame on one scale
         lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
         for ax in axes:
