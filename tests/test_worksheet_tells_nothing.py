@@ -2,7 +2,8 @@
 every page before the answer key (the pages' drawn text, tick labels and panel titles included; the PDF's own text
 at one speed; the LaTeX of --format tex) searched for every fact each question asks (`document.Fact`: a number in
 every printed form, a claim as its phrases), for every preset at v = 0.3, 0.6, 0.95; at 0.6 three with the causal rod's
-comparison and its questions (`handout --rod both --worksheet`).
+comparison and its questions (`handout --rod both --worksheet`)
+and the rod's own view of both rods after their diagrams (`--frame both,rod`).
 
 One worksheet of all the presets per speed, built once per session and split into its sections by their headings,
 so each question's facts are searched in its own scenario's pages."""
@@ -23,6 +24,7 @@ from conftest import causal_history, history
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Fact, Heading, Paragraph, Question
+from rodparadox.handout.own_view import with_rod_views
 from rodparadox.handout.pdf import page_figures
 from rodparadox.handout.pdf_text import TextRuns
 from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
@@ -122,6 +124,8 @@ def _worksheets_at(v: float):
     doc = build([(name, history(name, v), None,
                   causal_history(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
                  for name in builtin_names()], worksheet=True)
+    if v == CAUSAL_SPEED:  # and the rod's own view after their diagrams (handout --frame both,rod): its captions
+        doc = with_rod_views(doc, {name: (history(name, v), causal_history(name, v)) for name in CAUSAL_PRESETS})
     before_key = dataclasses.replace(doc, answer_key=())
     figures = page_figures(before_key)
     drawn = _by_section(doc, _page_texts(figures))
