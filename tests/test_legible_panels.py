@@ -283,6 +283,10 @@ def test_plot_handout_and_animate_at_0_9999999_warn_of_nothing(tmp_path, caplog)
         # matplotlib logs a missing glyph (to stderr in a shell; under pytest, to its log capture)
         assert [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING] == [], command
         assert any(out.iterdir())
+    # the causal rod's PDF: fontTools warned twice of cmsy10.ttf's timestamps while subsetting it
+    result = CliRunner().invoke(main, ["plot", "fig2", "--rod", "causal", "--format", "pdf", "-o", str(tmp_path / "c.pdf")])
+    assert result.exit_code == 0 and result.stderr == ""
+    assert [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING] == []
 
 
 def test_plot_equal_scales_names_its_file_and_draws_one_scale(tmp_path):

@@ -8,6 +8,7 @@ so a caller (an animation) can update artists with `set_data` instead of drawing
 from __future__ import annotations
 
 import io
+import logging
 from contextlib import contextmanager
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -27,6 +28,16 @@ from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, o
 from rodparadox.render.legibility import material_lines_that_fit
 from rodparadox.render.panel import draw_panel
 from rodparadox.tolerances import FIT_SLACK
+
+
+def _not_a_low_font_timestamp(record: logging.LogRecord) -> bool:
+    return "timestamp seems very low" not in str(record.msg)
+
+
+# matplotlib's Computer Modern symbol font (cmsy10.ttf, which mathtext reaches for some symbols) has head-table
+# timestamps of 0; fontTools says so, as a warning on standard error, each time the PDF backend subsets it for a
+# PDF (`plot --rod causal --format pdf` printed it twice). Nothing is wrong with the file written: that notice is dropped.
+logging.getLogger("fontTools.ttLib.tables._h_e_a_d").addFilter(_not_a_low_font_timestamp)
 
 # metadata that would make two runs differ (dates, versions) is left out
 FIGURE_METADATA = {
