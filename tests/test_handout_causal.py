@@ -218,3 +218,21 @@ def test_a_greek_capital_before_a_variable_stays_two_tokens_in_latex():
 
     assert prose("(Δt, Δx)") == r"($\Delta t$, $\Delta x$)"
     assert prose("γt′ and −L") == r"$\gamma t'$ and $-L$"
+
+
+def test_the_comparison_says_where_the_causal_rod_is_drawn():
+    """Review: with --frame both,rod the rod's own view draws the causal rod, yet the comparison said "this handout
+    does not draw the causal rod yet". Without the view it says so; with the view of both rods, that it draws the
+    causal rod there only (handout and worksheet)."""
+    from rodparadox.handout.own_view import with_rod_views
+
+    rigid, causal = history("single", 0.6), causal_history("single", 0.6)
+    for worksheet in (False, True):
+        doc = build([("single", rigid, None, causal)], worksheet=worksheet)
+        said = lambda d: " ".join(b.text for s in d.sections for b in s.blocks if isinstance(b, Paragraph))
+        assert "does not draw the causal rod yet" in said(doc)
+        viewed = said(with_rod_views(doc, {"single": (rigid, causal)}))
+        assert "does not draw the causal rod" not in viewed
+        assert "draws the causal rod only in the rod\u2019s own view, after the diagram" in viewed
+        # the view of the rigid rod alone leaves the sentence true as it was
+        assert "does not draw the causal rod yet" in said(with_rod_views(doc, {"single": (rigid,)}))

@@ -30,6 +30,10 @@ INTRODUCTION = (
     "a causal rod of the same rest mass M and length L; every number below is computed from its run. The diagrams, "
     "the rod at successive instants and the tables above are of the rigid rod: this handout does not draw the "
     "causal rod yet.")
+#: what the introductions say of the causal rod's drawing, and what they say instead where the rod's own view after
+#: the diagram draws it (`own_view.with_rod_views`)
+NOT_DRAWN = "does not draw the causal rod yet."
+DRAWN_IN_OWN_VIEW = "draws the causal rod only in the rod\u2019s own view, after the diagram."
 #: a worksheet shows the diagram and blank tables of the rigid rod (the strips wait for the key)
 WORKSHEET_INTRODUCTION = INTRODUCTION.replace("The diagrams, the rod at successive instants and the tables above",
                                               "The diagram and the tables above").replace("this handout", "this sheet")
