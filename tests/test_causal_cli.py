@@ -80,6 +80,14 @@ def test_rod_key_and_option(tmp_path):
     path.write_text("v: 0.6\nsound_speed: 0.5\nparticles:\n  A: {gap: 0.5}\n")
     out = run("events", str(path), expect=2).output
     assert "sound_speed must be 1" in out and "shocks" in out and "Traceback" not in out
+    # review: sound_speed: 1 beside the rigid rod (the default, or rod: rigid) ran the rigid model without a word
+    for rod in ("", "rod: rigid\n"):
+        path.write_text(f"v: 0.6\n{rod}sound_speed: 1\nparticles:\n  A: {{gap: 0.5}}\n")
+        assert "give rod: causal with it" in run("events", str(path), expect=2).output
+    path.write_text("v: 0.6\nrod: causal\nsound_speed: 1\nparticles:\n  A: {gap: 0.5}\n")
+    assert "A1s" in run("events", str(path)).output
+    path.write_text("v: 0.6\nrod: 1\nparticles:\n  A: {gap: 0.5}\n")
+    assert "rod must be rigid or causal, got 1 (a whole number)." in run("events", str(path), expect=2).output
 
 
 def test_commands_without_both_refuse_it():  # (html takes the causal rod and both now: tests/test_html.py)

@@ -194,7 +194,8 @@ def described(value: Any) -> str:
         return repr(value)
     if isinstance(value, (list, dict)):
         return "a list" if isinstance(value, list) else "a mapping"
-    return f"{value} (a {type(value).__name__})"
+    kind = {"int": "a whole number", "float": "a number"}.get(type(value).__name__, f"a {type(value).__name__}")
+    return f"{value} ({kind})"
 
 
 def _check_text(value: Any, key: str, *, newlines: bool) -> None:
