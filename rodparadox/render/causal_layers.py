@@ -222,8 +222,11 @@ class Compression(CausalLayer):
 
 
 def lam_text(lam: float) -> str:
-    """lam to two significant digits in plain decimals (115, 6.5, 0.38, 0.0086): never e-notation."""
+    """lam to two significant digits in plain decimals (115, 6.5, 0.38, 0.0086): never e-notation; more digits
+    where two would read an unstressed 1 for a stressed rod (1.0004 at v = 0.01, not 1.0)."""
     decimals = max(0, 1 - math.floor(math.log10(lam)))
+    while decimals < 12 and lam != 1.0 and float(f"{lam:.{decimals}f}") == 1.0:
+        decimals += 1
     return f"{lam:.{decimals}f}"
 
 
