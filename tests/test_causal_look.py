@@ -114,3 +114,25 @@ def test_ledger_figure_of_both_rods_refuses_more_frames_than_four_rows_of_each(t
                                        "-o", str(tmp_path / "x.svg")])
     assert result.exit_code == 2 and "Traceback" not in result.output and result.output.count(".") <= 2
     assert "at most 4 frames" in result.output and list(tmp_path.iterdir()) == []
+
+
+def test_an_event_name_pushed_off_its_line_is_tied_to_it():
+    """Review: in fig2's S′ panel of both rods A′₃ stood 0.8 L right of its line, untied, read as another event. A name
+    whose box is no longer over its event's line gets a leader ending on that line at the panel's top."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.text import Text
+
+    fig = ledger_figure.draw_both(history("fig2", 0.6), causal_history("fig2", 0.6), paper_frames(0.6), "default")
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw_without_rendering()
+    tied = 0
+    for ax in fig.axes:
+        for text in ax.texts:
+            if "-label-" not in (text.get_gid() or ""):
+                continue
+            box = Text.get_window_extent(text, renderer)  # the name alone (an Annotation's adds its leader)
+            line_x = ax.transData.transform((text.xy[0], 0.0))[0]
+            if not box.x0 <= line_x <= box.x1:
+                assert text.arrow_patch is not None, text.get_text()
+                tied += 1
+    assert tied >= 2  # A′₂ and A′₃ in S′ (this test fails if names are never pushed: then it checks nothing)
