@@ -266,12 +266,16 @@ def _event_labels(ax, events, L: float, fs: float, points_per_unit: float, lette
         tier = 0 if at[0] - want <= max(at[1] - want, 0.0) + 0.5 else 1
         ends[tier] = at[tier] + w / 2
         # a name pushed off its line (by more than a point) is tied to the line's top by a thin leader, so it is
-        # never read as an event where it stands
-        leader = {"arrowprops": {"arrowstyle": "-", "linewidth": 0.5, "color": "0.35", "shrinkA": 0.0, "shrinkB": 0.0}} \
-            if at[tier] - want > 1.0 else {}
-        ax.annotate(name, (t / L, 1.0), xycoords=("data", "axes fraction"), xytext=(at[tier] - want, 2 + tier * fs * 1.3),
-                    textcoords="offset points", ha="center", va="bottom", fontsize=fs, gid=f"{letter}-label-{label}",
-                    zorder=5, style="italic", **leader)
+        # never read as an event where it stands; leaders under the names, each name on a white ground, so a leader
+        # passes behind a name it crosses
+        offset = (at[tier] - want, 2 + tier * fs * 1.3)
+        if at[tier] - want > 1.0:
+            ax.annotate("", (t / L, 1.0), xycoords=("data", "axes fraction"), xytext=offset, textcoords="offset points",
+                        arrowprops={"arrowstyle": "-", "linewidth": 0.5, "color": "0.35", "shrinkA": 0.0, "shrinkB": 0.0},
+                        zorder=5, gid=f"{letter}-leader-{label}")
+        ax.annotate(name, (t / L, 1.0), xycoords=("data", "axes fraction"), xytext=offset, textcoords="offset points",
+                    ha="center", va="bottom", fontsize=fs, gid=f"{letter}-label-{label}", zorder=6, style="italic",
+                    bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.6})
 
 
 def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure:
