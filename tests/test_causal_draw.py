@@ -222,8 +222,10 @@ def test_every_preset_draws_with_both_rods_rigid_row_above_causal_on_the_same_sc
         a, b = diagram.panels
         assert a.letter == "a" and b.letter == "b"
         assert a.axes.get_position().y0 > b.axes.get_position().y1  # rigid above
-        # one data box and one scale (points per L): only a longer title may widen a panel's empty sides
+        # one data box and one scale (points per L), drawn alike: a longer title widens both panels of its frame
+        # (review: the causal row's "..., ringing" widened its panel alone, fig2's x from -4.8 against -3.7)
         assert a.data_box == b.data_box and a.axes.get_ylim() == b.axes.get_ylim()
+        assert a.axes.get_xlim() == pytest.approx(b.axes.get_xlim(), abs=1e-12)
         scale = [ax.get_position().width * diagram.figure.get_figwidth() / np.ptp(ax.get_xlim())
                  for ax in (a.axes, b.axes)]
         assert scale[0] == pytest.approx(scale[1], rel=1e-9)

@@ -351,11 +351,17 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
         options = [o for o in options if o[2] > 0.0] or [(arrangements[-1][0], True, m.least_panel)]
         rows, wide, height = min(options, key=lambda option: figure_height(*option))
     width = figure_width(rows, wide, height)
+    shares = []
     for row in rows:
         spare = width - row_width(row, height)  # room the figure has anyway (a wide legend): titles may use it
         # the causal rod's long titles ("finally at ..., ringing") share the room; the rigid rod's figures keep theirs
         fair = per_row is not None or getattr(history, "kind", "") == "causal"
-        row_widths = _share(widths(row, height), [m.one_line(p.title) for p in row], spare, fair)
+        shares.append(_share(widths(row, height), [m.one_line(p.title) for p in row], spare, fair))
+    if per_row is not None and len({len(row) for row in rows}) == 1:  # --rod both: a frame's panels one above the other
+        columns = [max(share[k] for share in shares) for k in range(len(rows[0]))]  # keep one data box
+        if all(row_width(row, height) - sum(widths(row, height)) + sum(columns) <= width + 1e-9 for row in rows):
+            shares = [columns] * len(rows)
+    for row, row_widths in zip(rows, shares):
         for p, w in zip(row, row_widths):
             p.height, p.width = height, w
             p.box = list(p.data_box)
