@@ -236,3 +236,23 @@ def test_the_comparison_says_where_the_causal_rod_is_drawn():
         assert "draws the causal rod only in the rod\u2019s own view, after the diagram" in viewed
         # the view of the rigid rod alone leaves the sentence true as it was
         assert "does not draw the causal rod yet" in said(with_rod_views(doc, {"single": (rigid,)}))
+
+
+def test_the_stress_part_is_set_against_a_hidden_part_where_the_rigid_model_has_one():
+    """Review: `single`'s comparison used a slice of S′ halfway through the causal contact, where its rigid ledger has
+    no hidden part: "set against nothing". The slice is taken in the first frame shown where the rigid ledger has a
+    hidden part and the causal rod is stressed (moving frames first): for `single` in S, where the two nearly agree."""
+    from rodparadox.handout.causal_reading import stress_slice
+    from rodparadox.tables.build import hidden_instants
+
+    rigid, causal = history("single", 0.6), causal_history("single", 0.6)
+    frames = paper_frames(0.6)
+    # why not S′: where its rigid hidden part is largest no front has reached the causal rod yet (nothing to compare)
+    f = frames[1].rapidity
+    t_max = max(hidden_instants(rigid, frames[1]), key=lambda t: abs(rigid.energy_momentum(f, t).hidden.p))
+    assert dict(causal.energy_momentum(f, t_max, split=True).rod_parts)["stress"].p == pytest.approx(0.0, abs=1e-12)
+    s = stress_slice(rigid, causal, frames)
+    assert s.frame.name == "rest" and abs(s.hidden.p) > 0.05 * s.total.E
+    assert s.stress.p == pytest.approx(s.hidden.p, rel=0.05)  # the local stress momentum, near the rigid hidden one
+    # fig2 keeps the paper's S′
+    assert stress_slice(history("fig2", 0.6), causal_history("fig2", 0.6), frames).frame.name == "moving"

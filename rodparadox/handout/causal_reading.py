@@ -157,17 +157,24 @@ def ringing(rigid, causal) -> Ringing:
 
 
 def stress_slice(rigid, causal, frames) -> StressSlice:
-    """The slice of the first moving frame shown (else the first frame) where the rigid ledger's hidden momentum is
-    largest, unless the causal rod is unstressed there (no front has reached it yet); else halfway through the causal
-    rod's first contact in that frame."""
-    frame = next((f for f in frames if f.name != "rest"), frames[0])
-    f = frame.rapidity
-    instants = tables.hidden_instants(rigid, frame)
+    """The slice where the rigid ledger's hidden momentum is largest, in the first frame shown where it has one and
+    the causal rod is stressed there too (moving frames before S: the paper's S′ first); where no frame has such a
+    slice (the causal rod not yet reached), halfway through the causal rod's first contact in the first moving
+    frame (else the first frame). So the comparison sets the two against each other wherever the rigid model has a
+    hidden part (`single`'s is in S only: in S′ its rod turns about the struck end at rest)."""
+    ordered = [f for f in frames if f.name != "rest"] + [f for f in frames if f.name == "rest"]
     first = causal.impacts[0]
     ended = next(i for i in causal.impacts if i.kind == "separation" and i.particle == first.particle)
-    candidates = [max(instants, key=lambda s: abs(rigid.energy_momentum(f, s).hidden.p))] if instants else []
-    candidates.append(0.5 * (first.event.time_in(f) + ended.event.time_in(f)))
-    for t in candidates:  # a slice the rigid rod's stress crosses, unless the causal rod's has not reached it yet
+    candidates = []
+    for frame in ordered:
+        f = frame.rapidity
+        hidden = {t: abs(rigid.energy_momentum(f, t).hidden.p) for t in tables.hidden_instants(rigid, frame)}
+        if hidden and max(hidden.values()) > UNSTRESSED * rigid.initial_total(f).E:
+            candidates.append((frame, max(hidden, key=hidden.get)))
+    fallback = ordered[0] if ordered else frames[0]
+    candidates.append((fallback, 0.5 * (first.event.time_in(fallback.rapidity) + ended.event.time_in(fallback.rapidity))))
+    for frame, t in candidates:  # a slice the rigid rod's stress crosses, unless the causal rod's has not reached it
+        f = frame.rapidity
         s = causal.energy_momentum(f, t, split=True)
         parts = dict(s.rod_parts)
         if abs(parts["stress"].p) > UNSTRESSED * s.kinetic.E:
