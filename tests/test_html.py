@@ -613,3 +613,45 @@ def test_rigid_causal_and_both_on_a_projector_and_a_phone(browser, page_file, sc
                 (name == "phone")
         finally:
             tab.close()
+
+
+def boxes_overlap(a: dict, b: dict) -> bool:
+    return a["x"] < b["x"] + b["w"] and b["x"] < a["x"] + a["w"] and a["y"] < b["y"] + b["h"] and b["y"] < a["y"] + a["h"]
+
+
+def test_impact_labels_never_overprint_with_both_rods_in_s_and_s_prime_in_default_and_print(opened, fig2_data,
+                                                                                            screenshots):
+    """Issue 17 review: at v = 0.6 the causal rod's A3 and its separation A'3 are a few pixels apart, and their
+    labels overprinted into one glyph. Every impact has a label whose box (read from the page) is at least as wide
+    as its text measured here, in the page's font; no two boxes of a diagram overlap; each sits within reach of
+    its dot or is tied to it by a leader."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("rod-rigid", "ArrowRight", "ArrowRight")
+    assert opened.state()["rod"] == "both"
+    for style in ("default", "print"):
+        opened.tab.select_option("#style", style)
+        for frame in ("frame-rest", "frame-moving"):
+            opened.press(frame, "Enter")
+            for diagram in ("diagram", "diagram-2"):
+                labels = json.loads(opened.tab.get_attribute(f"#{diagram}", "data-labels"))
+                dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute(f"#{diagram}", "data-impacts"))}
+                assert sorted(b["label"] for b in labels) == sorted(dots) and len(dots) == (8 if diagram[-1] == "2" else 3)
+                model = at_speed(fig2_data, 0.6, "causal" if diagram[-1] == "2" else "rigid")
+                names = {i["label"]: i["name"] for i in model["impacts"]}
+                size, widths = opened.tab.evaluate("""(names) => {
+                    const size = parseFloat(getComputedStyle(document.body).fontSize), family = getComputedStyle(document.body).fontFamily;
+                    const ctx = document.createElement('canvas').getContext('2d');
+                    return [size, names.map((name) => {  // the letter in italics, the rest upright
+                        ctx.font = 'italic ' + size + 'px ' + family; const a = ctx.measureText(name[0]).width;
+                        ctx.font = size + 'px ' + family; return a + ctx.measureText(name.slice(1)).width; })]; }""",
+                    [names[b["label"]] for b in labels])
+                for box, width in zip(labels, widths):
+                    assert box["w"] >= width - 0.01 and box["h"] >= 0.6 * size, (box, width)
+                    dot = dots[box["label"]]
+                    gap = math.hypot(max(box["x"] - dot["x"], 0, dot["x"] - box["x"] - box["w"]),
+                                     max(box["y"] - dot["y"], 0, dot["y"] - box["y"] - box["h"]))
+                    assert box["leader"] or gap < 1.2 * size, box
+                for k, a in enumerate(labels):
+                    for b in labels[k + 1:]:
+                        assert not boxes_overlap(a, b), (style, frame, diagram, a, b)
+            opened.tab.screenshot(path=str(screenshots / f"fig2_v0.6_both_{style}_{frame}.png"))
