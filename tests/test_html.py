@@ -471,7 +471,7 @@ def test_speed_0_6_in_s_prime_shows_a1_and_b1_at_17_12_in_the_table_and_on_one_p
     assert state["u"] == -0.6 and fig2_data["scenarios"][0]["speeds"][state["speed"]]["v"] == 0.6
     rows = opened.rows("events")
     assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)"
-    assert "S\u2032" in opened.tab.inner_text("#events caption")
+    assert "S\u2032" in opened.tab.inner_text("#events-caption")
     dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
     row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
     assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
@@ -493,7 +493,7 @@ def test_another_frame_shows_events_digits_boosted_in_the_page(opened, fig2_data
         ours = [float(cell.replace(MINUS, "-")) for cell in row[2:4]]
         theirs = [float(cell) for cell in printed[label.translate(str.maketrans("\u2081\u2082", "12"))][2:4]]
         assert ours == pytest.approx(theirs, rel=1e-6, abs=1e-7)
-    assert "boosted" in opened.tab.inner_text("#events caption")
+    assert "boosted" in opened.tab.inner_text("#events-caption")
     opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_u0.3.png"), full_page=True)
 
 
@@ -655,3 +655,27 @@ def test_impact_labels_never_overprint_with_both_rods_in_s_and_s_prime_in_defaul
                     for b in labels[k + 1:]:
                         assert not boxes_overlap(a, b), (style, frame, diagram, a, b)
             opened.tab.screenshot(path=str(screenshots / f"fig2_v0.6_both_{style}_{frame}.png"))
+
+
+def test_on_a_phone_captions_and_paragraphs_wrap_to_the_window_and_only_table_cells_scroll(browser, page_file):
+    """Issue 17 review: at 390 x 844 the tables' captions and the closing paragraph sat in 872-px scroll boxes, cut
+    mid-word. With both rods, in S and in S': every paragraph (captions and notes included) lies within the
+    window, and the only boxes that scroll sideways are the tables' cells (the events tables are wider)."""
+    tab = Opened(browser, page_file, {"width": 390, "height": 844})
+    try:
+        tab.press("rod-rigid", "ArrowRight", "ArrowRight")
+        assert tab.state()["rod"] == "both"
+        for frame in ("frame-rest", "frame-moving"):
+            tab.press(frame, "Enter")
+            wide = tab.tab.evaluate("""[...document.querySelectorAll('p, caption')]
+                .filter((e) => e.offsetParent !== null && e.textContent.trim())
+                .map((e) => [e.id, e.getBoundingClientRect().left, e.getBoundingClientRect().right, e.scrollWidth, e.clientWidth])""")
+            assert len(wide) >= 6 and {"events-caption", "ledger-2-notes"} <= {w[0] for w in wide}
+            for name, left, right, scroll, client in wide:
+                assert left >= 0 and right <= 390 and scroll <= client, (frame, name, left, right)
+            scrolling = tab.tab.evaluate("""[...document.querySelectorAll('*')]
+                .filter((e) => e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible')
+                .map((e) => [e.className, e.firstElementChild && e.firstElementChild.tagName])""")
+            assert scrolling and all(s == ["cells", "TABLE"] for s in scrolling), scrolling
+    finally:
+        tab.close()

@@ -603,7 +603,7 @@
 
   // --- the tables ------------------------------------------------------------------------------------------
   function fillTable(table, caption, header, rows, notes) {
-    table.caption.textContent = caption;
+    $(table.id + "-caption").textContent = caption;  // above the table, wrapped to the window: only the cells scroll
     const head = table.tHead.rows[0] || table.tHead.insertRow();
     head.innerHTML = "";
     for (const h of header) { const th = document.createElement("th"); th.scope = "col"; th.textContent = h; head.appendChild(th); }
