@@ -369,7 +369,9 @@
       ctx.beginPath(); ctx.arc(px, py, radius, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       dots.push({label: i.label, x: px, y: py});
     }
-    const labels = placeLabels(ctx, g, place, radius, size);
+    const labelSign = [g.key, state.style, size, place.scale, place.column(0), place.row(0)].join("/");
+    if (!g.labels || g.labels.sign !== labelSign) g.labels = {sign: labelSign, placed: placeLabels(ctx, g, place, radius, size)};
+    const labels = g.labels.placed;  // the same while only the time moves
     ctx.strokeStyle = "black"; ctx.lineWidth = 0.6 * pt * size / 12; ctx.setLineDash([]);
     for (const b of labels) if (b.leader) {
       ctx.beginPath(); ctx.moveTo(...b.leader[0]); ctx.lineTo(...b.leader[1]); ctx.stroke();
