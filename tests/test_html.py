@@ -471,7 +471,7 @@ def test_speed_0_6_in_s_prime_shows_a1_and_b1_at_17_12_in_the_table_and_on_one_p
     assert state["u"] == -0.6 and fig2_data["scenarios"][0]["speeds"][state["speed"]]["v"] == 0.6
     rows = opened.rows("events")
     assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)"
-    assert "S\u2032" in opened.tab.inner_text("#events caption")
+    assert "S\u2032" in opened.tab.inner_text("#events-caption")
     dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
     row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
     assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
@@ -493,7 +493,7 @@ def test_another_frame_shows_events_digits_boosted_in_the_page(opened, fig2_data
         ours = [float(cell.replace(MINUS, "-")) for cell in row[2:4]]
         theirs = [float(cell) for cell in printed[label.translate(str.maketrans("\u2081\u2082", "12"))][2:4]]
         assert ours == pytest.approx(theirs, rel=1e-6, abs=1e-7)
-    assert "boosted" in opened.tab.inner_text("#events caption")
+    assert "boosted" in opened.tab.inner_text("#events-caption")
     opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_u0.3.png"), full_page=True)
 
 
@@ -613,3 +613,69 @@ def test_rigid_causal_and_both_on_a_projector_and_a_phone(browser, page_file, sc
                 (name == "phone")
         finally:
             tab.close()
+
+
+def boxes_overlap(a: dict, b: dict) -> bool:
+    return a["x"] < b["x"] + b["w"] and b["x"] < a["x"] + a["w"] and a["y"] < b["y"] + b["h"] and b["y"] < a["y"] + a["h"]
+
+
+def test_impact_labels_never_overprint_with_both_rods_in_s_and_s_prime_in_default_and_print(opened, fig2_data,
+                                                                                            screenshots):
+    """Issue 17 review: at v = 0.6 the causal rod's A3 and its separation A'3 are a few pixels apart, and their
+    labels overprinted into one glyph. Every impact has a label whose box (read from the page) is at least as wide
+    as its text measured here, in the page's font; no two boxes of a diagram overlap; each sits within reach of
+    its dot or is tied to it by a leader."""
+    opened.press("speed", "Home", *["ArrowRight"] * speed_index(0.6, fig2_data))
+    opened.press("rod-rigid", "ArrowRight", "ArrowRight")
+    assert opened.state()["rod"] == "both"
+    for style in ("default", "print"):
+        opened.tab.select_option("#style", style)
+        for frame in ("frame-rest", "frame-moving"):
+            opened.press(frame, "Enter")
+            for diagram in ("diagram", "diagram-2"):
+                labels = json.loads(opened.tab.get_attribute(f"#{diagram}", "data-labels"))
+                dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute(f"#{diagram}", "data-impacts"))}
+                assert sorted(b["label"] for b in labels) == sorted(dots) and len(dots) == (8 if diagram[-1] == "2" else 3)
+                model = at_speed(fig2_data, 0.6, "causal" if diagram[-1] == "2" else "rigid")
+                names = {i["label"]: i["name"] for i in model["impacts"]}
+                size, widths = opened.tab.evaluate("""(names) => {
+                    const size = parseFloat(getComputedStyle(document.body).fontSize), family = getComputedStyle(document.body).fontFamily;
+                    const ctx = document.createElement('canvas').getContext('2d');
+                    return [size, names.map((name) => {  // the letter in italics, the rest upright
+                        ctx.font = 'italic ' + size + 'px ' + family; const a = ctx.measureText(name[0]).width;
+                        ctx.font = size + 'px ' + family; return a + ctx.measureText(name.slice(1)).width; })]; }""",
+                    [names[b["label"]] for b in labels])
+                for box, width in zip(labels, widths):
+                    assert box["w"] >= width - 0.01 and box["h"] >= 0.6 * size, (box, width)
+                    dot = dots[box["label"]]
+                    gap = math.hypot(max(box["x"] - dot["x"], 0, dot["x"] - box["x"] - box["w"]),
+                                     max(box["y"] - dot["y"], 0, dot["y"] - box["y"] - box["h"]))
+                    assert box["leader"] or gap < 1.2 * size, box
+                for k, a in enumerate(labels):
+                    for b in labels[k + 1:]:
+                        assert not boxes_overlap(a, b), (style, frame, diagram, a, b)
+            opened.tab.screenshot(path=str(screenshots / f"fig2_v0.6_both_{style}_{frame}.png"))
+
+
+def test_on_a_phone_captions_and_paragraphs_wrap_to_the_window_and_only_table_cells_scroll(browser, page_file):
+    """Issue 17 review: at 390 x 844 the tables' captions and the closing paragraph sat in 872-px scroll boxes, cut
+    mid-word. With both rods, in S and in S': every paragraph (captions and notes included) lies within the
+    window, and the only boxes that scroll sideways are the tables' cells (the events tables are wider)."""
+    tab = Opened(browser, page_file, {"width": 390, "height": 844})
+    try:
+        tab.press("rod-rigid", "ArrowRight", "ArrowRight")
+        assert tab.state()["rod"] == "both"
+        for frame in ("frame-rest", "frame-moving"):
+            tab.press(frame, "Enter")
+            wide = tab.tab.evaluate("""[...document.querySelectorAll('p, caption')]
+                .filter((e) => e.offsetParent !== null && e.textContent.trim())
+                .map((e) => [e.id, e.getBoundingClientRect().left, e.getBoundingClientRect().right, e.scrollWidth, e.clientWidth])""")
+            assert len(wide) >= 6 and {"events-caption", "ledger-2-notes"} <= {w[0] for w in wide}
+            for name, left, right, scroll, client in wide:
+                assert left >= 0 and right <= 390 and scroll <= client, (frame, name, left, right)
+            scrolling = tab.tab.evaluate("""[...document.querySelectorAll('*')]
+                .filter((e) => e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible')
+                .map((e) => [e.className, e.firstElementChild && e.firstElementChild.tagName])""")
+            assert scrolling and all(s == ["cells", "TABLE"] for s in scrolling), scrolling
+    finally:
+        tab.close()

@@ -369,10 +369,14 @@
       ctx.beginPath(); ctx.arc(px, py, radius, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       dots.push({label: i.label, x: px, y: py});
     }
-    for (const i of g.impacts) {
-      const px = place.column(i.X), py = place.row(i.T), right = i.end === "right";
-      label(ctx, i.name, px + (right ? 1 : -1) * (radius + 0.3 * size), py - 0.35 * size, right ? "left" : "right", size);
+    const labelSign = [g.key, state.style, size, place.scale, place.column(0), place.row(0)].join("/");
+    if (!g.labels || g.labels.sign !== labelSign) g.labels = {sign: labelSign, placed: placeLabels(ctx, g, place, radius, size)};
+    const labels = g.labels.placed;  // the same while only the time moves
+    ctx.strokeStyle = "black"; ctx.lineWidth = 0.6 * pt * size / 12; ctx.setLineDash([]);
+    for (const b of labels) if (b.leader) {
+      ctx.beginPath(); ctx.moveTo(...b.leader[0]); ctx.lineTo(...b.leader[1]); ctx.stroke();
     }
+    for (const b of labels) label(ctx, b.name, b.x, b.baseline, "left", size);
     for (const p of ["A", "B"]) if (g.worldlines[p]) {  // the letter beside the first part of its line
       const [X, T] = clipped(g.worldlines[p], t0, t1);
       const k = Math.min(1, X.length - 1);
@@ -386,9 +390,58 @@
     axes(ctx, place, g, view.box, size, family);
     panel.placed = place;
     canvas.dataset.impacts = JSON.stringify(dots);
+    canvas.dataset.labels = JSON.stringify(labels.map((b) => ({label: b.label, x: b.x, y: b.y, w: b.w, h: b.h,
+                                                                leader: b.leader !== null})));
     canvas.dataset.nowRow = String(nowRow);
     canvas.dataset.window = JSON.stringify([view.lo, view.hi]);
     return place;
+  }
+
+  // Each impact's label beside its dot on the side of its end; where that would cover a label already placed or
+  // another dot (a contact and its separation a few pixels apart, A₃ and A′₃), the nearest free place around the
+  // dot, tied to it by a thin leader when it sits farther than half a label's height from the dot (as plot's
+  // labels). Boxes in CSS pixels, of the ink (measured), the white halo's 1.5 px kept clear between them.
+  function placeLabels(ctx, g, place, radius, size) {
+    const dots = g.impacts.map((i) => [place.column(i.X), place.row(i.T)]), placed = [], halo = 1.5;
+    const [x0, x1, t0, t1] = place.box, inside = [place.column(x0), place.row(t1), place.column(x1), place.row(t0)];
+    const clash = (a, b, pad) => a[0] < b[2] + pad && b[0] < a[2] + pad && a[1] < b[3] + pad && b[1] < a[3] + pad;
+    g.impacts.forEach((i, k) => {
+      const [px, py] = dots[k], [w, ascent, descent] = labelSize(ctx, i.name, size), h = ascent + descent;
+      const side = i.end === "right" ? 1 : -1, gap = radius + 0.3 * size, base = py - 0.35 * size;
+      const candidates = [];
+      for (const s of [side, -side]) for (const dx of [0, 0.8 * size, 2 * size]) for (const n of [0, 1, -1, 2, -2, 3, -3, 4, -4]) {
+        const x = s > 0 ? px + gap + dx : px - gap - dx - w, y = base - ascent + n * 0.55 * h;
+        candidates.push([x, y, s === side ? 0 : size]);
+      }
+      for (const n of [1, 2]) for (const s of [-1, 1]) {  // above and below the dot
+        candidates.push([px - w / 2, s < 0 ? py - radius - n * 0.6 * h - h : py + radius + (n - 1) * 0.6 * h + 2, 0.6 * size]);
+      }
+      const scored = candidates.map(([x, y, away], order) => {
+        const box = [x, y, x + w, y + h];
+        const far = Math.hypot(Math.max(box[0] - px, 0, px - box[2]), Math.max(box[1] - py, 0, py - box[3]));
+        let hits = placed.filter((b) => clash(box, [b.x, b.y, b.x + b.w, b.y + b.h], 2 * halo)).length;
+        hits += dots.filter(([dx, dy], n) => n !== k && clash(box, [dx - radius, dy - radius, dx + radius, dy + radius], 0)).length;
+        const out = box[0] < inside[0] || box[2] > inside[2] || box[1] < inside[1] || box[3] > inside[3];
+        return {box, far, cost: 1000 * hits + 100 * out + far + away + 1e-3 * order};
+      });
+      const best = scored.reduce((a, b) => (b.cost < a.cost ? b : a));
+      const [x, y] = best.box, reach = radius + 0.3 * size + 0.5 * h;
+      let leader = null;
+      if (best.far > reach) {  // from the dot's edge to the nearest point of the box
+        const qx = Math.max(x, Math.min(px, x + w)), qy = Math.max(y, Math.min(py, y + h)), d = Math.hypot(qx - px, qy - py);
+        leader = [[px + (qx - px) * radius / d, py + (qy - py) * radius / d], [qx, qy]];
+      }
+      placed.push({name: i.name, label: i.label, x, y, w, h, baseline: y + ascent, leader});
+    });
+    return placed;
+  }
+  function labelSize(ctx, name, size) {  // width, ascent and descent of the ink of a label drawn by `label`
+    ctx.font = `italic ${size}px ${fontFamily()}`;
+    const a = ctx.measureText(name[0]);
+    ctx.font = `${size}px ${fontFamily()}`;
+    const b = ctx.measureText(name.slice(1));
+    return [a.width + b.width, Math.max(a.actualBoundingBoxAscent, b.actualBoundingBoxAscent),
+            Math.max(a.actualBoundingBoxDescent, b.actualBoundingBoxDescent, 0)];
   }
 
   function label(ctx, name, x, y, align, size) {  // B₁: the letter in italics, the subscript digits upright
@@ -552,7 +605,7 @@
 
   // --- the tables ------------------------------------------------------------------------------------------
   function fillTable(table, caption, header, rows, notes) {
-    table.caption.textContent = caption;
+    $(table.id + "-caption").textContent = caption;  // above the table, wrapped to the window: only the cells scroll
     const head = table.tHead.rows[0] || table.tHead.insertRow();
     head.innerHTML = "";
     for (const h of header) { const th = document.createElement("th"); th.scope = "col"; th.textContent = h; head.appendChild(th); }

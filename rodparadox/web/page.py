@@ -91,15 +91,19 @@ TEMPLATE = """<!DOCTYPE html>
 </section>
 <section class="tables" aria-label="The impacts and the ledger">
 <div class="table-set" id="tables-1">
-<div><table id="events"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<div class="table-box"><p class="caption" id="events-caption"></p>
+<div class="cells" tabindex="0" role="region" aria-labelledby="events-caption"><table id="events" aria-labelledby="events-caption"><thead><tr></tr></thead><tbody></tbody></table></div>
 <p class="notes" id="events-notes"></p></div>
-<div><table id="ledger"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<div class="table-box"><p class="caption" id="ledger-caption"></p>
+<div class="cells" tabindex="0" role="region" aria-labelledby="ledger-caption"><table id="ledger" aria-labelledby="ledger-caption"><thead><tr></tr></thead><tbody></tbody></table></div>
 <p class="notes" id="ledger-notes"></p></div>
 </div>
 <div class="table-set" id="tables-2" hidden>
-<div><table id="events-2"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<div class="table-box"><p class="caption" id="events-2-caption"></p>
+<div class="cells" tabindex="0" role="region" aria-labelledby="events-2-caption"><table id="events-2" aria-labelledby="events-2-caption"><thead><tr></tr></thead><tbody></tbody></table></div>
 <p class="notes" id="events-2-notes"></p></div>
-<div><table id="ledger-2"><caption></caption><thead><tr></tr></thead><tbody></tbody></table>
+<div class="table-box"><p class="caption" id="ledger-2-caption"></p>
+<div class="cells" tabindex="0" role="region" aria-labelledby="ledger-2-caption"><table id="ledger-2" aria-labelledby="ledger-2-caption"><thead><tr></tr></thead><tbody></tbody></table></div>
 <p class="notes" id="ledger-2-notes"></p></div>
 </div>
 </section>
