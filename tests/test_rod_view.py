@@ -153,7 +153,7 @@ def test_the_rigid_panel_shows_the_rod_as_the_strip_and_hatches_only_where_turns
         left, right = (line.get_xdata() for line in drawn[name]["strip"][-2:])
         assert list(left) == [0.0, 0.0] and list(right) == [1.0, 1.0]
     assert drawn["fig1"]["horizon"] == () and len(drawn["fig2"]["horizon"]) == 1
-    assert len(drawn["fig2"]["turns"]) == 9  # each of 3 turns: its start, its end, its pivot
+    assert len(drawn["fig2"]["turns"]) == 12  # each of 3 turns: its start, its end, its pivot (on a blanked end)
     assert len(drawn["fig2"]["light"]) == 3  # from each impact
     # fig1 never turns: its chart is S (left end at X = 0), so A1's light (X = 0, T = 5/6) runs X = T - 5/6
     ray = drawn["fig1"]["light"][0].get_xydata()
@@ -227,3 +227,39 @@ def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():
     # the rod's panel on the left: its axes start left of the frame's panel
     view = now.axes.get_position().x0
     assert view < min(ax.get_position().x0 for ax in scene.figure.axes if ax.get_gid() == "a-axes")
+
+
+def test_a_pivot_is_drawn_dotted_on_the_end_as_its_key_says_in_every_style():
+    # review: in print the black dots lay on the black end, so the pivot was drawn solid while the key said dotted.
+    # Rasterised: along the pivot's stretch of the end, ink alternates with paper; below the turn the end is solid.
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from rodparadox.physics.rod_view import chart_of
+    from rodparadox.render.rod_panel import draw_rod_panel
+
+    h = history("fig2", 0.6)
+    [(T_a, T_b, end), *_] = chart_of(h).turns  # the turn about B1, on the right end (X = 1)
+    T_a, T_b, X = T_a / h.scenario.L, T_b / h.scenario.L, 1.0 if end == "right" else 0.0
+    for style in ("default", "print", "slides"):
+        figure = Figure(figsize=(4, 6), dpi=100)
+        ax = figure.add_subplot()
+        drawn = draw_rod_panel(ax, h, style)
+        canvas = FigureCanvasAgg(figure)
+        canvas.draw()
+        pixels = np.asarray(canvas.buffer_rgba())[:, :, :3].astype(float).mean(axis=2)  # grey level 0..255
+
+        def column(T_lo, T_hi):
+            (x, y0), (_, y1) = ax.transData.transform([(X, T_lo), (X, T_hi)])
+            rows = np.arange(round(min(y0, y1)), round(max(y0, y1)))
+            return pixels[pixels.shape[0] - 1 - rows, round(x)]
+
+        pivot = column(T_a + 0.2 * (T_b - T_a), T_a + 0.8 * (T_b - T_a))
+        assert (pivot > 230).mean() > 0.2 and (pivot < 120).mean() > 0.2, style  # dots: paper between ink
+        solid = column(T_a - 0.4, T_a - 0.2)  # the end before the turn, clear of clock ticks or not: no paper
+        assert (solid > 230).mean() == 0.0, style
+        key = {text.get_text().split(":")[0]: handle for text, handle in
+               zip(drawn["key"][0].get_texts(), drawn["key"][0].legend_handles)}["pivot"]
+        line = next(a for a in drawn["turns"] if a.get_gid() == "r-pivot-0")
+        assert (key.get_linestyle(), key.get_linewidth(), key.get_color()) == \
+               (line.get_linestyle(), line.get_linewidth(), line.get_color())

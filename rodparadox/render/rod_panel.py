@@ -41,6 +41,8 @@ MATERIAL_LINES = 3
 KEY_WIDTH = 14.0
 #: the grid the horizon's hatching is found on, per L
 HORIZON_GRID = 32
+#: the ground a pivot's dots are drawn on, where the end's solid line is blanked
+PIVOT_GROUND = "white"
 
 
 def rod_box(history, chart=None) -> tuple[float, float, float, float]:
@@ -189,10 +191,18 @@ def _turns(ax, chart, st: Style, xs, letter: str, fs) -> list:
                             linestyle=st.rod_now.dashes, zorder=2.5, gid=f"{letter}-turn-{k}-{'ab'[T == T_b]}")
             out.append(line)
         X = 0.0 if end == "left" else 1.0
-        pivot, = ax.plot([X, X], [T_a / L, T_b / L], color=st.impact_colour, linewidth=st.rod.width * 0.6,
-                         linestyle=(0, (1.0, 1.5)), zorder=3.5, gid=f"{letter}-pivot-{k}")
-        out.append(pivot)
+        # the end's solid line is blanked along the turn, so the pivot's dots read in every style (black on black
+        # would draw them solid, against the key)
+        gap, = ax.plot([X, X], [T_a / L, T_b / L], color=PIVOT_GROUND, linewidth=st.rod.width + 1.0,
+                       solid_capstyle="butt", zorder=3.4, gid=f"{letter}-pivot-{k}-ground")
+        pivot, = ax.plot([X, X], [T_a / L, T_b / L], zorder=3.5, gid=f"{letter}-pivot-{k}", **_pivot_ink(st))
+        out += [gap, pivot]
     return out
+
+
+def _pivot_ink(st: Style) -> dict:
+    """How a pivot's stretch of an end is drawn, on the panel and in its key: dots as broad as the end."""
+    return {"color": st.impact_colour, "linewidth": st.rod.width, "linestyle": (0, (1.0, 1.5))}
 
 
 def _light(ax, history, chart, st: Style, letter: str) -> list:
@@ -351,8 +361,7 @@ def _key(ax, history, chart, st: Style, fs, step: float):
             handles.append(Line2D([], [], color=st.light_cone.colour, linewidth=1.5 * st.light_cone.width,
                                   linestyle=st.light_cone.dashes))
             labels.append("light from an impact:\nthe rod turns before\nit has crossed")
-            handles.append(Line2D([], [], color=st.impact_colour, linewidth=st.rod.width * 0.6,
-                                  linestyle=(0, (1.0, 1.5))))
+            handles.append(Line2D([], [], **_pivot_ink(st)))
             labels.append("pivot: one event all\nturn, its clock stopped")
             handles.append(Patch(facecolor="none", edgecolor=st.other_axes.colour, hatch="////", linewidth=0))
             labels.append("beyond the pivot's\nhorizon: no place in\nthe rod's chart")
