@@ -263,3 +263,32 @@ def test_a_pivot_is_drawn_dotted_on_the_end_as_its_key_says_in_every_style():
         line = next(a for a in drawn["turns"] if a.get_gid() == "r-pivot-0")
         assert (key.get_linestyle(), key.get_linewidth(), key.get_color()) == \
                (line.get_linestyle(), line.get_linewidth(), line.get_color())
+
+
+@pytest.mark.parametrize("extra", [["--light-cones"], ["--rod-now"], ["--equal-scales"], ["--rod-lines", "3"],
+                                   ["--grid"], ["--hyperbolae"], ["--other-axes"], ["--proper-time"]])
+def test_an_extra_with_only_the_rod_view_to_draw_on_is_refused_in_one_sentence(extra, tmp_path, monkeypatch):
+    # review: each gave exit 0 and a new file name with the same bytes as without it (the rod view ignores them)
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["plot", "fig2", "--frame", "rod", *extra])
+    said = " ".join(result.output.split())
+    assert result.exit_code == 2 and said.count(". ") == 0 and "Traceback" not in said, result.output
+    assert f"option {extra[0]} draws on the frames' panels" in said and "(--frame rest,rod)" in said
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_library_refuses_extras_only_when_every_panel_is_the_rod_view():
+    from rodparadox.errors import OptionError
+    from rodparadox.physics.frames import parse_frames
+    from rodparadox.physics.rod_view import ROD_VIEW, refuse_frame_extras
+
+    with pytest.raises(OptionError) as refused:
+        refuse_frame_extras((ROD_VIEW,), grid=False, rod_lines=4, hyperbolae=True)
+    assert (refused.value.what, refused.value.value) == ("hyperbolae", True)  # the first in the options' order
+    assert "--" not in str(refused.value)  # facts, no option's wording
+    refuse_frame_extras((ROD_VIEW,), grid=False, rod_lines=0)  # none asked
+    refuse_frame_extras((*parse_frames("rest", 0.6), ROD_VIEW), grid=True, rod_lines=3)  # a frame to draw on
