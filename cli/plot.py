@@ -66,6 +66,9 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
     named = ([rod] if rod in ("causal", "both") else []) + named  # fig1_causal.svg beside fig1.svg
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
+    from rodparadox.physics.rod_view import refuse_frame_extras
+    for job in jobs:  # every panel the rod's own view: the extras have nothing to draw on
+        refuse_frame_extras(job.frames[0], **extras, rod_lines=rod_lines)
     histories = [_run(job, rod == "both") for job in jobs]
     if proper_time and any(h.kind == "causal" for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")

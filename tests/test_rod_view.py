@@ -1,6 +1,7 @@
 """The rod's own view (`--frame rod`, README "The rod's own view"): its charts, checked against hand derivations and
 independent computations (issue 16, item 6)."""
 
+import functools
 import math
 
 import numpy as np
@@ -153,7 +154,7 @@ def test_the_rigid_panel_shows_the_rod_as_the_strip_and_hatches_only_where_turns
         left, right = (line.get_xdata() for line in drawn[name]["strip"][-2:])
         assert list(left) == [0.0, 0.0] and list(right) == [1.0, 1.0]
     assert drawn["fig1"]["horizon"] == () and len(drawn["fig2"]["horizon"]) == 1
-    assert len(drawn["fig2"]["turns"]) == 9  # each of 3 turns: its start, its end, its pivot
+    assert len(drawn["fig2"]["turns"]) == 12  # each of 3 turns: its start, its end, its pivot (on a blanked end)
     assert len(drawn["fig2"]["light"]) == 3  # from each impact
     # fig1 never turns: its chart is S (left end at X = 0), so A1's light (X = 0, T = 5/6) runs X = T - 5/6
     ray = drawn["fig1"]["light"][0].get_xydata()
@@ -227,3 +228,101 @@ def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():
     # the rod's panel on the left: its axes start left of the frame's panel
     view = now.axes.get_position().x0
     assert view < min(ax.get_position().x0 for ax in scene.figure.axes if ax.get_gid() == "a-axes")
+
+
+@functools.cache
+def _rasterised(name: str, v: float, style: str):
+    """The rigid rod's own view of a preset alone in a small figure, drawn by Agg: (axes, artists, grey levels)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from rodparadox.render.rod_panel import draw_rod_panel
+
+    figure = Figure(figsize=(4, 6), dpi=100)
+    ax = figure.add_subplot()
+    drawn = draw_rod_panel(ax, history(name, v), style)
+    canvas = FigureCanvasAgg(figure)
+    canvas.draw()
+    return ax, drawn, np.asarray(canvas.buffer_rgba())[:, :, :3].astype(float).mean(axis=2)  # grey level 0..255
+
+
+def test_a_pivot_is_drawn_dotted_on_the_end_as_its_key_says_in_every_style():
+    # review: in print the black dots lay on the black end, so the pivot was drawn solid while the key said dotted.
+    # Rasterised: along the pivot's stretch of the end, ink alternates with paper; below the turn the end is solid.
+    from rodparadox.physics.rod_view import chart_of
+
+    h = history("fig2", 0.6)
+    [(T_a, T_b, end), *_] = chart_of(h).turns  # the turn about B1, on the right end (X = 1)
+    T_a, T_b, X = T_a / h.scenario.L, T_b / h.scenario.L, 1.0 if end == "right" else 0.0
+    for style in ("default", "print", "slides"):
+        ax, drawn, pixels = _rasterised("fig2", 0.6, style)
+
+        def column(T_lo, T_hi):
+            (x, y0), (_, y1) = ax.transData.transform([(X, T_lo), (X, T_hi)])
+            rows = np.arange(round(min(y0, y1)), round(max(y0, y1)))
+            return pixels[pixels.shape[0] - 1 - rows, round(x)]
+
+        pivot = column(T_a + 0.2 * (T_b - T_a), T_a + 0.8 * (T_b - T_a))
+        assert (pivot > 230).mean() > 0.2 and (pivot < 120).mean() > 0.2, style  # dots: paper between ink
+        solid = column(T_a - 0.4, T_a - 0.2)  # the end before the turn, clear of clock ticks or not: no paper
+        assert (solid > 230).mean() == 0.0, style
+        key = {text.get_text().split(":")[0]: handle for text, handle in
+               zip(drawn["key"][0].get_texts(), drawn["key"][0].legend_handles)}["pivot"]
+        line = next(a for a in drawn["turns"] if a.get_gid() == "r-pivot-0")
+        assert (key.get_linestyle(), key.get_linewidth(), key.get_color()) == \
+               (line.get_linestyle(), line.get_linewidth(), line.get_color())
+
+
+@pytest.mark.parametrize("extra", [["--light-cones"], ["--rod-now"], ["--equal-scales"], ["--rod-lines", "3"],
+                                   ["--grid"], ["--hyperbolae"], ["--other-axes"], ["--proper-time"]])
+def test_an_extra_with_only_the_rod_view_to_draw_on_is_refused_in_one_sentence(extra, tmp_path, monkeypatch):
+    # review: each gave exit 0 and a new file name with the same bytes as without it (the rod view ignores them)
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["plot", "fig2", "--frame", "rod", *extra])
+    said = " ".join(result.output.split())
+    assert result.exit_code == 2 and said.count(". ") == 0 and "Traceback" not in said, result.output
+    assert f"option {extra[0]} draws on the frames' panels" in said and "(--frame rest,rod)" in said
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_library_refuses_extras_only_when_every_panel_is_the_rod_view():
+    from rodparadox.errors import OptionError
+    from rodparadox.physics.frames import parse_frames
+    from rodparadox.physics.rod_view import ROD_VIEW, refuse_frame_extras
+
+    with pytest.raises(OptionError) as refused:
+        refuse_frame_extras((ROD_VIEW,), grid=False, rod_lines=4, hyperbolae=True)
+    assert (refused.value.what, refused.value.value) == ("hyperbolae", True)  # the first in the options' order
+    assert "--" not in str(refused.value)  # facts, no option's wording
+    refuse_frame_extras((ROD_VIEW,), grid=False, rod_lines=0)  # none asked
+    refuse_frame_extras((*parse_frames("rest", 0.6), ROD_VIEW), grid=True, rod_lines=3)  # a frame to draw on
+
+
+@pytest.mark.parametrize("v", [0.6, 0.95])
+def test_the_particles_names_sit_clear_of_every_line_of_the_rod_view(v):
+    # review: "A" and "B" sat on their own dashed world-lines. The drawn text's box (Agg's own extent) is met by
+    # no point of any line of the panel, each line sampled every half pixel, nor by an impact's marker
+    ax, drawn, _ = _rasterised("fig2", v, "default")
+    renderer = ax.get_figure(root=True).canvas.get_renderer()
+    names = [a for a in drawn["particles"] if hasattr(a, "get_text")]
+    assert sorted(a.get_text() for a in names) == ["A", "B"]
+    for text in names:
+        box = text.get_window_extent(renderer)
+        assert ax.bbox.contains(box.x0, box.y0) and ax.bbox.contains(box.x1, box.y1)  # inside the panel
+        for line in ax.lines:
+            points = ax.transData.transform(line.get_xydata())
+            if len(points) == 1:  # an impact: its marker's disc (markersize is its diameter in points)
+                r = line.get_markersize() / 2 * 100 / 72
+                (x, y), = points
+                assert x + r <= box.x0 or x - r >= box.x1 or y + r <= box.y0 or y - r >= box.y1, line.get_gid()
+            for p, q in zip(points[:-1], points[1:]):
+                if not (np.isfinite(p).all() and np.isfinite(q).all()):
+                    continue
+                samples = p + np.linspace(0, 1, int(np.hypot(*(q - p)) * 2) + 2)[:, None] * (q - p)
+                inside = ((samples[:, 0] > box.x0) & (samples[:, 0] < box.x1) & (samples[:, 1] > box.y0)
+                          & (samples[:, 1] < box.y1))
+                assert not inside.any(), (text.get_text(), line.get_gid())

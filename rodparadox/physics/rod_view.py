@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rodparadox.errors import OptionError
 from rodparadox.physics.kinematics import Event
 
 #: the rod's own view, as a frame word (`--frame rod`); not a Lorentz frame, so not a `frames.Frame`
@@ -39,6 +40,20 @@ class RodView:
 
 
 ROD_VIEW = RodView()
+
+#: the teacher's extras (`render.Options`) that draw on the frames' panels only: the rod's own view shows none
+FRAME_EXTRAS = ("other_axes", "light_cones", "hyperbolae", "grid", "rod_lines", "rod_now", "proper_time",
+                "equal_scales")
+
+
+def refuse_frame_extras(frames, **extras) -> None:
+    """Extras asked for (`FRAME_EXTRAS`, true or non-zero) with no frame's panel to draw them on, every panel of
+    `frames` the rod's own view: an OptionError naming the first, since the figure would be the one without it."""
+    asked = [name for name in FRAME_EXTRAS if extras.get(name)]
+    if asked and frames and all(frame == ROD_VIEW for frame in frames):
+        raise OptionError(asked[0], extras[asked[0]], template="{what} draws on the frames' panels, and {frame} "
+                          "{view} has only the rod's own view: leave it out, or give a frame beside it ({frame} "
+                          "rest,{view}).", view=ROD_WORD)
 
 #: Gauss-Legendre nodes for a material clock between fronts (the integrand is analytic there)
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)

@@ -16,7 +16,7 @@ import math
 from typing import Sequence
 
 import numpy as np
-from matplotlib.collections import PolyCollection
+from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
@@ -26,10 +26,12 @@ from rodparadox.physics.rod_view import chart_of, chart_polyline, densified
 from rodparadox.physics.rod import clock_step as nice_clock_step
 from rodparadox.render.causal_layers import (FRONT_JUMP, HANDLER_MAP, Compression, compression_colour_map,
                                              compression_norm, is_causal)
+from rodparadox.render.labels import Area, Label, place
+from rodparadox.render.layer_base import widest_line
 from rodparadox.render.layout import font_sizes, tick_step
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.numbers import impact_name
-from rodparadox.render.text import suptitle, tick_text, ticks_at
+from rodparadox.render.text import impact_text_size, suptitle, tick_text, ticks_at
 
 #: the chart's X from this far left of the rod to as far right of it (units of L)
 X_MARGIN = 0.75
@@ -41,6 +43,8 @@ MATERIAL_LINES = 3
 KEY_WIDTH = 14.0
 #: the grid the horizon's hatching is found on, per L
 HORIZON_GRID = 32
+#: the ground a pivot's dots are drawn on, where the end's solid line is blanked
+PIVOT_GROUND = "white"
 
 
 def rod_box(history, chart=None) -> tuple[float, float, float, float]:
@@ -78,6 +82,7 @@ def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r
     drawn["clocks"] = _clocks(ax, chart, st, step, T0 * L, T1 * L, letter)
     drawn["particles"] = _particles(ax, history, chart, st, (X0, X1, T0, T1), letter, fs)
     drawn["impacts"] = _impacts(ax, history, chart, st, letter, fs)
+    drawn["particles"] += _particle_labels(ax, st, (X0, X1, T0, T1), letter, fs, drawn["impacts"])
     drawn["key"] = [_key(ax, history, chart, st, fs, step)]
     return {name: tuple(artists) for name, artists in drawn.items()}
 
@@ -189,10 +194,18 @@ def _turns(ax, chart, st: Style, xs, letter: str, fs) -> list:
                             linestyle=st.rod_now.dashes, zorder=2.5, gid=f"{letter}-turn-{k}-{'ab'[T == T_b]}")
             out.append(line)
         X = 0.0 if end == "left" else 1.0
-        pivot, = ax.plot([X, X], [T_a / L, T_b / L], color=st.impact_colour, linewidth=st.rod.width * 0.6,
-                         linestyle=(0, (1.0, 1.5)), zorder=3.5, gid=f"{letter}-pivot-{k}")
-        out.append(pivot)
+        # the end's solid line is blanked along the turn, so the pivot's dots read in every style (black on black
+        # would draw them solid, against the key)
+        gap, = ax.plot([X, X], [T_a / L, T_b / L], color=PIVOT_GROUND, linewidth=st.rod.width + 1.0,
+                       solid_capstyle="butt", zorder=3.4, gid=f"{letter}-pivot-{k}-ground")
+        pivot, = ax.plot([X, X], [T_a / L, T_b / L], zorder=3.5, gid=f"{letter}-pivot-{k}", **_pivot_ink(st))
+        out += [gap, pivot]
     return out
+
+
+def _pivot_ink(st: Style) -> dict:
+    """How a pivot's stretch of an end is drawn, on the panel and in its key: dots as broad as the end."""
+    return {"color": st.impact_colour, "linewidth": st.rod.width, "linestyle": (0, (1.0, 1.5))}
 
 
 def _light(ax, history, chart, st: Style, letter: str) -> list:
@@ -257,8 +270,6 @@ def _clocks(ax, chart, st: Style, step: float, T_lo: float, T_hi: float, letter:
             half = 0.06
             segments = np.stack([np.column_stack([np.full_like(T, X - half), T]),
                                  np.column_stack([np.full_like(T, X + half), T])], axis=1)
-            from matplotlib.collections import LineCollection
-
             marks = LineCollection(segments, colors=st.rod.colour if k in (0, MATERIAL_LINES + 1) else
                                    st.rod_interior.colour, linewidths=max(1.0, st.rod_interior.width * 2.2),
                                    zorder=3.2, gid=f"{letter}-clock-{k}")
@@ -285,12 +296,33 @@ def _particles(ax, history, chart, st: Style, box, letter: str, fs) -> list:
         artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
                           zorder=4, gid=f"{letter}-particle-{name}")
         out.append(artist)
-        inside = (drawn[:, 0] >= X0) & (drawn[:, 0] <= X1) & (drawn[:, 1] >= T0)
-        start = drawn[inside][0] if inside.any() else drawn[np.isfinite(drawn[:, 0])][0]
-        out.append(ax.text(min(max(start[0], X0 + 0.1), X1 - 0.1), start[1] + 0.08, name, color=ink.colour,
-                           fontsize=fs["particle"], fontstyle="italic", ha="center", va="bottom", zorder=6,
-                           gid=f"{letter}-label-{name}"))
     return out
+
+
+def _particle_labels(ax, st: Style, box, letter: str, fs, impacts) -> list:
+    """Each particle's letter beside its world-line where it crosses no line, impact or impact's name, placed as
+    on the frames' panels (`labels.place`); its anchors along the part drawn in the panel, the first part first."""
+    X0, X1, T0, T1 = box
+    ax.apply_aspect()  # the drawn box (equal scales); its size in points
+    width, height = np.array(ax.bbox.size) * 72 / ax.get_figure(root=True).dpi
+    scale, labels, lines = width / (X1 - X0), [], [a.get_xydata() for a in ax.lines]
+    lines += [q for c in ax.collections if isinstance(c, LineCollection) for q in c.get_segments()]
+    for a in impacts:  # each marker and impact name as the outline of its box
+        (x, y), half = a.get_xydata()[0] if a in ax.lines else a.get_position(), st.impact_size / 2 / scale
+        if a not in ax.lines:
+            w, h, _ = impact_text_size(a.get_gid().rsplit("-", 1)[1], fs["impact"])
+            x, half = x + (w / 2 if a.get_ha() == "left" else -w / 2) / scale, max(w, h) / 2 / scale
+        lines.append(np.array([[x - half, y - half], [x + half, y - half], [x + half, y + half], [x - half, y + half],
+                               [x - half, y - half]]))
+    for artist in (a for a in ax.lines if str(a.get_gid()).startswith(f"{letter}-particle-")):
+        name, points = artist.get_gid().rsplit("-", 1)[1], artist.get_xydata()
+        seen = points[(points[:, 0] >= X0) & (points[:, 0] <= X1) & (points[:, 1] >= T0) & (points[:, 1] <= T1)]
+        if len(seen):
+            anchors = tuple(tuple(seen[round(f * (len(seen) - 1))]) for f in (0.1, 0.35, 0.65, 0.9))
+            labels.append(Label(f"{letter}-label-{name}", name, anchors, 180.0 if name == "A" else 0.0,
+                                artist.get_color(), fs["particle"], italic=True))
+    return [a for placed in place(ax, Area(tuple(box), width, height), labels, lines, [], widest_line(st),
+                                  fs["impact"], st.font_size) for a in placed]
 
 
 def _corners(chart, box, L, T):
@@ -320,8 +352,7 @@ def _impacts(ax, history, chart, st: Style, letter: str, fs) -> list:
             T, X = places[0][0], places[0][1]
             side = -1 if X < 0.5 * L else 1
             out.append(ax.text(X / L + side * 0.09, T / L, impact_name(impact.label, math_text=True), fontsize=fs["impact"],
-                               va="center",
-                               ha="right" if side < 0 else "left", zorder=6, gid=f"{letter}-impact-label-{impact.label}"))
+                               va="center", ha="right" if side < 0 else "left", zorder=6, gid=f"{letter}-impact-label-{impact.label}"))
     return out
 
 
@@ -351,8 +382,7 @@ def _key(ax, history, chart, st: Style, fs, step: float):
             handles.append(Line2D([], [], color=st.light_cone.colour, linewidth=1.5 * st.light_cone.width,
                                   linestyle=st.light_cone.dashes))
             labels.append("light from an impact:\nthe rod turns before\nit has crossed")
-            handles.append(Line2D([], [], color=st.impact_colour, linewidth=st.rod.width * 0.6,
-                                  linestyle=(0, (1.0, 1.5))))
+            handles.append(Line2D([], [], **_pivot_ink(st)))
             labels.append("pivot: one event all\nturn, its clock stopped")
             handles.append(Patch(facecolor="none", edgecolor=st.other_axes.colour, hatch="////", linewidth=0))
             labels.append("beyond the pivot's\nhorizon: no place in\nthe rod's chart")
