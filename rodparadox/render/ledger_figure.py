@@ -146,14 +146,9 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
         times, values, entries = _series(history, frame)
         total = history.initial_total(frame.rapidity)
         t = times / L
-        top = None
         x0 = gutter + c * (column_w + gutter + 14)
         y_top = height - suptitle_h - r * row_h - title_h
-        for q, row in (("p", 0), ("E", 1)):
-            y0 = y_top - (row + 1) * panel_h - row * pair_gap
-            ax = figure.add_axes((x0 / width, y0 / height, column_w / width, panel_h / height), sharex=top)
-            top = top or ax
-            ax.set_gid(f"{letter}-{q}-axes")
+        for q, ax in _pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
             level = total.p if q == "p" else total.E
             _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
             ax.set_xlim(t[0], t[-1])
@@ -185,6 +180,19 @@ def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
                            fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
     legend.set_gid("legend")
     return figure
+
+
+def _pair_axes(figure: Figure, letter: str, x0: float, y_top: float, width: float, panel_h: float, gap: float):
+    """One frame's p panel above its E panel, on one time axis, `width` x `panel_h` points each from (x0, y_top)
+    down: (q, axes) each in turn, the next made only when the caller has drawn into the last."""
+    W, H = figure.get_size_inches() * 72
+    top = None
+    for q, row in (("p", 0), ("E", 1)):
+        y0 = y_top - (row + 1) * panel_h - row * gap
+        ax = figure.add_axes((x0 / W, y0 / H, width / W, panel_h / H), sharex=top)
+        top = top or ax
+        ax.set_gid(f"{letter}-{q}-axes")
+        yield q, ax
 
 
 def _axis_words(ax, q: str, frame, fs: float) -> None:
@@ -319,14 +327,9 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                 events = [(e.impact.label, "impact", e.t) for e in entries]
             total = history.initial_total(frame.rapidity)
             t = times / L
-            top = None
             x0 = gutter + c * (column_w + gutter + 14)
             y_top = height - suptitle_h - r * row_h - title_h
-            for q, row in (("p", 0), ("E", 1)):
-                y0 = y_top - (row + 1) * panel_h - row * pair_gap
-                ax = figure.add_axes((x0 / width, y0 / height, column_w / width, panel_h / height), sharex=top)
-                top = top or ax
-                ax.set_gid(f"{letter}-{q}-axes")
+            for q, ax in _pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
                 level = total.p if q == "p" else total.E
                 if causal:
                     _causal_curves(ax, q, letter, t, values, level, events, L, st)
