@@ -149,15 +149,16 @@ def test_the_stress_part_is_what_the_ledger_needs(compared, sections):
 
 
 def test_the_contacts_table_lists_every_contact_and_separation(sections):
-    """The causal rod's table in each frame: every contact and separation once, B₁s's particle velocity in S the
-    closed form's to its printed digits."""
+    """The causal rod's table in each frame: every contact and separation once, B′₁'s particle velocity in S the
+    closed form's to its printed digits. (B′₁ is
+    B1s, as every table but the ASCII text ones names it.)"""
     tables = [b for b in sections["single"] if isinstance(b, Table)]
     assert [t.name for t in tables] == ["causal_events_rest", "causal_events_moving"]
     rows = {row[0].text: row for row in tables[0].rows}
-    assert set(rows) == {"B₁", "B1s"}
+    assert set(rows) == {"B₁", "B′₁"}  # the separation named as the figures name it (was B1s)
     _, th_f = _single(V)
-    assert rows["B1s"][4].text == f"{-math.tanh(th_f):.6f}".replace("-", "−")
-    assert [row[0].text for row in tables[0].rows] == [i.label.replace("1", "₁") if i.kind == "contact" else i.label
+    assert rows["B′₁"][4].text == f"{-math.tanh(th_f):.6f}".replace("-", "−")
+    assert [row[0].text for row in tables[0].rows] == [i.label.replace("1s", "′1").replace("1", "₁")
                                                        for i in causal_history("single", V).impacts]
 
 

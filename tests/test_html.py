@@ -581,7 +581,7 @@ def test_the_rod_switch_from_the_keyboard_and_the_causal_contacts_and_separation
                             "**The impacts in frame S\u2032**")
     rows = opened.rows("events")
     assert rows == printed and len(rows) == 8
-    assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)" and rows["A1s"][3] == "+2.652648"
+    assert rows["A\u2081"][3] == rows["B\u2081"][3] == "+1.416667 (17/12)" and rows["A\u2032\u2081"][3] == "+2.652648"
     dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
     row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
     assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01

@@ -20,7 +20,7 @@ import json
 import textwrap
 from typing import Any, Sequence
 
-from rodparadox.numbers import MINUS, exact, impact_parts
+from rodparadox.numbers import MINUS, exact, impact_name, impact_parts
 from rodparadox.physics.frames import Frame, frame_heading, frame_symbol, frame_word, time_window
 from rodparadox.physics.ledger import EnergyMomentum, rounding_zero
 from rodparadox.tables.build import coordinates, fixed
@@ -40,11 +40,8 @@ NOTE = ("The rod's (E, p) is split into its matter part (its rest-frame energy d
 
 
 def event_name(label: str) -> str:
-    """A contact as B₁, its separation as B′₁ (the figures' labels, plain text)."""
-    contact = label[:-1] if label.endswith("s") else label
-    letter, digits = impact_parts(contact)
-    subscript = digits.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
-    return letter + ("\N{PRIME}" if label.endswith("s") else "") + subscript
+    """A contact as B₁, its separation as B′₁ (the figures' labels, plain text: `numbers.impact_name`)."""
+    return impact_name(label)
 
 
 def instants(history, frame: Frame) -> list[tuple[str, str, float, object]]:
