@@ -160,6 +160,9 @@ def test_the_contacts_table_lists_every_contact_and_separation(sections):
     assert rows["B′₁"][4].text == f"{-math.tanh(th_f):.6f}".replace("-", "−")
     assert [row[0].text for row in tables[0].rows] == [i.label.replace("1s", "′1").replace("1", "₁")
                                                        for i in causal_history("single", V).impacts]
+    # the sentence before each table names separations as the table does (it said "A1s, B1s")
+    said = [b.text for b in sections["single"] if isinstance(b, Paragraph) and "separations (" in b.text]
+    assert len(said) == 2 and all("B′₁" in t and "1s" not in t for t in said)
 
 
 def test_the_worksheet_asks_and_the_key_answers():

@@ -134,7 +134,7 @@ def events_table(causal, frame: Frame, blank: bool = False) -> Table:
 
 
 def table_text(frame: Frame) -> str:
-    return (f"The causal rod\u2019s contacts (A₁, B₁ \u2026) and separations (A1s, B1s \u2026, where the particle "
+    return (f"The causal rod\u2019s contacts (A₁, B₁ \u2026) and separations (A′₁, B′₁ \u2026, where the particle "
             f"leaves the end) in {frame_name(frame)}: where and when, the particle\u2019s velocity (it changes during a "
             f"contact, not at its ends) and the struck end\u2019s, just before and just after.")
 
