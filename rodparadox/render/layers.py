@@ -27,7 +27,7 @@ from rodparadox.physics import rod
 from rodparadox.physics.engine import WORLDLINE_NAMES, History
 from rodparadox.physics.frames import Frame, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.physics.kinematics import Event, HyperbolicArc
-from rodparadox.numbers import impact_name, impact_parts, shown
+from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
@@ -449,11 +449,10 @@ def separation_marker(style: Style) -> dict:
 
 
 def separation_text(label: str, size: float) -> tuple[str, tuple[float, float]]:
-    """A separation's label, mathtext (A1s -> A₁′), and a box at least as large as it draws."""
+    """A separation's label, mathtext (A1s -> A′₁, `numbers.impact_name`), and a box at least as large as it draws."""
     contact = label[:-1] if label.endswith("s") else label
     w, h, _ = impact_text_size(contact, size)
-    letter, digits = impact_parts(contact)
-    return f"${letter}'_{{{digits}}}$", (w + 0.35 * size, h)
+    return impact_name(label, math_text=True), (w + 0.35 * size, h)
 
 
 _SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD = WorldSheet(), MaterialLines(), RodNow(), Clocks(), RodEnds()

@@ -20,7 +20,7 @@ import json
 import textwrap
 from typing import Any, Sequence
 
-from rodparadox.numbers import MINUS, exact, impact_name, impact_parts
+from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.frames import Frame, frame_heading, frame_symbol, frame_word, time_window
 from rodparadox.physics.ledger import EnergyMomentum, rounding_zero
 from rodparadox.tables.build import coordinates, fixed
