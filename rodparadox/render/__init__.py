@@ -16,6 +16,7 @@ help reads, stays light.
 
 The package, its imports running one way (text <- layout, labels <- layers <- panel <- diagram):
   text     what the panels say (frame names, titles, tick labels) and text sizes in points, without a renderer
+  mathtext_parses  each mathtext string parsed once per process, not once per renderer (imported by text)
   layout   the layout in points: data boxes, rows of panels, tick steps, title lines, the legend's shape
   labels   label placement: beside an anchor, clear of lines, markers and other labels
   layer_base  what every layer shares: options, the panel context, the Layer class, inks as keywords
