@@ -8,6 +8,7 @@ files (histories, drawn figures) is filled by each worker for itself.
 """
 
 import functools
+import gc
 import os
 from pathlib import Path
 
@@ -34,6 +35,15 @@ def pytest_xdist_auto_num_workers(config):
     except AttributeError:  # not on Linux
         cores = os.cpu_count() or 1
     return max(1, min(cores, MAX_WORKERS))
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_sessionfinish(session):
+    """Nothing is collected once the session is over: a worker's caches (histories, figures, PDFs: millions of
+    objects in reference cycles) were freed one cycle at a time as the interpreter shut down, 4 to 5 s of wall time
+    after the last test (measured: the run ended 5.5 s after its last test, 0.5 s with this). Fixtures are already
+    torn down here; what is left is memory the process returns to the system when it exits."""
+    gc.freeze()
 
 
 @functools.lru_cache(maxsize=None)
