@@ -3,12 +3,12 @@
 
 import os
 import subprocess
-import sys
 
 import pytest
 from click.testing import CliRunner
 from PIL import Image
 
+from conftest import commands_in_one_process
 from rodparadox.animate.encoders import check_fps, open_sink
 from rodparadox.animate.timeline import boost_ends, image_count, timeline
 from sears_paradox_cli.main import main
@@ -198,8 +198,6 @@ def test_help_and_refused_input_import_no_matplotlib_and_no_progress_bar_when_st
     run one after another in one interpreter, matplotlib looked for after each (the first after which it is there
     is named), then an animation whose standard error is a pipe draws no progress bar
     (test_no_progress_bar_when_stderr_is_not_a_terminal): its own status, standard output and error."""
-    from conftest import commands_in_one_process
-
     refused = [["animate", "--help"], ["animate", "fig2", "--fps", "0"], ["animate", "fig2", "--fps", "30"]]
     *probes, drawn = commands_in_one_process(refused + [["animate", "fig2", *SHORT]], here)
     for result in probes:

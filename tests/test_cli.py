@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from conftest import commands_in_one_process
 from sears_paradox_cli.main import main
 
 README = (Path(__file__).resolve().parent.parent / "README.md").read_text()
@@ -334,8 +335,6 @@ def test_non_drawing_paths_never_import_matplotlib(tmp_path):
     """Nor scipy: only a causal rod needs an integrator (issue 16, item 8). The commands run in one fresh
     interpreter, one after another (a process each cost 12 interpreters): what is imported accumulates, so the
     first command after which matplotlib or scipy is there is the one that imported it, and is named."""
-    from conftest import commands_in_one_process
-
     for result in commands_in_one_process(NON_DRAWING, tmp_path):
         assert not {"matplotlib", "scipy"} & set(result["modules"]), (result["argv"], result["modules"])
         assert (result["code"], result["left_unflushed"]) == (0, None), result
@@ -445,8 +444,6 @@ def test_a_full_standard_output_is_one_sentence_and_exit_1(tmp_path):
     """Each command once had a process of its own; now they run one after another in one interpreter whose
     standard output is /dev/full again before each (a failed write points it at /dev/null), each with its own
     status and standard error."""
-    from conftest import commands_in_one_process
-
     argvs = [("events", "fig2"), ("export", "fig2"), ("export", "fig2", "--format", "csv"), ("list",), ("--help",),
              ("plot", "--help"), ("--version",)]
     for result in commands_in_one_process(argvs, tmp_path, stdout_path="/dev/full"):
@@ -480,8 +477,6 @@ def test_clicks_own_checks_are_one_sentence_too(tmp_path):
     """Found in review: click's usage errors printed three lines (Usage, Try, Error); now one sentence, exit 2.
     The four calls (a process each before) run one after another in one interpreter, each with its own status
     and output."""
-    from conftest import commands_in_one_process
-
     calls = [
         (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', "
                                                "'slides'."),
