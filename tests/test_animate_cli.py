@@ -1,20 +1,21 @@
 """`sears-paradox animate`: names, formats, frame counts and durations read back, determinism, and bad input
-(one sentence; exit 2, or 1 for a missing ffmpeg). Small: a few frames each, so the file runs in seconds."""
+(one sentence; exit 2, or 1 for a missing ffmpeg). Small: two frames each, so the file runs in seconds."""
 
 import os
 import subprocess
-import sys
 
 import pytest
 from click.testing import CliRunner
 from PIL import Image
 
+from conftest import commands_in_one_process
 from rodparadox.animate.encoders import check_fps, open_sink
 from rodparadox.animate.timeline import boost_ends, image_count, timeline
 from sears_paradox_cli.main import main
 
-#: a short animation: 4 frames
-SHORT = ["--fps", "4", "--seconds", "1"]
+#: a short animation: 2 frames, the fewest an animation has (4 before; every check here holds for any number of
+#: frames: the count and duration read back, names, bytes twice, the stills numbered)
+SHORT = ["--fps", "4", "--seconds", "0.5"]
 
 
 def run(*args, expect=0):
@@ -38,26 +39,26 @@ def here(tmp_path, monkeypatch):
 
 
 def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
-    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds1.gif\n"
-    im = Image.open(here / "outputs" / "fig2_now_fps4_seconds1.gif")
-    assert im.n_frames == 4 and im.info["duration"] == 250 and im.info["loop"] == 0
-    first = (here / "outputs" / "fig2_now_fps4_seconds1.gif").read_bytes()
-    stamp = os.stat(here / "outputs" / "fig2_now_fps4_seconds1.gif").st_mtime_ns
-    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds1.gif (unchanged)\n"
-    assert os.stat(here / "outputs" / "fig2_now_fps4_seconds1.gif").st_mtime_ns == stamp
-    (here / "outputs" / "fig2_now_fps4_seconds1.gif").unlink()
+    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds0.5.gif\n"
+    im = Image.open(here / "outputs" / "fig2_now_fps4_seconds0.5.gif")
+    assert im.n_frames == 2 and im.info["duration"] == 250 and im.info["loop"] == 0
+    first = (here / "outputs" / "fig2_now_fps4_seconds0.5.gif").read_bytes()
+    stamp = os.stat(here / "outputs" / "fig2_now_fps4_seconds0.5.gif").st_mtime_ns
+    assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds0.5.gif (unchanged)\n"
+    assert os.stat(here / "outputs" / "fig2_now_fps4_seconds0.5.gif").st_mtime_ns == stamp
+    (here / "outputs" / "fig2_now_fps4_seconds0.5.gif").unlink()
     run("fig2", *SHORT, "-q")
     # byte-identical, and -q prints nothing
-    assert (here / "outputs" / "fig2_now_fps4_seconds1.gif").read_bytes() == first
+    assert (here / "outputs" / "fig2_now_fps4_seconds0.5.gif").read_bytes() == first
 
 
 @pytest.mark.parametrize("args, path", [
-    (["--mode", "boost"], "outputs/fig2_boost_fps4_seconds1.gif"),
+    (["--mode", "boost"], "outputs/fig2_boost_fps4_seconds0.5.gif"),
     (["--mode", "boost", "--v", "0.8", "--frame", "rest..0.3"],
-     "outputs/fig2_boost_v0.8_rest_u0.3_fps4_seconds1.gif"),
-    (["--frame", "rest", "--style", "print"], "outputs/fig2_now_rest_print_fps4_seconds1.gif"),
-    (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now_fps4_seconds1.gif"),
-    (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2_fps5_seconds1.gif"),
+     "outputs/fig2_boost_v0.8_rest_u0.3_fps4_seconds0.5.gif"),
+    (["--frame", "rest", "--style", "print"], "outputs/fig2_now_rest_print_fps4_seconds0.5.gif"),
+    (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now_fps4_seconds0.5.gif"),
+    (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2_fps5_seconds0.5.gif"),
 ])
 def test_names_follow_plots_rule_with_the_mode_as_the_kind(here, args, path):
     """The rate and length are named when not the defaults (25 and 6), after the other options (issue 15)."""
@@ -71,20 +72,20 @@ def test_boost_has_its_frame_count(here):
 
 
 def test_png_writes_numbered_stills_into_a_folder_named_like_the_file(here):
-    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds1/\n"
-    names = sorted(p.name for p in (here / "outputs" / "fig2_now_fps4_seconds1").iterdir())
-    assert names == [f"fig2_now_fps4_seconds1_{k:04d}.png" for k in range(4)]
-    sizes = {Image.open(here / "outputs" / "fig2_now_fps4_seconds1" / n).size for n in names}
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds0.5/\n"
+    names = sorted(p.name for p in (here / "outputs" / "fig2_now_fps4_seconds0.5").iterdir())
+    assert names == [f"fig2_now_fps4_seconds0.5_{k:04d}.png" for k in range(2)]
+    sizes = {Image.open(here / "outputs" / "fig2_now_fps4_seconds0.5" / n).size for n in names}
     assert len(sizes) == 1
-    before = {n: (here / "outputs" / "fig2_now_fps4_seconds1" / n).read_bytes() for n in names}
-    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds1/ (unchanged)\n"
+    before = {n: (here / "outputs" / "fig2_now_fps4_seconds0.5" / n).read_bytes() for n in names}
+    assert run("fig2", *SHORT, "--format", "png").output == "outputs/fig2_now_fps4_seconds0.5/ (unchanged)\n"
     assert run("fig2", *SHORT, "--format", "png", "-o", "stills").output == "stills/\n"
     assert {n: (here / "stills" / n).read_bytes() for n in names} == before
 
 
 def test_output_file_and_folder(here):
     (here / "anims").mkdir()
-    assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now_fps4_seconds1.gif\n"
+    assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now_fps4_seconds0.5.gif\n"
     assert run("fig2", *SHORT, "-o", "anims/lecture.GIF").output == "anims/lecture.GIF\n"
     assert not (here / "outputs").exists()  # only the default folder is ever created
 
@@ -98,11 +99,11 @@ def test_mp4_has_its_frames(here):
     assert run("fig2", *SHORT, "-o", "a.mp4").output == "a.mp4\n"
     probe = subprocess.run([exe, "-v", "error", "-i", "a.mp4", "-f", "rawvideo", "-pix_fmt", "rgb24", "-"],
                            capture_output=True, check=True).stdout
-    assert run("fig2", *SHORT, "--format", "mp4").output == "outputs/fig2_now_fps4_seconds1.mp4\n"
-    assert (here / "a.mp4").read_bytes() == (here / "outputs" / "fig2_now_fps4_seconds1.mp4").read_bytes()
+    assert run("fig2", *SHORT, "--format", "mp4").output == "outputs/fig2_now_fps4_seconds0.5.mp4\n"
+    assert (here / "a.mp4").read_bytes() == (here / "outputs" / "fig2_now_fps4_seconds0.5.mp4").read_bytes()
     gif = Image.open(run("fig2", *SHORT).output.strip())
     width, height = (n + n % 2 for n in gif.size)
-    assert len(probe) == 4 * width * height * 3
+    assert len(probe) == 2 * width * height * 3
 
 
 @pytest.mark.parametrize("args, message", [
@@ -178,7 +179,7 @@ def test_a_file_as_the_stills_folder_is_refused(here):
 
 def test_an_unwritable_folder_is_refused(here, unwritable_folder):
     said = error_of("fig2", *SHORT, "-o", str(unwritable_folder))
-    assert said == (f"cannot write {unwritable_folder}/fig2_now_fps4_seconds1.gif: permission denied in the folder "
+    assert said == (f"cannot write {unwritable_folder}/fig2_now_fps4_seconds0.5.gif: permission denied in the folder "
                     f"{unwritable_folder}.")
 
 
@@ -192,18 +193,13 @@ def test_mp4_without_ffmpeg_is_one_sentence_and_exit_1(here, monkeypatch):
     assert list(here.iterdir()) == []
 
 
-@pytest.mark.parametrize("argv", [["animate", "--help"], ["animate", "fig2", "--fps", "0"],
-                                  ["animate", "fig2", "--fps", "30"]])
-def test_help_and_refused_input_import_no_matplotlib(argv):
-    code = ("import sys\nfrom sears_paradox_cli.main import main\n"
-            f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
-            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else 'CLEAN')\n")
-    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
-    assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
-
-
-def test_no_progress_bar_when_stderr_is_not_a_terminal(here):
-    code = "import sys\nfrom sears_paradox_cli.main import main\nmain(sys.argv[1:])"
-    result = subprocess.run([sys.executable, "-c", code, "animate", "fig2", *SHORT],
-                            capture_output=True, text=True, timeout=120)
-    assert (result.returncode, result.stdout, result.stderr) == (0, "outputs/fig2_now_fps4_seconds1.gif\n", "")
+def test_help_and_refused_input_import_no_matplotlib_and_no_progress_bar_when_stderr_is_not_a_terminal(here):
+    """Four processes before, one now: help and two refused inputs (test_help_and_refused_input_import_no_matplotlib)
+    run one after another in one interpreter, matplotlib looked for after each (the first after which it is there
+    is named), then an animation whose standard error is a pipe draws no progress bar
+    (test_no_progress_bar_when_stderr_is_not_a_terminal): its own status, standard output and error."""
+    refused = [["animate", "--help"], ["animate", "fig2", "--fps", "0"], ["animate", "fig2", "--fps", "30"]]
+    *probes, drawn = commands_in_one_process(refused + [["animate", "fig2", *SHORT]], here)
+    for result in probes:
+        assert "matplotlib" not in result["modules"], result["argv"]
+    assert (drawn["code"], drawn["stdout"], drawn["stderr"]) == (0, b"outputs/fig2_now_fps4_seconds0.5.gif\n", b"")

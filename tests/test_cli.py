@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from conftest import commands_in_one_process
 from sears_paradox_cli.main import main
 
 README = (Path(__file__).resolve().parent.parent / "README.md").read_text()
@@ -323,18 +324,20 @@ def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch
     assert target.read_text() == "old" and [p.name for p in tmp_path.iterdir()] == ["keep.json"]
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["list"], ["events", "fig2"], ["export", "fig2"], ["plot", "--help"], ["ledger", "fig2"], ["ledger", "fig2", "--format", "json", "--at", "1"], ["ledger", "--help"],
-                                  ["events", "fig2", "--format", "markdown"], ["events", "fig2", "--format", "latex"],
-                                  ["ledger", "fig2", "--format", "markdown", "--at", "1"],
-                                  ["ledger", "fig2", "--format", "latex"]])
-def test_non_drawing_paths_never_import_matplotlib(argv):
-    """Nor scipy: only a causal rod needs an integrator (issue 16, item 8)."""
-    code = ("import sys\nfrom sears_paradox_cli.main import main\n"
-            f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
-            "sys.stderr.write('MPL' if any(m.startswith('matplotlib') for m in sys.modules) else\n"
-            "                 'SCIPY' if any(m.startswith('scipy') for m in sys.modules) else 'CLEAN')\n")
-    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
-    assert result.stderr.endswith("CLEAN"), result.stderr[-500:]
+#: the commands that draw nothing: each was a process of its own, now they run one after another in one
+NON_DRAWING = [["--help"], ["list"], ["events", "fig2"], ["export", "fig2"], ["plot", "--help"], ["ledger", "fig2"],
+               ["ledger", "fig2", "--format", "json", "--at", "1"], ["ledger", "--help"],
+               ["events", "fig2", "--format", "markdown"], ["events", "fig2", "--format", "latex"],
+               ["ledger", "fig2", "--format", "markdown", "--at", "1"], ["ledger", "fig2", "--format", "latex"]]
+
+
+def test_non_drawing_paths_never_import_matplotlib(tmp_path):
+    """Nor scipy: only a causal rod needs an integrator (issue 16, item 8). The commands run in one fresh
+    interpreter, one after another (a process each cost 12 interpreters): what is imported accumulates, so the
+    first command after which matplotlib or scipy is there is the one that imported it, and is named."""
+    for result in commands_in_one_process(NON_DRAWING, tmp_path):
+        assert not {"matplotlib", "scipy"} & set(result["modules"]), (result["argv"], result["modules"])
+        assert (result["code"], result["left_unflushed"]) == (0, None), result
 
 
 # --- export: no negative zero, the format from the extension, output paths, empty values (items 10, 12, 15) ---
@@ -437,12 +440,15 @@ def test_frames_library_names_and_bounds_frames():
 # --- write errors: one sentence, exit 1; a closed pipe: quiet (item 8) --------------------------------------
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
-@pytest.mark.parametrize("args", [("events", "fig2"), ("export", "fig2"), ("export", "fig2", "--format", "csv"),
-                                  ("list",), ("--help",), ("plot", "--help"), ("--version",)])
-def test_a_full_standard_output_is_one_sentence_and_exit_1(args):
-    with open("/dev/full", "w") as full:
-        result = subprocess.run(_cli_prefix() + list(args), stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
-    assert (result.returncode, result.stderr) == (1, "Error: cannot write to standard output: no space left on device.\n")
+def test_a_full_standard_output_is_one_sentence_and_exit_1(tmp_path):
+    """Each command once had a process of its own; now they run one after another in one interpreter whose
+    standard output is /dev/full again before each (a failed write points it at /dev/null), each with its own
+    status and standard error."""
+    argvs = [("events", "fig2"), ("export", "fig2"), ("export", "fig2", "--format", "csv"), ("list",), ("--help",),
+             ("plot", "--help"), ("--version",)]
+    for result in commands_in_one_process(argvs, tmp_path, stdout_path="/dev/full"):
+        assert (result["code"], result["stderr"], result["left_unflushed"]) == (
+            1, b"Error: cannot write to standard output: no space left on device.\n", None), result
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
@@ -467,17 +473,19 @@ def _cli_prefix() -> list[str]:
     return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
 
 
-@pytest.mark.parametrize("argv, message", [
-    (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', 'slides'."),
-    (["plot", "fig2", "--rod-lines", "-1"], "Invalid value for '--rod-lines': -1 is not in the range 0<=x<=50."),
-    (["events", "fig2", "--v", ""], "Invalid value for '--v': '' is not a valid float."),
-    (["nope"], "No such command 'nope'."),
-])
-def test_clicks_own_checks_are_one_sentence_too(argv, message):
-    """Found in review: click's usage errors printed three lines (Usage, Try, Error); now one sentence, exit 2."""
-    result = subprocess.run([sys.executable, "-c", "from sears_paradox_cli.main import main; main()", *argv],
-                            capture_output=True, text=True, timeout=60)
-    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"Error: {message}\n")
+def test_clicks_own_checks_are_one_sentence_too(tmp_path):
+    """Found in review: click's usage errors printed three lines (Usage, Try, Error); now one sentence, exit 2.
+    The four calls (a process each before) run one after another in one interpreter, each with its own status
+    and output."""
+    calls = [
+        (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', "
+                                               "'slides'."),
+        (["plot", "fig2", "--rod-lines", "-1"], "Invalid value for '--rod-lines': -1 is not in the range 0<=x<=50."),
+        (["events", "fig2", "--v", ""], "Invalid value for '--v': '' is not a valid float."),
+        (["nope"], "No such command 'nope'."),
+    ]
+    for result, (argv, message) in zip(commands_in_one_process([argv for argv, _ in calls], tmp_path), calls):
+        assert (result["code"], result["stdout"], result["stderr"]) == (2, b"", f"Error: {message}\n".encode()), result
 
 
 def test_every_package_of_the_source_is_installed():
