@@ -27,6 +27,8 @@ import pytest
 COMMANDS = (
     ["plot", "while_turning", "--v", "0.95", "--style", "print", "--rod-lines", "5", "--rod-now",
      "--proper-time", "--frame", "both,0.3", "--format", "svg,pdf,png", "-o", "."],
+    # the causal rod's figures: its compression shading is rasterised inside the vector files
+    ["plot", "fig1", "--rod", "causal", "--frame", "rest", "--format", "svg,pdf", "-o", "."],
     ["ledger", "fig2", "--format", "png", "-o", "."],
     ["ledger", "fig2", "--format", "json", "-o", "ledger.json"],
     ["ledger", "fig2", "--format", "latex", "-o", "ledger.tex"],
@@ -78,7 +80,8 @@ def test_two_processes_with_other_hash_seeds_write_every_output_kind_with_the_sa
     suffixes = {Path(n).suffix for n in names}
     assert suffixes >= {".svg", ".pdf", ".png", ".json", ".tex", ".csv", ".gif", ".dat"}
     assert {"while_turning_v0.95_both_u0.3_print_now_clocks_lines5.svg", "fig2_ledger.png", "a.gif",
-            "single_handout_rest.pdf", "single_worksheet_rest.pdf", "tex/handout.tex"} <= names
+            "single_handout_rest.pdf", "single_worksheet_rest.pdf", "tex/handout.tex",
+            "fig1_rest_causal.svg", "fig1_rest_causal.pdf"} <= names
     assert sum(n.startswith("stills/") for n in names) == 2  # round(0.5 s * 4 fps) stills
     # the same bytes
     assert set(first) == set(second)
