@@ -147,32 +147,28 @@ def meet(track: Track, x: float, t: float, phi: float, L: float) -> tuple[float,
     """Where the line of simultaneity of rapidity phi through (x, t) crosses `track`, as (x, t).
 
     Along a time-like world-line the time measured in the frame phi,
-    cosh(phi)(t' - t) - sinh(phi)(x' - x), strictly increases, so bisection finds the one crossing.
+    f(t') = cosh(phi)(t' - t) - sinh(phi)(x' - x), strictly increases, so the one crossing lies on the first piece at
+    whose end f >= 0. There it is solved in closed form from the piece's raw fields: on a straight piece f is linear
+    in t'; on an arc, x' - x_E = side d cosh psi, t' - t_E = side d sinh psi give side d sinh(psi - phi) = -f(t_E)|x_E.
+    (It was found by bisection over the whole track, some 60 evaluations of the track a crossing: the same point to
+    rounding, as the checks' tolerances, 1e-9 L and wider, do not see. `L` is kept for the callers.)
     """
     c, s = math.cosh(phi), math.sinh(phi)
-
-    def f(tq: float) -> float:
-        return c * (tq - t) - s * (track.x(tq) - x)
-
-    step = L
-    lo = t - step
-    while f(lo) > 0:
-        step *= 2
-        lo = t - step
-    step = L
-    hi = t + step
-    while f(hi) < 0:
-        step *= 2
-        hi = t + step
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if not lo < mid < hi:
+    for piece in track.pieces:
+        if piece.t1 == math.inf or c * (piece.t1 - t) - s * (piece.x1 - x) >= 0:
             break
-        if f(mid) < 0:
-            lo = mid
+    if piece.kind == "arc":
+        arc = piece.arc
+        k = c * (arc.centre.t - t) - s * (arc.centre.x - x)
+        psi = phi + math.asinh(-k / (arc.side * arc.radius))
+        tq = arc.centre.t + arc.side * arc.radius * math.sinh(psi)
+    else:
+        if piece.kind == "ray":
+            (x_end, t_end), slope = ((piece.x1, piece.t1) if piece.t0 == -math.inf else (piece.x0, piece.t0)), math.tanh(piece.rapidity)
         else:
-            hi = mid
-    tq = 0.5 * (lo + hi)
+            (x_end, t_end), slope = (piece.x0, piece.t0), (piece.x1 - piece.x0) / (piece.t1 - piece.t0)
+        # f(t_end + dt) = c (t_end - t) - s (x_end - x) + (c - s slope) dt = 0
+        tq = t_end + (s * (x_end - x) - c * (t_end - t)) / (c - s * slope)
     return track.x(tq), tq
 
 

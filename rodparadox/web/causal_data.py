@@ -96,10 +96,14 @@ class _Table:
     @staticmethod
     def _clenshaw(coef: np.ndarray, index: np.ndarray, x: np.ndarray) -> np.ndarray:
         """The fits at x, every point on its own piece at once (Clenshaw's recurrence)."""
+        # the same operations in the same order as b1, b2 = 2 x b1 - b2 + c_j, b1, with the points' coefficients
+        # gathered once and 2 x computed once: the per-operation cost of numpy dominates these short arrays
+        rows = coef[:, index]
+        twice_x = 2 * x
         b1, b2 = np.zeros_like(x), np.zeros_like(x)
         for j in range(NODES - 1, 0, -1):
-            b1, b2 = 2 * x * b1 - b2 + coef[j][index], b1
-        return x * b1 - b2 + coef[0][index]
+            b1, b2 = twice_x * b1 - b2 + rows[j], b1
+        return x * b1 - b2 + rows[0]
 
     def r(self, s):
         index, x, _ = self._place(s)
