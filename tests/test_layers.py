@@ -9,6 +9,7 @@ Each check is also run once on a planted violation, to show it can fail.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -94,7 +95,7 @@ def layer_violations(module: str, source: str, modules=MODULES) -> list[str]:
     if me not in MAY_IMPORT and me != "rodparadox":
         return [f"{module}: part {me!r} has no rule in MAY_IMPORT; say which layers it may import"]
     out = []
-    for target, _, line in imports(ast.parse(source), modules):
+    for target, _, line in imports(parsed(source), modules):
         theirs = part(target)
         if theirs == "cli":
             out.append(f"{module}, line {line}: imports the command line ({target})")
@@ -107,7 +108,7 @@ def layer_violations(module: str, source: str, modules=MODULES) -> list[str]:
 def private_imports(module: str, source: str, modules=MODULES) -> list[str]:
     """Every private name (a leading underscore, not a dunder) `module` takes from another module: imported by name,
     or read as an attribute of a module it imported."""
-    tree = ast.parse(source)
+    tree = parsed(source)
     out = []
     bound: dict[str, str] = {}  # local name -> our module it stands for
     for node in ast.walk(tree):
@@ -127,6 +128,12 @@ def private_imports(module: str, source: str, modules=MODULES) -> list[str]:
                 and _private(node.attr) and bound[node.value.id] != module):
             out.append(f"{module}, line {node.lineno}: reads {node.attr} of {bound[node.value.id]}")
     return out
+
+
+@functools.lru_cache(maxsize=None)
+def parsed(source: str) -> ast.AST:
+    """A module's tree, parsed once for both checks that walk it (neither changes it)."""
+    return ast.parse(source)
 
 
 def _private(name: str) -> bool:

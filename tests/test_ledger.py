@@ -330,7 +330,7 @@ def test_the_ledger_at_every_impact_agrees_with_the_exported_velocities_and_mass
 
 
 def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios():
-    """The closed form against the midpoint rule over the material points' rapidities (about 5000 cells): a method
+    """The closed form against the midpoint rule over the material points' rapidities (about 3000 cells): a method
     that shares nothing with it but the world-lines. The midpoint rule's own error (O(h^2), larger near kinks) bounds
     the tolerance; the 1e-9 accuracy itself is shown against the hand-derived closed forms above (1e-12)."""
     @settings(SETTINGS, max_examples=60)
@@ -344,11 +344,13 @@ def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios
         if not times:
             return
         t = min(times) + f * (max(times) - min(times))
-        # cell edges: 4000 even cells, refined geometrically towards both ends (down to 1e-12 L), where a slice
-        # just after a pivot's instant holds a hyperbola-sized feature far narrower than an even cell
+        # cell edges: 2500 even cells, refined geometrically towards both ends (down to 1e-12 L), where a slice
+        # just after a pivot's instant holds a hyperbola-sized feature far narrower than an even cell. Margin,
+        # measured over 600 generated examples: the worst error was 0.04 of the tolerance with 4000 even cells and
+        # 500 end cells, 0.20 with 2000 and 250 (the end cells' number changed nothing), so about 0.1 with 2500
         L = scenario.L
-        near = L * np.logspace(-12, -2.4, 500)
-        edges = np.unique(np.concatenate([np.linspace(0.0, L, 4001), near, L - near]))
+        near = L * np.logspace(-12, -2.4, 250)
+        edges = np.unique(np.concatenate([np.linspace(0.0, L, 2501), near, L - near]))
         mids, widths = 0.5 * (edges[1:] + edges[:-1]), np.diff(edges)
         psi = rod_slice(history, eta, t, mids).rapidity
         E, p = (np.cosh(psi) * widths).sum() / L, (np.sinh(psi) * widths).sum() / L

@@ -218,6 +218,18 @@ class WorldLine:
         # the first segment that ends at or after t holds t, or t falls in the gap just before it
         return next(s for s in self.segments if t <= s.end.t).event_at_time(t)
 
+    def event_and_rapidity_at_time(self, t: float) -> tuple[Event, float]:
+        """(`event_at_time(t)`, `rapidity_at_time(t)`), the same values, with the ends and the piece found once."""
+        first, last = self.first, self.last
+        if t <= first.t:
+            return _along(first, self.rapidity_before, t - first.t), self.rapidity_before
+        if t > last.t or not self.segments:
+            return _along(last, self.rapidity_after, t - last.t), self.rapidity_after
+        if t == last.t:  # the event on the straight end, the rapidity of the segment before it
+            return self.event_at_time(t), self.rapidity_at_time(t)
+        piece = next(s for s in self.segments if t <= s.end.t)
+        return piece.event_at_time(t), piece.rapidity_at_start if isinstance(piece, Line) else piece.phi_at_time(t)
+
     def piece_at_time(self, t: float, after: bool = False) -> Segment | float:
         """The segment holding time t, or the rapidity of the straight end (before or after the segments) that does.
 

@@ -66,9 +66,8 @@ def rod_slice(history: History, frame_rapidity: float, t: float, sigmas) -> RodS
     sigmas = np.asarray(sigmas, dtype=float)
     xs, rapidities = np.empty(len(sigmas)), np.empty(len(sigmas))
     for k, sigma in enumerate(sigmas):
-        w = material_worldline(history, float(sigma)).seen_from(frame_rapidity)
-        xs[k] = w.event_at_time(t).x
-        rapidities[k] = w.rapidity_at_time(t)
+        event, rapidities[k] = material_worldline(history, float(sigma)).seen_from(frame_rapidity).event_and_rapidity_at_time(t)
+        xs[k] = event.x
     return RodSlice(frame_rapidity, t, sigmas, xs, rapidities)
 
 
