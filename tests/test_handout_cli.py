@@ -77,18 +77,18 @@ ON_FIG1_FIG2_LETTER = pytest.mark.xdist_group("handout_cli_fig1_fig2_letter")
 
 @pytest.fixture(scope="module")
 def fig1_fig2_letter(tmp_path_factory):
-    """(what `handout fig1 fig2 --v 0.73 --paper letter` printed, the PDF's path), run once in an empty folder."""
+    """(what `handout fig1 fig2 --v 0.73 --paper letter` printed, the PDF's path, its pages' text), run once in an
+    empty folder and read back once (pypdf's extraction takes ~0.1 s a page)."""
     folder = tmp_path_factory.mktemp("fig1_fig2_letter")
     with pytest.MonkeyPatch.context() as mp:
         mp.chdir(folder)
         output = run("handout", *SHARED_ARGS).output
-    return output, folder / SHARED_NAME
+    return output, folder / SHARED_NAME, pages_text(folder / SHARED_NAME)
 
 
 @ON_FIG1_FIG2_LETTER
 def test_the_pdf_holds_the_event_coordinates_as_events_prints_them(fig1_fig2_letter):
-    _, path = fig1_fig2_letter
-    pages = pages_text(path)
+    _, _, pages = fig1_fig2_letter
     # fig2's own section (from the page its title heads, a line of its own, to the end), so no cell is found in
     # fig1's section instead (the introduction names both titles in quotes, inside its lines)
     heads = [k for k, t in enumerate(pages) if re.search(r"(?m)^Impacts simultaneous in the moving frame", t)]
@@ -102,7 +102,7 @@ def test_the_pdf_holds_the_event_coordinates_as_events_prints_them(fig1_fig2_let
 @ON_FIG1_FIG2_LETTER
 def test_letter_paper_and_names(fig1_fig2_letter):
     # the paper and the speed in the name (was `handout fig1 --paper letter` -> outputs/fig1_handout_letter.pdf)
-    output, path = fig1_fig2_letter
+    output, path, _ = fig1_fig2_letter
     assert output == SHARED_NAME + "\n"
     for page in pypdf.PdfReader(path).pages:
         assert (float(page.mediabox.width), float(page.mediabox.height)) == (612.0, 792.0)
@@ -122,9 +122,9 @@ def test_the_worksheets_answer_key_holds_what_its_tables_leave_blank(here):
 @ON_FIG1_FIG2_LETTER
 def test_several_scenarios_make_one_document_with_a_section_each(fig1_fig2_letter):
     # was `handout fig1 fig2` -> outputs/fig1_fig2_handout.pdf: the name's scenarios part is checked above
-    output, path = fig1_fig2_letter
+    output, _, pages = fig1_fig2_letter
     assert output.startswith("outputs/fig1_fig2_handout")
-    text = " ".join(pages_text(path))
+    text = " ".join(pages)
     # each section headed by its scenario's title (issue 14: no internal names in headings)
     assert "rod's rest frame (the paper's Fig. 1)" in text and "moving frame (the paper's Fig. 2)" in text
 

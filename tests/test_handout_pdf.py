@@ -3,6 +3,7 @@ hand from document blocks (`handout_samples`); the PDF is read back with pypdf (
 
 from __future__ import annotations
 
+import functools
 import io
 import re
 
@@ -106,6 +107,7 @@ def fillers(n: int) -> tuple[Paragraph, ...]:
     return tuple(Paragraph(f"Filler {k}. {LOREM}") for k in range(n))
 
 
+@functools.lru_cache(maxsize=None)  # two tests ask; the search sets a page a dozen times
 def most_fillers_on_one_page() -> int:
     n = 1
     while len(page_figures(text_only(Section("s", "s", fillers(n + 1))))) == 1:
