@@ -7,6 +7,8 @@ The plan is measured without drawing (no figure is rendered: `page_plan` lays ou
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 
 from conftest import history
@@ -25,17 +27,29 @@ QUARTER = 0.25
 SPEEDS = (0.6, 0.95)  # 0.3 too when the rules change (it found nothing 0.6 and 0.95 did not; each speed costs 3 s)
 
 
-@pytest.fixture(scope="module", params=["a4", "letter"])
-def plans(request):
-    """Per paper: each preset's handout and worksheet at each speed, and the plan of its pages."""
-    out = []
+PAPERS = ("a4", "letter")
+
+
+@functools.lru_cache(maxsize=None)
+def _all_plans() -> dict[str, list]:
+    """Per paper: each preset's handout and worksheet at each speed, and the plan of its pages. A document's plans
+    on both papers are made one after the other: they measure the same blocks of strips, which
+    `render.strip.strips_at` keeps in a small cache that the other documents' strips would push out in between."""
+    out: dict[str, list] = {paper: [] for paper in PAPERS}
     for v in SPEEDS:
         for name in builtin_names():
             for worksheet in (False, True):
                 doc = build([(name, history(name, v))], worksheet=worksheet)
-                out.append((f"{name} {'worksheet' if worksheet else 'handout'} v={v} {request.param}", doc,
-                            page_plan(doc, request.param)))
+                for paper in PAPERS:
+                    out[paper].append((f"{name} {'worksheet' if worksheet else 'handout'} v={v} {paper}", doc,
+                                       page_plan(doc, paper)))
     return out
+
+
+@pytest.fixture(scope="module", params=PAPERS)
+def plans(request):
+    """Per paper: each preset's handout and worksheet at each speed, and the plan of its pages."""
+    return _all_plans()[request.param]
 
 
 def _pairs(plan):
