@@ -53,6 +53,8 @@ def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
         text = f"{value:.{digits}g}"
         if abs(float(text)) < 1.0 or abs(value) >= 1.0:
             break
+    if "e" in text:  # at least `significant` digits before the point: 'g' would write 12345 as 1.234e+04
+        text = f"{value:.0f}"
     return text if math_text else text.replace("-", MINUS)
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 import math
@@ -41,7 +41,16 @@ def test_inside_mathtext_the_same_number_is_spelled_for_mathtext(value, text):
     assert shown(value, math_text=True) == text
 
 
+@pytest.mark.parametrize("value, significant, text", [
+    (10000.0, 4, "10000"), (9999.5, 4, "10000"), (-12345.4, 4, "\N{MINUS SIGN}12345"), (999999.0, 5, "999999"),
+    (1234.5, 4, "1234"), (1234.5, 5, "1234.5")])
+def test_a_number_with_as_many_digits_before_the_point_as_asked_is_written_out_whole(value, significant, text):
+    """Hypothesis found 10000 with 4 digits drawn as '1e+04' ('g' format turns to an exponent there)."""
+    assert shown(value, significant) == text
+
+
 @given(st.floats(min_value=-1e12, max_value=1e12, allow_nan=False), st.integers(min_value=4, max_value=10))
+@example(10000.0, 4)
 def test_a_drawn_number_has_no_e_no_ascii_minus_no_minus_zero_and_reads_back(value, significant):
     text = shown(value, significant)
     assert "e" not in text and "-" not in text

@@ -227,9 +227,9 @@ TOO_DEEP = "the lists and mappings are nested more than 16 deep; a scenario need
 def test_oversized_or_deep_yaml_is_refused_quickly_whatever_its_shape(text, message):
     import time
 
-    start = time.perf_counter()
+    start = time.process_time()  # this process's CPU time: a machine busy with other work does not count
     assert refused(text) == message
-    assert time.perf_counter() - start < 1.0
+    assert time.process_time() - start < 1.0
 
 
 @pytest.mark.parametrize("key, text, shown", [
