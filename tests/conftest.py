@@ -37,6 +37,27 @@ def pytest_xdist_auto_num_workers(config):
     return max(1, min(cores, MAX_WORKERS))
 
 
+#: tests between two moves of what a worker keeps (its caches) out of the garbage collector's reach
+FREEZE_EVERY = 50
+_tests_since_freeze = 0
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    """Every FREEZE_EVERY tests: collect what is garbage, then freeze what survives (gc.freeze), so that the
+    collector's full passes no longer walk the worker's caches (histories, figures, pages: millions of objects)
+    again and again. Measured over the whole suite with 2 workers: full passes took 27 s of CPU, 10 s with this;
+    the run 188 -> 169-171 user CPU-s, 106 -> 96-98 s wall; the workers' peak memory the same (400-530 MB).
+    What a frozen object leaves behind later (a cache entry pushed out) is freed when the worker exits."""
+    global _tests_since_freeze
+    yield
+    _tests_since_freeze += 1
+    if _tests_since_freeze >= FREEZE_EVERY:
+        gc.collect()
+        gc.freeze()
+        _tests_since_freeze = 0
+
+
 @pytest.hookimpl(trylast=True)
 def pytest_sessionfinish(session):
     """Nothing is collected once the session is over: a worker's caches (histories, figures, PDFs: millions of
