@@ -43,20 +43,26 @@ def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
 
 
 def _hits(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
-    """(k, n): whether segment n crosses box k."""
+    """(k, n): whether segment n crosses box k.
+
+    Liang-Barsky: the segment's parameters where it enters and leaves each of the box's slabs, lo the latest
+    entry (from 0), hi the earliest exit (from 1); a segment parallel to a slab and outside it misses. Per axis,
+    the sign of the segment's step there decides which of the two edges it enters by, so each edge's parameter
+    is computed once and taken as an entry or an exit."""
     x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
-    dx, dy = x1 - x0, y1 - y0
-    lo = np.zeros((len(boxes), len(segments)))
-    hi = np.ones_like(lo)
-    ok = np.ones(lo.shape, dtype=bool)
     b = [boxes[:, i][:, None] for i in range(4)]
+    lo, hi = 0.0, 1.0
+    ok = True
     with np.errstate(divide="ignore", invalid="ignore"):
-        for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
-            zero = p == 0
-            ok &= ~(zero & (q < 0))
-            r = q / np.where(zero, 1.0, p)
-            lo = np.where(p < 0, np.maximum(lo, r), lo)
-            hi = np.where(p > 0, np.minimum(hi, r), hi)
+        for start, step, low, high in ((x0, x1 - x0, b[0], b[2]), (y0, y1 - y0, b[1], b[3])):
+            zero = step == 0
+            safe = np.where(zero, 1.0, step)
+            at_low, at_high = (start - low) / -safe, (high - start) / safe  # the edges' parameters
+            forward, backward = step > 0, step < 0
+            lo = np.maximum(lo, np.where(forward, at_low, np.where(backward, at_high, -np.inf)))
+            hi = np.minimum(hi, np.where(forward, at_high, np.where(backward, at_low, np.inf)))
+            if zero.any():
+                ok = ok & ~(zero & ((start - low < 0) | (high - start < 0)))
     return ok & (lo <= hi)
 
 
