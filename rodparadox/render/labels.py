@@ -90,13 +90,19 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         parts = [np.column_stack([q[:-1], q[1:]]) for q in map(to_pt, polylines) if len(q) > 1]
         return np.concatenate(parts) if parts else np.empty((0, 4))
 
-    def crossings(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    def extents(segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The segments with their (xmax, ymax, xmin, ymin), found once for every chunk of candidates."""
+        return segments, np.stack([np.maximum(segments[:, 0], segments[:, 2]), np.maximum(segments[:, 1], segments[:, 3]),
+                                   np.minimum(segments[:, 0], segments[:, 2]), np.minimum(segments[:, 1], segments[:, 3])])
+
+    def crossings(boxes: np.ndarray, segments_and_extents: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+        segments, (x_max, t_max, x_min, t_min) = segments_and_extents
         lo, hi = boxes[:, :2].min(0), boxes[:, 2:].max(0)  # only nearby segments can be hit
-        near = ((np.maximum(segments[:, 0], segments[:, 2]) >= lo[0]) & (np.minimum(segments[:, 0], segments[:, 2]) <= hi[0])
-                & (np.maximum(segments[:, 1], segments[:, 3]) >= lo[1]) & (np.minimum(segments[:, 1], segments[:, 3]) <= hi[1]))
+        near = (x_max >= lo[0]) & (x_min <= hi[0]) & (t_max >= lo[1]) & (t_min <= hi[1])
         return boxes_hit_segments(boxes, segments[near])
 
     hard, soft = segments_of(obstacles), segments_of(guides)
+    hard_extents, soft_extents = extents(hard), extents(soft)
     taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
     markers = len(taken)  # the markers' boxes, then each placed label's
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
@@ -135,12 +141,12 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
             if len(chunk) == 0:
                 continue
             b = boxes[chunk]
-            blocked = crossings(b, hard)
+            blocked = crossings(b, hard_extents)
             if taken:
                 other = np.array(taken)
                 blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
                             & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
-            crossed_guides[chunk] = crossings(b, soft)
+            crossed_guides[chunk] = crossings(b, soft_extents)
             if crowded and label.avoid_radius and taken:  # a leader it would need crossing a marker or a label:
                 # across a marker, free candidates first (a hundred guides); across a word it strikes it out: blocked
                 crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[:markers])
@@ -174,6 +180,7 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                                 gid=label.gid.replace("-label-", "-leader-"))
                 artists += (line,)
                 hard = np.concatenate([hard, leader.reshape(1, 4)])
+                hard_extents = extents(hard)
         drawn.append(artists)
     return drawn
 
