@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -45,12 +46,31 @@ def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
 def _hits(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
     """(k, n): whether segment n crosses box k.
 
+    Only the pairs whose extents come within a billionth of the largest coordinate of each other are tested
+    (`_liang_barsky`): a segment farther from a box than that, on either axis, is rejected by the test itself
+    (an entry past its end, an exit before its start, or parallel and outside), by a margin far above rounding."""
+    scale = max(float(np.abs(boxes).max(initial=0.0)), float(np.abs(segments).max(initial=0.0)))
+    if not math.isfinite(scale):
+        return _liang_barsky(boxes[:, None, :], segments[None, :, :])
+    margin = 1e-9 * scale
+    near = ((np.maximum(segments[:, 0], segments[:, 2])[None, :] >= boxes[:, 0, None] - margin)
+            & (np.minimum(segments[:, 0], segments[:, 2])[None, :] <= boxes[:, 2, None] + margin)
+            & (np.maximum(segments[:, 1], segments[:, 3])[None, :] >= boxes[:, 1, None] - margin)
+            & (np.minimum(segments[:, 1], segments[:, 3])[None, :] <= boxes[:, 3, None] + margin))
+    k, n = np.nonzero(near)
+    near[k, n] = _liang_barsky(boxes[k], segments[n])
+    return near
+
+
+def _liang_barsky(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """Whether each segment (..., 4: x0 y0 x1 y1) crosses its box (..., 4: xmin ymin xmax ymax), element by element.
+
     Liang-Barsky: the segment's parameters where it enters and leaves each of the box's slabs, lo the latest
     entry (from 0), hi the earliest exit (from 1); a segment parallel to a slab and outside it misses. Per axis,
     the sign of the segment's step there decides which of the two edges it enters by, so each edge's parameter
     is computed once and taken as an entry or an exit."""
-    x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
-    b = [boxes[:, i][:, None] for i in range(4)]
+    x0, y0, x1, y1 = (segments[..., i] for i in range(4))
+    b = [boxes[..., i] for i in range(4)]
     lo, hi = 0.0, 1.0
     ok = True
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -61,7 +81,7 @@ def _hits(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
             forward, backward = step > 0, step < 0
             lo = np.maximum(lo, np.where(forward, at_low, np.where(backward, at_high, -np.inf)))
             hi = np.minimum(hi, np.where(forward, at_high, np.where(backward, at_low, np.inf)))
-            if zero.any():
+            if np.any(zero):
                 ok = ok & ~(zero & ((start - low < 0) | (high - start < 0)))
     return ok & (lo <= hi)
 
