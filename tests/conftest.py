@@ -162,3 +162,33 @@ def commands_in_one_process(argvs, tmp_path, stdout_path: str = "") -> list[dict
     for result, out, err in zip(found, outs, errs):
         result.update(stdout=out, stderr=err)
     return found
+
+
+# --- shared by test_render.py, test_causal_draw.py, test_legible_panels.py (t13render) ---
+
+#: one Agg renderer per dpi for every measuring draw: a text's extent depends only on its font and the dpi, and
+#: matplotlib caches text metrics per renderer, so a new renderer for each figure measured every tick label again
+_MEASURING_RENDERERS: dict = {}
+#: the shared renderers' size in pixels; a larger figure gets its own renderer, as Agg would give it
+_MEASURING_SIZE = 3000
+
+
+def measuring_renderer(fig):
+    """Lay out `fig` as Agg draws it, without rasterising (Figure.draw_without_rendering), and return the renderer
+    that measured it: every text's extent and every tick is what a rendered PNG has. Call it inside the figure's
+    style_context. The renderer is shared by every figure of the same dpi that fits it."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+
+    class MeasuringCanvas(FigureCanvasAgg):
+        def get_renderer(self):
+            w, h = self.figure.bbox.size
+            if max(w, h) > _MEASURING_SIZE:
+                return super().get_renderer()
+            dpi = self.figure.dpi
+            if dpi not in _MEASURING_RENDERERS:
+                _MEASURING_RENDERERS[dpi] = RendererAgg(_MEASURING_SIZE, _MEASURING_SIZE, dpi)
+            return _MEASURING_RENDERERS[dpi]
+
+    canvas = MeasuringCanvas(fig)
+    fig.draw_without_rendering()
+    return canvas.get_renderer()

@@ -23,10 +23,9 @@ import matplotlib
 import matplotlib.image
 import numpy as np
 import pytest
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgb
 
-from conftest import history
+from conftest import history, measuring_renderer
 from rodparadox import render
 from rodparadox.physics.engine import run
 from rodparadox.errors import ScenarioError
@@ -386,11 +385,10 @@ def test_the_text_size_cache_is_bounded():
 
 def _renderer(fig, style):
     """The figure laid out as Agg draws it, without rasterising: every text's extent and every tick is what a
-    rendered PNG has (the same renderer measures them), at a third of a full draw's cost."""
+    rendered PNG has (the same renderer measures them), at a third of a full draw's cost; one renderer per dpi
+    measures every figure (conftest.measuring_renderer), so each text is measured once per process."""
     with render.style_context(style):
-        canvas = FigureCanvasAgg(fig)
-        fig.draw_without_rendering()
-    return canvas.get_renderer()
+        return measuring_renderer(fig)
 
 
 def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:

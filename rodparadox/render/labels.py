@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -43,20 +44,45 @@ def boxes_hit_segments(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
 
 
 def _hits(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
-    """(k, n): whether segment n crosses box k."""
-    x0, y0, x1, y1 = (segments[:, i][None, :] for i in range(4))
-    dx, dy = x1 - x0, y1 - y0
-    lo = np.zeros((len(boxes), len(segments)))
-    hi = np.ones_like(lo)
-    ok = np.ones(lo.shape, dtype=bool)
-    b = [boxes[:, i][:, None] for i in range(4)]
+    """(k, n): whether segment n crosses box k.
+
+    Only the pairs whose extents come within a billionth of the largest coordinate of each other are tested
+    (`_liang_barsky`): a segment farther from a box than that, on either axis, is rejected by the test itself
+    (an entry past its end, an exit before its start, or parallel and outside), by a margin far above rounding."""
+    scale = max(float(np.abs(boxes).max(initial=0.0)), float(np.abs(segments).max(initial=0.0)))
+    if not math.isfinite(scale):
+        return _liang_barsky(boxes[:, None, :], segments[None, :, :])
+    margin = 1e-9 * scale
+    near = ((np.maximum(segments[:, 0], segments[:, 2])[None, :] >= boxes[:, 0, None] - margin)
+            & (np.minimum(segments[:, 0], segments[:, 2])[None, :] <= boxes[:, 2, None] + margin)
+            & (np.maximum(segments[:, 1], segments[:, 3])[None, :] >= boxes[:, 1, None] - margin)
+            & (np.minimum(segments[:, 1], segments[:, 3])[None, :] <= boxes[:, 3, None] + margin))
+    k, n = np.nonzero(near)
+    near[k, n] = _liang_barsky(boxes[k], segments[n])
+    return near
+
+
+def _liang_barsky(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """Whether each segment (..., 4: x0 y0 x1 y1) crosses its box (..., 4: xmin ymin xmax ymax), element by element.
+
+    Liang-Barsky: the segment's parameters where it enters and leaves each of the box's slabs, lo the latest
+    entry (from 0), hi the earliest exit (from 1); a segment parallel to a slab and outside it misses. Per axis,
+    the sign of the segment's step there decides which of the two edges it enters by, so each edge's parameter
+    is computed once and taken as an entry or an exit."""
+    x0, y0, x1, y1 = (segments[..., i] for i in range(4))
+    b = [boxes[..., i] for i in range(4)]
+    lo, hi = 0.0, 1.0
+    ok = True
     with np.errstate(divide="ignore", invalid="ignore"):
-        for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
-            zero = p == 0
-            ok &= ~(zero & (q < 0))
-            r = q / np.where(zero, 1.0, p)
-            lo = np.where(p < 0, np.maximum(lo, r), lo)
-            hi = np.where(p > 0, np.minimum(hi, r), hi)
+        for start, step, low, high in ((x0, x1 - x0, b[0], b[2]), (y0, y1 - y0, b[1], b[3])):
+            zero = step == 0
+            safe = np.where(zero, 1.0, step)
+            at_low, at_high = (start - low) / -safe, (high - start) / safe  # the edges' parameters
+            forward, backward = step > 0, step < 0
+            lo = np.maximum(lo, np.where(forward, at_low, np.where(backward, at_high, -np.inf)))
+            hi = np.minimum(hi, np.where(forward, at_high, np.where(backward, at_low, np.inf)))
+            if np.any(zero):
+                ok = ok & ~(zero & ((start - low < 0) | (high - start < 0)))
     return ok & (lo <= hi)
 
 
@@ -84,13 +110,19 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         parts = [np.column_stack([q[:-1], q[1:]]) for q in map(to_pt, polylines) if len(q) > 1]
         return np.concatenate(parts) if parts else np.empty((0, 4))
 
-    def crossings(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    def extents(segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The segments with their (xmax, ymax, xmin, ymin), found once for every chunk of candidates."""
+        return segments, np.stack([np.maximum(segments[:, 0], segments[:, 2]), np.maximum(segments[:, 1], segments[:, 3]),
+                                   np.minimum(segments[:, 0], segments[:, 2]), np.minimum(segments[:, 1], segments[:, 3])])
+
+    def crossings(boxes: np.ndarray, segments_and_extents: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+        segments, (x_max, t_max, x_min, t_min) = segments_and_extents
         lo, hi = boxes[:, :2].min(0), boxes[:, 2:].max(0)  # only nearby segments can be hit
-        near = ((np.maximum(segments[:, 0], segments[:, 2]) >= lo[0]) & (np.minimum(segments[:, 0], segments[:, 2]) <= hi[0])
-                & (np.maximum(segments[:, 1], segments[:, 3]) >= lo[1]) & (np.minimum(segments[:, 1], segments[:, 3]) <= hi[1]))
+        near = (x_max >= lo[0]) & (x_min <= hi[0]) & (t_max >= lo[1]) & (t_min <= hi[1])
         return boxes_hit_segments(boxes, segments[near])
 
     hard, soft = segments_of(obstacles), segments_of(guides)
+    hard_extents, soft_extents = extents(hard), extents(soft)
     taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
     markers = len(taken)  # the markers' boxes, then each placed label's
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
@@ -129,12 +161,12 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
             if len(chunk) == 0:
                 continue
             b = boxes[chunk]
-            blocked = crossings(b, hard)
+            blocked = crossings(b, hard_extents)
             if taken:
                 other = np.array(taken)
                 blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
                             & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
-            crossed_guides[chunk] = crossings(b, soft)
+            crossed_guides[chunk] = crossings(b, soft_extents)
             if crowded and label.avoid_radius and taken:  # a leader it would need crossing a marker or a label:
                 # across a marker, free candidates first (a hundred guides); across a word it strikes it out: blocked
                 crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[:markers])
@@ -168,6 +200,7 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                                 gid=label.gid.replace("-label-", "-leader-"))
                 artists += (line,)
                 hard = np.concatenate([hard, leader.reshape(1, 4)])
+                hard_extents = extents(hard)
         drawn.append(artists)
     return drawn
 

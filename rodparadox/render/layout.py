@@ -314,10 +314,14 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
     def figure_width(rows: list[list[Panel]], wide: bool, h: float) -> float:
         return min(page_w, max(legend(rows, wide)[2], *(row_width(row, h) for row in rows)))
 
+    tops: dict[float, float] = {}  # the title's band by the figure's width: the bisections meet a width many times
+
     def figure_height(rows: list[list[Panel]], wide: bool, h: float) -> float:
         width = figure_width(rows, wide, h)
         bands = sum(max(len(m.wrap(p.title, w)) for p, w in zip(row, widths(row, h))) for row in rows)
-        top = m.top(suptitle(history.scenario, width, fs["suptitle"])) if titled else 0.0
+        if width not in tops:
+            tops[width] = m.top(suptitle(history.scenario, width, fs["suptitle"])) if titled else 0.0
+        top = tops[width]
         return (top + bands * m.title_line
                 + len(rows) * (m.title_pad + h + m.bottom_axis)
                 + m.row_gap * (len(rows) - 1) + m.legend_height(legend(rows, wide)[0]))

@@ -42,15 +42,17 @@ def polyline_gap(a: np.ndarray, b: np.ndarray) -> float:
 
 
 def _vertices_to_segments(points: np.ndarray, polyline: np.ndarray) -> float:
-    p0, p1 = polyline[:-1], polyline[1:]
-    d = p1 - p0
-    length2 = np.maximum((d * d).sum(1), 1e-300)
+    # x and t apart: each sum of two products is the one a sum over the last axis makes, without 3-d temporaries
+    (x0, t0), (dx, dt) = polyline[:-1].T, (polyline[1:] - polyline[:-1]).T
+    length2 = np.maximum(dx * dx + dt * dt, 1e-300)
     best = math.inf
-    for chunk in np.array_split(points, max(1, len(points) * len(p0) // 200_000 + 1)):  # bounded memory
-        rel = chunk[:, None, :] - p0[None, :, :]
-        s = np.clip((rel * d[None]).sum(2) / length2[None], 0.0, 1.0)
-        gap = rel - s[:, :, None] * d[None]
-        best = min(best, float(np.sqrt((gap * gap).sum(2).min())) if len(chunk) and len(p0) else math.inf)
+    for chunk in np.array_split(points, max(1, len(points) * len(x0) // 200_000 + 1)):  # bounded memory
+        if not (len(chunk) and len(x0)):
+            continue
+        rx, rt = chunk[:, 0, None] - x0[None, :], chunk[:, 1, None] - t0[None, :]
+        s = np.clip((rx * dx + rt * dt) / length2, 0.0, 1.0)
+        gx, gt = rx - s * dx, rt - s * dt
+        best = min(best, float(np.sqrt((gx * gx + gt * gt).min())))
     return best
 
 
