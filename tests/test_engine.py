@@ -205,3 +205,23 @@ def test_a_stopped_turn_conserves_the_systems_energy(delay):
     assert [i.label for i in h.impacts] == ["B1", "A1", "B2"] and h.impacts[1].while_turning
     assert [math.tanh(i.particle_rapidity_after) for i in h.impacts] == [pytest.approx(0.0, abs=1e-12),
                                                                          pytest.approx(-0.6), pytest.approx(0.6)]
+
+
+@pytest.mark.parametrize("name", ["fig2", "while_turning"])
+def test_event_and_rapidity_at_time_are_event_at_time_and_rapidity_at_time(name):
+    """The one-pass reading rod slices use gives what the two readings give, at every joint (and an ulp either
+    side), between joints and beyond both ends, in S and in a boosted frame."""
+    from conftest import history
+
+    h = history(name)
+    for sigma in (0.0, 0.37, 1.0):
+        for eta in (0.0, -0.69):
+            w = h.material_worldline(sigma * h.scenario.L)
+            w = w.seen_from(eta) if eta else w
+            joints = [w.first.t] + [s.end.t for s in w.segments]
+            times = [w.first.t - 1.0, w.last.t + 1.0]
+            times += [math.nextafter(t, d) for t in joints for d in (-math.inf, math.inf)] + joints
+            times += [(a + b) / 2 for a, b in zip(joints, joints[1:])]
+            assert len(w.segments) >= 1
+            for t in times:
+                assert w.event_and_rapidity_at_time(t) == (w.event_at_time(t), w.rapidity_at_time(t)), (sigma, eta, t)
