@@ -31,7 +31,8 @@ def exact(value: float) -> str:
 
 
 def shown(value: float, significant: int = 10, math_text: bool = False) -> str:
-    """A number as a figure draws it: up to `significant` digits, a real minus sign, no -0, 1×10⁻⁶ for tiny ones.
+    """A number as a figure draws it: up to `significant` digits (every digit before the point, where there are more:
+    12345.6 with 4 is 12346), a real minus sign, no -0, 1×10⁻⁶ for tiny ones.
 
     More digits than `significant` where fewer would round a speed |u| < 1 up to 1
     (0.99999999999 stays below 1). Plain text by default (Unicode minus, ×,

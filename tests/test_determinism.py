@@ -20,16 +20,16 @@ import pytest
 #: what each process runs, in one interpreter: every output kind, each by the cheapest command that writes it
 #: (issue 13, item 8). One plot writes SVG, PDF and PNG: while_turning with rod lines, clocks and a third frame
 #: draws all that fig2's default plot draws and more, so fig2's plot (a command of its own before) is not needed.
-#: The ledger's figure is written once, as PNG: the SVG and PDF backends are the plot's. Animations have 2
-#: images, the fewest an animation may have, the GIF in one panel (the stills draw both frames). The handout,
-#: worksheet and LaTeX folder are of `single` (one particle) in the rest frame alone: the same writers and the
-#: same kinds of file in fewer pages (the worksheet with one question); the handout PDF, not checked before, too.
+#: The ledger's figure as SVG (its elements' order) and PNG. Animations have 2 images, the fewest an animation may
+#: have, the GIF in one panel (the stills draw both frames). The handout PDF of `single` in the rest frame; the
+#: worksheet of fig2 and the LaTeX folder of fig1 (two particles, both frames, every question), where an order that
+#: a hash seed changes would show.
 COMMANDS = (
     ["plot", "while_turning", "--v", "0.95", "--style", "print", "--rod-lines", "5", "--rod-now",
      "--proper-time", "--frame", "both,0.3", "--format", "svg,pdf,png", "-o", "."],
     # the causal rod's figures: its compression shading is rasterised inside the vector files
     ["plot", "fig1", "--rod", "causal", "--frame", "rest", "--format", "svg,pdf", "-o", "."],
-    ["ledger", "fig2", "--format", "png", "-o", "."],
+    ["ledger", "fig2", "--format", "svg,png", "-o", "."],
     ["ledger", "fig2", "--format", "json", "-o", "ledger.json"],
     ["ledger", "fig2", "--format", "latex", "-o", "ledger.tex"],
     ["export", "fig2", "--format", "csv", "-o", "fig2.csv"],
@@ -37,8 +37,9 @@ COMMANDS = (
     ["animate", "while_turning", "--v", "0.95", "--mode", "boost", "--style", "print", "--fps", "4",
      "--seconds", "0.5", "--format", "png", "-o", "stills"],
     ["handout", "single", "--frame", "rest", "-o", "."],
-    ["handout", "single", "--worksheet", "--frame", "rest", "--questions", "1", "-o", "."],
-    ["handout", "single", "--frame", "rest", "--format", "tex", "-o", "tex"],
+    # two particles, both frames, every question: where an order that hash seeds change could show
+    ["handout", "fig2", "--worksheet", "-o", "."],
+    ["handout", "fig1", "--format", "tex", "-o", "tex"],
 )
 
 _SCRIPT = """
@@ -80,7 +81,7 @@ def test_two_processes_with_other_hash_seeds_write_every_output_kind_with_the_sa
     suffixes = {Path(n).suffix for n in names}
     assert suffixes >= {".svg", ".pdf", ".png", ".json", ".tex", ".csv", ".gif", ".dat"}
     assert {"while_turning_v0.95_both_u0.3_print_now_clocks_lines5.svg", "fig2_ledger.png", "a.gif",
-            "single_handout_rest.pdf", "single_worksheet_rest.pdf", "tex/handout.tex",
+            "single_handout_rest.pdf", "fig2_worksheet.pdf", "tex/handout.tex", "fig2_ledger.svg",
             "fig1_rest_causal.svg", "fig1_rest_causal.pdf"} <= names
     assert sum(n.startswith("stills/") for n in names) == 2  # round(0.5 s * 4 fps) stills
     # the same bytes

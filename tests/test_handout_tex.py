@@ -104,9 +104,8 @@ def test_the_folder_holds_every_table_figure_and_world_line(worksheet):
 
 def test_the_same_handout_gives_the_same_bytes(worksheet):
     h, files = worksheet
-    # built again in one process from new histories and figures, the same bytes: test_robust_cli's
-    # `handout fig2 --format tex -o DIR`, run twice, reports every piece unchanged (tex_files twice); in two
-    # processes: test_determinism (`handout fig1 --format tex`). Here the bytes are read once.
+    again = tex_files(handout(("fig1", "fig2"), worksheet=True))  # new histories, new figures; in two processes:
+    assert again == files                                         # test_determinism (`handout fig1 --format tex`)
     assert all(b"CreationDate" not in b and b"ModDate" not in b for b in files.values())
 
 

@@ -9,6 +9,7 @@ one cache keyed on all of them returns what a fresh parse returns: drawings keep
 
 from __future__ import annotations
 
+import inspect
 from functools import lru_cache
 
 import matplotlib
@@ -16,7 +17,12 @@ from matplotlib import mathtext
 
 #: the rcParams a parse reads besides its arguments (mathtext.fontset is also in the font properties, which key it)
 _RC_KEYS = tuple(sorted(k for k in matplotlib.rcParams if k.startswith("mathtext.")))
-_ONE_PARSE = mathtext.MathTextParser._parse_cached.__wrapped__  # what matplotlib's cached method computes
+#: what matplotlib's cached method computes (matplotlib 3.10 and 3.11); None if a later matplotlib changed that
+#: private method: then nothing is installed and matplotlib parses as it always did
+_ONE_PARSE = getattr(getattr(mathtext.MathTextParser, "_parse_cached", None), "__wrapped__", None)
+if _ONE_PARSE is not None and list(inspect.signature(_ONE_PARSE).parameters) != [
+        "self", "s", "dpi", "prop", "antialiased", "load_glyph_flags"]:
+    _ONE_PARSE = None
 _PARSERS = {output_type: mathtext.MathTextParser(output)
             for output_type, output in (("vector", "path"), ("raster", "agg"))}
 
@@ -34,8 +40,9 @@ def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
 
 
 def install() -> None:
-    """Route every MathTextParser's parses through the one process-wide cache."""
-    mathtext.MathTextParser._parse_cached = _parse_cached
+    """Route every MathTextParser's parses through the one process-wide cache (where matplotlib's is as expected)."""
+    if _ONE_PARSE is not None:
+        mathtext.MathTextParser._parse_cached = _parse_cached
 
 
 def cache_info():
