@@ -242,7 +242,7 @@ def test_two_runs_give_the_same_bytes(fig2_handout):
     # built again in one process, the same bytes: test_handout_cli's first test (`handout fig2 --v 0.6` twice, the
     # second reported unchanged) calls to_pdf twice on a fig2 handout, new histories and figures; here it is read
     assert b"CreationDate" not in pdf and b"Producer" not in pdf and b"matplotlib" not in pdf.lower()
-    # across processes (other hash seeds): test_determinism, with `handout fig2 --worksheet`
+    # across processes (other hash seeds): test_determinism, with `handout fig1 --worksheet`
 
 
 # --- inside the margins ------------------------------------------------------------------------------------
