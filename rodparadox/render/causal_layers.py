@@ -104,14 +104,22 @@ def compression_cells(history, f: float, t_lo: float, t_hi: float) -> tuple[np.n
     step = 2 * (high - low) / SHADES  # ln lam is -(r+ + r-)/2: a change of r by this is one shade
     us, ws = _cell_edges(sol.plus, u_lo, u_hi, L, step), _cell_edges(sol.minus, w_lo, w_hi, L, step)
     U, V = np.array([U_of(u) for u in us]), np.array([V_of(w) for w in ws])
+    i, j, ln_lam, centres = cells_in_rod(sol, us, ws, L)
+    corners = [(U[i], V[j]), (U[i + 1], V[j]), (U[i + 1], V[j + 1]), (U[i], V[j + 1])]
+    polygons = np.stack([np.column_stack([(Uc - Vc) / 2, (Uc + Vc) / 2]) for Uc, Vc in corners], axis=1)
+    return polygons, ln_lam, centres
+
+
+def cells_in_rod(sol, us, ws, L: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The diamond cells between consecutive chart edges `us` (u = T + X) and `ws` (w = T - X) that reach into the
+    rod (0 < X < L): their edge indices i (into us) and j (into ws), ln lam at each centre, the centres (n, 2) as
+    (u, w). Shared by the frames' panels (`compression_cells`) and the rod's own view (rod_panel)."""
     um, wm = 0.5 * (us[1:] + us[:-1]), 0.5 * (ws[1:] + ws[:-1])
     rp, rm = np.array([sol.r_plus(u) for u in um]), np.array([sol.r_minus(w) for w in wm])
     i, j = np.meshgrid(np.arange(len(um)), np.arange(len(wm)), indexing="ij")
     keep = (us[1:][i] - ws[:-1][j] > 0) & (us[:-1][i] - ws[1:][j] < 2 * L)
     i, j = i[keep], j[keep]
-    corners = [(U[i], V[j]), (U[i + 1], V[j]), (U[i + 1], V[j + 1]), (U[i], V[j + 1])]
-    polygons = np.stack([np.column_stack([(Uc - Vc) / 2, (Uc + Vc) / 2]) for Uc, Vc in corners], axis=1)
-    return polygons, -0.5 * (rp[i] + rm[j]), np.column_stack([um[i], wm[j]])
+    return i, j, -0.5 * (rp[i] + rm[j]), np.column_stack([um[i], wm[j]])
 
 
 def fronts(history, f: float, t_lo: float, t_hi: float) -> list[tuple[str, float, np.ndarray]]:

@@ -24,8 +24,8 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.rod_view import chart_of, chart_polyline, densified
 from rodparadox.physics.rod import clock_step as nice_clock_step
-from rodparadox.render.causal_layers import (FRONT_JUMP, HANDLER_MAP, Compression, compression_colour_map,
-                                             compression_norm, is_causal)
+from rodparadox.render.causal_layers import (FRONT_JUMP, HANDLER_MAP, Compression, cells_in_rod,
+                                             compression_colour_map, compression_norm, is_causal)
 from rodparadox.render.labels import Area, Label, place
 from rodparadox.render.layer_base import widest_line
 from rodparadox.render.layout import font_sizes, tick_step
@@ -135,14 +135,10 @@ def _compression(ax, history, chart, st: Style, T_lo: float, T_hi: float, letter
         return np.array([c for c in cuts if lo <= c <= hi])
 
     us, ws = edges(sol.plus, T_lo, T_hi + L), edges(sol.minus, T_lo - L, T_hi)
-    um, wm = 0.5 * (us[1:] + us[:-1]), 0.5 * (ws[1:] + ws[:-1])
-    rp, rm = np.array([sol.r_plus(u) for u in um]), np.array([sol.r_minus(w) for w in wm])
-    i, j = np.meshgrid(np.arange(len(um)), np.arange(len(wm)), indexing="ij")
-    keep = (us[1:][i] - ws[:-1][j] > 0) & (us[:-1][i] - ws[1:][j] < 2 * L)
-    i, j = i[keep], j[keep]
+    i, j, ln_lam, _ = cells_in_rod(sol, us, ws, L)
     corners = [(us[i], ws[j]), (us[i + 1], ws[j]), (us[i + 1], ws[j + 1]), (us[i], ws[j + 1])]
     polygons = np.stack([np.column_stack([(u - w) / 2, (u + w) / 2]) for u, w in corners], axis=1) / L
-    colours = compression_colour_map(st)(compression_norm(history)(-0.5 * (rp[i] + rm[j])))
+    colours = compression_colour_map(st)(compression_norm(history)(ln_lam))
     mesh = PolyCollection(polygons, facecolors=colours, edgecolors=colours, linewidths=0.25, antialiaseds=False,
                           rasterized=True, zorder=1, gid=f"{letter}-compression")
     ax.add_collection(mesh, autolim=False)
