@@ -21,20 +21,22 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal_solve import Rider, Solution, solve
+from rodparadox.physics.causal_solve import Budget, Rider, Solution, solve
 from rodparadox.physics.engine import WORLDLINE_NAMES, Impact
 from rodparadox.physics.kinematics import ChartCurve, Event, Line, WorldLine
 from rodparadox.physics.ledger import EnergyMomentum, Slice, ZERO, initial_total as _initial_total_rigid
 from rodparadox.physics.model import Scenario
 
 
-def run(scenario: Scenario) -> "CausalHistory":
-    """The causal rod's history of a scenario (the same scenarios the rigid engine runs)."""
+def run(scenario: Scenario, budget: int | None = None) -> "CausalHistory":
+    """The causal rod's history of a scenario (the same scenarios the rigid engine runs); `budget`: a bound on its
+    work, in windows of chart time L and steps of its contacts (`causal_solve.Budget`), or None for the solver's."""
+    spend = None if budget is None else Budget(budget)
     starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
     for p in scenario.particles:
         if p.timed_with is not None:
-            starts[p.name] = _start_from_timing(scenario, p, starts)
-    return _run(scenario, starts)
+            starts[p.name] = _start_from_timing(scenario, p, starts, spend)
+    return _run(scenario, starts, spend)
 
 
 def _rapidity(scenario: Scenario, p) -> float:
@@ -46,12 +48,13 @@ def _start_from_gap(scenario: Scenario, p) -> Event:
     return Event(side * scenario.L * (0.5 + p.gap), 0.0)
 
 
-def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event]) -> Event:
+def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event], budget: Budget | None = None) -> Event:
     """As the rigid engine (`engine._start_from_timing`), in the causal rod: the target is p's end, at the timing
     frame's time of the other particle's first contact plus the delay, in the run without p."""
     timing = p.timed_with
     other = scenario.particle(timing.particle)
-    alone = _run(Scenario(scenario.name, scenario.v, (other,), scenario.L), {other.name: starts[other.name]})
+    alone = _run(Scenario(scenario.name, scenario.v, (other,), scenario.L), {other.name: starts[other.name]},
+                 budget)
     reference = next(i for i in alone.impacts if i.particle == other.name)
     eta = math.atanh(scenario.frame_velocity(timing.frame))
     end_line = alone.worldline(f"rod_{p.end}").seen_from(eta)
@@ -59,7 +62,7 @@ def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event]) -> Event
     return Event(target.x - math.tanh(_rapidity(scenario, p)) * target.t, 0.0)
 
 
-def _run(scenario: Scenario, starts: dict[str, Event]) -> "CausalHistory":
+def _run(scenario: Scenario, starts: dict[str, Event], budget: Budget | None = None) -> "CausalHistory":
     L = scenario.L
     riders = {}
     T_first = math.inf
@@ -70,7 +73,7 @@ def _run(scenario: Scenario, starts: dict[str, Event]) -> "CausalHistory":
         riders[p.name] = Rider(p.name, p.end, p.mass, th, start.t, start.x)
         end_x = -0.5 * L if p.end == "left" else 0.5 * L
         T_first = min(T_first, start.t + (end_x - start.x) / math.tanh(th))  # the resting rod's end: T = t
-    solution = solve(L, {n: 1.0 / r.mass for n, r in riders.items()}, riders, T_first)
+    solution = solve(L, {n: 1.0 / r.mass for n, r in riders.items()}, riders, T_first, budget)
     history = CausalHistory(scenario, solution, starts)
     for p in scenario.particles:
         if p.name in starts and not any(i.particle == p.name for i in history.impacts):

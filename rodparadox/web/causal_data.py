@@ -24,9 +24,13 @@ from typing import Any
 
 import numpy as np
 
+from rodparadox.errors import ScenarioError
+
 #: the tables agree with the engine's a, b and r to this (units of L; r is a number): far below a pixel and the
 #: ledger's 5 decimals
 TABLE_TOLERANCE = 1e-9
+#: a piece whose error halving does not reduce (the engine's own noise) is kept below this many TABLE_TOLERANCEs
+NOISE_TOLERANCE = 1000.0
 #: Chebyshev nodes per piece of a table; pieces are halved until within TABLE_TOLERANCE
 NODES = 12
 #: Gauss-Legendre nodes per stretch of a slice, and the longest stretch (units of L)
@@ -38,6 +42,23 @@ CELL = 1.0 / 24
 SHADES = 64
 #: a jump of an invariant smaller than this is no front
 FRONT_JUMP = 1e-9
+#: the page's bounds on its work for one speed (every preset needs a hundredth of each): pieces of one table, points
+#: of one sampled line, stretches the ledger's slices are summed on, edges of the cells of one family. A speed that would need
+#: more is left out of the page (`TooCostly`), so that a page's cost is bounded whatever v, L and the masses
+MAX_PIECES = 1000
+MAX_POINTS = 20000
+MAX_STRETCHES = 15000
+MAX_EDGES = 6000
+
+
+class TooCostly(ScenarioError):
+    """The causal rod at one speed would need more than the page's bounds (`MAX_PIECES`, ...) to draw."""
+
+    def __init__(self, what: str, v: float | None = None):
+        self.what = what
+        at = "" if v is None else f" at v = {v:.10g}"
+        super().__init__(f"the page would need more than {what} to show the causal rod{at}; choose a lower v, or "
+                         f"--rod rigid.")
 
 
 class _Table:
@@ -45,8 +66,9 @@ class _Table:
     separation r repeats with the invariant's period and m gains the same each period (`Invariant.close`): one
     period is fitted, the rest read from it."""
 
-    def __init__(self, invariant, r, m, lo: float, hi: float):
+    def __init__(self, invariant, r, m, lo: float, hi: float, L: float):
         self.starts, self.ends, self.r_fits, self.m_fits = [], [], [], []
+        self.L, self.fits = L, 0
         self.breaks = invariant.breaks(lo, hi)
         self.period, self.tail, self.gain = invariant.period, invariant.tail_start, invariant.tail_gain[0]
         top = hi if self.period is None else min(hi, self.tail + self.period)
@@ -58,8 +80,11 @@ class _Table:
         self.r_coef = np.ascontiguousarray(np.array([fit.coef for fit in self.r_fits]).T)  # (NODES, pieces)
         self.m_coef = np.ascontiguousarray(np.array([fit.coef for fit in self.m_fits]).T)
 
-    def _fit(self, r, m, a: float, b: float, depth: int) -> None:
-        if depth >= 40 or b - a <= 1e-12 * (1.0 + abs(a)):  # a jump the breaks do not name: a sliver, flat
+    def _fit(self, r, m, a: float, b: float, depth: int, parent: float = math.inf) -> None:
+        self.fits += 1
+        if self.fits > 2 * MAX_PIECES:
+            raise TooCostly(f"{MAX_PIECES} pieces to tabulate the rod's invariants")
+        if depth >= 40 or b - a <= 1e-12 * (self.L + abs(a)):  # a jump the breaks do not name: a sliver, flat
             self.starts.append(a), self.ends.append(b)
             for fits, f in ((self.r_fits, r), (self.m_fits, m)):
                 fits.append(np.polynomial.Chebyshev([f(0.5 * (a + b))] + [0.0] * (NODES - 1), domain=[a, b]))
@@ -70,11 +95,18 @@ class _Table:
         r_fit = np.polynomial.Chebyshev.fit(x, rs, NODES - 1, domain=[a, b])
         m_fit = np.polynomial.Chebyshev.fit(x, ms, NODES - 1, domain=[a, b])
         test = a + (b - a) * np.array([0.013, 0.5, 0.987])  # between nodes, and nearer the ends than any
-        error = max(max(abs(r_fit(s) - r(s)), abs(m_fit(s) - m(s))) for s in test)
-        if not error <= TABLE_TOLERANCE:  # (NaN included)
+        # r to TABLE_TOLERANCE, m to TABLE_TOLERANCE L, or to a few hundred roundings of m where m is large (a
+        # rapidity near 10 makes m thousands of L: its own rounding is then above 1e-9 L)
+        m_tolerance = max(TABLE_TOLERANCE * self.L, 1e-11 * float(np.max(np.abs(ms))))
+        error = max(max(abs(r_fit(s) - r(s)) / TABLE_TOLERANCE, abs(m_fit(s) - m(s)) / m_tolerance) for s in test)
+        # where the engine's own values are noisier than that (a contact's closed form near lam's extremes, v near
+        # c, loses digits of r), halving gains nothing: a smooth piece's error falls by 2^NODES a halving, noise's
+        # does not; kept once below NOISE_TOLERANCE times the tolerance
+        noise = error <= NOISE_TOLERANCE and error >= 0.25 * parent
+        if not (error <= 1.0 or noise):  # (NaN included)
             mid = 0.5 * (a + b)
-            self._fit(r, m, a, mid, depth + 1)
-            self._fit(r, m, mid, b, depth + 1)
+            self._fit(r, m, a, mid, depth + 1, error)
+            self._fit(r, m, mid, b, depth + 1, error)
             return
         self.starts.append(a), self.ends.append(b), self.r_fits.append(r_fit), self.m_fits.append(m_fit)
 
@@ -125,8 +157,8 @@ class ChartTables:
     def __init__(self, history, lo: float, hi: float):
         sol, L = history.solution, history.scenario.L
         self.history, self.L = history, L
-        self.plus = _Table(sol.plus, sol.r_plus, sol.a, lo - 2 * L, hi + 2 * L)
-        self.minus = _Table(sol.minus, sol.r_minus, sol.b, lo - 2 * L, hi + 2 * L)
+        self.plus = _Table(sol.plus, sol.r_plus, sol.a, lo - 2 * L, hi + 2 * L, L)
+        self.minus = _Table(sol.minus, sol.r_minus, sol.b, lo - 2 * L, hi + 2 * L, L)
 
     def point(self, X, T, f: float = 0.0):
         """x, t and the rapidity of material line X at chart times T in the frame of rapidity f (arrays)."""
@@ -140,7 +172,7 @@ class ChartTables:
         return [T0, *sorted(T for T in set(inside) if T0 < T < T1), T1]
 
     def sample(self, X: float, T0: float, T1: float, tolerance: float) -> tuple[np.ndarray, ...]:
-        """Chart times on [T0, T1] whose points' polyline lies within `tolerance` of line X, in S, every kink
+        """Chart times on [T0, T1] whose points' polyline lies within `tolerance` L of line X, in S, every kink
         included: each smooth stretch cut evenly, every chord whose middle strays halved, all at once."""
         cuts = self.knots(X, T0, T1)
         Ts = np.unique(np.concatenate([np.linspace(a, b, 5) for a, b in zip(cuts, cuts[1:]) if b > a]))
@@ -151,10 +183,12 @@ class ChartTables:
             dx, dt = np.diff(x), np.diff(t)
             chord = np.hypot(dx, dt)
             error = np.abs(dx * (tm - t[:-1]) - dt * (xm - x[:-1])) / np.where(chord > 0, chord, 1.0)
-            bad = error > tolerance
+            bad = error > tolerance * self.L
             if not bad.any():
                 break
             Ts = np.sort(np.concatenate([Ts, mid[bad]]))
+            if len(Ts) > MAX_POINTS:
+                raise TooCostly(f"{MAX_POINTS} points to draw a line")
         return (Ts, *self.point(X, Ts))
 
     def end_chart_times(self, X: float, f: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -165,8 +199,9 @@ class ChartTables:
         def time(T):
             return 0.5 * (self.plus.m(T + X) / ef + ef * self.minus.m(T - X))
 
-        lo, hi = np.full_like(t, -1.0), np.full_like(t, 1.0)
-        for _ in range(80):  # a bracket: t(T) - T is bounded by the rod's motion, below c
+        # a bracket: t(T) - T is bounded by the rod's motion, below c (in units of L, which may be 1e-100 or 1e100)
+        lo, hi = t - self.L, t + self.L
+        for _ in range(400):
             below, above = time(lo) > t, time(hi) < t
             if not (below.any() or above.any()):
                 break
@@ -261,6 +296,8 @@ def _edges(table: _Table, lo: float, hi: float, L: float, step: float) -> np.nda
         r = table.r(np.array([a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a)]))
         varies = float(r.max() - r.min())
         n = min(math.ceil((b - a) / (CELL * L)), math.ceil(2 * varies / step)) if varies > FRONT_JUMP else 1
+        if len(edges) + n > MAX_EDGES:
+            raise TooCostly(f"{MAX_EDGES} cells of compression along a light line")
         edges += list(np.linspace(a, b, max(n, 1) + 1)[1:])
     return np.array(edges)
 
@@ -299,6 +336,8 @@ def ledger_sums(history, tables: ChartTables, f: np.ndarray, t: np.ndarray) -> d
                        *crossing_u[np.array(crossings_slice, dtype=int) == k]})
         for a, b in zip(cuts, cuts[1:]):
             n = max(1, math.ceil((b - a) / (STRETCH * L)))
+            if len(slice_of) + n > MAX_STRETCHES:
+                raise TooCostly(f"{MAX_STRETCHES} stretches of slices to add up the ledger")
             edges = np.linspace(a, b, n + 1)
             slice_of += [k] * n
             lo_of, hi_of = lo_of + list(edges[:-1]), hi_of + list(edges[1:])
@@ -336,6 +375,7 @@ def _adaptive(tables: ChartTables, f, t, k, lo, hi, w_R, w_L) -> dict[str, np.nd
     """The densities integrated over every slice's stretches, each halved until its halves agree with it."""
     total = np.zeros((len(t), 4))
     whole = _gauss(tables, f, t, k, lo, hi, w_R, w_L)
+    spent = 3 * len(k)  # stretches summed, a whole and its halves each
     for depth in range(40):
         mid = 0.5 * (lo + hi)
         # both halves in one call: each stretch's sums depend on that stretch alone (and the slices' brackets, the
@@ -344,13 +384,18 @@ def _adaptive(tables: ChartTables, f, t, k, lo, hi, w_R, w_L) -> dict[str, np.nd
         both = _gauss(tables, f, t, np.concatenate([k, k]), np.concatenate([lo, mid]), np.concatenate([mid, hi]), w_R, w_L)
         left, right = both[:n], both[n:]
         halves = left + right
-        good = np.max(np.abs(halves - whole), axis=1) <= SLICE_TOLERANCE
+        # to SLICE_TOLERANCE, or a few thousand roundings where a body's energy is thousands of M c^2 (v near c)
+        good = np.max(np.abs(halves - whole), axis=1) <= np.maximum(SLICE_TOLERANCE,
+                                                                    1e-12 * np.max(np.abs(halves), axis=1))
         if depth == 39:
             good[:] = True
         np.add.at(total, k[good], halves[good])
         bad = ~good
         if not bad.any():
             break
+        spent += 2 * int(bad.sum())
+        if spent > MAX_STRETCHES:
+            raise TooCostly(f"{MAX_STRETCHES} stretches of slices to add up the ledger")
         k, lo, hi = np.concatenate([k[bad], k[bad]]), np.concatenate([lo[bad], mid[bad]]), \
             np.concatenate([mid[bad], hi[bad]])
         whole = np.concatenate([left[bad], right[bad]])
@@ -418,7 +463,16 @@ def windows(changes: np.ndarray, starts: np.ndarray, rapidities: np.ndarray) -> 
 def model_data(history, v: float, frames, reach: float, tolerance: float, material_tolerance: float,
                digits: int, material_digits: int, instants: int, table_rows, fixed) -> dict[str, Any]:
     """The causal rod at one speed: what the page draws and prints (the module's docstring). `frames`: the
-    ledger's frames in the rigid rod's order (S', S, the others)."""
+    ledger's frames in the rigid rod's order (S', S, the others). Raises `TooCostly` past the page's bounds."""
+    try:
+        return _model_data(history, v, frames, reach, tolerance, material_tolerance, digits, material_digits,
+                           instants, table_rows, fixed)
+    except TooCostly as e:
+        raise TooCostly(e.what, v) from None
+
+
+def _model_data(history, v: float, frames, reach: float, tolerance: float, material_tolerance: float,
+                digits: int, material_digits: int, instants: int, table_rows, fixed) -> dict[str, Any]:
     from rodparadox.numbers import impact_name
     from rodparadox.render.colour_scale import causal_rapidity_range, compression_range
     from rodparadox.tables.causal_ledger import event_name

@@ -743,6 +743,14 @@
       input.disabled = RODS[k] !== "rigid" && !modelNamed("causal") || RODS[k] !== "causal" && !modelNamed("rigid");
     });
   }
+  // The speeds a rod is not shown at (its run refused there, or longer than the page allows): said under the slider.
+  function setLeftOut() {
+    const gone = Object.entries(scenario().left_out || {}).filter(([, vs]) => vs.length);
+    const said = gone.map(([model, vs]) => `the ${model} rod at v = ${vs.map((u) => shown(u, 10)).join(", ")}`);
+    $("left-out").hidden = !said.length;
+    $("left-out").textContent = said.length ? `Not on this page: ${said.join("; ")} (its run there is refused, ` +
+      "or would take longer than this page allows)." : "";
+  }
   function setFrameControl() {
     controls.frame.value = String(Math.round(state.u * 100));
     const said = frameSymbol(state.u) + (frameName(state.u) === "u" ? "" : ` (u = ${shown(state.u, 10)})`);
@@ -765,7 +773,7 @@
     controls.cones.checked = state.cones;
     $("heading").textContent = scenario().title;
     $("about").textContent = DATA.scenarios.length > 1 ? "Choose a scenario below." : scenario().description;
-    setSpeedControl(); setFrameControl(); setTimeControl();
+    setSpeedControl(); setLeftOut(); setFrameControl(); setTimeControl();
     drawPanels(true);
     const took = performance.now() - start;
     if (timings.first === null) { timings.first = took; timings.drawnAt = performance.now(); }

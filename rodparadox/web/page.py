@@ -82,6 +82,7 @@ TEMPLATE = """<!DOCTYPE html>
 <div class="control"><label for="scenario">scenario</label><select id="scenario"></select></div>
 <fieldset class="control" id="rod"><legend>rod</legend><label><input type="radio" name="rod" id="rod-rigid" value="rigid"> rigid</label><label><input type="radio" name="rod" id="rod-causal" value="causal"> causal (sound at c)</label><label><input type="radio" name="rod" id="rod-both" value="both"> both, side by side</label></fieldset>
 <div class="control"><label for="speed">speed v of S′</label><input type="range" id="speed" min="0" max="0" step="1" value="0"><output id="speed-value" for="speed"></output></div>
+<p class="notes" id="left-out" hidden></p>
 <div class="control"><label for="frame">frame: velocity u relative to S</label><input type="range" id="frame" min="-95" max="95" step="1" value="0"><output id="frame-value" for="frame"></output></div>
 <div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="time">time: the now-line</label><input type="range" id="time" min="0" max="1000" step="1" value="500"><output id="time-value" for="time"></output><button type="button" id="play" aria-pressed="false">Play</button></div>
