@@ -200,8 +200,8 @@ class ChartTables:
             return 0.5 * (self.plus.m(T + X) / ef + ef * self.minus.m(T - X))
 
         # a bracket: t(T) - T is bounded by the rod's motion, below c (in units of L, which may be 1e-100 or 1e100)
-        lo, hi = t - self.L, t + self.L
-        for _ in range(400):
+        lo, hi = np.full_like(t, -self.L), np.full_like(t, self.L)
+        for _ in range(80):
             below, above = time(lo) > t, time(hi) < t
             if not (below.any() or above.any()):
                 break
