@@ -414,12 +414,12 @@ def test_an_offered_causal_run_stops_at_its_budget_with_one_sentence():
 def test_a_rod_of_1e100_units_is_drawn_in_units_of_l(own_speed_only):
     """L = 1e100, both rods: the causal tables were fitted to 1e-9 absolute (2^40 halvings, killed at 300 s);
     in units of L they are the L = 1 page's numbers."""
-    big = web_data.scenario_data("fig2", load("fig2").with_overrides(L=1e100), shown="both")
-    one = web_data.scenario_data("fig2", load("fig2"), shown="both")
+    big = web_data.scenario_data("single", load("single").with_overrides(L=1e100), shown="both")
+    one = web_data.scenario_data("single", load("single"), shown="both")
     [entry], [same] = big["speeds"], one["speeds"]
     assert [m["model"] for m in entry["models"]] == ["rigid", "causal"]
     for mine, theirs in zip(entry["models"], same["models"]):
-        for name in ("rod_left", "B"):
+        for name in ("rod_left", "rod_right", "B"):
             # the same points (the rigid rod's kink at its start may come once or twice, as rounding goes)
             a, b = (sorted(set(zip(m["worldlines"][name]["x"], m["worldlines"][name]["t"]))) for m in (mine, theirs))
             assert len(a) == len(b) and a == pytest.approx(b, abs=1e-6)
@@ -674,8 +674,7 @@ def test_the_rod_switch_from_the_keyboard_and_the_causal_contacts_and_separation
     dots = {d["label"]: d for d in json.loads(opened.tab.get_attribute("#diagram", "data-impacts"))}
     row = opened.tab.evaluate("window.searsParadox.row(17 / 12)")
     assert abs(dots["A1"]["y"] - row) < 0.01 and abs(dots["B1"]["y"] - row) < 0.01
-    assert [name for name, *_ in opened.rows("ledger").values()][2:4] == ["rod, matter",
-                                                                          "rod, stress (the real hidden momentum)"]
+    assert [name for name, *_ in opened.rows("ledger").values()][2:4] == ["rod, matter", "rod, stress"]
     opened.tab.screenshot(path=str(screenshots / "fig2_v0.6_moving_causal.png"), full_page=True)
     opened.press("rod-causal", "ArrowRight")
     assert opened.state()["rod"] == "both" and opened.tab.is_visible("#panel-2")
@@ -766,5 +765,66 @@ def test_on_a_phone_captions_and_paragraphs_wrap_to_the_window_and_only_table_ce
                 .filter((e) => e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible')
                 .map((e) => [e.className, e.firstElementChild && e.firstElementChild.tagName])""")
             assert scrolling and all(s == ["cells", "TABLE"] for s in scrolling), scrolling
+    finally:
+        tab.close()
+
+
+# --- in the hand (issue 24, item 7): phone and laptop, the opening state, words that fit every layout ------------
+
+#: words a student reads that name the software, or the unit as no textbook says it
+SOFTWARE_WORDS = ("sears-paradox", "README", "--rod", "(B1s)", "Python", "the unit L is given in", "below.")
+
+
+@pytest.fixture(scope="session")
+def fig1_file(tmp_path_factory) -> Path:
+    """fig1 and fig2 on one page, on a short grid: fig1 first (its impacts sit at the middle of S's window)."""
+    import pytest as _pytest
+
+    patch = _pytest.MonkeyPatch()
+    patch.setattr(web_data, "SPEED_STEPS", 2)
+    try:
+        text = page([("fig1", load("fig1")), ("fig2", load("fig2"))])
+    finally:
+        patch.undo()
+    path = tmp_path_factory.mktemp("html") / "fig1_fig2.html"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("viewport", [{"width": 390, "height": 844}, {"width": 1366, "height": 768}])
+def test_the_diagram_and_the_sliders_are_seen_together_and_no_key_line_is_hidden(browser, fig1_file, screenshots,
+                                                                                   viewport):
+    """At 390 x 844 (a phone) and 1366 x 768 (a laptop), at the top of the page and scrolled to the diagram's foot:
+    the whole diagram and the speed, frame and time sliders are inside the window at once. fig1 opens with the
+    now-line off its impacts (it sat on them, hiding their line of simultaneity of S), by 4 % of the window at
+    least. The visible words name no software."""
+    tab = Opened(browser, fig1_file, viewport)
+    try:
+        size = (viewport["width"], viewport["height"])
+
+        def inside(selector):
+            box = tab.tab.locator(selector).bounding_box()
+            return box is not None and box["y"] >= 0 and box["y"] + box["height"] <= size[1] + 0.5 and box["x"] >= 0 \
+                and box["x"] + box["width"] <= size[0] + 0.5
+
+        # opened; scrolled so that the diagram's top meets the window's (a phone only: a laptop sees it whole)
+        for scroll in ("0", "document.getElementById('diagram').getBoundingClientRect().top + window.scrollY")[
+                :2 if size[0] < 900 else 1]:
+            tab.tab.evaluate(f"window.scrollTo(0, {scroll})")
+            tab.settled()
+            assert inside("#diagram") and all(inside(s) for s in ("#speed", "#frame", "#time")), scroll
+            tab.tab.screenshot(path=str(screenshots / f"fig1_fig2_{size[0]}x{size[1]}_{len(scroll)}.png"))
+        if size[0] < 900:  # and at the tables, the sliders still at hand
+            tab.tab.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+            tab.settled()
+            assert all(inside(s) for s in ("#speed", "#frame", "#time"))
+        state = tab.state()
+        window = json.loads(tab.tab.get_attribute("#diagram", "data-window"))
+        now = window[0] + state["time"] * (window[1] - window[0])
+        impacts = [i["t"] for i in json.loads(tab.tab.evaluate("JSON.stringify(window.searsParadox.geometry().impacts)"))]
+        assert impacts and all(abs(now - t) >= 0.04 * (window[1] - window[0]) for t in impacts), (now, impacts)
+        text = tab.tab.inner_text("body") + tab.tab.title()
+        assert [w for w in SOFTWARE_WORDS if w in text] == []
+        assert "choose one with the scenario menu" in text
     finally:
         tab.close()

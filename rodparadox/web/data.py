@@ -113,11 +113,19 @@ def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAW
             "before": worldline.rapidity_before + 0.0, "after": worldline.rapidity_after + 0.0}
 
 
+#: the heading's paragraph where the page holds several scenarios: true where the chooser sits beside the diagram
+#: (a laptop) and where it sits under it (a phone)
+ABOUT_SEVERAL = "This page holds several scenarios: choose one with the scenario menu."
+#: how the shared tables name the unit (`tables.build`); the page says it as a textbook does
+TABLE_UNITS = "in the unit L is given in"
+
+
 def table_rows(history, frame: Frame) -> dict[str, Any]:
     """The events table of one frame as `events` writes it (digits and fractions), cells as text."""
     table = events_table(history, frame)
     return {"caption": table.caption, "header": list(table.header),
-            "rows": [[cell.text for cell in row] for row in table.rows], "notes": list(table.notes)}
+            "rows": [[cell.text for cell in row] for row in table.rows],
+            "notes": [note.replace(TABLE_UNITS, "in units of L") for note in table.notes]}
 
 
 def ledger(history, frames: Sequence[Frame]) -> list[dict[str, Any]]:
@@ -220,5 +228,5 @@ def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str 
     the rod the page opens on (rigid, causal or both; by default each scenario's own)."""
     from rodparadox.web.inks import inks
 
-    return {"format": FORMAT, "style": style, "styles": inks(),
+    return {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL,
             "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}

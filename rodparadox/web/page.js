@@ -229,7 +229,8 @@
     const holder = {clientWidth: panel.width};  // measured before any drawing (`drawPanels`)
     const avail = Math.max(holder.clientWidth - margin.left - margin.right, 120);
     const share = state.style === "slides" ? 0.8 : 0.62;  // on a projector the diagram is the point
-    const tallest = Math.max(window.innerHeight * share - margin.top - margin.bottom, 120);
+    // a phone keeps the sliders at the window's foot (page.css): the diagram fits in what they leave
+    const tallest = Math.max((window.innerHeight - (widths ? widths.footer : 0)) * share - margin.top - margin.bottom, 120);
     const [x0, x1, t0, t1] = box;
     const scale = Math.min(avail / (x1 - x0), tallest / (t1 - t0));
     const extra = (avail - scale * (x1 - x0)) / 2;
@@ -505,6 +506,23 @@
 
   function nowTime(view) { return view.lo + state.time * (view.hi - view.lo); }
 
+  // Where the now-line opens (a fraction of the window): the middle, unless an impact lies within OPEN_CLEAR of
+  // it (fig1's impacts are at the middle of S's window: the now-line hid their line of simultaneity); then the
+  // middle of the widest stretch between impacts, the nearest the middle of those at least twice that wide.
+  const OPEN_CLEAR = 0.04;
+  function openingTime() {
+    const view = shared(), span = view.hi - view.lo;
+    const times = view.gs.flatMap((g) => g.impacts.map((i) => (i.T - view.lo) / span)).filter((f) => f > 0 && f < 1);
+    if (times.every((f) => Math.abs(f - 0.5) > OPEN_CLEAR)) return 0.5;
+    const cuts = [0, ...times.sort((a, b) => a - b), 1];
+    let best = null;
+    for (let k = 0; k + 1 < cuts.length; k++) {
+      const mid = 0.5 * (cuts[k] + cuts[k + 1]), wide = cuts[k + 1] - cuts[k] >= 4 * OPEN_CLEAR;
+      if (wide && (best === null || Math.abs(mid - 0.5) < Math.abs(best - 0.5))) best = mid;
+    }
+    return best === null ? 0.5 : Math.round(best * 1000) / 1000;
+  }
+
   // The strip: the frame's space at the now-line's instant, on the panel's x scale: the rod coloured by the
   // velocity of its material points (the colour scale even in rapidity, centred on the rod's first velocity, the
   // same in every frame), the particles, the impacts flashing.
@@ -624,11 +642,11 @@
 
   function drawEvents(panel, g) {
     const m = g.model, name = frameName(state.u), L = scenario().L, causal = m.model === "causal";
-    const rod = causal ? ", the causal rod: each contact and its separation (B1s)" : ", the rigid rod";
+    const rod = causal ? ", the causal rod: each contact and its separation" : ", the rigid rod";
     if (name !== "u") {
       const t = m.tables[name];
-      fillTable(panel.events, `${t.caption} (v = ${shown(v(), 10)}${rod}): the digits and exact fractions of ` +
-                `sears-paradox events${causal ? " --rod causal" : ""}`, t.header, t.rows, t.notes);
+      fillTable(panel.events, `${t.caption} (v = ${shown(v(), 10)}${rod}): every digit, with the exact fractions`,
+                t.header, t.rows, t.notes);
       return;
     }
     const scale = 1 + Math.max(...g.impacts.map((i) => Math.abs(i.T)));
@@ -645,13 +663,12 @@
               ...[i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => velocity(Math.tanh(r - g.eta)))];
     });
     const names = coordinateNames(state.u);
-    fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted in ` +
-              "this page from the exact events (choose S or S\u2032 for sears-paradox events' table with its fractions)",
+    fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted ` +
+              "from the exact events (choose S or S\u2032 for the table with exact fractions)",
               ["impact", "end", names[0], names[1], "particle before", "particle after", "rod before", "rod after"], rows, []);
   }
 
-  const BODY = {rod: "rod (kinetic)", hidden: "hidden (stress)", matter: "rod, matter",
-                stress: "rod, stress (the real hidden momentum)"};
+  const BODY = {rod: "rod (kinetic)", hidden: "hidden (stress)", matter: "rod, matter", stress: "rod, stress"};
   function drawLedger(panel, g, view) {
     const m = g.model;
     let best = m.ledger[0];
@@ -684,9 +701,8 @@
               ["body", "E (M c\u00b2)", "p (M c)"], rows,
               causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
                         "elastic energy included) and its stress part (its pressure's p (u u \u2212 \u03b7) across the " +
-                        "slice): the stress part is the real, local version of the rigid rod's hidden momentum; nothing " +
-                        "is hidden. Computed in Python on 41 slices of each tabulated frame (to 10\u207b\u2075 M c\u00b2), " +
-                        "not by this page."] : []);
+                        "slice), each a density along the slice: nothing is hidden. Computed before the page was made, on " +
+                        "41 slices of each tabulated frame (to 10\u207b\u2075 M c\u00b2)."] : []);
   }
 
   // --- the legend: the same elements and inks as the SVG figures --------------------------------------------
@@ -772,7 +788,7 @@
     controls.scenario.value = String(state.scenario); controls.style.value = state.style;
     controls.cones.checked = state.cones;
     $("heading").textContent = scenario().title;
-    $("about").textContent = DATA.scenarios.length > 1 ? "Choose a scenario below." : scenario().description;
+    $("about").textContent = DATA.scenarios.length > 1 ? DATA.about_several : scenario().description;
     setSpeedControl(); setLeftOut(); setFrameControl(); setTimeControl();
     drawPanels(true);
     const took = performance.now() - start;
@@ -796,7 +812,8 @@
     PANELS[1].box.hidden = !two; PANELS[1].tables.hidden = !two;
     const sign = [window.innerWidth, window.innerHeight, state.style, two].join("/");
     if (!widths || widths.sign !== sign) {  // a measurement forces a layout of the whole page: once, before any drawing
-      widths = {sign, px: view.gs.map((g, k) => PANELS[k].box.clientWidth)};
+      const sliders = $("sliders"), fixed = getComputedStyle(sliders).position === "fixed";
+      widths = {sign, px: view.gs.map((g, k) => PANELS[k].box.clientWidth), footer: fixed ? sliders.offsetHeight : 0};
     }
     view.gs.forEach((g, k) => { PANELS[k].width = widths.px[k]; });
     view.gs.forEach((g, k) => {
@@ -857,12 +874,12 @@
   }).observe($("panel-1"));
 
   // --- start -------------------------------------------------------------------------------------------------
-  controls.scenario.innerHTML = DATA.scenarios.map((s, k) => `<option value="${k}">${s.name}: ${s.title}</option>`).join("");
+  controls.scenario.innerHTML = DATA.scenarios.map((s, k) => `<option value="${k}">${s.title}</option>`).join("");
   controls.scenario.disabled = DATA.scenarios.length < 2;
   controls.style.value = state.style;
   state.speed = scenario().speeds.findIndex((e) => e.v === scenario().v);
   state.rod = scenario().rod;
-  state.time = 0.5;
+  state.time = openingTime();
   render();
   // the causal rod's cells of every speed sorted while nobody is dragging yet: one speed a tick
   const unsorted = DATA.scenarios.flatMap((sc) => sc.speeds.flatMap((e) => e.models.filter((m) => m.cells)));

@@ -15,7 +15,7 @@ from typing import Sequence
 
 from rodparadox.physics.model import Scenario
 from rodparadox.render.styles import STYLE_NAMES
-from rodparadox.web.data import page_data
+from rodparadox.web.data import ABOUT_SEVERAL, page_data
 
 
 def asset(name: str) -> str:
@@ -38,10 +38,10 @@ def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default", show
         raise ValueError(f"shown must be rigid, causal or both, got {shown!r}")
     data = page_data(scenarios, style, shown)
     first = data["scenarios"][0]
-    title = " · ".join(s["name"] for s in data["scenarios"])
-    about = first["description"] if len(data["scenarios"]) == 1 else "Choose a scenario below."
+    title = " · ".join(s["title"] for s in data["scenarios"])
+    about = first["description"] if len(data["scenarios"]) == 1 else ABOUT_SEVERAL
     styles = "".join(f'<option value="{name}">{name}</option>' for name in STYLE_NAMES)
-    return TEMPLATE.format(title=html.escape(f"sears-paradox: {title}"), heading=html.escape(first["title"]),
+    return TEMPLATE.format(title=html.escape(title), heading=html.escape(first["title"]),
                            about=html.escape(about), styles=styles, css=asset("page.css"), data=data_json(data),
                            script=asset("page.js"))
 
@@ -81,11 +81,13 @@ TEMPLATE = """<!DOCTYPE html>
 <legend class="group">Explore</legend>
 <div class="control"><label for="scenario">scenario</label><select id="scenario"></select></div>
 <fieldset class="control" id="rod"><legend>rod</legend><label><input type="radio" name="rod" id="rod-rigid" value="rigid"> rigid</label><label><input type="radio" name="rod" id="rod-causal" value="causal"> causal (sound at c)</label><label><input type="radio" name="rod" id="rod-both" value="both"> both, side by side</label></fieldset>
+<div id="sliders" role="group" aria-label="speed, frame and time">
 <div class="control"><label for="speed">speed v of S′</label><input type="range" id="speed" min="0" max="0" step="1" value="0"><output id="speed-value" for="speed"></output></div>
-<p class="notes" id="left-out" hidden></p>
 <div class="control"><label for="frame">frame: velocity u relative to S</label><input type="range" id="frame" min="-95" max="95" step="1" value="0"><output id="frame-value" for="frame"></output></div>
-<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="time">time: the now-line</label><input type="range" id="time" min="0" max="1000" step="1" value="500"><output id="time-value" for="time"></output><button type="button" id="play" aria-pressed="false">Play</button></div>
+</div>
+<p class="notes" id="left-out" hidden></p>
+<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="cones">light cones</label><input type="checkbox" id="cones"></div>
 <div class="control"><label for="style">style</label><select id="style">{styles}</select></div>
 </fieldset>
