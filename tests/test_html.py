@@ -777,11 +777,12 @@ SOFTWARE_WORDS = ("sears-paradox", "README", "--rod", "(B1s)", "Python", "the un
 
 @pytest.fixture(scope="session")
 def fig1_file(tmp_path_factory) -> Path:
-    """fig1 and fig2 on one page, on a short grid: fig1 first (its impacts sit at the middle of S's window)."""
+    """fig1 and fig2 on one page, each at its own speed only: fig1 first (its impacts sit at the middle of S's
+    window)."""
     import pytest as _pytest
 
     patch = _pytest.MonkeyPatch()
-    patch.setattr(web_data, "SPEED_STEPS", 2)
+    patch.setattr(web_data, "SPEED_STEPS", 0)
     try:
         text = page([("fig1", load("fig1")), ("fig2", load("fig2"))])
     finally:

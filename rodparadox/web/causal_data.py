@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from rodparadox.errors import ScenarioError
+from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 
 #: the tables agree with the engine's a, b and r to this (units of L; r is a number): far below a pixel and the
 #: ledger's 5 decimals
@@ -36,12 +37,6 @@ NODES = 12
 #: Gauss-Legendre nodes per stretch of a slice, and the longest stretch (units of L)
 GAUSS = 8
 STRETCH = 0.25
-#: a varying piece of an invariant is cut into cells this long (units of L), as the figures' shading
-CELL = 1.0 / 24
-#: shades a cell may differ from its neighbour by about one of (as the figures')
-SHADES = 64
-#: a jump of an invariant smaller than this is no front
-FRONT_JUMP = 1e-9
 #: the page's bounds on its work for one speed (every preset needs a hundredth of each): pieces of one table, points
 #: of one sampled line, stretches the ledger's slices are summed on, edges of the cells of one family. A speed that would need
 #: more is left out of the page (`TooCostly`), so that a page's cost is bounded whatever v, L and the masses
@@ -290,16 +285,10 @@ def fronts(history, tables: ChartTables, lo: float, hi: float) -> list[list[floa
 def _edges(table: _Table, lo: float, hi: float, L: float, step: float) -> np.ndarray:
     """The cells' edges on [lo, hi]: every break, and inside a piece where r varies cells no longer than CELL L
     and short enough that r changes by about `step` from one to the next (as the figures' shading)."""
-    cuts = [lo, *[s for s in table.breaks if lo < s < hi], hi]
-    edges = [lo]
-    for a, b in zip(cuts, cuts[1:]):
-        r = table.r(np.array([a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a)]))
-        varies = float(r.max() - r.min())
-        n = min(math.ceil((b - a) / (CELL * L)), math.ceil(2 * varies / step)) if varies > FRONT_JUMP else 1
-        if len(edges) + n > MAX_EDGES:
-            raise TooCostly(f"{MAX_EDGES} cells of compression along a light line")
-        edges += list(np.linspace(a, b, max(n, 1) + 1)[1:])
-    return np.array(edges)
+    edges = cell_edges(table.r, [s for s in table.breaks if lo < s < hi], lo, hi, L, step, MAX_EDGES)
+    if edges is None:
+        raise TooCostly(f"{MAX_EDGES} cells of compression along a light line")
+    return edges
 
 
 def cells(history, tables: ChartTables, lo: float, hi: float, compression: tuple[float, float]) -> dict[str, Any]:

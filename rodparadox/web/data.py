@@ -228,5 +228,7 @@ def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str 
     the rod the page opens on (rigid, causal or both; by default each scenario's own)."""
     from rodparadox.web.inks import inks
 
-    return {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL,
+    from rodparadox.render.shading import SHADES
+
+    return {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL, "shades": SHADES,
             "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}

@@ -140,7 +140,7 @@
   // ln lam = -(r+_i + r-_j)/2 on the figures' two-sided scale. Which cells and their shades are the same in every
   // frame: found once per model, neighbours along w of one shade joined into one parallelogram (i, j from, j to,
   // shade): its sides are light lines still; a frame only scales the edges.
-  const SHADES = 64;
+  const SHADES = DATA.shades;  // as the figures' (`render.shading`)
   function keptCells(cells) {
     if (cells.kept) return cells.kept;
     const [low, high] = [Math.min(cells.ln_lam[0], -1e-3), Math.max(cells.ln_lam[1], 1e-3)], kept = [];
