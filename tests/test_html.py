@@ -432,9 +432,9 @@ def test_near_c_the_page_refuses_in_one_sentence_in_seconds(own_speed_only, tmp_
     nothing written. Here with a tenth of the pieces, to be quick."""
     import time
 
-    from rodparadox.web import causal_data
+    from rodparadox.physics import causal_slices
 
-    monkeypatch.setattr(causal_data, "MAX_PIECES", causal_data.MAX_PIECES // 10)
+    monkeypatch.setattr(causal_slices, "MAX_PIECES", causal_slices.MAX_PIECES // 10)
     monkeypatch.chdir(tmp_path)
     start = time.monotonic()
     result = run("html", "fig2", "--v", "0.9999999", "--rod", "both", expect=2)

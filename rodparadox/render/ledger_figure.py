@@ -77,9 +77,9 @@ CAUSAL_SLICES = 200
 
 def causal_series(history, frame: Frame, window: tuple[float, float] | None = None):
     """The causal rod's curves: times (the window's slices and every contact's and separation's instant), and for
-    E and p each particle's, the rod's matter and stress parts (`physics.causal_parts.rod_parts_on_slices`), and
+    E and p each particle's, the rod's matter and stress parts (`physics.causal_slices.rod_parts_on_slices`), and
     the particles plus matter; with the events (label, kind, t) in the frame's time order."""
-    from rodparadox.physics.causal_parts import rod_parts_on_slices
+    from rodparadox.physics.causal_slices import rod_parts_on_slices
 
     lo, hi = window or time_window(history, frame)
     events = [(label, kind, t) for label, kind, t, _ in instants(history, frame)]

@@ -22,14 +22,16 @@ SHADES = 64
 
 
 def cell_edges(r: Callable[[float], float], breaks: Sequence[float], lo: float, hi: float, L: float, step: float,
-               most: int | None = None) -> np.ndarray | None:
+               most: int | None = None, vectorised: bool = False) -> np.ndarray | None:
     """The cuts of [lo, hi]: each of `breaks` (the invariant's piece boundaries the caller takes inside), and inside
     a piece where r varies, cells no longer than CELL L and enough of them that r changes by about `step` (a shade
-    of the scale) from one to the next. None where they would be more than `most`."""
+    of the scale) from one to the next. None where they would be more than `most`. `vectorised`: r takes an array
+    (the page's tables: one call a piece)."""
     edges = [lo]
     cuts = [lo, *breaks, hi]
     for a, b in zip(cuts, cuts[1:]):
-        ends = [float(r(s)) for s in (a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a))]
+        at = (a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a))
+        ends = [float(x) for x in r(np.array(at))] if vectorised else [float(r(s)) for s in at]
         varies = max(ends) - min(ends)
         n = min(math.ceil((b - a) / (CELL * L)), math.ceil(2 * varies / step)) if varies > FRONT_JUMP else 1
         if most is not None and len(edges) + n > most:
