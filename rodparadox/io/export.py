@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import textwrap
 from typing import Any
 
 from rodparadox.physics.history import RodHistory
@@ -138,9 +139,11 @@ def rods_to_csv(histories, frames: tuple[Frame, ...]) -> str:
     return out.getvalue()
 
 
-def rods_to_table(histories, frames: tuple[Frame, ...]) -> str:
-    """Several rods' events tables, one after the other, each headed by its rod."""
-    return "\n".join(f"The {h.model} rod\n\n" + to_table(h, frames) for h in histories)
+def rods_to_table(histories, frames: tuple[Frame, ...], note: str = "") -> str:
+    """Several rods' events tables, one after the other, each headed by its rod, after a `note` (the particles
+    they share, where their first impacts fall)."""
+    head = "\n".join(textwrap.wrap(note, 110)) + "\n\n" if note else ""
+    return head + "\n".join(f"The {h.model} rod\n\n" + to_table(h, frames) for h in histories)
 
 
 # --- the events table ---------------------------------------------------------------------------------
