@@ -1,6 +1,6 @@
-"""The causal rod's matter and stress on many slices at once (`physics.causal_slices.rod_parts_on_slices`: the
+"""The causal rod's matter and stress on many slices at once (`physics.causal.slices.rod_parts_on_slices`: the
 ledger figure's curves and the html page's ledger, from tables of the invariants) against the ledger's exact
-slice-by-slice integral (`physics.causal_parts.rod_parts`: the engine's own a, b, no table, Gauss-Legendre of 16
+slice-by-slice integral (`physics.causal.parts.rod_parts`: the engine's own a, b, no table, Gauss-Legendre of 16
 nodes halved to 1e-10 of the rod's (E, p)), and the sum of the two parts against the engine's exact total of the rod
 (one-variable integrals). Within 1e-10 at v = 0.6 in S, S' and another frame; at 0.97 (where the cubic splines of
 the figure's former integral crashed) within 2e-6; at 0.99 a known gap (3.7e-4 in S', marked xfail).
@@ -14,15 +14,15 @@ import numpy as np
 import pytest
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.causal_parts import rod_parts
-from rodparadox.physics.causal_slices import PRECISE_TABLES, BeyondBounds, ChartTables, rod_parts_on_slices
-from rodparadox.physics.rod_models import run_rod
+from rodparadox.physics.causal.parts import rod_parts
+from rodparadox.physics.causal.slices import PRECISE_TABLES, BeyondBounds, ChartTables, rod_parts_on_slices
+from rodparadox.physics.models import run_rod
 
 pytestmark = pytest.mark.xdist_group("causal_slices")
 
 
 def exact_parts(history, f: float, t: float) -> np.ndarray:
-    """[matter E, matter p, stress E, stress p] by the ledger's exact slice-by-slice integral (`causal_parts`)."""
+    """[matter E, matter p, stress E, stress p] by the ledger's exact slice-by-slice integral (`causal.parts`)."""
     matter, stress = rod_parts(history, f, t)
     return np.array([matter.E, matter.p, stress.E, stress.p])
 

@@ -22,8 +22,7 @@ import pytest
 from click.testing import CliRunner
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.ledger import EnergyMomentum
-from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.render.styles import STYLES
 from rodparadox.web import data as web_data
 from rodparadox.web.page import asset, page
@@ -147,7 +146,7 @@ def test_sampled_lines_lie_on_the_exact_world_lines_within_tolerance_in_every_fr
 def test_the_colour_scale_is_the_largest_material_rapidity(fig2_data):
     """Independent of the samples: the extremes of every material point's rapidity are the turns' ends."""
     for v in (0.3, 0.6):
-        bound = max(abs(r) for r in rod_rapidities(history("fig2", v)))
+        bound = max(abs(r) for r in history("fig2", v).turning.rapidities())
         assert at_speed(fig2_data, v)["colour_bound"] == pytest.approx(bound, rel=1e-12)
 
 
@@ -400,7 +399,7 @@ def test_an_offered_causal_run_stops_at_its_budget_with_one_sentence():
 
     from rodparadox.errors import ScenarioError
     from rodparadox.io.scenario import parse
-    from rodparadox.physics.rod_models import run_rod
+    from rodparadox.physics.models import run_rod
 
     s = parse(EXTREME_MASSES, "masses.yaml", "masses").with_overrides(v=0.8, rod="causal")
     start = time.process_time()
@@ -432,7 +431,7 @@ def test_near_c_the_page_refuses_in_one_sentence_in_seconds(own_speed_only, tmp_
     nothing written. Here with a tenth of the pieces, to be quick."""
     import time
 
-    from rodparadox.physics import causal_slices
+    from rodparadox.physics.causal import slices as causal_slices
 
     monkeypatch.setattr(causal_slices, "MAX_PIECES", causal_slices.MAX_PIECES // 10)
     monkeypatch.chdir(tmp_path)

@@ -1,7 +1,7 @@
 """What the html page embeds for the causal rod (README, "One page to explore" and "The causal rod"). Pure.
 
 The page needs thousands of points per speed: it reads the engine's invariants from their tables
-(`physics.causal_slices.ChartTables`, Chebyshev pieces to `causal_slices.TABLE_TOLERANCE` L), evaluated for whole
+(`physics.causal.slices.ChartTables`, Chebyshev pieces to `slices.TABLE_TOLERANCE` L), evaluated for whole
 arrays at once.
 
 From the tables, in S (units of L): the world-lines of the ends, the particles and the material points, sampled
@@ -10,7 +10,7 @@ points (a front is a light line: boosting its ends is exact); the world-sheet's 
 light lines u, w = const (`render.shading`, as the figures'), given by their edges' chart coordinates and a(u),
 b(w) there (a boost of rapidity f scales t + x by e^-f and t - x by e^f: the page scales the edges, exact) with r+
 and r- at each cell's centre (lam = exp(-(r+ + r-)/2)); and the ledger on a grid of frames and instants: each
-particle's (E, p), the rod's matter and stress parts (`causal_slices.rod_parts_on_slices`, the ledger's and the
+particle's (E, p), the rod's matter and stress parts (`slices.rod_parts_on_slices`, the ledger's and the
 ledger figure's integral, to the page's SLICE_TOLERANCE), every slice of a speed at once.
 """
 
@@ -21,28 +21,27 @@ from typing import Any
 
 import numpy as np
 
-from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal_slices import BeyondBounds, ChartTables, rod_parts_on_slices
+from rodparadox.errors import BeyondBounds, ScenarioError
 from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 
 #: the page's ledger: each stretch of a slice to this (M c^2; the page prints 4 decimals), on tables to
-#: `causal_slices.TABLE_TOLERANCE` (units of L: far below a pixel)
+#: `slices.TABLE_TOLERANCE` (units of L: far below a pixel)
 SLICE_TOLERANCE = 1e-6
 #: the page's bound on the cells of compression of one family (every preset needs a tenth); the tables', lines'
-#: and sums' bounds are `causal_slices`'. A speed that would need more is left out of the page (`TooCostly`), so
+#: and sums' bounds are `causal.slices`'. A speed that would need more is left out of the page (`TooCostly`), so
 #: that a page's cost is bounded whatever v, L and the masses
 MAX_EDGES = 6000
 
 
-class TooCostly(ScenarioError):
-    """The causal rod at one speed would need more than the page's bounds (`causal_slices.MAX_PIECES`, ...,
+class TooCostly(BeyondBounds):
+    """The causal rod at one speed would need more than the page's bounds (`slices.MAX_PIECES`, ...,
     `MAX_EDGES`) to draw."""
 
     def __init__(self, what: str, v: float | None = None):
-        self.what = what
         at = "" if v is None else f" at v = {v:.10g}"
-        super().__init__(f"the page would need more than {what} to show the causal rod{at}; choose a lower v, or "
-                         f"--rod rigid.")
+        ScenarioError.__init__(self, f"the page would need more than {what} to show the causal rod{at}; choose a "
+                                     f"lower v, or --rod rigid.")
+        self.what = what
 
 
 # --- the page's data ----------------------------------------------------------------------------------------------
@@ -52,7 +51,7 @@ def drawn(value: float, digits: int) -> float:
     return float(f"{value:.{digits}g}") + 0.0
 
 
-def line(tables: ChartTables, X: float, T0: float, T_hi: float, tolerance: float, digits: int) -> dict[str, Any]:
+def line(tables, X: float, T0: float, T_hi: float, tolerance: float, digits: int) -> dict[str, Any]:
     """Points of material line X in S (units of L) from chart time T0 on, to T_hi: after the last separation the
     line repeats, each period 2L of chart time advancing every point by the same (dx, dt) (`period`), so only one
     period is given, from the point `repeat_from`, and `repeats` copies of it reach T_hi (the page translates
@@ -70,13 +69,13 @@ def line(tables: ChartTables, X: float, T0: float, T_hi: float, tolerance: float
             "period": [drawn(advance[0] / L, 15), drawn(advance[1] / L, 15)], "before": 0.0, "after": 0.0}
 
 
-def period_advance(tables: ChartTables) -> tuple[float, float]:
+def period_advance(tables) -> tuple[float, float]:
     """(dx, dt) of every material point over one period of chart time after the last separation."""
     g_plus, g_minus = tables.plus.gain, tables.minus.gain
     return 0.5 * (g_plus - g_minus), 0.5 * (g_plus + g_minus)
 
 
-def worldlines(history, tables: ChartTables, T_hi: float, tolerance: float, digits: int) -> dict[str, Any]:
+def worldlines(history, tables, T_hi: float, tolerance: float, digits: int) -> dict[str, Any]:
     """The ends and the particles in S: at rest, then each on its chart curves (a particle free between them)."""
     L, out = history.scenario.L, {}
     for name in ("rod_left", "rod_right"):
@@ -98,7 +97,7 @@ def worldlines(history, tables: ChartTables, T_hi: float, tolerance: float, digi
     return out
 
 
-def fronts(history, tables: ChartTables, lo: float, hi: float) -> list[list[float]]:
+def fronts(history, tables, lo: float, hi: float) -> list[list[float]]:
     """Each light front in chart times [lo, hi] as [x, t] of its ends on the left and right end, in S (units of L)."""
     sol, L = history.solution, history.scenario.L
     out = []
@@ -122,7 +121,7 @@ def _edges(table, lo: float, hi: float, L: float, step: float) -> np.ndarray:
     return edges
 
 
-def cells(history, tables: ChartTables, lo: float, hi: float, compression: tuple[float, float]) -> dict[str, Any]:
+def cells(history, tables, lo: float, hi: float, compression: tuple[float, float]) -> dict[str, Any]:
     """The world-sheet's cells of compression between chart times lo and hi: edges u_i (w_j) with a(u_i) (b(w_j)),
     and r+ (r-) at each cell's middle; cell (i, j) is in the rod where 0 < u - w < 2L."""
     L = history.scenario.L
@@ -135,18 +134,18 @@ def cells(history, tables: ChartTables, lo: float, hi: float, compression: tuple
             "ln_lam": [compression[0], compression[1]]}
 
 
-def ledger_sums(history, tables: ChartTables, f: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
+def ledger_sums(history, tables, f: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
     """On each slice (f[k], t[k]): each particle's (E, p), the rod's matter and stress (E, p) (arrays, M = 1):
-    `causal_slices.rod_parts_on_slices` to the page's SLICE_TOLERANCE."""
+    `slices.rod_parts_on_slices` to the page's SLICE_TOLERANCE."""
     L = history.scenario.L
     T_L, T_R = tables.end_chart_times(0.0, f, t), tables.end_chart_times(L, f, t)
-    matter, stress = rod_parts_on_slices(history, f, t, tables, SLICE_TOLERANCE, (T_L, T_R))
+    matter, stress = history.fronts.rod_parts_on_slices(f, t, tables, SLICE_TOLERANCE, (T_L, T_R))
     sums = {"matter_E": matter[:, 0], "matter_p": matter[:, 1], "stress_E": stress[:, 0], "stress_p": stress[:, 1]}
     sums.update(particles(history, tables, f, t, T_L, T_R))
     return sums
 
 
-def particles(history, tables: ChartTables, f: np.ndarray, t: np.ndarray, T_L, T_R) -> dict[str, np.ndarray]:
+def particles(history, tables, f: np.ndarray, t: np.ndarray, T_L, T_R) -> dict[str, np.ndarray]:
     """Each particle's (E, p) on the slices: free at its rapidity between contacts; in contact, the end's."""
     L, out = history.scenario.L, {}
     for name in ("A", "B"):
@@ -191,14 +190,13 @@ def model_data(history, v: float, frames, reach: float, tolerance: float, materi
     try:
         return _model_data(history, v, frames, reach, tolerance, material_tolerance, digits, material_digits,
                            instants, table_rows, fixed)
-    except (TooCostly, BeyondBounds) as e:
+    except BeyondBounds as e:
         raise TooCostly(e.what, v) from None
 
 
 def _model_data(history, v: float, frames, reach: float, tolerance: float, material_tolerance: float,
                 digits: int, material_digits: int, instants: int, table_rows, fixed) -> dict[str, Any]:
     from rodparadox.numbers import impact_name
-    from rodparadox.render.colour_scale import causal_rapidity_range, compression_range
     from rodparadox.tables.causal_ledger import event_name
 
     s, L = history.scenario, history.scenario.L
@@ -218,7 +216,7 @@ def _model_data(history, v: float, frames, reach: float, tolerance: float, mater
     # the chart times every frame of the page reaches: tables over all of them (the ringing tail costs nothing)
     T_first = min(sol.plus.starts[0], sol.minus.starts[0])
     top = max(sol.plus.tail_start, sol.minus.tail_start)
-    tables = ChartTables(history, T_first - 2 * L, top + 60 * L)
+    tables = history.fronts.chart_tables(T_first - 2 * L, top + 60 * L)
     speeds_ = np.concatenate([np.linspace(-reach, reach, 21), [-v]])
     f = np.arctanh(speeds_)
     spans = windows(changes_L, starts_L, f) * L
@@ -231,8 +229,8 @@ def _model_data(history, v: float, frames, reach: float, tolerance: float, mater
         X = L * k / MATERIAL_LINES
         T0 = history.material_worldline(X).segments[0].T_start
         material.append(line(tables, X, T0, T_hi, material_tolerance, material_digits))
-    compression = compression_range(history)
-    bound = max(abs(r) for r in causal_rapidity_range(history))
+    compression = history.fronts.compression_range()
+    bound = max(abs(r) for r in history.rapidity_range())
     # the ledger: every frame's instants at once
     rapidities = np.array([fr.rapidity for fr in frames])
     spans = windows(changes_L, starts_L, rapidities) * L

@@ -1,9 +1,9 @@
 """The causal rod's matter and stress on many slices at once, and the tables of its invariants they are read from
-(README, "The causal rod"). Pure: numpy, no matplotlib. The one integral across a slice: the ledger (`causal_parts.
-rod_parts`, `CausalHistory.energy_momentum(split=True)`), the ledger figure's curves and the html page all call
-`rod_parts_on_slices`.
+(README, "The causal rod"). Pure: numpy, no matplotlib. The integral across many slices at once: the ledger
+figure's curves (`CausalHistory.rod_parts_on_slices`) and the html page's ledger call `rod_parts_on_slices`; the
+ledger's own numbers, slice by slice, are `parts.rod_parts`' exact integral, which the tests compare this with.
 
-The engine's solution (`causal_solve`) gives the invariants r+(u), r-(w) and the chart map a(u), b(w) exactly, one
+The engine's solution (`solve`) gives the invariants r+(u), r-(w) and the chart map a(u), b(w) exactly, one
 scalar call at a time (tens of microseconds each). `ChartTables` reads the solution once: on every smooth piece
 between two breaks of an invariant (a front, a contact's start or end) r and a (or b) are interpolated by a
 Chebyshev polynomial through the engine's values, each piece halved until the polynomial agrees with the engine at
@@ -27,7 +27,7 @@ import math
 
 import numpy as np
 
-from rodparadox.errors import ScenarioError
+from rodparadox.errors import BeyondBounds
 
 #: the tables agree with the engine's a, b and r to this by default (units of L; r is a number)
 TABLE_TOLERANCE = 1e-9
@@ -40,7 +40,7 @@ GAUSS = 8
 STRETCH = 0.25
 #: the integral's tolerance by default: each stretch halved until its halves agree with it to this, relative to
 #: the rod's energy M c^2 (or to a few thousand roundings of the stretch's own sum, where that is larger: v near c);
-#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral (tests/test_causal_slices.py)
+#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral (tests/test_causal_slices.py; a known gap near c there)
 PARTS_TOLERANCE = 1e-9
 PRECISE_TABLES = 1e-12
 #: bounds on the work (every preset needs a tenth of each): pieces of one table, points of one sampled line, stretches
@@ -48,14 +48,6 @@ PRECISE_TABLES = 1e-12
 MAX_PIECES = 1000
 MAX_POINTS = 20000
 MAX_STRETCHES = 15000
-
-
-class BeyondBounds(ScenarioError):
-    """The causal rod's tables or sums would need more than their bounds (`MAX_PIECES`, ...)."""
-
-    def __init__(self, what: str):
-        self.what = what
-        super().__init__(f"the causal rod would need more than {what} here; choose a lower v.")
 
 
 class _Table:

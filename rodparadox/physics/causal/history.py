@@ -2,7 +2,7 @@
 
 `run(scenario)` places the particles as the rigid engine does (a gap, or an impact timed against the other
 particle's first contact, here in the causal rod), solves the invariants (`causal_solve`) and returns a
-`CausalHistory`, the rod interface (`history.RodHistory`) with `rigid = None`. Its events are each contact's
+`CausalHistory`, the rod interface (`history.RodHistory`) with the capability `fronts`. Its events are each contact's
 start ("contact") and end ("separation"); every world-line is exact (`kinematics.ChartCurve`, boosted by
 scaling the chart map), the rod's ends and material points ringing for ever after the last separation.
 
@@ -21,22 +21,32 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal_solve import Budget, Rider, Solution, solve
-from rodparadox.physics.engine import WORLDLINE_NAMES, Impact
+from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
+from rodparadox.physics.causal.parts import rod_parts
+from rodparadox.physics.causal.solve import Budget, Rider, Solution, solve
 from rodparadox.physics.kinematics import ChartCurve, Event, Line, WorldLine
-from rodparadox.physics.ledger import EnergyMomentum, Slice, ZERO, initial_total as _initial_total_rigid
+from rodparadox.physics.ledger import initial_total
 from rodparadox.physics.model import Scenario
+from rodparadox.physics.types import EnergyMomentum, Impact, Slice, ZERO
 
 
-def run(scenario: Scenario, budget: int | None = None) -> "CausalHistory":
-    """The causal rod's history of a scenario (the same scenarios the rigid engine runs); `budget`: a bound on its
-    work, in windows of chart time L and steps of its contacts (`causal_solve.Budget`), or None for the solver's."""
+def run(scenario: Scenario, starts: dict[str, Event] | None = None, budget: int | None = None) -> "CausalHistory":
+    """The causal rod's history of a scenario (the same scenarios the rigid engine runs), the particles starting
+    at `starts` (default: `particle_starts`); `budget`: a bound on its work, in windows of chart time L, stretches
+    of an end's window and steps of its contacts (`solve.Budget`), or None for the solver's own bounds."""
     spend = None if budget is None else Budget(budget)
+    return _run(scenario, particle_starts(scenario, spend) if starts is None else starts, spend)
+
+
+def particle_starts(scenario: Scenario, budget: Budget | None = None) -> dict[str, Event]:
+    """Each particle's event at t = 0: from its gap, or timed against the other particle's first contact in the
+    causal rod (that run within `budget`, where given)."""
     starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
     for p in scenario.particles:
         if p.timed_with is not None:
-            starts[p.name] = _start_from_timing(scenario, p, starts, spend)
-    return _run(scenario, starts, spend)
+            starts[p.name] = _start_from_timing(scenario, p, starts, budget)
+    return starts
 
 
 def _rapidity(scenario: Scenario, p) -> float:
@@ -95,8 +105,43 @@ class RodParts:
 class CausalHistory:
     """The rod interface (`history.RodHistory`) for the causal rod. Coordinates in S, units of L, M = 1."""
 
-    kind = "causal"
-    rigid = None
+    model = "causal"
+    turning = None  # no turns: its lines of simultaneity are not the rigid rod's (physics.history.Turning)
+
+    @property
+    def fronts(self) -> "CausalHistory":
+        """The causal rod's own part of the interface (`physics.history.Fronts`): itself."""
+        return self
+
+    def own_chart(self) -> CausalChart:
+        """The rod's own chart: its material chart (T, X)."""
+        return CausalChart(self)
+
+    def rapidity_range(self) -> tuple[float, float]:
+        """The least and largest rapidity in S of any material point over the whole history, 0 included."""
+        return causal_rapidity_range(self)
+
+    def rod_parts_on_slices(self, frame_rapidity, times, tables=None, tolerance: float | None = None,
+                            ends=None) -> tuple:
+        """The matter and stress parts on many slices at once, as arrays (`causal.slices`)."""
+        from rodparadox.physics.causal.slices import PARTS_TOLERANCE, rod_parts_on_slices
+
+        return rod_parts_on_slices(self, frame_rapidity, times, tables,
+                                   PARTS_TOLERANCE if tolerance is None else tolerance, ends)
+
+    def chart_tables(self, lo: float, hi: float, tolerance: float | None = None):
+        """Tables of r+, a and r-, b over chart times [lo, hi] (`causal.slices.ChartTables`)."""
+        from rodparadox.physics.causal.slices import TABLE_TOLERANCE, ChartTables
+
+        return ChartTables(self, lo, hi, TABLE_TOLERANCE if tolerance is None else tolerance)
+
+    def compression_range(self) -> tuple[float, float]:
+        """The least and largest ln lam anywhere in the rod over its whole history, 0 (unstressed) inside."""
+        return compression_range(self)
+
+    def rod_parts(self, frame_rapidity: float, t: float) -> tuple[EnergyMomentum, EnergyMomentum]:
+        """The rod's (E, p) on the slice split into its matter part and its stress part (`causal.parts`)."""
+        return rod_parts(self, frame_rapidity, t)
 
     def __init__(self, scenario: Scenario, solution: Solution, starts: dict[str, Event]):
         self.scenario, self.solution = scenario, solution
@@ -197,14 +242,12 @@ class CausalHistory:
             total += em
         parts = ()
         if split:
-            from rodparadox.physics.causal_parts import rod_parts
-
             matter, stress = rod_parts(self, frame_rapidity, t)
             parts = (("matter", matter), ("stress", stress))
         return Slice(t, tuple(bodies), total, self.initial_total(frame_rapidity) - total, parts)
 
     def initial_total(self, frame_rapidity: float) -> EnergyMomentum:
-        return _initial_total_rigid(self, frame_rapidity)
+        return initial_total(self, frame_rapidity)
 
     def _final_rapidity(self) -> float:
         """The rod's centre-of-momentum rapidity after the last separation: of its (E, p) over one period,

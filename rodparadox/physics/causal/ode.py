@@ -22,7 +22,6 @@ at every node of every step: an event, never a step.
 from __future__ import annotations
 
 import bisect
-import math
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -142,7 +141,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, budget=None)
     """Integrate d psi/dT = -c sinh(psi - in(T)) from lo (psi = psi0, psi0 > in(lo)) to hi, stopping where
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
     Returns the dense solution and the chart time of the separation (None when the contact lasts to hi).
-    `budget`: a `causal_solve.Budget` each step tried is spent from, or None."""
+    `budget`: a `solve.Budget` each step tried is spent from, or None."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
