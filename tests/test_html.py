@@ -25,7 +25,7 @@ from rodparadox.io.scenario import load
 from rodparadox.physics.types import EnergyMomentum
 from rodparadox.render.styles import STYLES
 from rodparadox.web import data as web_data
-from rodparadox.web.page import asset, page
+from rodparadox.web.page import SCRIPTS, asset, page, script
 from sears_paradox_cli.main import main
 
 from conftest import causal_history, history
@@ -192,7 +192,11 @@ def test_the_page_is_self_contained_small_and_carries_its_script_verbatim(fig2_p
     assert len(fig2_page.encode("utf-8")) <= 2 * MB
     assert not re.search(r"https?://", fig2_page, re.I)
     assert not re.search(r"<(script|link|img|iframe)[^>]+(src|href)=", fig2_page, re.I)
-    assert asset("page.js") == (ROOT / "rodparadox" / "web" / "page.js").read_text() and asset("page.js") in fig2_page
+    for name in SCRIPTS:  # each part of the script verbatim, in order, each under 500 lines
+        text = asset(name)
+        assert text == (ROOT / "rodparadox" / "web" / name).read_text() and text in fig2_page
+        assert text.count("\n") <= 500, name
+    assert script() in fig2_page
     assert fig2_page.count("</script>") == 2  # the data's own `<` are escaped
 
 
@@ -388,8 +392,7 @@ def test_the_causal_rod_only_offered_is_bounded_left_out_and_said(own_speed_only
     assert time.process_time() - start < 10
     assert [[m["model"] for m in e["models"]] for e in data["speeds"]] == [["rigid"]]
     assert data["left_out"] == {"rigid": [], "causal": [0.6]} and data["rod"] == "rigid"
-    script = asset("page.js")
-    assert "Not on this page: " in script and 'id="left-out"' in page([("fig2", load("fig2"))])
+    assert "Not on this page: " in script() and 'id="left-out"' in page([("fig2", load("fig2"))])
 
 
 def test_an_offered_causal_run_stops_at_its_budget_with_one_sentence():

@@ -1,7 +1,7 @@
 """The page: one self-contained HTML document (README, "One page to explore: `sears-paradox html`"). Pure.
 
-Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (`page.js`, plain JavaScript
-kept as its own file, no build step): nothing is fetched, so the page opens from `file://` with no network. The
+Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in four files
+by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from `file://` with no network. The
 same scenarios, options and package give the same bytes: JSON with sorted keys and Python's shortest round-trip
 floats, no date, no version.
 """
@@ -21,6 +21,15 @@ from rodparadox.web.data import ABOUT_SEVERAL, page_data
 def asset(name: str) -> str:
     """A file of the package beside this module (`page.js`, `page.css`), as text."""
     return resources.files("rodparadox.web").joinpath(name).read_text(encoding="utf-8")
+
+
+#: the script's parts, by job, joined in this order into the page's one <script> (one scope; no build step)
+SCRIPTS = ("page.js", "page_draw.js", "page_tables.js", "page_controls.js")
+
+
+def script() -> str:
+    """The page's script: its parts (`SCRIPTS`) one after the other, verbatim."""
+    return "".join(asset(name) for name in SCRIPTS)
 
 
 def data_json(data: dict) -> str:
@@ -43,7 +52,7 @@ def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default", show
     styles = "".join(f'<option value="{name}">{name}</option>' for name in STYLE_NAMES)
     return TEMPLATE.format(title=html.escape(title), heading=html.escape(first["title"]),
                            about=html.escape(about), styles=styles, css=asset("page.css"), data=data_json(data),
-                           script=asset("page.js"))
+                           script=script())
 
 
 TEMPLATE = """<!DOCTYPE html>
