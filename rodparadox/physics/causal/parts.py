@@ -15,7 +15,7 @@ integrated along the slice: parametrised by u, cut at every front crossing it (l
 Legendre on each smooth piece, all its nodes at once, halved until the halves agree with the whole. The w of
 each node is found by Newton's method on t' = (e^-f a(u) + e^f b(w))/2 (b' = exp(r-)), kept in its piece. Many
 slices at once (the ledger figure's curves, the html page) read tables of the invariants instead
-(`slices.rod_parts_on_slices`), checked against this one (tests/test_causal_slices.py).
+(`slices.rod_parts_on_slices`), checked against this one (tests/physics/test_causal_slices.py).
 """
 
 from __future__ import annotations

@@ -40,7 +40,7 @@ GAUSS = 8
 STRETCH = 0.25
 #: the integral's tolerance by default: each stretch halved until its halves agree with it to this, relative to
 #: the rod's energy M c^2 (or to a few thousand roundings of the stretch's own sum, where that is larger: v near c);
-#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral (tests/test_causal_slices.py; a known gap near c there)
+#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral (tests/physics/test_causal_slices.py; a known gap near c there)
 PARTS_TOLERANCE = 1e-9
 PRECISE_TABLES = 1e-12
 #: bounds on the work (every preset needs a tenth of each): pieces of one table, points of one sampled line, stretches
