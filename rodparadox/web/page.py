@@ -1,9 +1,9 @@
 """The page: one self-contained HTML document (README, "One page to explore: `sears-paradox html`"). Pure.
 
 Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in four files
-by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from `file://` with no network. The
-same scenarios, options and package give the same bytes: JSON with sorted keys and Python's shortest round-trip
-floats, no date, no version.
+by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from
+`file://` with no network. The same scenarios, options and package give the same bytes: JSON with sorted keys and
+Python's shortest round-trip floats, no date, no version.
 """
 
 from __future__ import annotations

@@ -40,7 +40,8 @@ GAUSS = 8
 STRETCH = 0.25
 #: the integral's tolerance by default: each stretch halved until its halves agree with it to this, relative to
 #: the rod's energy M c^2 (or to a few thousand roundings of the stretch's own sum, where that is larger: v near c);
-#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral (tests/physics/test_causal_slices.py; a known gap near c there)
+#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral at ordinary speeds
+#: (tests/physics/test_causal_slices.py; a known gap near c there)
 PARTS_TOLERANCE = 1e-9
 PRECISE_TABLES = 1e-12
 #: bounds on the work (every preset needs a tenth of each): pieces of one table, points of one sampled line, stretches
@@ -282,7 +283,8 @@ def _adaptive(tables: ChartTables, f, t, k, lo, hi, w_R, w_L, tolerance: float) 
         # both halves in one call: each stretch's sums depend on that stretch alone (and the slices' brackets, the
         # same for both halves), so they are the values two calls would give, at half the calls' cost
         n = len(k)
-        both = _gauss(tables, f, t, np.concatenate([k, k]), np.concatenate([lo, mid]), np.concatenate([mid, hi]), w_R, w_L)
+        both = _gauss(tables, f, t, np.concatenate([k, k]), np.concatenate([lo, mid]), np.concatenate([mid, hi]),
+                      w_R, w_L)
         left, right = both[:n], both[n:]
         halves = left + right
         # to the tolerance, or a few thousand roundings where a body's energy is thousands of M c^2 (v near c), or,
