@@ -273,14 +273,26 @@ def test_a_worksheet_leaves_every_number_blank_and_its_answer_key_fills_them(nam
     assert doc.worksheet
     in_section = section_blocks(doc, Table)
     assert in_section
+    v = h.scenario.v
     for table in in_section:
-        for row in table.rows:
-            for cell in row:
+        seen = set()
+        for k, row in enumerate(table.rows):
+            for column, cell in zip(table.header, row):
                 slice_time = table.name.startswith("hidden") and cell is row[0]  # where the values are taken
-                if numeric(cell.text) and not slice_time:
+                # what the set-up gives stays filled: the rod's velocity before its first impact (0 in S, +v in
+                # S′) and, in S, each particle's before its first impact (A at +v, B at −v)
+                given = ((k == 0 and column == "rod before") or
+                         (table.name == "events_rest" and column == "particle before" and row[0].text[0] not in seen))
+                if numeric(cell.text) and not slice_time and not given:
                     assert cell.blank, (table.name, cell.text)  # every value to fill in is blank
+                if given:
+                    expected = (0.0 if table.name == "events_rest" else v) if column == "rod before" else \
+                        (v if row[0].text[0] == "A" else -v)
+                    assert not cell.blank and float(cell.text.split()[0].replace("−", "-")) == pytest.approx(
+                        expected, abs=1e-6), (table.name, column, cell.text)
                 if cell.text in ("left", "right", "particle A", "particle B", "rod", "hidden"):
                     assert not cell.blank  # labels stay
+            seen.add(row[0].text[0])
     key = doc.answer_key
     assert isinstance(key[0], Heading) and key[0].text == "Answer key"
     # the worksheet asks for the events in the rod's own order; its key prints the handout's tables, filled
@@ -475,26 +487,29 @@ def test_fig2_worked_answers_against_the_hand_derivation():
     asked = questions(history("fig2", 0.6), paper_frames(0.6))
     # the Lorentz transformation: g = 1.25, t' = g(t + 0.6 x): B1 1.25 (5/6 + 0.3) = 17/12, A1 1.25 (19/12 - 0.45)
     # = 17/12; simultaneous in S', 3/4 L apart in S
-    lorentz = answer_of(asked, "In S, B₁ strikes at x = 0.5 L, t = 5/6 L; A₁ strikes at x = −0.75 L, t = 19/12 L")
+    lorentz = answer_of(asked, "In S, take the x and t of B₁ and of A₁ from your table of S")
+    assert lorentz.startswith("In S, B₁ strikes at x = 0.5 L, t = 5/6 L; A₁ strikes at x = −0.75 L, t = 19/12 L.")
     assert "γ = 1/√(1 − w²) = 1/√(1 − 0.6²) = 1.25" in lorentz and "t′ = γ(t − w x) = γ(t + 0.6 x)" in lorentz
     assert "B₁: t′ = 1.25 × (5/6 + 0.6 × 0.5) L = 1.25 × 17/15 L = 17/12 L" in lorentz
     assert "A₁: t′ = 1.25 × (19/12 + 0.6 × (−0.75)) L = 1.25 × 17/15 L = 17/12 L" in lorentz
     assert "simultaneous in S′, while in S they are 0.75 L apart" in lorentz
     # velocity addition: (0.6 + 0.6)/(1 + 0.36) = 15/17 ≈ 0.8823529
-    addition = answer_of(asked, "After A₁ the rod moves at +0.6 c in S")
+    addition = answer_of(asked, "Take the rod's velocity after A₁ in S from your table of S")
+    assert addition.startswith("After A₁ the rod moves at +0.6 c in S.")
     assert "= 1.2/1.36 = +15/17 c ≈ +0.8823529 c" in addition
     # at rest in S' at the instant t' = 17/12, full length L, contracted to L/g = 0.8 L before
     rest = answer_of(asked, "The whole rod comes to rest in S′")
     assert "at the one instant t′ = 17/12 L" in rest and "= 0.8 L" in rest
     # v = 0.8: A1 - B1 = g v L = (5/3)(0.8) = 4/3 L in S, and 0 in S' (A is timed so); the rod ends at rest
     other = answer_of(asked, "Now take v = 0.8 instead of 0.6")
-    assert "At v = 0.8 (the tool runs the scenario again): A₁ comes 4/3 L after B₁ in S; B₁ and A₁ are " \
+    assert "At v = 0.8: A₁ comes 4/3 L after B₁ in S; B₁ and A₁ are " \
            "simultaneous in S′; the rod ends at rest in S" in other
 
 
 def test_fig1_worked_answers_against_the_hand_derivation():
     asked = questions(history("fig1", 0.6), paper_frames(0.6))
-    lorentz = answer_of(asked, "In S, A₁ strikes at x = −0.5 L, t = 5/6 L; B₁ strikes at x = 0.5 L, t = 5/6 L")
+    lorentz = answer_of(asked, "In S, take the x and t of A₁ and of B₁ from your table of S")
+    assert lorentz.startswith("In S, A₁ strikes at x = −0.5 L, t = 5/6 L; B₁ strikes at x = 0.5 L, t = 5/6 L.")
     # t'_A1 = 1.25 (5/6 - 0.3) = 2/3, t'_B1 = 17/12: 3/4 L apart
     assert "= 2/3 L" in lorentz and "= 17/12 L" in lorentz and "in S′ B₁ comes 0.75 L after A₁" in lorentz
     # the hidden momentum between A1 and B1 in S': total 2.625 (A 15/8, B 0, rod 0.75) less the rod's 0.75 = 15/8
@@ -517,7 +532,7 @@ def test_a_single_particles_answer_is_g_v_l():
     # single at v = 0.6: the left end follows on the hyperbola about B1 and reaches -0.6 after t - t_P = g v L
     # = 0.75 L, while the struck end moves 0.6 * 0.75 = 0.45 L to the left
     asked = questions(history("single", 0.6), paper_frames(0.6))
-    answer = answer_of(asked, "B₁ gives the rod's momentum the velocity −0.6 c")
+    answer = answer_of(asked, "B₁ gives the rod's momentum its velocity after B₁ (your table of S)")
     assert "takes 0.75 L of S's time" in answer and "moves 0.45 L to the left" in answer
 
 
@@ -544,8 +559,8 @@ def test_a_re_strike_on_one_rod_line_is_told_as_such_and_turns_keep_their_own_ca
     assert "A₁ and B₂ lie on one line of the rod's own simultaneity" in text
     assert "B₁ and B₂ happen at one event" in text
     assert "still turning from B₁:" in text  # the turn B1 started, not B2, which came after it
-    # L = 2: the text gives multiples of L, the tables the unit L is given in
-    assert "the tables give them in the unit L is given in, L = 2" in setup_text(h)
+    # L = 2: the text gives multiples of L, the tables the unit of length in which L is given
+    assert "the tables give them in the unit of length in which L = 2" in setup_text(h)
     # the timing frame given as a velocity
     assert "in the time of the frame of velocity +0.3 c relative to S" in setup_text(h)
 

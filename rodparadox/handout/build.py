@@ -34,7 +34,7 @@ from typing import Sequence
 
 from rodparadox.handout.causal_compare import comparison
 from rodparadox.handout.causal_reading import compare
-from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
+from rodparadox.handout.document import Block, Cell, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
 from rodparadox.handout.words import in_l, time_name, with_primes
@@ -166,16 +166,25 @@ def introduction(histories: Sequence[History] = ()) -> Section:
 # --- the numbers -----------------------------------------------------------------------------------------------
 
 def _table_unit(L: float) -> str:
-    """How the tables give x and t: in units of L, or, for L other than 1, in the unit L is given in."""
-    return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
+    """How the tables give x and t: in units of L, or, for L other than 1, in the unit of length in which L is given."""
+    return "in units of L" if L == 1.0 else f"in the unit of length in which L = {exact(L)}"
 
 
-def _in_rods_order(history: History, table: Table) -> Table:
+def _in_rods_order(history: History, table: Table, frame: Frame) -> Table:
     """A worksheet's events table: its rows in the rod's own order, without notes (the frame's order, and which
-    impacts the rod takes together, are what the questions ask)."""
+    impacts the rod takes together, are what the questions ask), and the velocities the set-up gives filled in:
+    the rod's before its first impact (at rest in S, +v in S′), and in S each particle's before its first impact."""
     order = {impact_name(i.label): k for k, i in enumerate(history.impacts)}
-    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(),
-                   rows=tuple(sorted(table.rows, key=lambda row: order[row[0].text])))
+    rows = sorted(table.rows, key=lambda row: order[row[0].text])
+    particle, rod = table.header.index("particle before"), table.header.index("rod before")
+    given = {(0, rod)} if frame.name in ("rest", "moving") else set()
+    if frame.name == "rest":
+        firsts = {}
+        for k, row in enumerate(rows):
+            firsts.setdefault(row[0].text[0], k)
+        given |= {(k, particle) for k in firsts.values()}
+    rows = [tuple(Cell(c.text) if (k, j) in given else c for j, c in enumerate(row)) for k, row in enumerate(rows)]
+    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(), rows=tuple(rows))
 
 
 def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list[Block]]:
@@ -187,8 +196,8 @@ def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list
     asked: list[Block] = [
         Paragraph(f"The impacts in {symbol}, in the rod's own order: fill in where and when each strikes ({x} and "
                   f"{time} {_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and "
-                  f"of the rod just before and just after it."),
-        _in_rods_order(history, tables.events_table(history, frame, blank=True))]
+                  f"of the rod just before and just after it; those the set-up gives are filled in."),
+        _in_rods_order(history, tables.events_table(history, frame, blank=True), frame)]
     return asked, _tables(history, frame, blank=False)
 
 
@@ -269,7 +278,7 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
         blocks.append(Heading("Questions", 2))
         blocks += asked
         if numbers is not None:
-            more = causal_questions(numbers, len(asked) + 1)
+            more = causal_questions(numbers, len(asked) + 1, tabled=any(f.name == "rest" for f in frames))
             blocks += compared[0] + [Heading("Questions on the causal rod", 2), *more]
             asked += more
             compared = ([], [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b

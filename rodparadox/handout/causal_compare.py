@@ -26,7 +26,7 @@ INTRODUCTION = (
     "The rigid rod above is the paper\u2019s idealisation. The causal rod is the stiffest rod relativity allows: "
     "sound in it travels at c, so the push of an impact spreads through it as a front of compression at the speed "
     "of light, and a particle rides with the end it strikes, pushed by the end\u2019s compression, until that "
-    "compression has gone (README, \u201cThe causal rod\u201d). Here the same particles, at the same speeds, strike "
+    "compression has gone. Here the same particles, at the same speeds, strike "
     "a causal rod of the same rest mass M and length L; every number below is computed from its run. The diagrams, "
     "the rod at successive instants and the tables above are of the rigid rod: this handout does not draw the "
     "causal rod yet.")
@@ -148,6 +148,6 @@ def comparison(c: Comparison, causal, frames: tuple[Frame, ...],
     filled: list[Block] = [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
     if not worksheet:
         return [Heading(HEADING, 2), Paragraph(INTRODUCTION), *told, *filled], []
-    blank = [b for f in frames for b in (Paragraph(table_text(f) + " Fill in the numbers."),
-                                         events_table(causal, f, blank=True))]
-    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION), *blank], [Heading(HEADING, 2), *told, *filled]
+    # the causal rod's contacts and separations come from solving its wave equation, which a student cannot fill in,
+    # and its first contacts are the rigid rod's first impacts, whose cells the worksheet asks: the key prints them
+    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)], [Heading(HEADING, 2), *told, *filled]

@@ -72,7 +72,7 @@ def setup_text(history: History, tell: bool = True) -> str:
             text += (f", so at t = 0 it is {in_l(gap / s.L)} from that end." if gap >= 0 else
                      f", so at t = 0 it is at x = {in_l(starts[p.name].x / s.L)}.")
         sentences.append(text)
-    tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit L is given in, L = {exact(s.L)})"
+    tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit of length in which L = {exact(s.L)})"
     where = "the particles are where this paragraph puts them" if len(particles) > 1 else \
         "the particle is where this paragraph puts it"  # `single`: one particle
     sentences.append(f"Below, lengths and times are given as multiples of L{tables_unit}, speeds as fractions of c "
@@ -103,16 +103,16 @@ def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True
     dashed = " and ".join(f"the particle {name} is {looks[name]}" for name in particles)
     # a worksheet lists the labels without "and" (a ledger's row "B₁ and A₁" is a claim of simultaneity it asks)
     labels = labels if tell else ", ".join(impact_name(i.label) for i in history.impacts)
-    impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
-               f"The impacts are labelled in the order of the rod's own time: {labels}. Through each impact run" if
-               not tell else f"The impacts are labelled {labels} in the order of the rod's own time. Through each "
-                             f"impact run")
     sentences = [f"At v = {exact(s.v)}: {panels}.",
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
-                 f"its shaded world-sheet, and {dashed}.",
-                 f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted)."]
-    if not tell:
+                 f"its shaded world-sheet, and {dashed}."]
+    if not tell:  # no lines of simultaneity through the impacts: which impacts share one is asked
+        sentences.append(f"The impact is labelled {labels}." if len(history.impacts) == 1 else
+                         f"The impacts are labelled in the order of the rod's own time: {labels}.")
         return " ".join(sentences)
+    impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
+               f"The impacts are labelled {labels} in the order of the rod's own time. Through each impact run")
+    sentences.append(f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted).")
     styles = {"rest": "dotted", "moving": "dash-dotted"}
     shared = []
     for frame in (rest_frame(), moving_frame(s.v)):

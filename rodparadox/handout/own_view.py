@@ -8,9 +8,13 @@ from dataclasses import replace
 from typing import Sequence
 
 from rodparadox.handout.causal_compare import DRAWN_IN_OWN_VIEW, NOT_DRAWN
-from rodparadox.handout.document import DiagramBlock, Handout, Paragraph, RodViewBlock
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, RodViewBlock
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.rod_view import chart_of
+
+#: the heading of the answer key's explanation, before which a worksheet's key shows the rod's own view
+SHOWN = "What the diagram shows"
+ROD_VIEW = "The rod\u2019s own view"
 
 
 def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
@@ -50,7 +54,17 @@ def _pivot_label(history, turn) -> str:
 
 def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
     """The handout with the rod's own view after the first diagram of each section named in `views` (section
-    name -> its histories, the rigid rod first)."""
+    name -> its histories, the rigid rod first). A worksheet's go to its answer key, before each section's "What the
+    diagram shows": the rod's lines of simultaneity tell which impacts it takes together, which the questions ask."""
+    if handout.worksheet:
+        key = list(handout.answer_key)
+        told = [k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == SHOWN]
+        for at, section in reversed(list(zip(told, handout.sections[1:]))):
+            histories = views.get(section.name)
+            if histories:
+                key.insert(at, RodViewBlock(f"{section.name}_rod_view", tuple(histories), rod_view_caption(histories)))
+                key.insert(at, Heading(ROD_VIEW, 2))
+        return replace(handout, answer_key=tuple(key))
     sections = []
     for section in handout.sections:
         histories = views.get(section.name)

@@ -433,8 +433,9 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
     caption = wrap(words_of(block.caption), t.caption, pages.text_width)
     room = pages.text_height - 0.5 * t.body - len(caption) * 1.3 * t.caption
     if isinstance(block, DiagramBlock):
-        # no title above the panels: the section's heading and the caption say what it shows
-        untitled = render.Options(titled=False, equal_scales=block.equal_scales)
+        # no title above the panels: the section's heading and the caption say what it shows; a worksheet's without
+        # the lines of simultaneity through the impacts (which impacts share one is asked)
+        untitled = render.Options(titled=False, equal_scales=block.equal_scales, simultaneity=block.tell)
         _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):

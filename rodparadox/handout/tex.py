@@ -268,8 +268,9 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
     from rodparadox import render
 
     if isinstance(block, DiagramBlock):
-        # a worksheet's diagram without the scenario's title (a preset's may say what it asks) or the panels' velocities
-        options = render.Options(titled=block.tell, equal_scales=block.equal_scales)
+        # a worksheet's diagram without the scenario's title (a preset's may say what it asks), the panels' velocities
+        # or the lines of simultaneity through the impacts (which impacts share one is asked)
+        options = render.Options(titled=block.tell, equal_scales=block.equal_scales, simultaneity=block.tell)
         diagram = render.draw(block.history, block.frames, style, options)
         block.retitle(diagram)
         figure = diagram.figure

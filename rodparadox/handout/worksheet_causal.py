@@ -21,11 +21,14 @@ def _zero(x: float, scale: float = 1.0) -> float:
     return 0.0 if abs(x) <= 1e-12 * max(1.0, abs(scale)) else x
 
 
-def question_far_end(c: Comparison) -> Asked:
-    """When light from the first contact reaches the far end, and when each model moves that end."""
+def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
+    """When light from the first contact reaches the far end, and when each model moves that end; `tabled`: the
+    worksheet's events table of S asks the contact's time (the rigid rod's first impact, the same event), so the
+    question points to it rather than give it."""
     f = c.far_end
     C = impact_name(f.contact.label)
-    start = f"{C} strikes the {f.contact.end} end of the rod, at rest in S, at t = {in_l(f.t_contact, ANSWER_DIGITS)}."
+    when = (f"at the time t your table of S gives for {C}" if tabled else f"at t = {in_l(f.t_contact, ANSWER_DIGITS)}")
+    start = f"{C} strikes the {f.contact.end} end of the rod, at rest in S, {when}."
     light = (f"Light from {C} crosses the rod\u2019s length L, at rest in S, in a time L: it reaches the {f.far} end at "
              f"t = {in_l(f.t_contact, ANSWER_DIGITS)} + L = {in_l(f.t_light, ANSWER_DIGITS)}.")
     rigid = (f" The rigid rod\u2019s {f.far} end starts to move at t = {in_l(f.t_rigid, ANSWER_DIGITS)}, at {C}\u2019s "
@@ -38,7 +41,7 @@ def question_far_end(c: Comparison) -> Asked:
                 f"start to move, and when that of the causal rod, whose sound travels at c? The compression front "
                 f"comes back from the free {f.far} end as tension, so that end\u2019s rapidity jumps to twice the struck "
                 f"end\u2019s: how fast does it start?")
-        answer = (light + rigid,
+        answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
                   f"The causal rod\u2019s {f.far} end feels nothing until the front, at speed c, arrives: it starts at "
                   f"t = {in_l(f.t_causal, ANSWER_DIGITS)}, exactly when light does.",
                   f"The struck end takes {f.contact.particle}\u2019s velocity at once, rapidity θ₀ = artanh "
@@ -48,10 +51,12 @@ def question_far_end(c: Comparison) -> Asked:
         asks += [told_number(f"the causal far end's starting velocity", f.u_causal)]
         return Asked(text, answer, tuple(asks))
     D = impact_name(f.own.label)
-    text = (f"{start} {D} strikes the {f.far} end at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}. When "
+    same = abs(f.own.event.t / c.L - f.t_contact) <= 1e-12 * (1.0 + abs(f.t_contact))
+    at = "at the same instant of S" if same else f"at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}"
+    text = (f"{start} {D} strikes the {f.far} end {at}. When "
             f"does light from {C} reach the {f.far} end? What sets the causal rod\u2019s {f.far} end moving, and when "
             f"does the rigid rod\u2019s {f.far} end start to move?")
-    answer = (light + rigid,
+    answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
               f"{D} comes first, so in the causal rod, where no push travels faster than light, the {f.far} end is set "
               f"moving by {D} itself, and the fronts from {C} and {D} cross inside the rod.")
     asks.append(told_claim(f"{D} sets the causal far end moving", f"set moving by {D} itself"))
@@ -78,8 +83,8 @@ def question_ringing(c: Comparison) -> Asked:
               f"Its rest mass: √(E² − p²) = √({bracketed(E)}² − {bracketed(p)}²) = {answer_numeral(mass)} M; its centre "
               f"moves at p/E = {in_c(u, ANSWER_DIGITS)}.",
               f"It is more than M by {answer_numeral(mass - 1.0)} M: the rod rings for ever after the particles leave, "
-              f"and the energy of its vibration counts in its rest mass. The tool\u2019s run gives the same from the "
-              f"ringing itself: every material point advances by (Δt, Δx) = ({in_l(r.dt, ANSWER_DIGITS)}, "
+              f"and the energy of its vibration counts in its rest mass. The same follows from the ringing "
+              f"itself: every material point advances by (Δt, Δx) = ({in_l(r.dt, ANSWER_DIGITS)}, "
               f"{in_l(_zero(r.dx, r.dt), ANSWER_DIGITS)}) per period, and (M/2L)(Δt, Δx) = ({answer_numeral(r.E)} M c², "
               f"{answer_numeral(_zero(r.p, r.E))} M c)."]
     given = listed([f"{n} at {in_c(u, ANSWER_DIGITS)}" for n, _, u in leaving])
@@ -124,7 +129,8 @@ def question_stress(c: Comparison) -> Asked:
     return Asked(text, answer, tuple(asks))
 
 
-def causal_questions(c: Comparison, first: int) -> tuple[Question, ...]:
-    """The comparison's questions, numbered from `first` (after the rigid rod's)."""
-    asked: Sequence[Asked] = (question_far_end(c), question_ringing(c), question_stress(c))
+def causal_questions(c: Comparison, first: int, tabled: bool = True) -> tuple[Question, ...]:
+    """The comparison's questions, numbered from `first` (after the rigid rod's); `tabled`: the worksheet has an
+    events table of S to fill in."""
+    asked: Sequence[Asked] = (question_far_end(c, tabled), question_ringing(c), question_stress(c))
     return tuple(Question(first + k, q.text, q.answer, q.asks) for k, q in enumerate(asked))
