@@ -14,7 +14,7 @@ from dataclasses import replace
 
 from rodparadox.handout.causal_reading import Comparison
 from rodparadox.handout.document import Block, Heading, Paragraph, Table
-from rodparadox.handout.words import in_c, in_l, listed, numeral, time_name
+from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral, summand, time_name
 from rodparadox.numbers import impact_name
 from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word
 from rodparadox.physics.ledger import EnergyMomentum
@@ -50,9 +50,9 @@ def far_end_text(c: Comparison) -> str:
                      f"{in_l(f.t_rigid)}, before light from {C} could reach it. ")
         text += (f"The causal rod\u2019s {f.far} end stays at rest until t = {in_l(f.t_causal)}, when light from {C} "
                  f"arrives (the rod is at rest in S, so light crosses its length L in a time L), and then moves off at "
-                 f"once at {in_c(f.u_causal)}: its rapidity, {numeral(abs(math.atanh(f.u_causal)))}, is twice the "
-                 f"struck end\u2019s, {numeral(abs(f.rapidity_struck))}, for the front of compression comes back from "
-                 f"the free end as tension.")
+                 f"once at {in_c(f.u_causal)}: its rapidity in S, {signed_numeral(math.atanh(f.u_causal))}, is twice "
+                 f"the struck end\u2019s, {signed_numeral(f.rapidity_struck)}, for the front of compression comes back "
+                 f"from the free end as tension.")
         return text
     D = impact_name(f.own.label)
     when = "at that same instant" if f.t_causal == f.t_contact else f"at t = {in_l(f.t_causal)}"
@@ -87,18 +87,39 @@ def _energy(E: float) -> str:
 
 
 def ringing_text(c: Comparison) -> str:
-    """Where the energy went: the causal rod rings for ever after the last separation."""
+    """The causal rod after the last separation: it rings for ever, and its rest mass is more than M."""
     r = c.ringing
-    internal = r.rest_mass - 1.0
-    return (f"Where the energy went: after the last separation (t = {in_l(r.t_last)} in S) the causal rod rings for "
-            f"ever, its motion repeating every 2L of its chart time (the time its material clocks keep when "
-            f"unstressed). Over each period every material point advances by the same (Δt, Δx) = "
-            f"({in_l(r.dt)}, {in_l(_zero(r.dx, r.dt))}) in S, so the rod carries (E, p) = (M/2L)(Δt, Δx) = "
-            f"({numeral(r.E)} M c², {numeral(_zero(r.p, r.E))} M c). Its rest mass √(E² − p²) = {numeral(r.rest_mass)} M "
-            f"is more than M: {numeral(internal)} M c² is internal energy, the energy of its vibration, which a rigid "
-            f"rod cannot hold. Its centre moves at Δx/Δt = {in_c(_zero(r.velocity, 1.0))} in S (the rigid rod at "
-            f"{in_c(_zero(r.rigid_velocity, 1.0))}), and in its own rest frame one period lasts √(Δt² − Δx²) = "
-            f"{in_l(2.0 * r.rest_mass)}, 2L times its rest mass in M.")
+    return (f"After the last separation (t = {in_l(r.t_last)} in S) the causal rod rings for ever, its motion "
+            f"repeating every 2L of its chart time (the time its material clocks keep when unstressed). Over each "
+            f"period every material point advances by the same (Δt, Δx) = ({in_l(r.dt)}, {in_l(_zero(r.dx, r.dt))}) "
+            f"in S, so the rod carries (E, p) = (M/2L)(Δt, Δx) = ({numeral(r.E)} M c², "
+            f"{numeral(_zero(r.p, r.E))} M c). Its rest mass √(E² − p²) = {numeral(r.rest_mass)} M is more than M: the "
+            f"energy of its vibration, which a rigid rod cannot hold, counts in it. Its centre moves at Δx/Δt = "
+            f"{in_c(_zero(r.velocity, 1.0))} in S (the rigid rod at {in_c(_zero(r.rigid_velocity, 1.0))}), and in its "
+            f"own rest frame one period lasts √(Δt² − Δx²) = {in_l(2.0 * r.rest_mass)}, 2L times its rest mass in M.")
+
+
+def energy_text(c: Comparison) -> str:
+    """Where the energy went, frame by frame: what the particles lose = the rise of the causal rod's rest mass
+    (internal energy) + the change of its bulk kinetic energy; all bulk kinetic energy for the rigid rod."""
+    parts = []
+    for e in c.energy:
+        parts.append(f"in {frame_name(e.frame)} the particles lose {numeral(_zero(e.lost_causal, 1.0))} M c² = "
+                     f"{numeral(e.internal)} M c² of internal energy + {_signed_energy(e.bulk_change)} of bulk "
+                     f"kinetic energy (from {numeral(_zero(e.bulk_before, 1.0))} to {numeral(_zero(e.bulk_after, 1.0))} "
+                     f"M c²)")
+    rigid = listed([f"{numeral(_zero(e.lost_rigid, 1.0))} M c² in {frame_name(e.frame)}" for e in c.energy])
+    text = "; ".join(parts)
+    return (f"Where the energy went. From before the first impact to after the last separation, {text}. The rise of "
+            f"the rest mass is the same in every frame; the bulk kinetic energy, and so what the particles lose, is "
+            f"not. The rigid rod\u2019s rest mass stays M, so what the particles lose to it, {rigid}, is all bulk "
+            f"kinetic energy.")
+
+
+def _signed_energy(E: float) -> str:
+    """A change of energy in a sum: 0.0172 M c², or (−0.0523) M c²."""
+    text = numeral(_zero(E, 1.0))
+    return f"({text}) M c²" if text.startswith("\u2212") else f"{text} M c²"
 
 
 def _zero(x: float, scale: float) -> float:
@@ -111,18 +132,25 @@ def _pair(em: EnergyMomentum, scale: float) -> str:
 
 
 def stress_text(c: Comparison) -> str:
-    """The rigid ledger's hidden part against the causal rod's stress part on one slice."""
+    """Hidden momentum compared like with like on one slice: the rigid ledger's hidden part (the total less every
+    body's motion) against the causal rod's total less its material points' rest-mass motion."""
     s = c.stress
     scale = s.total.E
     where = f"the slice {time_name(s.frame)} = {in_l(s.t)} of {frame_name(s.frame)}"
+    unshown = EnergyMomentum(0.0, s.unshown[0], s.unshown[1])
+    motion = EnergyMomentum(0.0, s.motion[0], s.motion[1])
     hidden = _zero(s.hidden.E, scale) != 0.0 or _zero(s.hidden.p, scale) != 0.0
-    rigid = (f"On {where} the rigid ledger\u2019s hidden part is {_pair(s.hidden, scale)}: what the rigid rod\u2019s "
-             f"stress carries, known only as what the bodies\u2019 motion is missing." if hidden else
-             f"On {where} the rigid ledger has no hidden part.")
-    return (f"The hidden momentum made local. {rigid} The causal rod has no hidden part: its ledger adds up on every "
-            f"slice. On the same slice its (E, p) is its matter part, {_pair(s.matter, scale)}, plus its stress part, "
-            f"{_pair(s.stress, scale)}, which the pressure carries where the rod is compressed (p(uu − η) in its "
-            f"stress-energy): the stress part is the real, local version of the rigid model\u2019s hidden momentum.")
+    rigid = (f"the rigid ledger\u2019s hidden part is {_pair(s.hidden, scale)}: the total less what the particles\u2019 "
+             f"and the rod\u2019s material points\u2019 motion carries, each point its share of M at its own "
+             f"velocity. It is the rigid rod\u2019s stress, which takes an impulse across the rod at once"
+             if hidden else "the rigid ledger has no hidden part")
+    return (f"The hidden momentum, like with like. On {where} {rigid}. Made the same way for the causal rod, its "
+            f"material points\u2019 rest mass moving at their velocities carries (M/L)∫(cosh ψ, sinh ψ)dσ = "
+            f"{_pair(motion, scale)}, ψ the rapidity of the point σ on the slice; the rod as a whole carries "
+            f"{_pair(EnergyMomentum(0.0, *s.rod), scale)}, so {_pair(unshown, scale)} is not shown by its material "
+            f"points\u2019 motion: the energy of its compression and the momentum its stress carries, where the fronts "
+            f"have reached, real and local. The two need not be alike: the rigid rod\u2019s is there at once along the "
+            f"whole rod, the causal rod\u2019s only where the fronts have come.")
 
 
 def events_table(causal, frame: Frame, blank: bool = False) -> Table:
@@ -144,7 +172,7 @@ def comparison(c: Comparison, causal, frames: tuple[Frame, ...],
     """The comparison's blocks in the scenario's section, and those a worksheet's answer key prints (the told
     paragraphs and the filled tables: a worksheet keeps only the introduction and blank tables before its key)."""
     told: list[Block] = [Paragraph(far_end_text(c)), Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)),
-                         Paragraph(stress_text(c))]
+                         Paragraph(energy_text(c)), Paragraph(stress_text(c))]
     filled: list[Block] = [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
     if not worksheet:
         return [Heading(HEADING, 2), Paragraph(INTRODUCTION), *told, *filled], []

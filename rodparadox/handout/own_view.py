@@ -35,8 +35,8 @@ def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
                          "and the far end's runs on, as if it knew of the impact at once. "
                          + (f"Turns: {', '.join(turns)}. " if turns and tell else "")
                          + ("" if turns else "No turns: the rod never moves. ")
-                         + ("Hatched: beyond the pivot during its turn, where the rod's own time gives an event no "
-                            "single place (the rest frames before and after the turn both reach it, or neither does)."
+                         + ("Hatched: beyond the pivot during its turn, where the rod's own time places an event "
+                            "twice, once on a line of the rest frame before the turn and once on one after it."
                             if turns else ""))
         else:
             parts.append("Causal rod: the chart in which every material point stands still and every light ray runs "

@@ -10,8 +10,8 @@ from typing import Sequence
 
 from rodparadox.handout.causal_reading import Comparison
 from rodparadox.handout.document import Question
-from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, in_c, in_l, listed, summand,
-                                      time_name, told_claim, told_number)
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, in_c, in_l, listed, signed_numeral,
+                                      summand, time_name, told_claim, told_number)
 from rodparadox.handout.worksheet_frames import Asked, gamma
 from rodparadox.numbers import impact_name
 from rodparadox.physics.frames import frame_name
@@ -36,7 +36,7 @@ def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
              if f.t_rigid is not None else "")
     asks = [told_number(f"when light from {C} reaches the {f.far} end", f.t_light)]
     if f.by_light:
-        th = abs(f.rapidity_struck)
+        th = f.rapidity_struck  # signed: negative where the struck end is pushed left
         text = (f"{start} When does light from {C} reach the {f.far} end? When does the {f.far} end of the rigid rod "
                 f"start to move, and when that of the causal rod, whose sound travels at c? The compression front "
                 f"comes back from the free {f.far} end as tension, so that end\u2019s rapidity jumps to twice the struck "
@@ -44,10 +44,11 @@ def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
         answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
                   f"The causal rod\u2019s {f.far} end feels nothing until the front, at speed c, arrives: it starts at "
                   f"t = {in_l(f.t_causal, ANSWER_DIGITS)}, exactly when light does.",
-                  f"The struck end takes {f.contact.particle}\u2019s velocity at once, rapidity θ₀ = artanh "
-                  f"{answer_numeral(math.tanh(th))} = {answer_numeral(th)}; the far end starts at rapidity 2θ₀ = "
-                  f"{answer_numeral(2 * th)}, velocity tanh 2θ₀ = {in_c(f.u_causal, ANSWER_DIGITS)} "
-                  f"(= 2u/(1 + u²) with u = {answer_numeral(math.tanh(th))}).")
+                  f"The struck end takes {f.contact.particle}\u2019s velocity at once, u = "
+                  f"{in_c(math.tanh(th), ANSWER_DIGITS)} in S, rapidity θ₀ = artanh u = "
+                  f"{signed_numeral(th, ANSWER_DIGITS)}; the far end starts at rapidity 2θ₀ = "
+                  f"{signed_numeral(2 * th, ANSWER_DIGITS)}, velocity tanh 2θ₀ = {in_c(f.u_causal, ANSWER_DIGITS)} "
+                  f"(= 2u/(1 + u²)).")
         asks += [told_number(f"the causal far end's starting velocity", f.u_causal)]
         return Asked(text, answer, tuple(asks))
     D = impact_name(f.own.label)
@@ -100,29 +101,31 @@ def question_ringing(c: Comparison) -> Asked:
 
 
 def question_stress(c: Comparison) -> Asked:
-    """The causal rod's stress momentum on a slice, from the total less the particles' and the matter part's."""
+    """Like with like: the causal rod's momentum beyond its material points' motion on a slice (the total less the
+    particles' and (M/L)∫ sinh ψ dσ), against the rigid rod's hidden momentum on the same slice."""
     s = c.stress
     symbol, time = frame_name(s.frame), time_name(s.frame)
     scale = s.total.E
     particles = [(n, _zero(em.p, scale)) for n, em in s.particles]
-    matter, stress, hidden = _zero(s.matter.p, scale), _zero(s.stress.p, scale), _zero(s.hidden.p, scale)
+    motion, hidden = _zero(s.motion[1], scale), _zero(s.hidden.p, scale)
+    unshown = _zero(s.total.p - sum(q for _, q in particles) - motion, scale)
     slice_name = f"{time} = {in_l(s.t, ANSWER_DIGITS)} of {symbol}"
     text = (f"On the slice {slice_name} the particles carry momentum "
-            f"{listed([f'{answer_numeral(q)} M c ({n})' for n, q in particles])}, and the causal rod\u2019s matter (its "
-            f"material points\u2019 rest-frame energy moving with them) {answer_numeral(matter)} M c. From the bodies\u2019 "
-            f"total momentum in {symbol} before the first impact (the set-up), how much momentum does the causal "
-            f"rod\u2019s stress carry on this slice? What is its counterpart in the rigid rod\u2019s ledger?")
-    terms = [q for _, q in particles] + [matter]
-    answer = (f"Before the first impact the bodies\u2019 momentum in {symbol} is {answer_numeral(s.total.p)} M c, and it "
-              f"is conserved.",
-              f"The stress carries {answer_numeral(s.total.p)} − ({' + '.join(summand(q) for q in terms)}) = "
-              f"{answer_numeral(stress)} M c: the pressure of the compressed rod, moving, carries momentum "
-              f"(p(uu − η) in its stress-energy).",
-              f"In the rigid rod the same role is played by the hidden part of the ledger"
-              + (f", {answer_numeral(hidden)} M c on this slice" if hidden != 0.0 else
-                 ", zero on this slice")
-              + ": the stress part is its real, local version.")
-    asks = [told_number(f"the causal rod's stress momentum on {slice_name}", stress),
+            f"{listed([f'{answer_numeral(q)} M c ({n})' for n, q in particles])}, and the causal rod\u2019s material "
+            f"points, each its share of M moving at its own velocity, (M/L)∫ sinh ψ dσ = {answer_numeral(motion)} M c. "
+            f"From the bodies\u2019 total momentum in {symbol} before the first impact (the set-up), how much momentum "
+            f"does the causal rod carry on this slice beyond its material points\u2019 motion, and what carries it? "
+            f"Is it the same as the rigid rod\u2019s hidden momentum on this slice?")
+    terms = [q for _, q in particles] + [motion]
+    answer = (f"Before the first impact the bodies\u2019 momentum in {symbol} is {answer_numeral(s.total.p)} M c, and "
+              f"it is conserved.",
+              f"Beyond its material points\u2019 motion the causal rod carries {answer_numeral(s.total.p)} − "
+              f"({' + '.join(summand(q) for q in terms)}) = {answer_numeral(unshown)} M c: the momentum of its "
+              f"stress, where the fronts have compressed it (p(uu − η) in its stress-energy), real and local.",
+              f"The rigid rod\u2019s hidden momentum on this slice, made the same way (the total less every body\u2019s "
+              f"motion), is {answer_numeral(hidden)} M c: not the same. The rigid rod\u2019s stress takes an impulse "
+              f"across the whole rod at once, the causal rod\u2019s only as far as the fronts have come.")
+    asks = [told_number(f"the causal rod's momentum beyond its material points' motion on {slice_name}", unshown),
             told_number(f"the bodies' total momentum in {symbol}", s.total.p)]
     if hidden != 0.0:
         asks.append(told_number(f"the rigid rod's hidden momentum on {slice_name}", hidden))
