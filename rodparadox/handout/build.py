@@ -270,7 +270,7 @@ def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: 
     compared: tuple[list[Block], list[Block]] = ([], [])
     numbers = compare(history, causal, frames) if causal is not None else None
     if numbers is not None:
-        compared = comparison(numbers, causal, frames, worksheet)
+        compared = comparison(numbers, history, causal, frames, stem, worksheet, equal_scales)
         if not worksheet:
             blocks += compared[0]
     if worksheet:

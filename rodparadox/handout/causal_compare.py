@@ -13,12 +13,15 @@ import math
 from dataclasses import replace
 
 from rodparadox.handout.causal_reading import Comparison
-from rodparadox.handout.document import Block, Heading, Paragraph, Table
+from rodparadox.handout.document import Block, Cell, DiagramBlock, Heading, Paragraph, Strips, Table
+from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST
 from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral, summand, time_name
 from rodparadox.numbers import impact_name
-from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word
+from rodparadox.numbers import exact
+from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, frame_symbol, frame_word, time_window
 from rodparadox.physics.ledger import EnergyMomentum
 from rodparadox.tables import build as tables
+from rodparadox.tables import causal_ledger
 
 HEADING = "The causal rod beside the rigid rod"
 
@@ -26,17 +29,71 @@ INTRODUCTION = (
     "The rigid rod above is the paper\u2019s idealisation. The causal rod is the stiffest rod relativity allows: "
     "sound in it travels at c, so the push of an impact spreads through it as a front of compression at the speed "
     "of light, and a particle rides with the end it strikes, pushed by the end\u2019s compression, until that "
-    "compression has gone. Here the same particles, at the same speeds, strike "
-    "a causal rod of the same rest mass M and length L; every number below is computed from its run. The diagrams, "
-    "the rod at successive instants and the tables above are of the rigid rod: this handout does not draw the "
-    "causal rod yet.")
-#: what the introductions say of the causal rod's drawing, and what they say instead where the rod's own view after
-#: the diagram draws it (`own_view.with_rod_views`)
-NOT_DRAWN = "does not draw the causal rod yet."
-DRAWN_IN_OWN_VIEW = "draws the causal rod only in the rod\u2019s own view, after the diagram."
-#: a worksheet shows the diagram and blank tables of the rigid rod (the strips wait for the key)
-WORKSHEET_INTRODUCTION = INTRODUCTION.replace("The diagrams, the rod at successive instants and the tables above",
-                                              "The diagram and the tables above").replace("this handout", "this sheet")
+    "compression has gone. Here the same particles strike a causal rod of the same rest mass M and length L.")
+#: what the comparison shows, after the introduction (a worksheet's key shows it; the worksheet asks first)
+SHOWN = ("The diagram below draws both rods in the same frames, the rigid rod in the upper row and the causal rod in "
+         "the lower, each frame\u2019s two panels on one scale; then the causal rod at successive instants, its "
+         "contacts and separations, and its ledger.")
+WORKSHEET_INTRODUCTION = INTRODUCTION + (" Its diagram and numbers are in the answer key; the questions below ask "
+                                         "what you can work out first.")
+
+
+def comparison_caption(frames: tuple[Frame, ...], v: float) -> str:
+    """The two rows' caption: which panel is which rod in which frame, and how the causal rod is drawn."""
+    n = len(frames)
+    letters = PANEL_LETTERS
+    upper = ", ".join(f"({letters[k]})" for k in range(n))
+    lower = ", ".join(f"({letters[n + k]})" for k in range(n))
+    named = listed([frame_name(f) for f in frames])
+    return (f"At v = {exact(v)}, in {named}: {upper} the rigid rod; {lower} the causal rod, on the same particles. "
+            f"Each frame\u2019s two panels have one scale. The causal rod\u2019s world-sheet is shaded by its "
+            f"compression; light-speed fronts cross it; a filled dot is a contact, where a particle starts to ride an "
+            f"end, a hollow one its separation (A′₁ ends A₁).")
+
+
+def causal_strip_times(causal, frame: Frame) -> tuple[float, ...]:
+    """Six to eight instants of the frame's time for the causal rod's strips, earliest first, in its time window:
+    before the first contact, at each contact and separation, between them, and after the last."""
+    t_lo, t_hi = time_window(causal, frame)
+    events = sorted(i.event.time_in(frame.rapidity) for i in causal.impacts)
+    events = [t for t in events if t_lo < t < t_hi]
+    candidates = [(0, 0.5 * (t_lo + events[0])), (0, 0.5 * (events[-1] + t_hi))] if events else []
+    candidates += [(1, t) for t in events] + [(2, 0.5 * (a + b)) for a, b in zip(events, events[1:])]
+    close = STRIP_SEPARATION * (t_hi - t_lo)
+    chosen: list[float] = []
+    for _, t in sorted(candidates):
+        if all(abs(t - c) > close for c in chosen) and len(chosen) < STRIPS_MOST:
+            chosen.append(t)
+    times = sorted(chosen)
+    while len(times) < STRIPS_FEWEST:  # halve the widest gap, the window's ends as bounds
+        bounds = [t_lo] + times + [t_hi]
+        k = max(range(len(bounds) - 1), key=lambda j: bounds[j + 1] - bounds[j])
+        times = sorted(times + [0.5 * (bounds[k] + bounds[k + 1])])
+    return tuple(times)
+
+
+def causal_strips_caption(frame: Frame, times: tuple[float, ...], L: float) -> str:
+    symbol = frame_name(frame)
+    instants = listed([numeral(t / L) for t in times])
+    return (f"The causal rod and the particles in {symbol} at {time_name(frame)} = {instants} (in units of L), "
+            f"earliest first. The bar runs from the rod\u2019s left end to its right end, shaded by the velocity in "
+            f"{symbol} of each of its material points: it changes only where a front has passed, so the far end "
+            f"stays as it was until the front from an impact reaches it; the dots are the particles.")
+
+
+def ledger_table(causal, frame: Frame) -> Table:
+    """The causal rod's ledger in the frame (`tables.causal_ledger`), its stress row and note in the comparison's
+    words: the stress part is what the rod's material points' motion leaves out, not the rigid rod's hidden part."""
+    table = causal_ledger.ledger_table(causal, frame)
+    rows = tuple(tuple(Cell("rod, stress") if c.text == causal_ledger.STRESS else c for c in row)
+                 for row in table.rows)
+    total = causal.initial_total(frame.rapidity)
+    note = (f"E in M c², p in M c, M the rod\u2019s mass. The rod\u2019s (E, p) is split into its matter part (its "
+            f"rest-frame energy density moving with it, elastic energy included) and its stress part (what its "
+            f"pressure carries, p(uu − η) in its stress-energy, across the slice). Particles, matter and stress add "
+            f"up to the total before the first contact, E = {tables.fixed(total.E)}, p = {tables.fixed(total.p)}: "
+            f"nothing is hidden. X′₁ is the separation that ends contact X₁.")
+    return replace(table, rows=rows, notes=(note,))
 
 
 def far_end_text(c: Comparison) -> str:
@@ -167,15 +224,35 @@ def table_text(frame: Frame) -> str:
             f"contact, not at its ends) and the struck end\u2019s, just before and just after.")
 
 
-def comparison(c: Comparison, causal, frames: tuple[Frame, ...],
-               worksheet: bool = False) -> tuple[list[Block], list[Block]]:
-    """The comparison's blocks in the scenario's section, and those a worksheet's answer key prints (the told
-    paragraphs and the filled tables: a worksheet keeps only the introduction and blank tables before its key)."""
-    told: list[Block] = [Paragraph(far_end_text(c)), Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)),
-                         Paragraph(energy_text(c)), Paragraph(stress_text(c))]
-    filled: list[Block] = [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
+def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: str,
+               worksheet: bool = False, equal_scales: bool = False) -> tuple[list[Block], list[Block]]:
+    """The comparison's blocks in the scenario's section, and those a worksheet's answer key prints: the two rods'
+    diagram (same frames, one scale per frame), the causal rod's strips, the told paragraphs, its contacts and
+    separations and its ledger. A worksheet keeps only the introduction before its key: the causal rod's numbers
+    come from solving its wave equation, which a student cannot do, and its first contacts are the rigid rod's
+    first impacts, whose cells the worksheet asks."""
+    v = causal.scenario.v
+    drawn: list[Block] = [DiagramBlock(f"{stem}_compared", rigid, frames, comparison_caption(frames, v),
+                                       equal_scales=equal_scales, compared=causal)]
+    for f in frames:
+        times = causal_strip_times(causal, f)
+        drawn += [Heading(f"The causal rod at successive instants of {frame_name(f)}", 2),
+                  Strips(f"{stem}_causal_strips_{frame_word(f)}", causal, f, times,
+                         causal_strips_caption(f, times, causal.scenario.L))]
+    told: list[Block] = [Heading("What the comparison shows", 2), Paragraph(far_end_text(c)),
+                         Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)), Paragraph(energy_text(c)),
+                         Paragraph(stress_text(c))]
+    filled: list[Block] = [Heading("The causal rod\u2019s numbers", 2)]
+    filled += [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
+    filled += [b for f in frames for b in (Paragraph(ledger_text(f)), ledger_table(causal, f))]
     if not worksheet:
-        return [Heading(HEADING, 2), Paragraph(INTRODUCTION), *told, *filled], []
-    # the causal rod's contacts and separations come from solving its wave equation, which a student cannot fill in,
-    # and its first contacts are the rigid rod's first impacts, whose cells the worksheet asks: the key prints them
-    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)], [Heading(HEADING, 2), *told, *filled]
+        return [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), *drawn, *told, *filled], []
+    return ([Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)],
+            [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), *drawn, *told, *filled])
+
+
+def ledger_text(frame: Frame) -> str:
+    symbol, time = frame_name(frame), time_name(frame)
+    return (f"The causal rod\u2019s ledger in {symbol}: at each contact and separation, on the slice {time} = "
+            f"constant through it, the energy E and momentum p of each particle and of the rod\u2019s matter and "
+            f"stress, which add up to the total before the first contact.")

@@ -7,8 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Sequence
 
-from rodparadox.handout.causal_compare import DRAWN_IN_OWN_VIEW, NOT_DRAWN
-from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, RodViewBlock
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, RodViewBlock
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.rod_view import chart_of
 
@@ -73,8 +72,5 @@ def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
             at = next((k for k, b in enumerate(blocks) if isinstance(b, DiagramBlock)), len(blocks) - 1)
             caption = rod_view_caption(histories, tell=not handout.worksheet)
             blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), caption))
-            if len(histories) > 1:  # the causal rod drawn after all: the comparison's introduction says where
-                blocks = [Paragraph(b.text.replace(NOT_DRAWN, DRAWN_IN_OWN_VIEW)) if isinstance(b, Paragraph) else b
-                          for b in blocks]
         sections.append(replace(section, blocks=tuple(blocks)))
     return replace(handout, sections=tuple(sections))

@@ -436,10 +436,10 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
         # no title above the panels: the section's heading and the caption say what it shows; a worksheet's without
         # the lines of simultaneity through the impacts (which impacts share one is asked)
         untitled = render.Options(titled=False, equal_scales=block.equal_scales, simultaneity=block.tell)
-        _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
+        _, height = render.natural_size(block.drawn, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
-            block.retitle(render.draw_into(target, block.history, block.frames, style.name, untitled))
+            block.retitle(render.draw_into(target, block.drawn, block.frames, style.name, untitled))
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         return StripsSet(block, style.name, caption, pages, 1.2 * t.body, room)
