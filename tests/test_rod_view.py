@@ -205,11 +205,12 @@ def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_ca
     # a worksheet's goes to its answer key, before the section's explanation: the rod's own lines of simultaneity
     # tell which impacts it takes together, which the questions ask
     from rodparadox.handout.document import Heading
-    key = (Heading("Answer key"), Heading("What the diagram shows", 2), Paragraph("explanation"))
-    worksheet = with_rod_views(Handout("t", (Section("intro", "i", ()), section), True, key), {"fig2": (h,)})
+    key = (Heading("Answer key"), Heading("Questions and answers", 2), Paragraph("explanation"))
+    worksheet = with_rod_views(Handout("t", (Section("introduction", "i", ()), section), True, key), {"fig2": (h,)})
     assert worksheet.sections[1].blocks == section.blocks
     assert [type(b).__name__ for b in worksheet.answer_key] == ["Heading", "Heading", "RodViewBlock", "Heading",
                                                                 "Paragraph"]
+    assert worksheet.answer_key[1].text == "The rod\u2019s own view"
 
 
 def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():

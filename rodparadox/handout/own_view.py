@@ -11,8 +11,8 @@ from rodparadox.handout.document import DiagramBlock, Handout, Heading, RodViewB
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.rod_view import chart_of
 
-#: the heading of the answer key's explanation, before which a worksheet's key shows the rod's own view
-SHOWN = "What the diagram shows"
+#: the heading of a section's worked answers in a worksheet's key, before which the key shows the rod's own view
+ANSWERED = "Questions and answers"
 ROD_VIEW = "The rod\u2019s own view"
 
 
@@ -53,12 +53,13 @@ def _pivot_label(history, turn) -> str:
 
 def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
     """The handout with the rod's own view after the first diagram of each section named in `views` (section
-    name -> its histories, the rigid rod first). A worksheet's go to its answer key, before each section's "What the
-    diagram shows": the rod's lines of simultaneity tell which impacts it takes together, which the questions ask."""
+    name -> its histories, the rigid rod first). A worksheet's go to its answer key, before each section's
+    questions and answers: the rod's lines of simultaneity tell which impacts it takes together, which they ask."""
     if handout.worksheet:
         key = list(handout.answer_key)
-        told = [k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == SHOWN]
-        for at, section in reversed(list(zip(told, handout.sections[1:]))):
+        told = [k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == ANSWERED]
+        scenarios = [s for s in handout.sections if s.name != "introduction"]
+        for at, section in reversed(list(zip(told, scenarios))):
             histories = views.get(section.name)
             if histories:
                 key.insert(at, RodViewBlock(f"{section.name}_rod_view", tuple(histories), rod_view_caption(histories)))
