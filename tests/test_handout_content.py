@@ -595,6 +595,7 @@ def test_headings_are_the_scenarios_titles_without_internal_names(name):
 def test_the_first_section_states_the_paradox_cites_franklin_and_calls_the_rod_an_idealisation():
     first = build([("fig2", history("fig2", 0.6))]).sections[0]
     text = " ".join(b.text for b in first.blocks if isinstance(b, Paragraph))
-    assert "J. Franklin, “The ‘Sears paradox’”" in text  # the paper's own title (The `Sears paradox')
+    # the paper's own title (The `Sears paradox'), author and affiliation, in full; no journal the copy does not give
+    assert "Jerrold Franklin, “The ‘Sears paradox’” (Department of Physics, Temple University, Philadelphia)" in text
     assert "F. W. Sears" in text and "hidden momentum" in text
     assert "idealisation" in text and "before light from the impact could reach it" in text

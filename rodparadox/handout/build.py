@@ -90,9 +90,10 @@ def neutral_heading(history: History, with_speed: bool = False) -> str:
 
 # --- the first section: the paradox and its resolution -----------------------------------------------------------
 
-#: the paper this tool implements, as its own text gives it (title, author, affiliation; the copy carries no journal
-#: or arXiv details)
-FRANKLIN = "J. Franklin, \u201cThe \u2018Sears paradox\u2019\u201d (Department of Physics, Temple University)"
+#: the paper the handout follows, in full as its own text gives it (author, title, affiliation); the copy seen carries
+#: no journal, year or arXiv number, so none is cited, nor Sears's own paper, which it cites without details
+FRANKLIN = ("Jerrold Franklin, \u201cThe \u2018Sears paradox\u2019\u201d (Department of Physics, Temple University, "
+            "Philadelphia)")
 
 PARADOX = (
     "F. W. Sears proposed a paradox about forces on a rigid body in special relativity. A rigid rod at rest in a "
