@@ -79,18 +79,20 @@ def test_unknown_paper_or_style_is_refused_in_one_sentence():
 # --- pages: how many, and where they break ---------------------------------------------------------------
 
 def test_page_count_of_a_handout_of_known_length():
-    """Three sections (each level-1 heading after the first starts a page), a page break in the second, and a
-    worksheet's answer key on a page of its own: 5 pages; a page break at the top of a page adds none."""
+    """Three sections (a level-1 heading after the first starts a page only where less than a third of the page is
+    left: "two" runs on after "one"), a page break in the second, and a worksheet's answer key on a page of its own:
+    4 pages; a page break at the top of a page adds none."""
     sections = [Section("one", "one", (Heading("One"), Paragraph(LOREM))),
                 Section("two", "two", (Heading("Two"), Paragraph(LOREM), PageBreak(), Paragraph(LOREM))),
                 Section("three", "three", (PageBreak(), Heading("Three"), Paragraph(LOREM)))]
     key = (Heading("Answer key"), Question(1, "Why?", ("Because.",)))
     sheet = text_only(*sections, worksheet=True, key=key)
     texts = pages_text(to_pdf(sheet))
-    assert len(texts) == 5
-    assert [t.split("\n")[0][:17] for t in texts] == ["One", "Two", "The rod is struck", "Three", "Answer key"]
+    assert len(texts) == 4
+    assert [t.split("\n")[0][:17] for t in texts] == ["One", "The rod is struck", "Three", "Answer key"]
+    assert "\nTwo\n" in texts[0]
     for k, text in enumerate(texts, start=1):
-        assert f"page {k} of 5" in text and "A test handout" in text
+        assert f"page {k} of 4" in text and "A test handout" in text
 
 
 def test_paragraphs_fill_pages_and_are_split_between_lines_only():

@@ -31,9 +31,9 @@ INTRODUCTION = (
     "of light, and a particle rides with the end it strikes, pushed by the end\u2019s compression, until that "
     "compression has gone. Here the same particles strike a causal rod of the same rest mass M and length L.")
 #: what the comparison shows, after the introduction (a worksheet's key shows it; the worksheet asks first)
-SHOWN = ("The diagram below draws both rods in the same frames, the rigid rod in the upper row and the causal rod in "
-         "the lower, each frame\u2019s two panels on one scale; then the causal rod at successive instants, its "
-         "contacts and separations, and its ledger.")
+SHOWN = ("The diagram draws both rods in the same frames, the rigid rod in the upper row and the causal rod in the "
+         "lower, each frame\u2019s two panels on one scale; what it shows follows it, then the causal rod at successive "
+         "instants, its contacts and separations, and its ledger.")
 WORKSHEET_INTRODUCTION = INTRODUCTION + (" Its diagram and numbers are in the answer key; the questions below ask "
                                          "what you can work out first.")
 
@@ -232,8 +232,9 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     come from solving its wave equation, which a student cannot do, and its first contacts are the rigid rod's
     first impacts, whose cells the worksheet asks."""
     v = causal.scenario.v
-    drawn: list[Block] = [DiagramBlock(f"{stem}_compared", rigid, frames, comparison_caption(frames, v),
-                                       equal_scales=equal_scales, compared=causal)]
+    diagram = DiagramBlock(f"{stem}_compared", rigid, frames, comparison_caption(frames, v), equal_scales=equal_scales,
+                           compared=causal)
+    drawn: list[Block] = []
     for f in frames:
         times = causal_strip_times(causal, f)
         drawn += [Heading(f"The causal rod at successive instants of {frame_name(f)}", 2),
@@ -245,10 +246,11 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     filled: list[Block] = [Heading("The causal rod\u2019s numbers", 2)]
     filled += [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
     filled += [b for f in frames for b in (Paragraph(ledger_text(f)), ledger_table(causal, f))]
+    # the diagram, then what it shows (text that may fill a page the diagram misses), the strips, the numbers
+    shown = [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), diagram, *told, *drawn, *filled]
     if not worksheet:
-        return [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), *drawn, *told, *filled], []
-    return ([Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)],
-            [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), *drawn, *told, *filled])
+        return shown, []
+    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)], shown
 
 
 def ledger_text(frame: Frame) -> str:

@@ -98,6 +98,18 @@ class Break(Measured):
             pages.new_page()
 
 
+class SectionBreak(Break):
+    """Before a section's heading: a new page only where less than `room` of the page is left (a part of the text
+    height), so that no page is left more than that empty where a section ends; else the section runs on."""
+
+    def __init__(self, room: float):
+        self.least = room
+
+    def set(self, pages: Pages) -> None:
+        if not pages.at_top and pages.room < self.least * pages.text_height:
+            pages.new_page()
+
+
 class TableSet(Measured):
     """A table measured: its type size (shrunk if the natural width exceeds the text width), column widths and
     positions, the height of its parts; `set` places it whole, or split between groups of rows."""
