@@ -17,6 +17,8 @@ from .common import (BadInput, before_matplotlib, format_option, frame_option, o
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
+#: how a file name says which rods a handout compares: --rod causal and --rod both give the same document
+ROD_WORDS = {"causal": "compared", "both": "compared"}
 #: handouts are photocopied in black and white
 HANDOUT_STYLE = "print"
 PAPER_NAMES = ("a4", "letter")
@@ -83,8 +85,9 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE, frames=planned.frames_with_rod)
-    rod = rod_asked()  # named as plot names: fig1_causal_handout.pdf, fig1_both_handout.pdf
-    extras = ([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else [])
+    rod = rod_asked()
+    # the rods compared, named once (fig2_handout_compared.pdf; `both` beside --frame both,rod read twice)
+    extras = ([ROD_WORDS[rod]] if rod in ROD_WORDS else []) + ([paper] if paper != HANDOUT_PAPER else [])
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=extras + (["samescale"] if equal_scales else []))
     from rodparadox.handout.build import Item

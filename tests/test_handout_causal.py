@@ -191,12 +191,12 @@ def test_the_worksheet_asks_and_the_key_answers():
 
 
 def test_handout_takes_both_rods_and_names_the_file(tmp_path, monkeypatch):
-    """`handout --rod both` writes outputs/NAME_handout_both (here its LaTeX: the PDF's pages are drawn in
+    """`handout --rod both` writes outputs/NAME_handout_compared (here its LaTeX: the PDF's pages are drawn in
     test_worksheet_tells_nothing) holding the comparison; `--rod causal` is taken too."""
     monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(main, ["handout", "single", "--rod", "both", "--format", "tex"])
     assert result.exit_code == 0, result.output
-    folder = tmp_path / "outputs" / "single_handout_both"
+    folder = tmp_path / "outputs" / "single_handout_compared"
     tex = (folder / "handout.tex").read_text()
     assert HEADING in tex and "single_compared.pdf" in tex  # the two rods' diagram
     assert (folder / "single_causal_events_moving.tex").exists()

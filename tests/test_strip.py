@@ -136,3 +136,26 @@ def test_update_strip_moves_the_bar_to_the_exact_rod_at_another_instant():
         assert b == pytest.approx(h.worldline("rod_right").seen_from(eta).event_at_time(t).x, abs=1e-11)
         said = artists.readout.get_text()
         assert said.startswith("$t$\N{PRIME} = ") and said.endswith(" $L$ in S\N{PRIME}"), said
+
+
+def test_the_parts_of_a_block_split_between_pages_keep_one_tick_step_and_one_axes_width():
+    """Issue 24: a block of strips split over two pages changed its tick step (each part's room was made for its
+    own labels, so its axes' width, and so the step, differed). With `span`, the whole block's."""
+    from matplotlib.figure import Figure
+
+    from rodparadox import render
+    from rodparadox.handout.strips import strip_times
+    from rodparadox.physics.engine import run
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.io.scenario import load
+
+    h = run(load("while_turning").with_overrides(v=0.95))
+    frame = paper_frames(0.95)[1]
+    times = strip_times(h, frame)
+    parts = []
+    for part in (times[:2], times[2:]):
+        figure = Figure(figsize=(6.5, 1.2 * len(part) + 1.2))
+        with render.style_context("print"):
+            rows = render.draw_strips_into(figure, h, frame, part, "print", span=times)
+        parts.append((tuple(rows[0].get_xticks()), rows[0].get_position().x0, rows[0].get_position().x1))
+    assert parts[0] == parts[1]

@@ -272,8 +272,9 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
     scale of the whole history, `render.colour_scale`, so a colour is the same velocity in every row and
     in the animation). Fills the target (a Figure or SubFigure the caller has sized).
 
-    `span`: the instants whose rod and particles the x axis spans (default `times`): the parts of one block set on
-    two pages pass the whole block's, so they share one x axis.
+    `span`: the instants whose rod and particles the x axis spans, and whose labels its room is made for (default
+    `times`): the parts of one block set on two pages pass the whole block's, so they share one x axis and one tick
+    step.
 
     Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid
     `strips-colour-bar`. A target too small for the rows, their labels and the colour bar is refused
@@ -296,7 +297,10 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
         strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
         labels, notes = _stills_labels(strips, frame, L)
-        room = _stills_room(labels, notes, fs)
+        spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
+        # the room for the whole block's labels: the parts of a block split between pages keep one axes width, and
+        # so one tick step
+        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L)), fs)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -306,7 +310,6 @@ def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame,
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
         # the x range: every rod end and particle at these instants, with a margin
-        spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
         xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
