@@ -118,8 +118,7 @@ def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True
     for frame in (rest_frame(), moving_frame(s.v)):
         for t, group in r.instants(frame):
             if len(group) > 1:
-                shared.append(f"{impact_names(group)} share one {styles[frame.name]} line, of {frame_symbol(frame)} "
-                              f"({r.when(group, frame)})")
+                shared.append(f"{impact_names(group)} share one {styles[frame.name]} line, of {frame_symbol(frame)}")
     if shared:
         sentences.append(listed(shared) + ".")
     elif len(history.impacts) > 1:
@@ -156,6 +155,7 @@ def _simultaneity(r: Reading) -> str:
     for frame in r.frames:
         groups += [g for _, g in r.instants(frame) if len(g) > 1]
     seen = set()
+    said: set[tuple[str, str]] = set()  # (impact, frame) whose time a sentence has given: the order leaves it out
     for group in groups:
         key = tuple(i.label for i in group)
         if key in seen:
@@ -172,6 +172,7 @@ def _simultaneity(r: Reading) -> str:
         if together:
             text = (f"{impact_names(group)} lie on one line of simultaneity of "
                     + listed([f"{frame_name(f)} ({r.when(group, f)})" for f in together]))
+            said |= {(i.label, f.name) for i in group for f in together}
             if not on_rod_line:
                 text += ", but the rod takes them one at a time, as collisions of their own"
         else:
@@ -184,6 +185,7 @@ def _simultaneity(r: Reading) -> str:
                 gap = r.length(r.t(last, f) - r.t(first, f), [first, last], f)
                 details.append(f"in {frame_name(f)}, where {impact_name(first.label)} comes at {r.when([first], f)} "
                                f"and {impact_name(last.label)} at {in_l(r.length(r.t(last, f), [last], f))}, {in_l(gap)} later")
+                said |= {(first.label, f.name), (last.label, f.name)}
             text += ". They are not simultaneous " + "; nor ".join(details)
         sentences.append(text + ".")
     if not groups:
@@ -192,10 +194,12 @@ def _simultaneity(r: Reading) -> str:
     # the order in each frame's time, and where it is not the rod's own
     orders = []
     for f in r.frames:
-        steps = []
-        for k, (t, group) in enumerate(r.instants(f)):
-            time = r.when(group, f) if k == 0 else in_l(r.length(t, group, f))
-            steps.append(f"{impact_names(group)}{' together' if len(group) > 1 else ''} ({time})")
+        steps, named = [], False  # named: the frame's time (t′ = ...) said once in this list
+        for t, group in r.instants(f):
+            told = all((i.label, f.name) in said for i in group)  # its time given above: not again
+            time = in_l(r.length(t, group, f)) if named else r.when(group, f)
+            named = named or not told
+            steps.append(f"{impact_names(group)}{' together' if len(group) > 1 else ''}" + ("" if told else f" ({time})"))
         orders.append(f"in {frame_name(f)} {', then '.join(steps)}")
     sentences.append("In each frame's own time the order is: " + "; ".join(orders) + ".")
     for f in r.frames:
@@ -234,7 +238,8 @@ def _velocities(r: Reading) -> str:
     for f in r.frames:
         u = r.rod_velocities(f)
         steps = [f"{in_c(u[0])} before {impact_names(collisions[0])}"]
-        steps += [f"{in_c(u[k + 1])} after {impact_names(c)} ({r.when(c, f)})" for k, c in enumerate(collisions)]
+        # the impacts' times are the first paragraph's: not again
+        steps += [f"{in_c(u[k + 1])} after {impact_names(c)}" for k, c in enumerate(collisions)]
         order = "" if [c[0] for c in collisions] == _first_of_each(r, f) else \
             f" (the clocks of {frame_name(f)} put these impacts in another order)"
         sentences.append(f"In {frame_name(f)}, in the rod's own order{order}: " + "; ".join(steps) + ".")
@@ -272,9 +277,9 @@ def _why(r: Reading) -> str:
                 middle = 0.5 * (r.t(first, f) + r.t(last, f))
                 hidden = h.energy_momentum(f.rapidity, middle).hidden
                 sentences.append(
-                    f"In {frame_name(f)} {impact_name(first.label)} comes at {r.when([first], f)} and "
-                    f"{impact_name(last.label)} only at {in_l(r.length(r.t(last, f)))}, yet the rod moves on at "
-                    f"{in_c(r.rod_velocities(f)[0])} between them: it takes both impulses together, on its own "
+                    f"In {frame_name(f)} {impact_name(first.label)} comes before {impact_name(last.label)}, yet the "
+                    f"rod moves on at {in_c(r.rod_velocities(f)[0])} between them: it takes both impulses together, on "
+                    f"its own "
                     f"line of simultaneity, where they cancel. Between them in {frame_name(f)}, {first.particle} "
                     f"has already been struck and {last.particle} not yet, so the momentum {first.particle} gave up, "
                     f"{numeral(hidden.p)} M c, is carried by the stress in the rod: the hidden part of the ledger.")
