@@ -60,7 +60,9 @@ def leaks(fact: Fact, text: str, latex: bool = False, ascii_digits: bool = False
     """The forms of the fact found in the text: a number standing alone (no digit or point-digit either side), a
     phrase anywhere; in LaTeX each form as `tex.prose` writes it; with `ascii_digits` (a PDF's text) B₁ as B1."""
     found = []
+    text = text.replace("’", "'")  # the pages set every apostrophe typographic: either is the same word
     for form in fact.forms:
+        form = form.replace("’", "'")
         written = prose(form) if latex else _ascii(form) if ascii_digits else form
         pattern = (rf"(?<![0-9.]){re.escape(written)}(?![0-9]|\.[0-9])" if fact.number else
                    re.escape(written) + ("(?![′'])" if not latex else r"(?!')"))  # "in S" is not "in S′"
