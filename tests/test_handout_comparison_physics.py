@@ -139,3 +139,38 @@ def test_a_planted_sign_error_is_found(comparisons):
     *_, c = comparisons(("single", 0.45))
     old = f"its rapidity in S, {_n(0.9694006)}, is twice the struck end\u2019s, {_n(0.4847003)}"
     assert old not in far_end_text(c)
+
+
+@pytest.mark.parametrize("key", [("fig1", 0.6), ("fig2", 0.6), ("fig2", 0.3), ("single", 0.45), "gen_b"], ids=str)
+def test_the_comparison_says_where_each_particle_started_and_where_the_first_impacts_fall(comparisons, key):
+    """Independent: each particle's start, its first impact's event run back along its first velocity to t = 0
+    (x − u t); the first impacts' times in S′ by hand, t′ = γ(t + v x). The sentence gives the starts of both rods
+    (one list where they agree to 1e-12) and, for each rod, whether the first impacts are simultaneous in each frame
+    or how far apart."""
+    from rodparadox.handout.causal_compare import starts_text
+
+    rigid, causal, v, c = comparisons(key)
+    text = starts_text(rigid, causal, paper_frames(v))
+    L = rigid.scenario.L
+    starts = {}
+    for word, h in (("rigid", rigid), ("causal", causal)):
+        starts[word] = {}
+        for p in h.scenario.particles:
+            first = next(i for i in h.impacts if i.particle == p.name)
+            u = math.tanh(first.particle_rapidity_before)
+            starts[word][p.name] = (first.event.x - u * first.event.t) / L
+    same = all(abs(starts["rigid"][n] - starts["causal"][n]) <= 1e-9 for n in starts["rigid"])
+    assert ("Here the same particles, on the same world-lines" in text) == same
+    for word in ("rigid", "causal") if not same else ("rigid",):
+        for n, x in starts[word].items():
+            assert f"{n} at x = {_n(x)}{' L' if _n(x) != '0' else ''}" in text, (word, n, x, text)
+    if len(rigid.scenario.particles) == 2:
+        g = 1.0 / math.sqrt(1.0 - v * v)
+        for word, h in (("rigid", rigid), ("causal", causal)):
+            a, b = (next(i for i in h.impacts if i.particle == n) for n in ("A", "B"))
+            gap_s = abs(a.event.t - b.event.t) / L
+            gap_p = abs(g * (a.event.t + v * a.event.x) - g * (b.event.t + v * b.event.x)) / L
+            said = [("simultaneous in " + f if gap < 1e-9 else f"{_n(gap)} L apart in {f}")
+                    for gap, f in ((gap_s, "S"), (gap_p, "S′"))]
+            assert f"on the {word} rod " in text and " and ".join(said) in text.split(f"on the {word} rod ")[1], \
+                (word, said, text)

@@ -29,13 +29,13 @@ INTRODUCTION = (
     "The rigid rod above is the paper\u2019s idealisation. The causal rod is the stiffest rod relativity allows: "
     "sound in it travels at c, so the push of an impact spreads through it as a front of compression at the speed "
     "of light, and a particle rides with the end it strikes, pushed by the end\u2019s compression, until that "
-    "compression has gone. Here the same particles strike a causal rod of the same rest mass M and length L.")
+    "compression has gone.")
 #: what the comparison shows, after the introduction (a worksheet's key shows it; the worksheet asks first)
 SHOWN = ("The diagram draws both rods in the same frames, the rigid rod in the upper row and the causal rod in the "
          "lower, each frame\u2019s two panels on one scale; what it shows follows it, then the causal rod at successive "
          "instants, its contacts and separations, and its ledger.")
-WORKSHEET_INTRODUCTION = INTRODUCTION + (" Its diagram and numbers are in the answer key; the questions below ask "
-                                         "what you can work out first.")
+#: after the particles' starts (`starts_text`), what a worksheet says of the comparison
+WORKSHEET_SHOWN = "Its diagram and numbers are in the answer key; the questions below ask what you can work out first."
 
 
 def comparison_caption(frames: tuple[Frame, ...], v: float) -> str:
@@ -94,6 +94,37 @@ def ledger_table(causal, frame: Frame) -> Table:
             f"up to the total before the first contact, E = {tables.fixed(total.E)}, p = {tables.fixed(total.p)}: "
             f"nothing is hidden. X′₁ is the separation that ends contact X₁.")
     return replace(table, rows=rows, notes=(note,))
+
+
+def starts_text(rigid, causal, frames: tuple[Frame, ...], impacts: bool = True) -> str:
+    """Where each particle started (at t = 0 in S) for each rod, and (`impacts`; a worksheet asks it) where each
+    rod's first impacts fall: at one instant, or how far apart, in each frame shown."""
+    L = rigid.scenario.L
+    rigid_starts, causal_starts = dict(rigid.starts), dict(causal.starts)
+    names = sorted(rigid_starts)
+    same = all(abs(rigid_starts[n].x - causal_starts[n].x) <= 1e-12 * L * (1.0 + abs(rigid_starts[n].x / L))
+               for n in names)
+    where = listed([f"{n} at x = {in_l(rigid_starts[n].x / L)}" for n in names])
+    if same:
+        text = (f"Here the same particles, on the same world-lines, strike a causal rod of the same rest mass M and "
+                f"length L: at t = 0, {where}, at the same velocities.")
+    else:
+        other = listed([f"{n} at x = {in_l(causal_starts[n].x / L)}" for n in names])
+        text = (f"Here particles of the same masses and speeds strike a causal rod of the same rest mass M and length "
+                f"L, but not on the same world-lines: at t = 0, {where} for the rigid rod, {other} for the causal rod.")
+    if len(names) < 2 or not impacts:
+        return text
+    parts = []
+    for word, history in (("rigid", rigid), ("causal", causal)):
+        firsts = [next(i for i in history.impacts if i.particle == n) for n in names]
+        said = []
+        for f in frames:
+            times = [i.event.time_in(f.rapidity) / L for i in firsts]
+            gap = abs(times[1] - times[0])
+            said.append(f"simultaneous in {frame_name(f)}" if gap <= 1e-9 * (1.0 + max(map(abs, times))) else
+                        f"{in_l(gap)} apart in {frame_name(f)}")
+        parts.append(f"on the {word} rod {listed([impact_name(i.label) for i in firsts])} are {listed(said)}")
+    return text + " Each particle\u2019s first impact: " + "; ".join(parts) + "."
 
 
 def far_end_text(c: Comparison) -> str:
@@ -247,10 +278,12 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     filled += [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
     filled += [b for f in frames for b in (Paragraph(ledger_text(f)), ledger_table(causal, f))]
     # the diagram, then what it shows (text that may fill a page the diagram misses), the strips, the numbers
-    shown = [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + SHOWN), diagram, *told, *drawn, *filled]
+    shown = [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + starts_text(rigid, causal, frames) + " " + SHOWN),
+             diagram, *told, *drawn, *filled]
     if not worksheet:
         return shown, []
-    return [Heading(HEADING, 2), Paragraph(WORKSHEET_INTRODUCTION)], shown
+    asked = INTRODUCTION + " " + starts_text(rigid, causal, frames, impacts=False) + " " + WORKSHEET_SHOWN
+    return [Heading(HEADING, 2), Paragraph(asked)], shown
 
 
 def ledger_text(frame: Frame) -> str:
