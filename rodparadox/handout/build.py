@@ -32,6 +32,7 @@ import re
 from dataclasses import dataclass, replace
 from typing import Sequence
 
+from rodparadox.handout.reading import turns_of
 from rodparadox.handout.causal_compare import comparison
 from rodparadox.handout.causal_reading import compare
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
@@ -139,7 +140,7 @@ def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, st
     its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
     t_P + L."""
     for h in histories:
-        turn = next(iter(h.rigid.turns), None)
+        turn = next(iter(turns_of(h)), None)
         if turn is None or turn.rapidity_from != 0.0:
             continue
         impact = next(i for i in h.impacts if math.hypot(i.event.x - turn.pivot.x, i.event.t - turn.pivot.t)

@@ -13,7 +13,7 @@ import math
 from typing import Sequence
 
 from rodparadox.handout.document import Paragraph
-from rodparadox.handout.reading import Reading, zigzags
+from rodparadox.handout.reading import Reading, turns_of, zigzags
 from rodparadox.handout.words import (impact_names, in_c, in_l, listed, numeral, pushed, time_name)
 from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.engine import History, Impact
@@ -318,7 +318,7 @@ def _why(r: Reading) -> str:
                              f"{impact_names(collisions[k - 1])} the rod's {i.end} end moved at {in_c(u_end)} in S while "
                              f"{i.particle}, since {impact_name(previous.label)}, {particle}: the rod's {i.end} end "
                              f"closed on {i.particle} again.")
-    for k, turn in enumerate(t for t in h.rigid.turns if not t.completed):
+    for k, turn in enumerate(t for t in turns_of(h) if not t.completed):
         stopper = impact_name(turn.stopped_by)
         cause = impact_names(r.turn_cause(turn))
         far = "left" if turn.pivot_end == "right" else "right"
@@ -333,11 +333,11 @@ def _why(r: Reading) -> str:
         else:
             sentences.append(f"Likewise {stopper} strikes the {far} end while the rod is still turning from {cause}, "
                              f"when that end had got only to {reached}, on its way to {target}.")
-    if any(not t.completed for t in h.rigid.turns):
+    if any(not t.completed for t in turns_of(h)):
         ranges = []
         for f in r.frames:
             speeds = [r.velocity(x, f) for x in [0.0, h.final_rapidity]
-                      + [y for t in h.rigid.turns for y in (t.rapidity_from, t.rapidity_stop)]]
+                      + [y for t in turns_of(h) for y in (t.rapidity_from, t.rapidity_stop)]]
             ranges.append(f"from {in_c(min(speeds))} to {in_c(max(speeds))} in {frame_name(f)}")
         sentences.append("Because its turns are cut short, the rod's material only ever moves at velocities "
                          + listed(ranges) + ".")

@@ -23,6 +23,12 @@ from rodparadox.physics.rod import turn_interval
 
 
 @dataclass(frozen=True)
+def turns_of(history) -> tuple:
+    """The rod's turns: the one door through which the handout reads the rigid rod's turns and fans (a capability
+    of the rod interface; a rod without them, the causal rod, has none), never the model's name."""
+    return tuple(getattr(history, "turns", None) or ())
+
+
 class Reading:
     """A history and the frames shown, with what the text needs computed once: each impact's coordinates in each
     frame, the instants at which impacts coincide, the rod's collisions in its own order, the impacts that started
@@ -117,13 +123,13 @@ class Reading:
         momentum no longer matches the line (engine: a turn starts where the rod's rapidity differs from the
         line's). Should the count ever differ, the impacts at each turn's pivot."""
         starting = [line for line in self.lines if line[-1].rod_rapidity_after != line[-1].line_rapidity]
-        if len(starting) == len(self.history.rigid.turns):
+        if len(starting) == len(turns_of(self.history)):
             return tuple(starting)
-        return tuple(self.impacts_at(turn.pivot) for turn in self.history.rigid.turns)
+        return tuple(self.impacts_at(turn.pivot) for turn in turns_of(self.history))
 
     def turn_cause(self, turn: Turn) -> tuple[Impact, ...]:
         """The impacts that started the turn (one of `History.turns`)."""
-        return self.turn_causes[next(k for k, t in enumerate(self.history.rigid.turns) if t is turn)]
+        return self.turn_causes[next(k for k, t in enumerate(turns_of(self.history)) if t is turn)]
 
     def rests(self, frame: Frame) -> list[tuple[Turn, float, float | None, Turn | None]]:
         """Each stretch of the frame's time in which the whole rod stands still in it after a turn that completes:
@@ -131,7 +137,7 @@ class Reading:
         a line of simultaneity of the frame, so every point reaches rest at one instant of it, at the rod's full
         length."""
         out = []
-        turns = self.history.rigid.turns
+        turns = turns_of(self.history)
         for k, turn in enumerate(turns):
             if not turn.completed or abs(turn.rapidity_stop - frame.rapidity) > SAME_RAPIDITY:
                 continue
@@ -151,7 +157,7 @@ class Reading:
         turns from, the velocity it reaches, the impacts that started the turn). A turn cut short by an impact on
         the far end reaches only `rapidity_stop`, never the rod's velocity after the impact."""
         return tuple((self.velocity(t.rapidity_from, frame), self.velocity(t.rapidity_stop, frame), self.turn_cause(t))
-                     for t in self.history.rigid.turns)
+                     for t in turns_of(self.history))
 
     def velocity(self, rapidity: float, frame: Frame) -> float:
         """The velocity in the frame of a body of this rapidity in S; a rounding-sized one is 0."""

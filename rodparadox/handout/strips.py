@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from rodparadox.handout.reading import Reading
+from rodparadox.handout.reading import Reading, turns_of
 from rodparadox.handout.words import impact_names, in_c, in_l, listed, numeral, time_name
 from rodparadox.physics.engine import History, Turn
 from rodparadox.physics.frames import Frame, frame_name, time_window
@@ -25,7 +25,7 @@ def _end_changes(r: Reading, frame: Frame) -> dict[str, list[tuple[float, float,
     struck: it is the turn's pivot and jumps at the impact, else it follows the turn's hyperbola."""
     eta = frame.rapidity
     out: dict[str, list] = {"left": [], "right": []}
-    for turn in r.history.rigid.turns:
+    for turn in turns_of(r.history):
         pivot, far_start, far_end = turn_corners(turn)
         out[turn.pivot_end].append((pivot.time_in(eta), pivot.time_in(eta), turn, True))
         if abs(turn.rapidity_stop - turn.rapidity_from) > SAME_RAPIDITY:
@@ -42,7 +42,7 @@ def strip_times(history: History, frame: Frame) -> tuple[float, ...]:
     eta = frame.rapidity
     t_lo, t_hi = time_window(history, frame)
     impacts = [t for t, _ in r.instants(frame)]
-    turns = [turn_interval(turn, eta) for turn in history.rigid.turns]
+    turns = [turn_interval(turn, eta) for turn in turns_of(history)]
     changes = sorted(impacts + [t for interval in turns for t in interval])
     first, last = changes[0], changes[-1]
     # (priority, time): the lower the priority, the surer an instant is kept
@@ -106,7 +106,7 @@ def _which_end_first(r: Reading, frame: Frame) -> str:
     h = r.history
     symbol, time = frame_name(frame), time_name(frame)
     eta = frame.rapidity
-    if not h.rigid.turns:
+    if not turns_of(h):
         u = r.rod_velocities(frame)[0]
         changes = listed([f"{i.particle}'s at {impact_name(i.label)} ({r.when([i], frame)})"
                            for _, g in r.instants(frame) for i in g])

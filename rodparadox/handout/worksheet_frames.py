@@ -14,7 +14,7 @@ import math
 from typing import NamedTuple, Sequence
 
 from rodparadox.errors import RodParadoxError
-from rodparadox.handout.reading import Reading
+from rodparadox.handout.reading import Reading, turns_of
 from rodparadox.handout.document import Fact
 from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, capitalised, impact_names,
                                       in_c, in_c_approx, in_l, in_l_approx, listed, numeral_approx, order_facts,
@@ -234,8 +234,8 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
                            f"{names[0]} in {frame_name(f)}")
         elif len(labels) == 2:
             out.append(f"the rod is struck {len(history.impacts)} times: {impact_names(history.impacts)}")
-        elif history.rigid.turns:
-            start, end = turn_interval(history.rigid.turns[0], 0.0)
+        elif turns_of(history):
+            start, end = turn_interval(turns_of(history)[0], 0.0)
             asks.append(told_number(f"the far end's delay in S {at}", reading.length(end - start)))
             out.append(f"the far end takes {in_l(reading.length(end - start), ANSWER_DIGITS)} of S's time to reach "
                        f"the rod's new velocity")
