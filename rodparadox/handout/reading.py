@@ -22,13 +22,13 @@ from rodparadox.tolerances import ONE_INSTANT, SAME_RAPIDITY
 from rodparadox.physics.rod import turn_interval
 
 
-@dataclass(frozen=True)
 def turns_of(history) -> tuple:
     """The rod's turns: the one door through which the handout reads the rigid rod's turns and fans (a capability
     of the rod interface; a rod without them, the causal rod, has none), never the model's name."""
     return tuple(getattr(history, "turns", None) or ())
 
 
+@dataclass(frozen=True)
 class Reading:
     """A history and the frames shown, with what the text needs computed once: each impact's coordinates in each
     frame, the instants at which impacts coincide, the rod's collisions in its own order, the impacts that started
