@@ -38,7 +38,7 @@ SHOWN = ("The diagram draws both rods in the same frames, the rigid rod in the u
 WORKSHEET_SHOWN = "Its diagram and numbers are in the answer key; the questions below ask what you can work out first."
 
 
-def comparison_caption(frames: tuple[Frame, ...], v: float) -> str:
+def comparison_caption(frames: tuple[Frame, ...], v: float, causal=None) -> str:
     """The two rows' caption: which panel is which rod in which frame, and how the causal rod is drawn."""
     n = len(frames)
     letters = PANEL_LETTERS
@@ -48,7 +48,13 @@ def comparison_caption(frames: tuple[Frame, ...], v: float) -> str:
     return (f"At v = {exact(v)}, in {named}: {upper} the rigid rod; {lower} the causal rod, on the same particles. "
             f"Each frame\u2019s two panels have one scale. The causal rod\u2019s world-sheet is shaded by its "
             f"compression; light-speed fronts cross it; a filled dot is a contact, where a particle starts to ride an "
-            f"end, a hollow one its separation (A′₁ ends A₁).")
+            f"end, a hollow one its separation{_example(causal)}.")
+
+
+def _example(causal) -> str:
+    """ (B′₁ ends B₁): the first separation of the run and the contact it ends."""
+    first = next((i for i in getattr(causal, "impacts", ()) if i.kind == "separation"), None)
+    return "" if first is None else f" ({impact_name(first.label)} ends {impact_name(first.label[:-1])})"
 
 
 def causal_strip_times(causal, frame: Frame) -> tuple[float, ...]:
@@ -263,7 +269,8 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     come from solving its wave equation, which a student cannot do, and its first contacts are the rigid rod's
     first impacts, whose cells the worksheet asks."""
     v = causal.scenario.v
-    diagram = DiagramBlock(f"{stem}_compared", rigid, frames, comparison_caption(frames, v), equal_scales=equal_scales,
+    diagram = DiagramBlock(f"{stem}_compared", rigid, frames, comparison_caption(frames, v, causal),
+                           equal_scales=equal_scales,
                            compared=causal)
     drawn: list[Block] = []
     for f in frames:

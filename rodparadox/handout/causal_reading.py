@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rodparadox.handout.reading import turns_of
 from rodparadox.physics.engine import Impact
 from rodparadox.physics.frames import Frame, rest_frame
 from rodparadox.physics.ledger import EnergyMomentum
