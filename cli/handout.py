@@ -12,8 +12,9 @@ import click
 
 from rodparadox.errors import OptionError
 
-from .common import (BadInput, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, rod_asked, run_scenario, scenario_options, style_option)
+from .edge import BadInput, before_matplotlib, report, reports_errors
+from .options import (format_option, frame_option, output_option, quiet_option, rod_asked, run_rods, run_scenario,
+                      scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
@@ -98,10 +99,14 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
         if not frames:
             raise BadInput("--frame rod needs a frame beside it in a handout, whose tables are read in frames: give "
                            "e.g. both,rod.")
-        # the rigid rod's sections always (the diagrams draw it); the causal rod's run for the comparison
+        # the rigid rod's sections always (the diagrams draw it); the causal rod beside it, struck by the same
+        # particles (placed once, by the scenario's own rod: `physics.models.run_rods`), when compared
         compared = (rod in ("causal", "both") or s.rod == "causal") and "comparison" in sections
-        causal = run_scenario(s.with_overrides(rod="causal"), name, frames) if compared else None
-        items.append(Item(stem, run_scenario(s.with_overrides(rod="rigid"), name, frames), frames, causal))
+        if compared:
+            rigid, causal = run_rods(s, name, frames, rods="both")
+        else:
+            rigid, causal = run_scenario(s.with_overrides(rod="rigid"), name, frames), None
+        items.append(Item(stem, rigid, frames, causal))
         # the rod's own view (--frame both,rod, or rod among --sections): of the rigid rod, and of the causal rod when
         # compared
         if "rod" in sections and (frames != shown_frames or parts is not None):

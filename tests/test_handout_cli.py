@@ -126,7 +126,7 @@ def test_several_scenarios_make_one_document_with_a_section_each(fig1_fig2_lette
     assert output.startswith("outputs/fig1_fig2_handout")
     text = " ".join(pages)
     # each section headed by its scenario's title (issue 14: no internal names in headings)
-    assert "rod's rest frame (the paper's Fig. 1)" in text and "moving frame (the paper's Fig. 2)" in text
+    assert "rod’s rest frame (the paper’s Fig. 1)" in text and "moving frame (the paper’s Fig. 2)" in text
 
 
 def test_tex_writes_a_folder_of_pieces(here):
@@ -165,7 +165,7 @@ def _readme_handout_section() -> str:
 
 
 def test_readme_lists_the_questions_fig2s_worksheet_asks():
-    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.rigid import run as simulate
     from rodparadox.physics.frames import paper_frames
     from rodparadox.handout.build import questions
     from rodparadox.io.scenario import load

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import Frame, time_window
 from rodparadox.physics.snapshot import strip_at
 from rodparadox.render import draw_strips_into, style_context
@@ -145,7 +145,7 @@ def test_the_parts_of_a_block_split_between_pages_keep_one_tick_step_and_one_axe
 
     from rodparadox import render
     from rodparadox.handout.strips import strip_times
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.rigid import run
     from rodparadox.physics.frames import paper_frames
     from rodparadox.io.scenario import load
 

@@ -357,11 +357,11 @@ def test_a_generated_scenario_s_worksheet_tells_nothing_it_asks(name, v, particl
     """A worksheet of a scenario no preset has, with the causal rod's comparison: no question's fact and no blank
     cell's number in its words or its LaTeX before the key."""
     from rodparadox.io.scenario import parse
-    from rodparadox.physics.causal import run as run_causal
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.models import run_rods
 
     scenario = parse(f"name: {name}\nv: {v}\nparticles:\n  {particles}\n", f"{name}.yaml", name)
-    doc = build([(name, run(scenario), None, run_causal(scenario.with_overrides(rod="causal")))], worksheet=True)
+    rigid, causal = run_rods(scenario, "both")  # struck by the same particles
+    doc = build([(name, rigid, None, causal)], worksheet=True)
     section = doc.sections[1]
     assert blank_facts(section) and _questions(section)
     found = found_leaks(section, [("model", model_text(section)), ("latex", _latex_of(doc)[1])])

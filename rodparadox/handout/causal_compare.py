@@ -19,7 +19,7 @@ from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral
 from rodparadox.numbers import impact_name
 from rodparadox.numbers import exact
 from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, frame_symbol, frame_word, time_window
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.tables import build as tables
 from rodparadox.tables import causal_ledger
 

@@ -14,10 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rodparadox.handout.reading import turns_of
-from rodparadox.physics.engine import Impact
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, rest_frame
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.tables import build as tables
 from rodparadox.tolerances import SAME_RAPIDITY
 
@@ -119,12 +118,13 @@ def rest_mass_motion(causal, frame_rapidity: float, t: float) -> tuple[float, fl
 
     from rodparadox.physics.kinematics import ChartCurve
 
-    sol, L, f = causal.solution, causal.scenario.L, frame_rapidity
+    fronts = causal.fronts  # the causal rod's capability: its solution in the material chart
+    sol, L, f = fronts.solution, causal.scenario.L, frame_rapidity
 
     def T_of(sigma: float) -> float:
         return ChartCurve(sol, sigma, -math.inf, math.inf, f).chart_time(t)
 
-    T_L, T_R = causal.end_chart_time("left", f, t), causal.end_chart_time("right", f, t)
+    T_L, T_R = fronts.end_chart_time("left", f, t), fronts.end_chart_time("right", f, t)
     cuts = {0.0, L}
     for u in sol.plus.breaks(T_L, T_R + L):
         cuts.add(brentq(lambda s: T_of(s) + s - u, 0.0, L, xtol=1e-14 * L))
@@ -211,7 +211,7 @@ def far_end(rigid, causal) -> FarEnd:
     own = next((i for i in causal.impacts if i.kind == "contact" and i.end == far), None)
     by_light = own is None or own.event.t / L > t_causal + 1e-9 * (1.0 + abs(t_causal))
     u_causal = math.tanh(line.rapidity_at_time(line.first.t, after=True))
-    turn = next(iter(turns_of(rigid)), None)
+    turn = next(iter(rigid.turning.turns), None)
     t_rigid = turn.pivot.t / L if turn is not None and turn.rapidity_from == 0.0 else None
     return FarEnd(contact, far, contact.event.t / L, contact.event.t / L + 1.0, t_causal, by_light,
                   None if by_light else own, u_causal, contact.rod_rapidity_after, t_rigid)
