@@ -10,6 +10,7 @@ so each question's facts are searched in its own scenario's pages."""
 
 from __future__ import annotations
 
+import functools
 import dataclasses
 import io
 import math
@@ -20,7 +21,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
-from conftest import causal_history, history
+from conftest import history
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Cell, DiagramBlock, Fact, Heading, Paragraph, Question, Table
@@ -31,6 +32,16 @@ from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
 from rodparadox.handout.words import told_number
 from rodparadox.io.scenario import builtin_names
 from rodparadox.physics.frames import paper_frames
+
+
+@functools.lru_cache(maxsize=None)
+def causal_alike(name: str, v: float, L: float | None = None):
+    """The causal rod of a preset struck by the rigid rod's particles (`physics.models.run_rods`, like for like),
+    as `handout --rod both` runs it."""
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.models import run_rods
+
+    return run_rods(load(name).with_overrides(v=v, L=L), "both")[1]
 
 #: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
 pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
@@ -125,10 +136,10 @@ def _worksheets_at(v: float):
     """The worksheets of every preset at v, read as the fixture `worksheets` says."""
     # with the causal rod's comparison and its questions at one speed (a causal run and its pages cost)
     doc = build([(name, history(name, v), None,
-                  causal_history(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
+                  causal_alike(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
                  for name in builtin_names()], worksheet=True)
     if v == CAUSAL_SPEED:  # and the rod's own view after their diagrams (handout --frame both,rod): its captions
-        doc = with_rod_views(doc, {name: (history(name, v), causal_history(name, v)) for name in CAUSAL_PRESETS})
+        doc = with_rod_views(doc, {name: (history(name, v), causal_alike(name, v)) for name in CAUSAL_PRESETS})
     before_key = dataclasses.replace(doc, answer_key=())
     figures = page_figures(before_key)
     drawn = _by_section(doc, _page_texts(figures))
