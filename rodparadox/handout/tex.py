@@ -270,7 +270,9 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
     if isinstance(block, DiagramBlock):
         # a worksheet's diagram without the scenario's title (a preset's may say what it asks), the panels' velocities
         # or the lines of simultaneity through the impacts (which impacts share one is asked)
-        options = render.Options(titled=block.tell, equal_scales=block.equal_scales, simultaneity=block.tell)
+        # no title above the panels, as in the PDF: the plot's title names the scenario by its file name (fig2),
+        # which a student never reads; the section's heading and the caption say what it shows
+        options = render.Options(titled=False, equal_scales=block.equal_scales, simultaneity=block.tell)
         diagram = render.draw(block.drawn, block.frames, style, options)
         block.retitle(diagram)
         figure = diagram.figure
