@@ -160,7 +160,7 @@ def test_an_unwritable_folder_is_refused(here, unwritable_folder):
 def _readme_handout_section() -> str:
     from pathlib import Path
 
-    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     return readme[readme.index("<!-- handout:start -->"):readme.index("<!-- handout:end -->")]
 
 
@@ -184,7 +184,7 @@ def test_readme_page_picture_is_the_first_page_the_tool_sets_now():
 
     from rodparadox.handout.readme_pictures import handout_first_page
 
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     assert "outputs/readme/fig2_handout_page1.png" in _readme_handout_section()
     committed = (root / "outputs" / "readme" / "fig2_handout_page1.png").read_bytes()
     made_with = (root / "outputs" / "readme" / "made-with.txt").read_text().split()
@@ -209,7 +209,7 @@ def test_bad_sections_are_one_sentence_and_exit_2(tmp_path, args, message):
 def test_sections_choose_the_parts_of_each_document():
     """A teacher's choice: only what is asked, in the usual order; the paradox's section and its resolution in the key
     go with `paradox`; the comparison only with a causal history and `comparison`."""
-    from conftest import causal_history, history
+    from helpers import causal_history, history
     from rodparadox.handout.build import Item, build
     from rodparadox.handout.document import DiagramBlock, Strips, Table
 

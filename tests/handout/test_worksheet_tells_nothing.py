@@ -21,7 +21,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
-from conftest import history
+from helpers import history
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Cell, DiagramBlock, Fact, Heading, Paragraph, Question, Table

@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from conftest import history
+from helpers import history
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Heading, Paragraph, Question, Table
 from rodparadox.handout.own_view import with_rod_views
