@@ -15,9 +15,10 @@ from dataclasses import replace
 from rodparadox.handout.causal_reading import Comparison
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Heading, Paragraph, Strips, Table
 from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST
-from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral, summand, time_name
+from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral, time_name
 from rodparadox.numbers import impact_name
 from rodparadox.numbers import exact
+from rodparadox.tables.comparison import first_impact_times, first_impacts
 from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, frame_symbol, frame_word, time_window
 from rodparadox.physics.types import EnergyMomentum
 from rodparadox.tables import build as tables
@@ -122,13 +123,10 @@ def starts_text(rigid, causal, frames: tuple[Frame, ...], impacts: bool = True) 
         return text
     parts = []
     for word, history in (("rigid", rigid), ("causal", causal)):
-        firsts = [next(i for i in history.impacts if i.particle == n) for n in names]
-        said = []
-        for f in frames:
-            times = [i.event.time_in(f.rapidity) / L for i in firsts]
-            gap = abs(times[1] - times[0])
-            said.append(f"simultaneous in {frame_name(f)}" if gap <= 1e-9 * (1.0 + max(map(abs, times))) else
-                        f"{in_l(gap)} apart in {frame_name(f)}")
+        firsts = first_impacts(history)
+        said = [f"simultaneous in {frame_name(f)}" if simultaneous else
+                f"{in_l(abs(times[1] - times[0]))} apart in {frame_name(f)}"
+                for f, times, simultaneous in first_impact_times(history, frames)]
         parts.append(f"on the {word} rod {listed([impact_name(i.label) for i in firsts])} are {listed(said)}")
     return text + " Each particle\u2019s first impact: " + "; ".join(parts) + "."
 
