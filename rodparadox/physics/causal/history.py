@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.causal.chart import CausalChart, points_on_slice
 from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
 from rodparadox.physics.causal.parts import rod_parts
 from rodparadox.physics.causal.solve import Budget, Rider, Solution, solve
@@ -134,6 +134,10 @@ class CausalHistory:
         from rodparadox.physics.causal.slices import TABLE_TOLERANCE, ChartTables
 
         return ChartTables(self, lo, hi, TABLE_TOLERANCE if tolerance is None else tolerance)
+
+    def points_on_slice(self, frame_rapidity: float, t: float, sigmas) -> tuple:
+        """Where each material point sigma is on the slice t of the frame, and its rapidity there (`chart`)."""
+        return points_on_slice(self, frame_rapidity, t, sigmas)
 
     def compression_range(self) -> tuple[float, float]:
         """The least and largest ln lam anywhere in the rod over its whole history, 0 (unstressed) inside."""
