@@ -64,12 +64,26 @@ class _Contact:
     int exp(out) = exp(-r_in) [(s - lo) - (4/c)(q0 - q)/((1 + q)(1 + q0))],
     int exp(-out) = exp(r_in) [(s - lo) + (4/c)(q0 - q)/((1 - q)(1 - q0))]."""
 
-    def __init__(self, lo: float, hi: float, r_in: float, delta0: float, c: float):
+    def __init__(self, lo: float, hi: float, r_in: float, delta0: float, c: float, log_k: float | None = None):
         self.lo, self.hi, self.r_in, self.c = lo, hi, r_in, c
-        self.k = math.tanh(0.5 * delta0)
+        self.log_k = log_k
+        if log_k is None:  # k from delta0 (k > 0: delta0 > 0)
+            self.k = math.tanh(0.5 * delta0)
+            self._log_k = math.log(self.k) if self.k > 0.0 else math.log(delta0) - math.log(2.0)
+        else:  # a contact continued past where delta0 = psi - r_in still shows in double precision: k from ln k
+            self.k = math.exp(log_k)
+            self._log_k = log_k
 
     def q(self, s: float) -> float:
+        if self.log_k is not None:
+            return math.exp(self.log_k - self.c * (s - self.lo))
         return self.k * math.exp(-self.c * (s - self.lo))
+
+    def log_q(self, s: float) -> float:
+        """ln tanh(delta/2), finite however far delta has decayed below what a double holds: the contact lasts
+        while delta > 0, and with a constant input delta only decays, never reaching 0 (a mass ratio M/m above
+        about 745 makes q = k exp(-(M/m) T/L) underflow to 0 within one crossing time)."""
+        return self._log_k - self.c * (s - self.lo)
 
     def delta(self, s: float) -> float:
         return 2.0 * math.atanh(self.q(s))
@@ -310,6 +324,10 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
     minus.append(_Const(T_first - 2 * L, T_first - L, 0.0))
     events: list[ContactEvent] = []
     state = {"left": None, "right": None}  # psi of the rider in contact, else None
+    # a contact whose input was the constant r_in up to the window's end: (r_in, ln tanh(delta/2) there). delta =
+    # psi - r_in may no longer show in psi (it decays as exp(-(M/m) T/L)); if the input goes on unchanged the
+    # particle is still pressed, not released
+    pressed = {"left": None, "right": None}
     T0 = T_first - L  # a window early: the first contact is a root found inside it, like every other
     last_separation = T_first
     quiet = 0
@@ -376,18 +394,21 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                         psi = state[end]
                         r_in0 = inp.r(T)
                         delta = psi - r_in0
-                        if delta <= 0.0:  # a front arrived that the end may follow freely: separation
+                        held, pressed[end] = pressed[end], None
+                        log_k = held[1] if delta <= 0.0 and held is not None and held[0] == r_in0 else None
+                        if delta <= 0.0 and log_k is None:  # a front arrived that the end may follow: separation
                             T = _separate(rider, end, T, psi, r_in0, events, state, a_of, b_of, L)
                             last_separation = max(last_separation, T)
                             continue
                         const = _constant(inp)
                         if const is not None:
-                            piece = _Contact(T, hi, const, delta, c)
+                            piece = _Contact(T, hi, const, delta, c, log_k)
                             out_append(end, piece)
                             state[end] = piece.psi(hi)
+                            pressed[end] = (const, piece.log_q(hi))
                             T = hi
                             continue
-                        piece, T_sep = solve_contact(T, hi, inp, psi, c)
+                        piece, T_sep = solve_contact(T, hi, inp, psi if log_k is None else r_in0, c)
                         out_append(end, piece)
                         if T_sep is None:
                             state[end] = piece.psi(hi)
