@@ -138,10 +138,11 @@ def _newton(psi: np.ndarray, r_in: np.ndarray, psi_a: float, half: float, c: flo
     return None
 
 
-def solve_contact(lo: float, hi: float, inp, psi0: float, c: float) -> tuple[Solved, float | None]:
+def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, L: float = 1.0) -> tuple[Solved, float | None]:
     """Integrate d psi/dT = -c sinh(psi - in(T)) from lo (psi = psi0, psi0 > in(lo)) to hi, stopping where
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
-    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi)."""
+    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi), found to
+    rounding relative to the rod's length L (chart times scale with it, from 1e-100 to 1e100)."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
@@ -173,7 +174,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float) -> tuple[Sol
         if below.size:  # the end falls unstressed inside this step: the separation, to the last bit
             j = int(below[0]) + 1
             solved = Solved(lo, b, inp.r, steps)
-            T_sep = falling_root(lambda T: solved.psi(T) - inp.r(T), float(s[j - 1]), float(s[j]))
+            T_sep = falling_root(lambda T: solved.psi(T) - inp.r(T), float(s[j - 1]), float(s[j]), 4 * EPS * L)
             solved.hi = T_sep
             return solved, T_sep
         plus0 += 0.5 * (b - a) * _clenshaw(step.plus, 1.0)

@@ -408,7 +408,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                             pressed[end] = (const, piece.log_q(hi))
                             T = hi
                             continue
-                        piece, T_sep = solve_contact(T, hi, inp, psi if log_k is None else r_in0, c)
+                        piece, T_sep = solve_contact(T, hi, inp, psi if log_k is None else r_in0, c, L)
                         out_append(end, piece)
                         if T_sep is None:
                             state[end] = piece.psi(hi)

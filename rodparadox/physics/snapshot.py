@@ -101,15 +101,15 @@ def _on_chart(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np.ndarr
             return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
         if T is None:
             T = t
-        lo, hi, step = T, T, 1.0
+        lo, hi, step = T, T, history.scenario.L  # in units of the rod's length: L may be 1e-100 or 1e100
         while time(lo) > t:
             lo, step = lo - step, 2 * step
-        step = 1.0
+        step = history.scenario.L
         while time(hi) < t:
             hi, step = hi + step, 2 * step
         for _ in range(100):
             error = time(T) - t
-            if abs(error) <= 1e-13 * (1.0 + abs(t)):
+            if abs(error) <= 1e-13 * (history.scenario.L + abs(t)):
                 break
             if error > 0:
                 hi = T
