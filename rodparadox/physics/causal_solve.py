@@ -38,6 +38,9 @@ from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal_ode import falling_root, solve_contact
 #: windows of chart time L processed before a scenario is refused as never settling
 MAX_WINDOWS = 5000
+#: windows with a particle in contact before a scenario is refused: a contact costs far more than a free window,
+#: and particles far heavier than the rod squeeze it slowly, like a spring, for thousands of crossings
+MAX_CONTACT_WINDOWS = 300
 
 
 # --- pieces of an invariant ------------------------------------------------------------------------------------
@@ -365,21 +368,30 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
             grid += [x + (y - x) * j / 8 for j in range(1, 9)]
         grid = sorted(set(g for g in grid if lo <= g <= hi))
         prev_T, prev_g = grid[0], gap(rider, grid[0])
-        if prev_g <= 0.0 and abs(prev_g) <= 1e-12 * (L + abs(rider.t0) + abs(rider.x0) + abs(prev_T)):
+        touching = abs(prev_g) <= 1e-12 * (L + abs(rider.t0) + abs(rider.x0) + abs(prev_T))
+        if prev_g <= 0.0 and touching:
             prev_g = 0.0
         for T in grid[1:]:
             g = gap(rider, T)
+            if touching and T == grid[1] and g < 0.0 and not rider.contacts:
+                return lo  # it reaches the end just where the window starts (gap 0 to rounding), and closes on it
             if prev_g > 0.0 and g <= 0.0:
                 return falling_root(lambda s: gap(rider, s), prev_T, T, 1e-15 * (L + abs(T)), 8.9e-16)
             prev_T, prev_g = T, g
         return None
 
-    windows = 0
+    windows = contact_windows = 0
     while True:
         windows += 1
-        if windows > MAX_WINDOWS:
-            raise ScenarioError(f"the rod and particles are still in contact after {MAX_WINDOWS} crossing times of "
-                                f"the rod; this scenario does not settle.")
+        waiting = [r.name for r in riders.values() if not r.contacts]
+        if windows > MAX_WINDOWS and waiting:
+            raise ScenarioError(f"particle {waiting[0]} reaches the causal rod more than {MAX_WINDOWS} crossing times "
+                                f"of the rod after the first contact; give it a smaller gap or a higher speed.",
+                                f"particles.{waiting[0]}.gap")
+        if windows > MAX_WINDOWS or contact_windows > MAX_CONTACT_WINDOWS:
+            raise ScenarioError(f"the particles keep touching the causal rod for more than {min(windows, MAX_WINDOWS)}"
+                                f" crossing times of the rod ({contact_windows} of them in contact); choose masses "
+                                f"nearer the rod's.", "particles")
         T1 = T0 + L
         any_contact = False
         for end in ("left", "right"):
@@ -425,14 +437,15 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                     if T_hit is not None and T_hit < hi:
                         (minus if end == "left" else plus).pop()
                         out_append(end, _View(inp, 0.0, -1, T, T_hit))
-                    T = hi if T_hit is None else T_hit
+                    T_was, T = T, hi if T_hit is None else T_hit
                     if T_hit is not None:
                         any_contact = True
                         side = 1.0 if end == "left" else -1.0
                         psi = side * rider.th
                         r_in = inp.r(T_hit)
                         if psi - r_in <= 0.0:
-                            continue  # grazing at equal speed: no push
+                            T = hi if T_hit <= T_was else T  # grazing at equal speed: no push
+                            continue
                         rider.riding, rider.contacts = True, rider.contacts + 1
                         state[end] = psi
                         events.append(ContactEvent("contact", rider.name, end, T_hit, rider.contacts, rider.th,
@@ -441,6 +454,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                             break
         T0 = T1
         if any_contact or any(r.riding for r in riders.values()):
+            contact_windows += 1
             quiet = 0
             continue
         quiet += 1
