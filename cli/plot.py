@@ -69,6 +69,8 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from rodparadox.physics.rod_view import refuse_frame_extras
     for job in jobs:  # every panel the rod's own view: the extras have nothing to draw on
         refuse_frame_extras(job.frames[0], **extras, rod_lines=rod_lines)
+        lorentz = planned.lorentz_frames(job.frames[0])
+        planned.check_panels(len(lorentz), len(lorentz) < len(job.frames[0]), rod == "both")
     histories = [_run(job, rod == "both") for job in jobs]
     if proper_time and any(h.kind == "causal" for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")

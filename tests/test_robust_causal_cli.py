@@ -1,0 +1,39 @@
+"""What a new user broke in the causal rod, the rod's own view and the ledger figures (issue 27): each case in
+process (click's runner), fast; `tests/robustness_check.py` runs them and their variants as real processes under a
+memory limit and a timeout."""
+
+from __future__ import annotations
+
+import pytest
+from click.testing import CliRunner
+
+from sears_paradox_cli.main import main
+
+
+def run(*args, expect=0):
+    result = CliRunner().invoke(main, [str(a) for a in args])
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+def error_of(*args) -> str:
+    """The one-sentence error a bad call prints; it must exit 2 and print no traceback."""
+    result = run(*args, expect=2)
+    assert isinstance(result.exception, SystemExit), result.exception
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1, result.output
+    return lines[0][len("Error: "):]
+
+
+@pytest.mark.parametrize("args, panels", [
+    (("plot", "fig2", "--rod", "both", "--frame", "0,0.1,0.2,0.3,0.4"), 10),
+    (("plot", "fig2", "--frame", "rest,moving,0.1,0.2,0.3,0.4,0.5,0.6,rod"), 9),
+    (("animate", "fig2", "--frame", "rod,rest,moving,0.1,0.2,0.3,0.4,0.5,0.6"), 9),
+    (("plot", "fig1", "--rod", "both", "--frame", "both,0.3,0.5,rod"), 9),
+])
+def test_at_most_eight_panels(args, panels, tmp_path):
+    """Issue 27, item 9: 8 panels at most, the rod's own view counted and each frame twice with --rod both (a
+    traceback from the drawing, or 9 panels accepted, before)."""
+    message = error_of(*args, "-o", tmp_path)
+    assert f"asks for {panels} panels" in message and "at most 8" in message
+    assert not list(tmp_path.iterdir())
