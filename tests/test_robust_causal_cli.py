@@ -37,3 +37,14 @@ def test_at_most_eight_panels(args, panels, tmp_path):
     message = error_of(*args, "-o", tmp_path)
     assert f"asks for {panels} panels" in message and "at most 8" in message
     assert not list(tmp_path.iterdir())
+
+
+def test_sound_speed_is_checked_against_the_rod_being_run(tmp_path):
+    """Issue 27, item 10: sound_speed: 1 without rod: and --rod causal on the command line is the causal rod, run;
+    without --rod causal (or with --rod rigid) it is refused in one sentence naming both ways to fix it."""
+    path = tmp_path / "ss.yaml"
+    path.write_text("name: ss\nv: 0.6\nsound_speed: 1\nparticles:\n  A:\n    gap: 0.5\n")
+    assert "A1s" in run("events", path, "--rod", "causal").output
+    for extra in ((), ("--rod", "rigid")):
+        message = error_of("events", path, *extra)
+        assert "give rod: causal with it, or --rod causal" in message
