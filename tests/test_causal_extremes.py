@@ -100,3 +100,28 @@ def test_a_run_double_precision_cannot_keep_is_refused():
     with pytest.raises(ScenarioError, match="choose a lower v") as caught:
         run(load("fig2").with_overrides(v=0.9999999))
     assert caught.value.key == "v" and "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize("model", ["rigid", "causal"])
+def test_rod_view_at_the_slowest_speed(model):
+    """Issue 27, item 5: at v = 1e-6 the impacts come 5e5 L after t = 0. The rigid chart placed no impact (its
+    pieces' edges matched to 1e-12 L, below the rounding of T ~ 5e5 L: a TypeError), and every material clock was
+    integrated from chart time 0 in steps of L/4 (a cost growing as 1/v). Now: the box holds the impacts, and the
+    clocks tick at multiples of their step (the rod at rest until the first impact: proper time = chart time)."""
+    import time
+
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.engine import run as run_rigid
+    from rodparadox.physics.rod_view import chart_of
+    from rodparadox.render.rod_panel import rod_box
+
+    scenario = load("fig2").with_overrides(v=1e-6, rod=model)
+    history = run_rigid(scenario) if model == "rigid" else run(scenario)
+    start = time.process_time()
+    X0, X1, T0, T1 = rod_box(history)
+    assert 4.99e5 < T0 < T1 < 5.01e5
+    ticks = chart_of(history).clock_ticks(0.5, 0.5, T0, 0.5 * (T0 + T1))
+    assert time.process_time() - start < 1.0
+    first = math.ceil(T0 / 0.5) * 0.5
+    assert ticks[0] == pytest.approx((first, first), abs=1e-9)
+    assert all(b[0] - a[0] == pytest.approx(0.5, abs=1e-9) for a, b in zip(ticks, ticks[1:]))

@@ -124,16 +124,31 @@ class CausalChart:
     def clock_ticks(self, X: float, step: float, T_lo: float, T_hi: float) -> list[tuple[float, float]]:
         """(proper time, chart time) of material point X's clock ticks, every `step` of its proper time counted
         from chart time 0 (before any contact, where the chart time is S's time), between T_lo and T_hi."""
-        lo = min(0.0, T_lo)
-        clock = _Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L)
+        lo, offset = _quiet_start(T_lo, self.history._start_T(X), self.L)
+        clock = _Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L,
+                       offset)
         return clock.ticks(step, T_lo)
+
+
+#: a clock whose first tick shown comes this many L after chart time 0, with the rod at rest until then, starts
+#: there (its proper time so far is the chart time itself): at v = 1e-6 the first impact comes 5e5 L after 0, and
+#: integrating the clock across that quiet stretch cost time growing as 1/v
+QUIET_START = 64.0
+
+
+def _quiet_start(T_lo: float, quiet_until: float, L: float) -> tuple[float, float]:
+    """Where a material clock counted from chart time 0 starts integrating, and its proper time there."""
+    start = min(T_lo, quiet_until)
+    if start > QUIET_START * L:
+        return start, start  # at rest, unstressed, since chart time 0: d tau = dT
+    return min(0.0, T_lo), 0.0
 
 
 class _Clock:
     """A material clock from chart time T0 to T1: d tau / dT = rate(T), smooth between the knots (the fronts, or a
     turn's ends), integrated by Gauss-Legendre on spans of at most L / 4; tau(0) = 0 when 0 lies in the span."""
 
-    def __init__(self, rate, breaks, T0: float, T1: float, L: float):
+    def __init__(self, rate, breaks, T0: float, T1: float, L: float, offset: float = 0.0):
         self.rate = rate
         knots = [T0]
         for b in [*sorted(breaks), T1]:
@@ -143,7 +158,7 @@ class _Clock:
             n = max(1, math.ceil((b - a) / (0.25 * L)))
             knots += [a + (b - a) * (k + 1) / n for k in range(n)]
         self.knots = knots
-        self.taus = [0.0]
+        self.taus = [offset]  # the proper time at T0 (0 unless counted from before T0: `_quiet_start`)
         for a, b in zip(knots, knots[1:]):
             self.taus.append(self.taus[-1] + self._integral(a, b))
         self.total = self.taus[-1]
@@ -194,7 +209,8 @@ class _Rest:
     def to_chart(self, e: Event, L: float):
         p, o = e.seen_from(self.rapidity), self.left.seen_from(self.rapidity)
         T = self.T_ref + p.t - o.t
-        return (T, p.x - o.x) if self.T_lo - 1e-12 * L <= T <= self.T_hi + 1e-12 * L else None
+        slack = 1e-12 * L if abs(T) <= 100.0 * L else 1e-13 * abs(T)  # rounding of T itself, far in the future
+        return (T, p.x - o.x) if self.T_lo - slack <= T <= self.T_hi + slack else None
 
     def to_event(self, T: float, X: float, L: float) -> Event:
         o = self.left.seen_from(self.rapidity)
@@ -318,9 +334,10 @@ class RigidChart:
 
     def clock_ticks(self, X: float, step: float, T_lo: float, T_hi: float) -> list[tuple[float, float]]:
         """(proper time, chart time) of material point X's clock ticks every `step`, counted from chart time 0."""
-        lo = min(0.0, T_lo)
+        lo, offset = _quiet_start(T_lo, self.pieces[0].T_hi, self.L)  # the rest frame S until the first turn
         breaks = [T for p in self.pieces for T in (p.T_lo, p.T_hi) if lo < T < T_hi]
-        return _Clock(lambda T: self._piece_at(T).tick_rate(X, self.L), breaks, lo, T_hi, self.L).ticks(step, T_lo)
+        return _Clock(lambda T: self._piece_at(T).tick_rate(X, self.L), breaks, lo, T_hi, self.L,
+                      offset).ticks(step, T_lo)
 
 
 def chart_polyline(chart, points: np.ndarray) -> np.ndarray:
