@@ -124,7 +124,8 @@ class CausalChart:
     def clock_ticks(self, X: float, step: float, T_lo: float, T_hi: float) -> list[tuple[float, float]]:
         """(proper time, chart time) of material point X's clock ticks, every `step` of its proper time counted
         from chart time 0 (before any contact, where the chart time is S's time), between T_lo and T_hi."""
-        lo, offset = _quiet_start(T_lo, self.history._start_T(X), self.L)
+        plus = self.solution.plus  # its first piece: the undisturbed rod, up to the first contact
+        lo, offset = _quiet_start(T_lo, plus.pieces[0].hi if plus.pieces else math.inf, self.L)
         clock = _Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L,
                        offset)
         return clock.ticks(step, T_lo)
