@@ -125,3 +125,26 @@ def test_rod_view_at_the_slowest_speed(model):
     first = math.ceil(T0 / 0.5) * 0.5
     assert ticks[0] == pytest.approx((first, first), abs=1e-9)
     assert all(b[0] - a[0] == pytest.approx(0.5, abs=1e-9) for a, b in zip(ticks, ticks[1:]))
+
+
+def test_ledger_figure_tables_are_bounded(monkeypatch):
+    """Issue 27, item 3: the causal ledger figure from v = 0.97 raised a traceback from its cubic spline (`x must
+    be strictly increasing`: knots of a(u) no longer told apart) or ran for minutes into gigabytes. Its tables are
+    now bounded (MAX_KNOTS, lowered here so the test takes a moment) and a figure beyond them is refused in one
+    sentence naming v; within the bound the curves are those of `rod_parts` (1e-8)."""
+    import numpy as np
+
+    from rodparadox.errors import ScenarioError
+    from rodparadox.io.scenario import load
+    from rodparadox.physics import causal_parts
+
+    history = run(load("fig1").with_overrides(rod="causal"))
+    times = np.array([1.0, 1.5])
+    matter, stress = causal_parts.rod_parts_on_slices(history, 0.0, times)
+    for k, t in enumerate(times):
+        _, exact = causal_parts.rod_parts(history, 0.0, t)
+        assert stress[k] == pytest.approx([exact.T, exact.p], abs=1e-8)
+    monkeypatch.setattr(causal_parts, "MAX_KNOTS", 100)
+    with pytest.raises(ScenarioError, match="choose a lower v") as caught:
+        causal_parts.rod_parts_on_slices(history, 0.0, times)
+    assert caught.value.key == "v"

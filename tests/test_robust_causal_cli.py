@@ -48,3 +48,4 @@ def test_sound_speed_is_checked_against_the_rod_being_run(tmp_path):
     for extra in ((), ("--rod", "rigid")):
         message = error_of("events", path, *extra)
         assert "give rod: causal with it, or --rod causal" in message
+

@@ -152,6 +152,9 @@ SPLINE_STEP = 1.0 / 32
 SPLINE_TOLERANCE = 1e-10
 #: Gauss-Legendre nodes between neighbouring knots of the tables, on each slice
 GAUSS = 4
+#: the most knots the two tables may take together; more, and the figure is refused in one sentence (its cost
+#: must stay bounded by what it shows)
+MAX_KNOTS = 20_000
 
 
 def _tabulated(invariant, chart, lo: float, hi: float, L: float):
@@ -166,10 +169,29 @@ def _tabulated(invariant, chart, lo: float, hi: float, L: float):
                     math.ceil((hi - lo) / invariant.period) + 1) if lo < s < hi)
     cuts = [lo, *sorted(cuts), hi]
     xs, cs = [], []
+    knots = 0
+
+    def too_many() -> ScenarioError:
+        return ScenarioError(f"the causal rod's energy-momentum curves would need more than {MAX_KNOTS:,} knots to "
+                             f"follow its compression to {SPLINE_TOLERANCE:g} (too extreme a speed or mass ratio for "
+                             f"a figure); choose a lower v or masses nearer the rod's, or ask for the ledger's table.",
+                             "v")
+
+    if len(cuts) > MAX_KNOTS or (hi - lo) / (SPLINE_STEP * L) > MAX_KNOTS:
+        raise too_many()
     for a, b in zip(cuts, cuts[1:]):
         inside = b - 1e-12 * (b - a + L)  # r at a piece's right end is its own, not the next piece's
         grid = np.linspace(a, inside, max(4, math.ceil((b - a) / (SPLINE_STEP * L))) + 1)
+        if not np.all(np.diff(grid) > 0.0):  # a piece too short for its knots to differ: r is one value there
+            grid = np.unique(grid)
+            if len(grid) < 2:
+                continue
         F, r = np.array([chart(x) for x in grid]), np.array([invariant.r(x) for x in grid])
+        rising = np.concatenate([[True], np.diff(F) > 0.0])
+        if not rising.all():  # knots a(u) (or b(w)) does not tell apart in double precision: one of each
+            grid, F, r = grid[rising], F[rising], r[rising]
+            if len(grid) < 2:
+                continue
         fresh = np.ones(len(grid) - 1, dtype=bool)  # intervals not yet checked
         for _ in range(40):  # halve the intervals where the spline misses r at their midpoint
             spline = CubicSpline(F, r)
@@ -178,12 +200,17 @@ def _tabulated(invariant, chart, lo: float, hi: float, L: float):
             F_mid = np.array([chart(m) for m in mids])
             r_mid = np.array([invariant.r(m) for m in mids])
             missed = np.abs(spline(F_mid) - r_mid) > SPLINE_TOLERANCE
+            # an interval whose halves would not differ in F (a(u) flat to rounding: lam ~ e^17) cannot be halved
+            missed &= (F_mid > F[which]) & (F_mid < F[which + 1])
             if not missed.any():
                 break
+            if knots + len(grid) + int(missed.sum()) > MAX_KNOTS:
+                raise too_many()
             at = which[missed] + 1
             grid, F, r = (np.insert(q, at, q_mid[missed]) for q, q_mid in ((grid, mids), (F, F_mid), (r, r_mid)))
             fresh = np.zeros(len(grid) - 1, dtype=bool)
             fresh[np.concatenate([at + np.arange(len(at)) - 1, at + np.arange(len(at))])] = True  # both halves
+        knots += len(grid)
         xs.append(spline.x[:-1])
         cs.append(spline.c)
     return PPoly(np.concatenate(cs, axis=1), np.concatenate([*xs, [chart(hi)]]))
