@@ -148,3 +148,21 @@ def test_ledger_figure_tables_are_bounded(monkeypatch):
     with pytest.raises(ScenarioError, match="choose a lower v") as caught:
         causal_parts.rod_parts_on_slices(history, 0.0, times)
     assert caught.value.key == "v"
+
+
+def test_colour_scale_stays_below_c():
+    """Issue 27, item 4: the causal rod at v = 0.999 has material points at rapidity -14 in S; seen from S' the
+    colour scale's end was tanh(17.9), which a colour bar pads to c (a pcolormesh traceback of non-finite values,
+    or 'Invalid vmin or vmax' at 0.99999). The scale ends at rapidity FASTEST_COLOUR; below it, unchanged."""
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.frames import parse_frames
+    from rodparadox.render.colour_scale import FASTEST_COLOUR, causal_rapidity_range, colour_scale
+
+    fast = run(load("fig2").with_overrides(v=0.999))
+    for frame in parse_frames("both", 0.999):
+        scale = colour_scale(fast, frame)
+        for end in (*scale.limits, *scale.ends):
+            assert abs(math.atanh(end)) <= FASTEST_COLOUR + 1e-9
+    slow = run(load("fig2"))  # at v = 0.6 nothing comes near: the bound is the largest rapidity change itself
+    scale = colour_scale(slow, parse_frames("rest", 0.6)[0])
+    assert scale.bound == max(abs(r) for r in causal_rapidity_range(slow))
