@@ -49,3 +49,12 @@ def test_sound_speed_is_checked_against_the_rod_being_run(tmp_path):
         message = error_of("events", path, *extra)
         assert "give rod: causal with it, or --rod causal" in message
 
+
+
+def test_causal_boost_to_near_c_is_refused(tmp_path):
+    """Issue 27, item 4: animate --rod causal --mode boost --frame rest..0.9999999 tried to allocate 286 GiB (its
+    window, every frame's, spans thousands of L where the rod rings): refused in one sentence naming the frames."""
+    message = error_of("animate", "fig2", "--rod", "causal", "--mode", "boost", "--frame", "rest..0.9999999",
+                       "--fps", "4", "--seconds", "1", "-o", tmp_path)
+    assert "boost between slower frames" in message and "--mode now" in message
+    assert not list(tmp_path.iterdir())
