@@ -111,7 +111,7 @@ def test_rod_view_at_the_slowest_speed(model):
     import time
 
     from rodparadox.io.scenario import load
-    from rodparadox.physics.engine import run as run_rigid
+    from rodparadox.physics.rigid import run as run_rigid
     from rodparadox.physics.rod_view import chart_of
     from rodparadox.render.rod_panel import rod_box
 
@@ -136,7 +136,7 @@ def test_ledger_figure_tables_are_bounded(monkeypatch):
 
     from rodparadox.errors import ScenarioError
     from rodparadox.io.scenario import load
-    from rodparadox.physics import causal_parts
+    from rodparadox.physics.causal import parts as causal_parts
 
     history = run(load("fig1").with_overrides(rod="causal"))
     times = np.array([1.0, 1.5])
@@ -156,7 +156,8 @@ def test_colour_scale_stays_below_c():
     or 'Invalid vmin or vmax' at 0.99999). The scale ends at rapidity FASTEST_COLOUR; below it, unchanged."""
     from rodparadox.io.scenario import load
     from rodparadox.physics.frames import parse_frames
-    from rodparadox.render.colour_scale import FASTEST_COLOUR, causal_rapidity_range, colour_scale
+    from rodparadox.physics.causal.extremes import causal_rapidity_range
+    from rodparadox.render.colour_scale import FASTEST_COLOUR, colour_scale
 
     fast = run(load("fig2").with_overrides(v=0.999))
     for frame in parse_frames("both", 0.999):
