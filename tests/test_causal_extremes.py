@@ -167,3 +167,23 @@ def test_colour_scale_stays_below_c():
     slow = run(load("fig2"))  # at v = 0.6 nothing comes near: the bound is the largest rapidity change itself
     scale = colour_scale(slow, parse_frames("rest", 0.6)[0])
     assert scale.bound == max(abs(r) for r in causal_rapidity_range(slow))
+
+
+def test_ledger_times_at_any_unit_of_length():
+    """Issue 27, item 10: the causal ledger printed t with four decimals (every event at 0.0000 for L = 1e-5), and
+    Fig. 2's simultaneous B₁ and A₁ in S′ swapped order between L = 1e-5 and 1e5 (rounding). Now: the same order
+    at every L, and the times with the digits their scale needs (four decimals kept at L = 1)."""
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.frames import parse_frames
+    from rodparadox.tables.causal_ledger import instants, time_format
+
+    moving = parse_frames("moving", 0.6)[0]
+    seen = {}
+    for L in (1e-5, 1.0, 1e5):
+        found = instants(run(load("fig2").with_overrides(L=L)), moving)
+        text = time_format([t for _, _, t, _ in found])
+        seen[L] = [(label, text(t)) for label, _, t, _ in found]
+    assert [label for label, _ in seen[1e-5]] == [label for label, _ in seen[1.0]] == [label for label, _ in seen[1e5]]
+    assert seen[1.0][:3] == [("B1", "1.4167"), ("A1", "1.4167"), ("A1s", "2.6526")]
+    assert seen[1e-5][:3] == [("B1", "1.416667e-05"), ("A1", "1.416667e-05"), ("A1s", "2.652648e-05")]
+    assert seen[1e5][0] == ("B1", "141666.7")
