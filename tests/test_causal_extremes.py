@@ -187,3 +187,17 @@ def test_ledger_times_at_any_unit_of_length():
     assert seen[1.0][:3] == [("B1", "1.4167"), ("A1", "1.4167"), ("A1s", "2.6526")]
     assert seen[1e-5][:3] == [("B1", "1.416667e-05"), ("A1", "1.416667e-05"), ("A1s", "2.652648e-05")]
     assert seen[1e5][0] == ("B1", "141666.7")
+
+
+def test_long_contact_is_bounded(monkeypatch):
+    """Issue 27, item 2: a pair of masses 1e6 at v = 0.01 squeezes the rod for thousands of crossing times (each
+    contact's output read back through every earlier one: minutes). The run stops at MAX_CONTACT_WINDOWS windows in
+    contact (lowered here to keep the test short) with one sentence naming the masses."""
+    from rodparadox.errors import ScenarioError
+    from rodparadox.physics.causal import solve
+
+    monkeypatch.setattr(solve, "MAX_CONTACT_WINDOWS", 20)
+    heavy = Scenario("heavy", 0.01, (Particle("A", 1e6, gap=0.5), Particle("B", 1e6, gap=0.5)), 1.0)
+    with pytest.raises(ScenarioError, match="choose masses nearer the rod's") as caught:
+        run(heavy)
+    assert caught.value.key == "particles" and "\n" not in str(caught.value)

@@ -388,10 +388,14 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
             raise ScenarioError(f"particle {waiting[0]} reaches the causal rod more than {MAX_WINDOWS} crossing times "
                                 f"of the rod after the first contact; give it a smaller gap or a higher speed.",
                                 f"particles.{waiting[0]}.gap")
-        if windows > MAX_WINDOWS or contact_windows > MAX_CONTACT_WINDOWS:
-            raise ScenarioError(f"the particles keep touching the causal rod for more than {min(windows, MAX_WINDOWS)}"
-                                f" crossing times of the rod ({contact_windows} of them in contact); choose masses "
-                                f"nearer the rod's.", "particles")
+        if contact_windows > MAX_CONTACT_WINDOWS:
+            raise ScenarioError(f"the particles stay in contact with the causal rod for more than "
+                                f"{MAX_CONTACT_WINDOWS} crossing times of the rod (far heavier than the rod, they "
+                                f"squeeze it slowly, like a spring); choose masses nearer the rod's.", "particles")
+        if windows > MAX_WINDOWS:
+            raise ScenarioError(f"the causal rod and the particles have not parted for good after {MAX_WINDOWS} "
+                                f"crossing times of the rod (a particle keeps pace with the ringing rod); choose "
+                                f"masses nearer the rod's.", "particles")
         T1 = T0 + L
         any_contact = False
         for end in ("left", "right"):
