@@ -196,7 +196,7 @@ def test_long_contact_is_bounded(monkeypatch):
     from rodparadox.errors import ScenarioError
     from rodparadox.physics.causal import solve
 
-    monkeypatch.setattr(solve, "MAX_CONTACT_WINDOWS", 20)
+    monkeypatch.setattr(solve, "MAX_CONTACT_WINDOWS", 6)
     heavy = Scenario("heavy", 0.01, (Particle("A", 1e6, gap=0.5), Particle("B", 1e6, gap=0.5)), 1.0)
     with pytest.raises(ScenarioError, match="choose masses nearer the rod's") as caught:
         run(heavy)
