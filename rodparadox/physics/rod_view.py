@@ -67,6 +67,11 @@ def quiet_start(T_lo: float, quiet_until: float, L: float) -> tuple[float, float
     return min(0.0, T_lo), 0.0
 
 
+#: the most Gauss-Legendre spans between two knots of a clock's rate: a rate smooth over a long stretch (the rigid
+#: rod at rest for 1e6 L while a far particle comes) needs no more, and 4 a crossing time would be millions
+MAX_SPANS = 64
+
+
 class Clock:
     """A material clock from chart time T0 to T1: d tau / dT = rate(T), smooth between the knots (the fronts, or a
     turn's ends), integrated by Gauss-Legendre on spans of at most L / 4; tau(0) = 0 when 0 lies in the span."""
@@ -78,7 +83,7 @@ class Clock:
             a = knots[-1]
             if b <= a:
                 continue
-            n = max(1, math.ceil((b - a) / (0.25 * L)))
+            n = min(MAX_SPANS, max(1, math.ceil((b - a) / (0.25 * L))))
             knots += [a + (b - a) * (k + 1) / n for k in range(n)]
         self.knots = knots
         self.taus = [offset]  # the proper time at T0 (0 unless counted from before T0: `quiet_start`)
