@@ -43,6 +43,10 @@ def _with_rod(scenario):
     rod, rods = meta.get(ROD_META) or scenario.rod, meta.get(RODS_META, ("rigid", "causal"))
     if rod not in rods:
         raise BadInput(words.rod_not_here(rod, context.info_name if context is not None else "this command", rods))
+    if rod != "both":  # both: asked for by name, beside the causal rod the file's sound_speed describes
+        from rodparadox.io.scenario import check_sound_speed_rod
+
+        check_sound_speed_rod(scenario.with_overrides(rod=rod))
     return scenario if rod == "both" else scenario.with_overrides(rod=rod)  # both: the file's rod places particles
 
 

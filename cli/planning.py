@@ -82,7 +82,20 @@ def frames_with_rod(spec: str, v: float) -> tuple:
     except FrameError as e:  # the library's sentence, with the word it does not know of
         said = str(e).replace("rest, moving, both or", f"rest, moving, both, {ROD_WORD} (the rod's own view) or")
         raise words.frame_error(FrameError(said), "frame", spec) from None
+    check_panels(len(frames), True, False)
     return (*frames[:before], ROD_VIEW, *frames[before:])
+
+
+def check_panels(frames: int, rod_view: bool, both: bool) -> None:
+    """At most MAX_PANELS panels in one figure, the rod's own view counted, each frame twice with --rod both."""
+    from rodparadox.physics.frames import MAX_PANELS
+
+    panels = frames * (2 if both else 1) + rod_view
+    if panels > MAX_PANELS:
+        said = f"{frames} frames" + (" for each of the two rods" if both else "") + (" and the rod's own view"
+                                                                                      if rod_view else "")
+        raise BadInput(f"--frame asks for {panels} panels ({said}); at most {MAX_PANELS} fit in one figure, so give "
+                       f"fewer frames.")
 
 
 def lorentz_frames(frames: Sequence) -> tuple[Frame, ...]:

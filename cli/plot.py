@@ -71,6 +71,8 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from rodparadox.physics.rod_view import refuse_frame_extras
     for job in jobs:  # every panel the rod's own view: the extras have nothing to draw on
         refuse_frame_extras(job.frames[0], **extras, rod_lines=rod_lines)
+        lorentz = lorentz_frames(job.frames[0])
+        planned.check_panels(len(lorentz), len(lorentz) < len(job.frames[0]), rod == "both")
     histories = [run_rods(job.scenario, job.name, lorentz_frames(job.frames[0])) for job in jobs]
     if proper_time and any(h.turning is None for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")

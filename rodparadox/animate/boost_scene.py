@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import FuncFormatter, MaxNLocator, ScalarFormatter
 
 from rodparadox.animate.images import blitted
-from rodparadox.animate.timeline import BoostTimeline
+from rodparadox.animate.timeline import BoostTimeline, boost_tolerance
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.types import WORLDLINE_NAMES
 from rodparadox.physics.history import RodHistory
@@ -132,7 +132,7 @@ class BoostScene:
         """The panel as plot's layers see it, in `frame`: its world-lines sampled over the whole boost's time
         window (the axes stay still while they move)."""
         history, L = self.history, self.history.scenario.L
-        tolerance = sampling_tolerance(history)
+        tolerance = boost_tolerance(sampling_tolerance(history), self.timeline.t_window)
         named = ((name, history.worldline(name)) for name in WORLDLINE_NAMES)  # the rod interface's names
         points = {name: w.seen_from(frame.rapidity).sample(*self.timeline.t_window, tolerance) / L
                   for name, w in named if w is not None}

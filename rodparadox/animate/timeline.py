@@ -200,6 +200,21 @@ class BoostTimeline:
         return len(self.frames)
 
 
+#: in boost mode the axes hold every frame's window: seen from a frame near c that is thousands of L, where the
+#: causal rod rings thousands of times; its world-lines are sampled to this fraction of the window's extent where
+#: that is coarser than the sampling tolerance (a window of at most 100 L: unchanged), so the points drawn, and
+#: their cost, are bounded by the panel, not by the frame's speed
+BOOST_SAMPLING = 1e-6
+#: the longest time window (units of L) a boost of the causal rod may span: its world-sheet is shaded in cells
+#: of the rod's own light-line chart, tens of them every crossing time, so the cost grows with the window
+MAX_CAUSAL_BOOST = 400
+
+
+def boost_tolerance(tolerance: float, t_window: tuple[float, float]) -> float:
+    """The sampling tolerance of a boost's world-lines over the time window `t_window` (`BOOST_SAMPLING`)."""
+    return max(tolerance, BOOST_SAMPLING * (t_window[1] - t_window[0]))
+
+
 def boost_timeline(history: RodHistory, start: Frame, end: Frame, count: int) -> BoostTimeline:
     """The frames from `start` to `end` (`boost_velocities`; the ends keep their names), and the union of every
     frame's window: its time window (`time_window`, as `plot`) and the x its world-lines reach within it, so the
@@ -209,10 +224,17 @@ def boost_timeline(history: RodHistory, start: Frame, end: Frame, count: int) ->
     tolerance = sampling_tolerance(history)
     t_lo = x_lo = math.inf
     t_hi = x_hi = -math.inf
+    L = history.scenario.L
     for frame in frames:
         fv = view(history, frame)
         t_lo, t_hi = min(t_lo, fv.t_range[0]), max(t_hi, fv.t_range[1])
-        for points in fv.worldline_points(tolerance).values():
+        if history.fronts is not None and t_hi - t_lo > MAX_CAUSAL_BOOST * L:  # the causal rod: its cells
+            raise OptionError("frame", f"{exact(start.velocity)}..{exact(end.velocity)}", template="{what}: a boost of "
+                              "the causal rod to the frame of velocity {u} spans more than {most} L of time, over "
+                              "which the rod rings hundreds of times, too fine to draw; boost between slower frames "
+                              "(|U| up to about 0.99), or use --mode now.", u=exact(frame.velocity),
+                              most=MAX_CAUSAL_BOOST)
+        for points in fv.worldline_points(boost_tolerance(tolerance, fv.t_range)).values():
             x_lo, x_hi = min(x_lo, float(points[:, 0].min())), max(x_hi, float(points[:, 0].max()))
     return BoostTimeline(tuple(frames), (t_lo, t_hi), (x_lo, x_hi))
 

@@ -253,12 +253,18 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
             raise ScenarioError(f"{key} must be text, got {described(value) if isinstance(value, (list, dict)) else repr(value)}.", key)
     if "sound_speed" in data:
         _check_sound_speed(data["sound_speed"])
-        if data.get("rod", "rigid") != "causal":  # a rigid rod carries a push across at once: no sound speed
-            raise ScenarioError("sound_speed: 1 is the causal rod's: give rod: causal with it (the rigid rod, the "
-                                "default, moves as a whole at once, as if its sound were infinitely fast).", "sound_speed")
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
                     v=data["v"], L=data.get("L", 1.0), particles=tuple(particles), title=data.get("title", ""),
-                    rod=data.get("rod", "rigid"))
+                    rod=data.get("rod", "rigid"), sound_speed=data.get("sound_speed"))
+
+
+def check_sound_speed_rod(scenario: Scenario) -> None:
+    """sound_speed: 1 is the causal rod's: a run of the rigid rod (the file's rod, or the one the command line
+    chose) with it is refused in one sentence (a rigid rod carries a push across at once: no sound speed)."""
+    if scenario.sound_speed is not None and scenario.rod != "causal":
+        raise ScenarioError("sound_speed: 1 is the causal rod's: give rod: causal with it, or --rod causal (the "
+                            "rigid rod, the default, moves as a whole at once, as if its sound were infinitely "
+                            "fast).", "sound_speed")
 
 
 def _check_sound_speed(value: Any) -> None:

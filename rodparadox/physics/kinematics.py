@@ -365,13 +365,14 @@ class ChartCurve:
     def chart_time(self, t: float) -> float:
         """The chart time where the curve is at time t (t rises with T: the curve is time-like)."""
         lo, hi = self.T_start, self.T_end
+        scale = getattr(self.chart, "L", 1.0)  # steps in units of the rod's length: L may be 1e-100 or 1e100
         if not math.isfinite(lo):  # endless into the past too (the rod at rest before any contact)
-            lo = hi if math.isfinite(hi) else 0.0
-            step = 1.0
+            lo = hi if math.isfinite(hi) else (t if scale != 1.0 else 0.0)
+            step = scale
             while self.point(lo).t > t:
                 lo, step = lo - step, 2.0 * step
         if not math.isfinite(hi):
-            step = max(1.0, t - self.point(lo).t)
+            step = max(scale, t - self.point(lo).t)
             hi = lo + step
             while self.point(hi).t < t:
                 step *= 2.0

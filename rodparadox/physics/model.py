@@ -137,6 +137,9 @@ class Scenario:
     title: str = ""
     #: which rod: "rigid" (the paper's) or "causal" (sound at c)
     rod: str = "rigid"
+    #: the file's sound_speed (1, the causal rod's), or None: the rod being run must then be the causal one
+    #: (`--rod causal` may choose it after the file is read, so it is checked where the rod is chosen)
+    sound_speed: float | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         _check_text(self.name, "name", newlines=False)

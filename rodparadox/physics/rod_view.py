@@ -52,21 +52,41 @@ def chart_of(history):
     return history.own_chart()
 
 
+#: a clock whose first tick shown comes this many L after chart time 0, with the rod at rest until then, starts
+#: there (its proper time so far is the chart time itself): at v = 1e-6 the first impact comes 5e5 L after 0, and
+#: integrating the clock across that quiet stretch cost time growing as 1/v
+QUIET_START = 64.0
+
+
+def quiet_start(T_lo: float, quiet_until: float, L: float) -> tuple[float, float]:
+    """Where a material clock counted from chart time 0 starts integrating, and its proper time there, the rod
+    resting unstressed in S up to chart time `quiet_until`."""
+    start = min(T_lo, quiet_until)
+    if start > QUIET_START * L:
+        return start, start  # at rest, unstressed, since chart time 0: d tau = dT
+    return min(0.0, T_lo), 0.0
+
+
+#: the most Gauss-Legendre spans between two knots of a clock's rate: a rate smooth over a long stretch (the rigid
+#: rod at rest for 1e6 L while a far particle comes) needs no more, and 4 a crossing time would be millions
+MAX_SPANS = 64
+
+
 class Clock:
     """A material clock from chart time T0 to T1: d tau / dT = rate(T), smooth between the knots (the fronts, or a
     turn's ends), integrated by Gauss-Legendre on spans of at most L / 4; tau(0) = 0 when 0 lies in the span."""
 
-    def __init__(self, rate, breaks, T0: float, T1: float, L: float):
+    def __init__(self, rate, breaks, T0: float, T1: float, L: float, offset: float = 0.0):
         self.rate = rate
         knots = [T0]
         for b in [*sorted(breaks), T1]:
             a = knots[-1]
             if b <= a:
                 continue
-            n = max(1, math.ceil((b - a) / (0.25 * L)))
+            n = min(MAX_SPANS, max(1, math.ceil((b - a) / (0.25 * L))))
             knots += [a + (b - a) * (k + 1) / n for k in range(n)]
         self.knots = knots
-        self.taus = [0.0]
+        self.taus = [offset]  # the proper time at T0 (0 unless counted from before T0: `quiet_start`)
         for a, b in zip(knots, knots[1:]):
             self.taus.append(self.taus[-1] + self._integral(a, b))
         self.total = self.taus[-1]

@@ -15,6 +15,9 @@ from rodparadox.tolerances import DIFFERENCE_ROUNDING
 #: the colour scale's half-range, in rapidity, when the rod never changes velocity in a frame (every point at the
 #: centre)
 STILL_BOUND = 0.1
+#: the largest rapidity a colour scale reaches (tanh 15 = 1 - 1.9e-13): a colour bar on a velocity scale drawn
+#: past rapidity ~17 pads its ends to c, where arctanh is infinite (a pcolormesh traceback)
+FASTEST_COLOUR = 15.0
 
 
 @dataclass(frozen=True)
@@ -51,4 +54,8 @@ def colour_scale(history: RodHistory, frame: Frame) -> ColourScale:
     # (fig1 from u = 0.3: -0.30000000000000004 against -0.3): still, not a scale zero wide
     if bound <= 0 or max(rapidities) - min(rapidities) <= DIFFERENCE_ROUNDING:
         return ColourScale(centre, STILL_BOUND)
-    return ColourScale(centre, bound, (math.tanh(min(rapidities)), math.tanh(max(rapidities))))
+    # a velocity is the scale's coordinate: past rapidity FASTEST_COLOUR it rounds to c (the causal rod's ends at
+    # v = 0.999 seen from S'), where the norm's arctanh is infinite; the colours end at FASTEST_COLOUR
+    bound = min(bound, FASTEST_COLOUR - abs(math.atanh(centre)))
+    low, high = max(min(rapidities), -FASTEST_COLOUR), min(max(rapidities), FASTEST_COLOUR)
+    return ColourScale(centre, bound, (math.tanh(low), math.tanh(high)))

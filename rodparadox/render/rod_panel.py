@@ -43,6 +43,9 @@ MATERIAL_LINES = 3
 KEY_WIDTH = 14.0
 #: the grid the horizon's hatching is found on, per L
 HORIZON_GRID = 32
+#: at most this many rows of it; a particle's line is sampled to 1e-4 L, densified every 0.04 L, in a window of up
+#: to PARTICLE_WINDOW L, in proportion beyond (a gap of 1e6 L: a panel's cost bounded by what it shows)
+HORIZON_ROWS, PARTICLE_WINDOW = 2048, 50.0
 #: the ground a pivot's dots are drawn on, where the end's solid line is blanked
 PIVOT_GROUND = "white"
 
@@ -234,7 +237,7 @@ def _horizon(ax, chart, st: Style, box, letter: str) -> list:
     xs = np.linspace(X0, X1, max(2, round((X1 - X0) * HORIZON_GRID)) + 1)
     # rows only where a turn, or the wedges beside it, can be: the turns' times with a margin of L either side
     spans = [(a / L - 1.0, b / L + 1.0) for a, b, _ in chart.turns]
-    ts = np.linspace(T0, T1, max(2, round((T1 - T0) * HORIZON_GRID)) + 1)
+    ts = np.linspace(T0, T1, min(HORIZON_ROWS, max(2, round((T1 - T0) * HORIZON_GRID))) + 1)
     mask = np.zeros((len(ts), len(xs)))
     for r, T in enumerate(ts):
         if any(a <= T <= b for a, b in spans):
@@ -286,7 +289,8 @@ def _particles(ax, history, chart, st: Style, box, letter: str, fs) -> list:
             continue
         t_lo = min(e.t for e in _corners(chart, box, L, T0)) - L
         t_hi = max(e.t for e in _corners(chart, box, L, T1)) + L
-        points = densified(line.sample(t_lo, t_hi, 1e-4 * L), 0.04 * L)
+        coarse = max(1.0, (T1 - T0) / PARTICLE_WINDOW)
+        points = densified(line.sample(t_lo, t_hi, 1e-4 * L * coarse), 0.04 * L * coarse)
         drawn = chart_polyline(chart, points) / L
         ink = st.particles[name]
         artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,

@@ -20,7 +20,7 @@ import json
 import textwrap
 from typing import Any, Sequence
 
-from rodparadox.numbers import MINUS, exact, impact_name
+from rodparadox.numbers import MINUS, coordinate_format, exact, impact_name
 from rodparadox.physics.frames import Frame, frame_heading, frame_symbol, frame_word, time_window
 from rodparadox.physics.types import EnergyMomentum
 from rodparadox.physics.ledger import rounding_zero
@@ -46,9 +46,32 @@ def event_name(label: str) -> str:
 
 
 def instants(history, frame: Frame) -> list[tuple[str, str, float, object]]:
-    """(label, kind, t, impact) of every contact and separation in the frame's time order."""
-    f = frame.rapidity
-    return sorted(((i.label, i.kind, i.event.time_in(f), i) for i in history.impacts), key=lambda e: e[2])
+    """(label, kind, t, impact) of every contact and separation in the frame's time order; events at one time (to
+    rounding, 1e-9 L: Fig. 2's B₁ and A₁ in S′) in the history's own order, whatever the unit of length."""
+    f, L = frame.rapidity, history.scenario.L
+    order = {id(i): k for k, i in enumerate(history.impacts)}
+    out = sorted(((i.label, i.kind, i.event.time_in(f), i) for i in history.impacts), key=lambda e: e[2])
+    for k in range(1, len(out)):  # an insertion pass over ties: rounding must not order simultaneous events
+        j = k
+        while (j > 0 and abs(out[j][2] - out[j - 1][2]) <= 1e-9 * (L + abs(out[j][2]))
+               and order[id(out[j][3])] < order[id(out[j - 1][3])]):
+            out[j - 1], out[j] = out[j], out[j - 1]
+            j -= 1
+    return out
+
+
+def time_format(times: Sequence[float]):
+    """The t column's text: four decimals where they tell every time apart and the largest keeps four significant
+    digits (0.1 <= |t| < 1e5), else TABLE_DIGITS significant digits (L = 1e-5 put every event at 0.0000)."""
+    largest = max((abs(t) for t in times), default=0.0)
+    distinct = []  # the times, those within rounding of each other (simultaneous events) once
+    for t in sorted(times):
+        if not distinct or t - distinct[-1] > 1e-9 * largest:
+            distinct.append(t)
+    if 0.1 <= largest < 1e5 and len({fixed(t) for t in distinct}) == len(distinct):
+        return fixed
+    text = coordinate_format(list(times))
+    return lambda t: (lambda x: MINUS + x[1:] if x.startswith("-") else x)(text(t).lstrip("+"))  # as `fixed`
 
 
 def rows_at(history, frame: Frame, t: float, event=None) -> list[tuple[str, EnergyMomentum]]:
@@ -85,9 +108,10 @@ def ledger_table(history, frame: Frame, at: Sequence[float] | None = None) -> Ta
     rows = []
     times = [(event_name(label), t, i) for label, _, t, i in instants(history, frame)]
     times += [("", t, None) for t in at or ()]
+    t_text = time_format([t for _, t, _ in times])
     for name, t, event in times:
         for k, (body, em) in enumerate(rows_at(history, frame, t, event)):
-            rows.append((Cell(name if k == 0 else ""), Cell(fixed(t) if k == 0 else ""), Cell(body),
+            rows.append((Cell(name if k == 0 else ""), Cell(t_text(t) if k == 0 else ""), Cell(body),
                          Cell(fixed(em.E, zero if body == STRESS else 0.0)), Cell(fixed(em.p, zero))))
     total = history.initial_total(frame.rapidity)
     return Table(f"ledger_causal_{frame_word(frame)}",

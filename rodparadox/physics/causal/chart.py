@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from rodparadox.physics.kinematics import Event
-from rodparadox.physics.rod_view import Clock
+from rodparadox.physics.rod_view import Clock, quiet_start
 
 
 def _inverse(f, slope, y: float, scale: float) -> float:
@@ -77,8 +77,10 @@ class CausalChart:
     def clock_ticks(self, X: float, step: float, T_lo: float, T_hi: float) -> list[tuple[float, float]]:
         """(proper time, chart time) of material point X's clock ticks, every `step` of its proper time counted
         from chart time 0 (before any contact, where the chart time is S's time), between T_lo and T_hi."""
-        lo = min(0.0, T_lo)
-        clock = Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L)
+        plus = self.solution.plus  # its first piece: the undisturbed rod, up to the first contact
+        lo, offset = quiet_start(T_lo, plus.pieces[0].hi if plus.pieces else math.inf, self.L)
+        clock = Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L,
+                      offset)
         return clock.ticks(step, T_lo)
 
 
@@ -86,7 +88,7 @@ def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np
     """Where each material point X = sigma of the causal rod is at time t of the frame of rapidity f, and its
     rapidity there: the chart time T on the slice, t(T) = (e^-f a(T + X) + e^f b(T - X))/2 = t, by Newton's method
     (dt/dT = (e^(r+ - f) + e^(r- + f))/2 > 0) kept inside a bracket, from the neighbour's T; to 1e-13 of t."""
-    sol = history.solution
+    sol, L = history.solution, history.scenario.L
     ef = math.exp(f)
     xs, rapidities = [], []
     T = None
@@ -95,15 +97,15 @@ def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np
             return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
         if T is None:
             T = t
-        lo, hi, step = T, T, 1.0
+        lo, hi, step = T, T, L  # in units of the rod's length: L may be 1e-100 or 1e100
         while time(lo) > t:
             lo, step = lo - step, 2 * step
-        step = 1.0
+        step = L
         while time(hi) < t:
             hi, step = hi + step, 2 * step
         for _ in range(100):
             error = time(T) - t
-            if abs(error) <= 1e-13 * (1.0 + abs(t)):
+            if abs(error) <= 1e-13 * (L + abs(t)):
                 break
             if error > 0:
                 hi = T

@@ -36,6 +36,10 @@ DEGREE = 20
 EPS = float(np.finfo(float).eps)
 #: halvings of a step before the equation is refused as not integrable
 MAX_HALVINGS = 60
+#: a contact's output reads its input (the other end's output a crossing earlier, itself perhaps a contact's) at
+#: every point: a long contact between heavy particles (hundreds of crossings) would make each reading walk back
+#: through all of them. Past this many contacts in a chain, the output is read from its own polynomial instead
+MAX_DEPTH = 32
 
 _X = -np.cos(np.pi * np.arange(DEGREE + 1) / DEGREE)  # the Lobatto points on [-1, 1], ascending
 _X[0], _X[-1] = -1.0, 1.0
@@ -57,10 +61,10 @@ def _clenshaw(coef: list[float], x: float) -> float:
 class Step:
     """One kept step: [a, b], psi's coefficients and the primitives (from a) of exp(out) and exp(-out)."""
 
-    __slots__ = ("a", "b", "psi", "plus", "minus", "plus0", "minus0")
+    __slots__ = ("a", "b", "psi", "plus", "minus", "plus0", "minus0", "out")
 
-    def __init__(self, a, b, psi, plus, minus, plus0, minus0):
-        self.a, self.b, self.psi, self.plus, self.minus = a, b, psi, plus, minus
+    def __init__(self, a, b, psi, plus, minus, plus0, minus0, out=None):
+        self.a, self.b, self.psi, self.plus, self.minus, self.out = a, b, psi, plus, minus, out
         self.plus0, self.minus0 = plus0, minus0  # the integrals from the piece's start to a
 
     def x(self, s: float) -> float:
@@ -71,8 +75,8 @@ class Solved:
     """An end in contact while its input varies: psi, out = in - 2 psi and the integrals of exp(+-out) from lo,
     on [lo, hi], as polynomials on steps (the dense solution)."""
 
-    def __init__(self, lo: float, hi: float, r_in, steps: list[Step]):
-        self.lo, self.hi, self.r_in, self.steps = lo, hi, r_in, steps
+    def __init__(self, lo: float, hi: float, r_in, steps: list[Step], depth: int = 1):
+        self.lo, self.hi, self.r_in, self.steps, self.depth = lo, hi, r_in, steps, depth
         self._starts = [st.a for st in steps]
 
     def _step(self, s: float) -> Step:
@@ -83,6 +87,9 @@ class Solved:
         return _clenshaw(st.psi, st.x(s))
 
     def r(self, s: float) -> float:
+        if self.depth > MAX_DEPTH:  # its own polynomial: reading the input would read every earlier contact's
+            st = self._step(s)
+            return _clenshaw(st.out, st.x(s))
         return self.r_in(s) - 2.0 * self.psi(s)
 
     def ep(self, s: float) -> float:
@@ -137,16 +144,20 @@ def _newton(psi: np.ndarray, r_in: np.ndarray, psi_a: float, half: float, c: flo
     return None
 
 
-def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, budget=None) -> tuple[Solved, float | None]:
+def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, L: float = 1.0,
+                  budget=None) -> tuple[Solved, float | None]:
     """Integrate d psi/dT = -c sinh(psi - in(T)) from lo (psi = psi0, psi0 > in(lo)) to hi, stopping where
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
-    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi).
-    `budget`: a `solve.Budget` each step tried is spent from, or None."""
+    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi), found to
+    rounding relative to the rod's length L (chart times scale with it, from 1e-100 to 1e100). `budget`: a
+    `solve.Budget` each step tried is spent from, or None."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
     halvings = 0
     noise = _roughness(inp, lo, hi)
+    base = getattr(inp, "base", inp)
+    depth = 1 + getattr(base, "depth", 0)
     while a < hi:
         if budget is not None:
             budget.spend()
@@ -169,13 +180,13 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, budget=None)
             h = 0.5 * (b - a)
             continue
         step = Step(a, b, cp.tolist(), cheb.chebint(cep, lbnd=-1).tolist(), cheb.chebint(cem, lbnd=-1).tolist(),
-                    plus0, minus0)
+                    plus0, minus0, (_TO_COEF @ out).tolist() if depth > MAX_DEPTH else None)
         steps.append(step)
         below = np.nonzero(psi[1:] - r_in[1:] <= 0.0)[0]
         if below.size:  # the end falls unstressed inside this step: the separation, to the last bit
             j = int(below[0]) + 1
-            solved = Solved(lo, b, inp.r, steps)
-            T_sep = falling_root(lambda T: solved.psi(T) - inp.r(T), float(s[j - 1]), float(s[j]))
+            solved = Solved(lo, b, inp.r, steps, depth)
+            T_sep = falling_root(lambda T: solved.psi(T) - inp.r(T), float(s[j - 1]), float(s[j]), 4 * EPS * L)
             solved.hi = T_sep
             return solved, T_sep
         plus0 += 0.5 * (b - a) * _clenshaw(step.plus, 1.0)
@@ -183,7 +194,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, budget=None)
         a, psi_a = b, float(psi[-1])
         h = 2.0 * (b - step.a) if halvings == 0 else b - step.a  # grow while the first try is kept
         halvings = 0
-    return Solved(lo, hi, inp.r, steps), None
+    return Solved(lo, hi, inp.r, steps, depth), None
 
 
 def falling_root(g, lo: float, hi: float, xtol: float = 4 * EPS, rtol: float = 4 * EPS) -> float:

@@ -24,6 +24,7 @@ import math
 
 import numpy as np
 
+from rodparadox.errors import ScenarioError
 from rodparadox.physics.types import EnergyMomentum
 
 #: Gauss-Legendre nodes on each smooth piece of the slice
@@ -31,6 +32,12 @@ NODES = 16
 #: each smooth piece is halved until its halves agree with it to this, relative to the rod's (E, p) (1e-10: a
 #: ledger prints 4 to 6 digits)
 TOLERANCE = 1e-10
+#: or until they agree to this many times the rounding of the sum of the densities' magnitudes (at extreme speeds
+#: the densities in a frame far from the rod's are e^(2|th|) times its rest energy, and their rounding exceeds
+#: TOLERANCE: halving further would only chase that noise)
+NOISE = 256.0 * np.finfo(float).eps
+#: the most Gauss-Legendre pieces one slice's stress may take; more, and the slice is refused in one sentence
+MAX_PIECES = 600
 
 _Z, _W = np.polynomial.legendre.leggauss(NODES)
 _SPAN = 0.5 * (1.0 + _Z)  # each node's place in its piece, 0 to 1: the first guess of its w
@@ -89,10 +96,18 @@ def _stress(history, f: float, t: float) -> tuple[float, float]:
             ws[k] = w_of(us[k], w_R, w_L, w_L + (w_R - w_L) * (us[k] - u_L) / (u_R - u_L))
     rho0 = 1.0 / L
 
+    pieces = [0, 0.0]  # Gauss-Legendre pieces taken, and the sum of the magnitudes of the densities' terms
+
     def gauss(lo: float, hi: float, w_hi: float, w_lo: float) -> np.ndarray:
         """Both densities integrated over u in [lo, hi], where w runs from w_hi down to w_lo."""
         if not hi > lo:
             return np.zeros(2)
+        pieces[0] += 1
+        if pieces[0] > MAX_PIECES:
+            raise ScenarioError(f"the causal rod's stress on the slice t = {t:.6g} of a frame of velocity "
+                                f"{math.tanh(f):.7g} cannot be integrated to {TOLERANCE:g} of its energy in double "
+                                f"precision: its compression and this frame's speed are too extreme together; choose "
+                                f"a lower v or particles nearer the rod's mass.", "v")
         u = 0.5 * (lo + hi) + 0.5 * (hi - lo) * _Z
         w = np.array([w_of(float(x), w_lo, w_hi, w_hi + (w_lo - w_hi) * s) for x, s in zip(u, _SPAN)])
         r_plus = np.array([sol.r_plus(float(x)) for x in u])
@@ -100,6 +115,7 @@ def _stress(history, f: float, t: float) -> tuple[float, float]:
         A, B = np.exp(r_plus - f), np.exp(r_minus + f)
         lam2 = np.exp(-(r_plus + r_minus))  # of the frame-free sum: exactly 1 where unstressed, in every frame
         weight = 0.125 * rho0 * (lam2 - 1.0) * A * 0.5 * (hi - lo) * _W
+        pieces[1] += float(np.sum(np.abs(weight) * (A / B + 2.0 + B / A)))
         return np.array([np.sum(weight * (A / B - 2.0 + B / A)), np.sum(weight * (A / B - B / A))])
 
     def adaptive(lo, hi, w_hi, w_lo, whole, depth, scale) -> np.ndarray:
@@ -107,7 +123,7 @@ def _stress(history, f: float, t: float) -> tuple[float, float]:
         mid = 0.5 * (lo + hi)
         w_mid = w_of(mid, w_lo, w_hi, 0.5 * (w_lo + w_hi))
         left, right = gauss(lo, mid, w_hi, w_mid), gauss(mid, hi, w_mid, w_lo)
-        if depth >= 30 or np.max(np.abs(left + right - whole)) <= TOLERANCE * scale:
+        if depth >= 30 or np.max(np.abs(left + right - whole)) <= max(TOLERANCE * scale, NOISE * pieces[1]):
             return left + right
         return (adaptive(lo, mid, w_hi, w_mid, left, depth + 1, scale)
                 + adaptive(mid, hi, w_mid, w_lo, right, depth + 1, scale))

@@ -38,6 +38,9 @@ from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal.ode import falling_root, solve_contact
 #: windows of chart time L processed before a scenario is refused as never settling
 MAX_WINDOWS = 5000
+#: windows with a particle in contact before a scenario is refused: a contact costs far more than a free window,
+#: and particles far heavier than the rod squeeze it slowly, like a spring, for thousands of crossings
+MAX_CONTACT_WINDOWS = 300
 
 
 class Budget:
@@ -79,12 +82,26 @@ class _Contact:
     int exp(out) = exp(-r_in) [(s - lo) - (4/c)(q0 - q)/((1 + q)(1 + q0))],
     int exp(-out) = exp(r_in) [(s - lo) + (4/c)(q0 - q)/((1 - q)(1 - q0))]."""
 
-    def __init__(self, lo: float, hi: float, r_in: float, delta0: float, c: float):
+    def __init__(self, lo: float, hi: float, r_in: float, delta0: float, c: float, log_k: float | None = None):
         self.lo, self.hi, self.r_in, self.c = lo, hi, r_in, c
-        self.k = math.tanh(0.5 * delta0)
+        self.log_k = log_k
+        if log_k is None:  # k from delta0 (k > 0: delta0 > 0)
+            self.k = math.tanh(0.5 * delta0)
+            self._log_k = math.log(self.k) if self.k > 0.0 else math.log(delta0) - math.log(2.0)
+        else:  # a contact continued past where delta0 = psi - r_in still shows in double precision: k from ln k
+            self.k = math.exp(log_k)
+            self._log_k = log_k
 
     def q(self, s: float) -> float:
+        if self.log_k is not None:
+            return math.exp(self.log_k - self.c * (s - self.lo))
         return self.k * math.exp(-self.c * (s - self.lo))
+
+    def log_q(self, s: float) -> float:
+        """ln tanh(delta/2), finite however far delta has decayed below what a double holds: the contact lasts
+        while delta > 0, and with a constant input delta only decays, never reaching 0 (a mass ratio M/m above
+        about 745 makes q = k exp(-(M/m) T/L) underflow to 0 within one crossing time)."""
+        return self._log_k - self.c * (s - self.lo)
 
     def delta(self, s: float) -> float:
         return 2.0 * math.atanh(self.q(s))
@@ -327,6 +344,10 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
     minus.append(_Const(T_first - 2 * L, T_first - L, 0.0))
     events: list[ContactEvent] = []
     state = {"left": None, "right": None}  # psi of the rider in contact, else None
+    # a contact whose input was the constant r_in up to the window's end: (r_in, ln tanh(delta/2) there). delta =
+    # psi - r_in may no longer show in psi (it decays as exp(-(M/m) T/L)); if the input goes on unchanged the
+    # particle is still pressed, not released
+    pressed = {"left": None, "right": None}
     T0 = T_first - L  # a window early: the first contact is a root found inside it, like every other
     last_separation = T_first
     quiet = 0
@@ -364,23 +385,36 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
             grid += [x + (y - x) * j / 8 for j in range(1, 9)]
         grid = sorted(set(g for g in grid if lo <= g <= hi))
         prev_T, prev_g = grid[0], gap(rider, grid[0])
-        if prev_g <= 0.0 and abs(prev_g) <= 1e-12 * (L + abs(rider.t0) + abs(rider.x0) + abs(prev_T)):
+        touching = abs(prev_g) <= 1e-12 * (L + abs(rider.t0) + abs(rider.x0) + abs(prev_T))
+        if prev_g <= 0.0 and touching:
             prev_g = 0.0
         for T in grid[1:]:
             g = gap(rider, T)
+            if touching and T == grid[1] and g < 0.0 and not rider.contacts:
+                return lo  # it reaches the end just where the window starts (gap 0 to rounding), and closes on it
             if prev_g > 0.0 and g <= 0.0:
                 return falling_root(lambda s: gap(rider, s), prev_T, T, 1e-15 * (L + abs(T)), 8.9e-16)
             prev_T, prev_g = T, g
         return None
 
-    windows = 0
+    windows = contact_windows = 0
     while True:
         windows += 1
         if budget is not None:
             budget.spend()
+        waiting = [r.name for r in riders.values() if not r.contacts]
+        if windows > MAX_WINDOWS and waiting:
+            raise ScenarioError(f"particle {waiting[0]} reaches the causal rod more than {MAX_WINDOWS} crossing times "
+                                f"of the rod after the first contact; give it a smaller gap or a higher speed.",
+                                f"particles.{waiting[0]}.gap")
+        if contact_windows > MAX_CONTACT_WINDOWS:
+            raise ScenarioError(f"the particles stay in contact with the causal rod for more than "
+                                f"{MAX_CONTACT_WINDOWS} crossing times of the rod (far heavier than the rod, they "
+                                f"squeeze it slowly, like a spring); choose masses nearer the rod's.", "particles")
         if windows > MAX_WINDOWS:
-            raise ScenarioError(f"the rod and particles are still in contact after {MAX_WINDOWS} crossing times of "
-                                f"the rod; this scenario does not settle.")
+            raise ScenarioError(f"the causal rod and the particles have not parted for good after {MAX_WINDOWS} "
+                                f"crossing times of the rod (a particle keeps pace with the ringing rod); choose "
+                                f"masses nearer the rod's.", "particles")
         T1 = T0 + L
         any_contact = False
         for end in ("left", "right"):
@@ -397,18 +431,21 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                         psi = state[end]
                         r_in0 = inp.r(T)
                         delta = psi - r_in0
-                        if delta <= 0.0:  # a front arrived that the end may follow freely: separation
+                        held, pressed[end] = pressed[end], None
+                        log_k = held[1] if delta <= 0.0 and held is not None and held[0] == r_in0 else None
+                        if delta <= 0.0 and log_k is None:  # a front arrived that the end may follow: separation
                             T = _separate(rider, end, T, psi, r_in0, events, state, a_of, b_of, L)
                             last_separation = max(last_separation, T)
                             continue
                         const = _constant(inp)
                         if const is not None:
-                            piece = _Contact(T, hi, const, delta, c)
+                            piece = _Contact(T, hi, const, delta, c, log_k)
                             out_append(end, piece)
                             state[end] = piece.psi(hi)
+                            pressed[end] = (const, piece.log_q(hi))
                             T = hi
                             continue
-                        piece, T_sep = solve_contact(T, hi, inp, psi, c, budget)
+                        piece, T_sep = solve_contact(T, hi, inp, psi if log_k is None else r_in0, c, L, budget)
                         out_append(end, piece)
                         if T_sep is None:
                             state[end] = piece.psi(hi)
@@ -425,14 +462,15 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                     if T_hit is not None and T_hit < hi:
                         (minus if end == "left" else plus).pop()
                         out_append(end, _View(inp, 0.0, -1, T, T_hit))
-                    T = hi if T_hit is None else T_hit
+                    T_was, T = T, hi if T_hit is None else T_hit
                     if T_hit is not None:
                         any_contact = True
                         side = 1.0 if end == "left" else -1.0
                         psi = side * rider.th
                         r_in = inp.r(T_hit)
                         if psi - r_in <= 0.0:
-                            continue  # grazing at equal speed: no push
+                            T = hi if T_hit <= T_was else T  # grazing at equal speed: no push
+                            continue
                         rider.riding, rider.contacts = True, rider.contacts + 1
                         state[end] = psi
                         events.append(ContactEvent("contact", rider.name, end, T_hit, rider.contacts, rider.th,
@@ -441,6 +479,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                             break
         T0 = T1
         if any_contact or any(r.riding for r in riders.values()):
+            contact_windows += 1
             quiet = 0
             continue
         quiet += 1

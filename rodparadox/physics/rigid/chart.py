@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.physics.kinematics import Event
-from rodparadox.physics.rod_view import Clock
+from rodparadox.physics.rod_view import Clock, quiet_start
 
 
 @dataclass(frozen=True)
@@ -30,7 +30,8 @@ class _Rest:
     def to_chart(self, e: Event, L: float):
         p, o = e.seen_from(self.rapidity), self.left.seen_from(self.rapidity)
         T = self.T_ref + p.t - o.t
-        return (T, p.x - o.x) if self.T_lo - 1e-12 * L <= T <= self.T_hi + 1e-12 * L else None
+        slack = 1e-12 * L if abs(T) <= 100.0 * L else 1e-13 * abs(T)  # rounding of T itself, far in the future
+        return (T, p.x - o.x) if self.T_lo - slack <= T <= self.T_hi + slack else None
 
     def to_event(self, T: float, X: float, L: float) -> Event:
         o = self.left.seen_from(self.rapidity)
@@ -153,6 +154,7 @@ class RigidChart:
 
     def clock_ticks(self, X: float, step: float, T_lo: float, T_hi: float) -> list[tuple[float, float]]:
         """(proper time, chart time) of material point X's clock ticks every `step`, counted from chart time 0."""
-        lo = min(0.0, T_lo)
+        lo, offset = quiet_start(T_lo, self.pieces[0].T_hi, self.L)  # the rest frame S until the first turn
         breaks = [T for p in self.pieces for T in (p.T_lo, p.T_hi) if lo < T < T_hi]
-        return Clock(lambda T: self._piece_at(T).tick_rate(X, self.L), breaks, lo, T_hi, self.L).ticks(step, T_lo)
+        return Clock(lambda T: self._piece_at(T).tick_rate(X, self.L), breaks, lo, T_hi, self.L,
+                     offset).ticks(step, T_lo)
