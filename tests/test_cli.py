@@ -15,7 +15,8 @@ from click.testing import CliRunner
 from conftest import commands_in_one_process
 from sears_paradox_cli.main import main
 
-README = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+#: the commands page of the documentation (docs/commands.md), which names every command
+COMMANDS_PAGE = (Path(__file__).resolve().parent.parent / "docs" / "commands.md").read_text()
 
 
 def run(*args, expect=0):
@@ -40,11 +41,11 @@ def test_version():
 
 
 @pytest.mark.parametrize("command", sorted(main.commands))
-def test_every_command_has_help_with_an_example_and_is_in_the_readme(command):
+def test_every_command_has_help_with_an_example_and_is_in_the_documentation(command):
     for flag in ("--help", "-h"):
         text = run(command, flag).output
         assert re.search(rf"Example: sears-paradox {command}\b", text), text
-    assert f"sears-paradox {command}" in README
+    assert f"`sears-paradox {command}`" in COMMANDS_PAGE
 
 
 @pytest.mark.parametrize("command", sorted(main.commands))
