@@ -13,6 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from conftest import commands_in_one_process
+from test_docs import documented_console_commands
 from sears_paradox_cli.main import main
 
 #: the commands page of the documentation (docs/commands.md), which names every command
@@ -58,6 +59,8 @@ def test_every_help_example_runs_in_an_empty_folder(command, tmp_path, monkeypat
         monkeypatch.setattr(web_data, "SPEED_STEPS", 2)
         monkeypatch.setattr(web_data, "LEDGER_INSTANTS", 3)
     example = re.search(r"Example: sears-paradox (.+)", run(command, "--help").output).group(1)
+    if f"sears-paradox {example}" in documented_console_commands():
+        return  # tests/test_docs.py runs it as printed in the README or the documentation, its output compared
     run(*example.split())
 
 
