@@ -396,8 +396,8 @@ def scenario_options(several: bool = False, rods: tuple[str, ...] = ("rigid", "c
 
     rod_option = click.option(option("rod"), "rod", type=click.Choice(ROD_WORDS), default=None, expose_value=False,
                               is_eager=True, callback=keep_rod, metavar="rigid|causal",
-                              help="The rod: rigid (the paper's) or causal (sound at c: the documentation's \"The model\"); "
-                                   "overrides the scenario's rod:.")
+                              help="The rod: rigid (the paper's) or causal (sound at c: the documentation's "
+                                   "\"The model\"); overrides the scenario's rod:.")
 
     def decorate(command):
         for declare in (rod_option, L_option, v_option, scenarios_argument if several else scenario_argument):

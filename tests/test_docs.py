@@ -265,7 +265,7 @@ def test_gallery_pictures_are_what_the_tool_draws_now(name, style):
     assert gallery.draw(name, style) == committed, f"docs/gallery/{name}_{style}.png is out of date: run `make gallery`"
 
 
-# --- the site and the notebook (the docs extra) ------------------------------------------------------------------------
+# --- the site and the notebook (the docs extra) -------------------------------------------------------------------
 
 def _missing(*modules: str) -> list[str]:
     return [m for m in modules if importlib.util.find_spec(m) is None]

@@ -1,4 +1,5 @@
-"""The documentation's "From Python" example (docs/python.md) runs as printed, and the panel it draws into a pyplot Axes is the exact one."""
+"""The documentation's "From Python" example (docs/python.md) runs as printed, and the panel it draws into a pyplot
+Axes is the exact one."""
 
 from __future__ import annotations
 
