@@ -58,11 +58,10 @@ def draw(name: str, style: str) -> bytes:
     from rodparadox import render
     from rodparadox.io.scenario import load
     from rodparadox.physics.frames import paper_frames
-    from rodparadox.physics.rod_models import run_rod
+    from rodparadox.physics.models import run_rods
 
     scenario = load(str(CONFIGS / f"{name}.yaml"))
-    rigid = run_rod(scenario.with_overrides(rod="rigid"))
-    causal = run_rod(scenario.with_overrides(rod="causal"))
+    rigid, causal = run_rods(scenario, "both")  # on the same particles, as plot --rod both runs them
     diagram = render.draw_both(rigid, causal, paper_frames(scenario.v), style)
     width_inches = diagram.figure.get_figwidth()
     buffer = io.BytesIO()
