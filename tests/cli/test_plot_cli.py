@@ -22,7 +22,7 @@ from click.testing import CliRunner
 from sears_paradox_cli.main import main
 from sears_paradox_cli.plot import plot
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 #: plot's page of the documentation
 PLOT_PAGE = (ROOT / "docs" / "plot.md").read_text()
 
