@@ -126,7 +126,7 @@ def test_several_scenarios_make_one_document_with_a_section_each(fig1_fig2_lette
     assert output.startswith("outputs/fig1_fig2_handout")
     text = " ".join(pages)
     # each section headed by its scenario's title (issue 14: no internal names in headings)
-    assert "rod's rest frame (the paper's Fig. 1)" in text and "moving frame (the paper's Fig. 2)" in text
+    assert "rod’s rest frame (the paper’s Fig. 1)" in text and "moving frame (the paper’s Fig. 2)" in text
 
 
 def test_tex_writes_a_folder_of_pieces(here):
@@ -191,3 +191,40 @@ def test_readme_page_picture_is_the_first_page_the_tool_sets_now():
     assert drawn[:8] == committed[:8] == b"\x89PNG\r\n\x1a\n"
     if made_with == ["matplotlib", matplotlib.__version__]:  # another matplotlib draws other pixels
         assert drawn == committed, "outputs/readme/fig2_handout_page1.png is out of date: run `make readme-figures`"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--sections", "paradox,strip"], "Error: option --sections must be parts among paradox, diagrams, strips, tables, "
+                                      "ledger, comparison, rod, comma-separated, got 'paradox,strip'.\n"),
+    (["--worksheet", "--sections", "diagrams,ledger"],
+     "Error: option --sections leaves out tables, which a worksheet's questions read; add them.\n"),
+])
+def test_bad_sections_are_one_sentence_and_exit_2(tmp_path, args, message):
+    result = CliRunner().invoke(main, ["handout", "single", "-o", str(tmp_path), *args])
+    assert (result.exit_code, result.output) == (2, message)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_sections_choose_the_parts_of_each_document():
+    """A teacher's choice: only what is asked, in the usual order; the paradox's section and its resolution in the key
+    go with `paradox`; the comparison only with a causal history and `comparison`."""
+    from helpers import causal_history, history
+    from rodparadox.handout.build import Item, build
+    from rodparadox.handout.document import DiagramBlock, Strips, Table
+
+    rigid, causal = history("fig2", 0.6), causal_history("fig2", 0.6)
+    full = build([Item("fig2", rigid, None, causal)])
+    kinds = lambda doc: {type(b).__name__ for s in doc.sections for b in s.blocks}
+    assert {"DiagramBlock", "Strips", "Table"} <= kinds(full) and full.sections[0].name == "introduction"
+    only = build([Item("fig2", rigid, None, causal)], sections=("tables",))
+    assert [s.name for s in only.sections] == ["fig2"]
+    blocks = only.sections[0].blocks
+    assert not any(isinstance(b, (DiagramBlock, Strips)) for b in blocks)
+    assert [b.name for b in blocks if isinstance(b, Table)] == ["events_rest", "events_moving"]
+    assert full.sections[1].blocks[:2] == blocks[:2]  # the heading and the set-up always
+    drawn = build([Item("fig2", rigid, None, causal)], sections=("diagrams", "comparison"))
+    assert [b.compared is causal for b in drawn.sections[0].blocks if isinstance(b, DiagramBlock)] == [False, True]
+    sheet = build([Item("fig2", rigid)], worksheet=True, sections=("diagrams", "tables"))
+    assert "The paradox and its resolution" not in [getattr(b, "text", "") for b in sheet.answer_key]
+    with pytest.raises(ValueError, match="unknown handout sections"):
+        build([Item("fig2", rigid)], sections=("figures",))

@@ -290,7 +290,7 @@ def test_ctrl_c_in_a_command_is_one_sentence_and_130(monkeypatch):
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli_main, "run_scenario", interrupted)
+    monkeypatch.setattr(cli_main, "run_rods", interrupted)
     result = CliRunner().invoke(main, ["events", "fig2"])
     # click's blank line closes the terminal's ^C, then the one sentence
     assert (result.exit_code, result.output) == (130, "\nError: interrupted by Ctrl-C; no file was left "

@@ -145,7 +145,7 @@ def test_the_stress_part_is_what_the_ledger_needs(compared, sections):
         assert abs(s.stress.p) > 1e-3  # a slice the causal rod's stress crosses
     _, stress = causal_history("fig2", V).energy_momentum(0.0, 0.5, split=True).rod_parts
     assert stress[1].p == 0.0 and stress[1].E == 0.0
-    assert "the stress part is the real, local version of the rigid model’s hidden momentum" in _text(sections["fig2"])
+    assert "The hidden momentum, like with like." in _text(sections["fig2"])
 
 
 def test_the_contacts_table_lists_every_contact_and_separation(sections):
@@ -153,7 +153,8 @@ def test_the_contacts_table_lists_every_contact_and_separation(sections):
     closed form's to its printed digits. (B′₁ is
     B1s, as every table but the ASCII text ones names it.)"""
     tables = [b for b in sections["single"] if isinstance(b, Table)]
-    assert [t.name for t in tables] == ["causal_events_rest", "causal_events_moving"]
+    assert [t.name for t in tables] == ["causal_events_rest", "causal_events_moving", "ledger_causal_rest",
+                                       "ledger_causal_moving"]
     rows = {row[0].text: row for row in tables[0].rows}
     assert set(rows) == {"B₁", "B′₁"}  # the separation named as the figures name it (was B1s)
     _, th_f = _single(V)
@@ -190,14 +191,14 @@ def test_the_worksheet_asks_and_the_key_answers():
 
 
 def test_handout_takes_both_rods_and_names_the_file(tmp_path, monkeypatch):
-    """`handout --rod both` writes outputs/NAME_handout_both (here its LaTeX: the PDF's pages are drawn in
+    """`handout --rod both` writes outputs/NAME_handout_compared (here its LaTeX: the PDF's pages are drawn in
     test_worksheet_tells_nothing) holding the comparison; `--rod causal` is taken too."""
     monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(main, ["handout", "single", "--rod", "both", "--format", "tex"])
     assert result.exit_code == 0, result.output
-    folder = tmp_path / "outputs" / "single_handout_both"
+    folder = tmp_path / "outputs" / "single_handout_compared"
     tex = (folder / "handout.tex").read_text()
-    assert HEADING in tex and "this handout does not draw the causal rod yet" in " ".join(tex.split())
+    assert HEADING in tex and "single_compared.pdf" in tex  # the two rods' diagram
     assert (folder / "single_causal_events_moving.tex").exists()
     result = CliRunner().invoke(main, ["handout", "single", "--rod", "causal", "--questions", "9", "-o",
                                        str(tmp_path / "x.pdf")])
@@ -224,22 +225,25 @@ def test_a_greek_capital_before_a_variable_stays_two_tokens_in_latex():
     assert prose("γt′ and −L") == r"$\gamma t'$ and $-L$"
 
 
-def test_the_comparison_says_where_the_causal_rod_is_drawn():
-    """Review: with --frame both,rod the rod's own view draws the causal rod, yet the comparison said "this handout
-    does not draw the causal rod yet". Without the view it says so; with the view of both rods, that it draws the
-    causal rod there only (handout and worksheet)."""
-    from rodparadox.handout.own_view import with_rod_views
+def test_the_comparison_draws_both_rods_in_the_same_frames_and_the_causal_rod_s_strips():
+    """Issue 24: the comparison is drawn: the two rods' diagram (the rigid row above the causal row, the section's
+    frames, one scale per frame), the causal rod's strips in each frame, then its tables; a worksheet asks first and
+    its key draws it."""
+    from rodparadox.handout.document import DiagramBlock, Strips
 
     rigid, causal = history("single", 0.6), causal_history("single", 0.6)
-    for worksheet in (False, True):
-        doc = build([("single", rigid, None, causal)], worksheet=worksheet)
-        said = lambda d: " ".join(b.text for s in d.sections for b in s.blocks if isinstance(b, Paragraph))
-        assert "does not draw the causal rod yet" in said(doc)
-        viewed = said(with_rod_views(doc, {"single": (rigid, causal)}))
-        assert "does not draw the causal rod" not in viewed
-        assert "draws the causal rod only in the rod\u2019s own view, after the diagram" in viewed
-        # the view of the rigid rod alone leaves the sentence true as it was
-        assert "does not draw the causal rod yet" in said(with_rod_views(doc, {"single": (rigid,)}))
+    frames = paper_frames(0.6)
+    doc = build([("single", rigid, None, causal)])
+    blocks = doc.sections[1].blocks
+    [both] = [b for b in blocks if isinstance(b, DiagramBlock) and b.compared is not None]
+    assert both.drawn == (rigid, causal) and both.frames == frames
+    assert "(a), (b) the rigid rod; (c), (d) the causal rod" in both.caption
+    strips = [b for b in blocks if isinstance(b, Strips) and b.history is causal]
+    assert [s.frame for s in strips] == list(frames) and all(6 <= len(s.times) <= 8 for s in strips)
+    assert "does not draw" not in " ".join(b.text for b in blocks if isinstance(b, Paragraph))
+    sheet = build([("single", rigid, None, causal)], worksheet=True)
+    assert not any(getattr(b, "compared", None) for b in sheet.sections[1].blocks)
+    assert any(getattr(b, "compared", None) is causal for b in sheet.answer_key)
 
 
 def test_the_stress_part_is_set_against_a_hidden_part_where_the_rigid_model_has_one():

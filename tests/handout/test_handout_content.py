@@ -76,7 +76,10 @@ def test_fig2_explanation_says_b1_and_a1_share_t_prime_17_12_and_not_t():
     apart = next(s for s in sentences(text) if s.startswith("They are not simultaneous in S,"))
     assert "5/6 L" in apart and "19/12 L" in apart and "0.75 L later" in apart
     # S' order: B1 and A1 together, then B2 at t' = g(7/3 + 0.6 * 0.5) = 79/24 L
-    assert "in S′ B₁ and A₁ together (t′ = 17/12 L), then B₂ (79/24 L)" in text
+    # each time said once (issue 24): the order does not repeat the times the sentences before it gave
+    assert "in S B₁, then A₁, then B₂ (t = 7/3 L); in S′ B₁ and A₁ together, then B₂ (t′ = 79/24 L)" in text
+    told = " ".join(b.text for b in explanation(history("fig2", 0.6), paper_frames(0.6))[:2])
+    assert told.count("17/12 L") == 1 and told.count("19/12 L") == 1 and told.count("79/24 L") == 1
 
 
 def test_fig2_explanation_gives_the_rods_velocity_after_a1_in_s_prime_as_15_17():
@@ -85,9 +88,9 @@ def test_fig2_explanation_gives_the_rods_velocity_after_a1_in_s_prime_as_15_17()
     text = explanation_text("fig2", 0.6)
     in_s_prime = next(s for s in sentences(text) if s.startswith("In S′, in the rod's own order"))
     assert "+15/17 c after A₁" in in_s_prime
-    assert "0 after B₁ (t′ = 17/12 L)" in in_s_prime  # B, at rest in S', takes all of the rod's +0.6 (equal masses)
+    assert "0 after B₁;" in in_s_prime  # B, at rest in S', takes all of the rod's +0.6 (equal masses)
     in_s = next(s for s in sentences(text) if s.startswith("In S, in the rod's own order"))
-    assert "−0.6 c after B₁ (t = 5/6 L); +0.6 c after A₁ (t = 19/12 L); 0 after B₂ (t = 7/3 L)" in in_s
+    assert "−0.6 c after B₁; +0.6 c after A₁; 0 after B₂" in in_s
     # the turn B1 starts ends on A1's line, t' = 17/12: there the whole rod is at rest in S', at full length
     assert "In S′ the whole rod is at rest at the instant t′ = 17/12 L, at its full length L" in text
     # check it on the rod itself: on the slice t' = 17/12 of S' every material point inside the rod has velocity 0
@@ -238,7 +241,7 @@ def test_a_section_holds_its_blocks_in_the_order_of_the_issue():
     assert section.blocks[0].text == "Impacts simultaneous in the moving frame (the paper's Fig. 2)"
     diagram = section.blocks[2]
     assert diagram.name == "fig2_diagram" and diagram.frames == paper_frames(0.6) and diagram.history == h
-    assert "B₁ and A₁ share one dash-dotted line, of S′ (t′ = 17/12 L)" in diagram.caption
+    assert "B₁ and A₁ share one dash-dotted line, of S′." in diagram.caption  # when: the explanation says
     strips = [b for b in section.blocks if isinstance(b, Strips)]
     assert [s.name for s in strips] == ["fig2_strips_rest", "fig2_strips_moving"]
     tables_ = [b.name for b in section.blocks if isinstance(b, Table)]
@@ -273,14 +276,26 @@ def test_a_worksheet_leaves_every_number_blank_and_its_answer_key_fills_them(nam
     assert doc.worksheet
     in_section = section_blocks(doc, Table)
     assert in_section
+    v = h.scenario.v
     for table in in_section:
-        for row in table.rows:
-            for cell in row:
+        seen = set()
+        for k, row in enumerate(table.rows):
+            for column, cell in zip(table.header, row):
                 slice_time = table.name.startswith("hidden") and cell is row[0]  # where the values are taken
-                if numeric(cell.text) and not slice_time:
+                # what the set-up gives stays filled: the rod's velocity before its first impact (0 in S, +v in
+                # S′) and, in S, each particle's before its first impact (A at +v, B at −v)
+                given = ((k == 0 and column == "rod before") or
+                         (table.name == "events_rest" and column == "particle before" and row[0].text[0] not in seen))
+                if numeric(cell.text) and not slice_time and not given:
                     assert cell.blank, (table.name, cell.text)  # every value to fill in is blank
+                if given:
+                    expected = (0.0 if table.name == "events_rest" else v) if column == "rod before" else \
+                        (v if row[0].text[0] == "A" else -v)
+                    assert not cell.blank and float(cell.text.split()[0].replace("−", "-")) == pytest.approx(
+                        expected, abs=1e-6), (table.name, column, cell.text)
                 if cell.text in ("left", "right", "particle A", "particle B", "rod", "hidden"):
                     assert not cell.blank  # labels stay
+            seen.add(row[0].text[0])
     key = doc.answer_key
     assert isinstance(key[0], Heading) and key[0].text == "Answer key"
     # the worksheet asks for the events in the rod's own order; its key prints the handout's tables, filled
@@ -475,26 +490,29 @@ def test_fig2_worked_answers_against_the_hand_derivation():
     asked = questions(history("fig2", 0.6), paper_frames(0.6))
     # the Lorentz transformation: g = 1.25, t' = g(t + 0.6 x): B1 1.25 (5/6 + 0.3) = 17/12, A1 1.25 (19/12 - 0.45)
     # = 17/12; simultaneous in S', 3/4 L apart in S
-    lorentz = answer_of(asked, "In S, B₁ strikes at x = 0.5 L, t = 5/6 L; A₁ strikes at x = −0.75 L, t = 19/12 L")
+    lorentz = answer_of(asked, "In S, take the x and t of B₁ and of A₁ from your table of S")
+    assert lorentz.startswith("In S, B₁ strikes at x = 0.5 L, t = 5/6 L; A₁ strikes at x = −0.75 L, t = 19/12 L.")
     assert "γ = 1/√(1 − w²) = 1/√(1 − 0.6²) = 1.25" in lorentz and "t′ = γ(t − w x) = γ(t + 0.6 x)" in lorentz
     assert "B₁: t′ = 1.25 × (5/6 + 0.6 × 0.5) L = 1.25 × 17/15 L = 17/12 L" in lorentz
     assert "A₁: t′ = 1.25 × (19/12 + 0.6 × (−0.75)) L = 1.25 × 17/15 L = 17/12 L" in lorentz
     assert "simultaneous in S′, while in S they are 0.75 L apart" in lorentz
     # velocity addition: (0.6 + 0.6)/(1 + 0.36) = 15/17 ≈ 0.8823529
-    addition = answer_of(asked, "After A₁ the rod moves at +0.6 c in S")
+    addition = answer_of(asked, "Take the rod's velocity after A₁ in S from your table of S")
+    assert addition.startswith("After A₁ the rod moves at +0.6 c in S.")
     assert "= 1.2/1.36 = +15/17 c ≈ +0.8823529 c" in addition
     # at rest in S' at the instant t' = 17/12, full length L, contracted to L/g = 0.8 L before
     rest = answer_of(asked, "The whole rod comes to rest in S′")
     assert "at the one instant t′ = 17/12 L" in rest and "= 0.8 L" in rest
     # v = 0.8: A1 - B1 = g v L = (5/3)(0.8) = 4/3 L in S, and 0 in S' (A is timed so); the rod ends at rest
     other = answer_of(asked, "Now take v = 0.8 instead of 0.6")
-    assert "At v = 0.8 (the tool runs the scenario again): A₁ comes 4/3 L after B₁ in S; B₁ and A₁ are " \
+    assert "At v = 0.8: A₁ comes 4/3 L after B₁ in S; B₁ and A₁ are " \
            "simultaneous in S′; the rod ends at rest in S" in other
 
 
 def test_fig1_worked_answers_against_the_hand_derivation():
     asked = questions(history("fig1", 0.6), paper_frames(0.6))
-    lorentz = answer_of(asked, "In S, A₁ strikes at x = −0.5 L, t = 5/6 L; B₁ strikes at x = 0.5 L, t = 5/6 L")
+    lorentz = answer_of(asked, "In S, take the x and t of A₁ and of B₁ from your table of S")
+    assert lorentz.startswith("In S, A₁ strikes at x = −0.5 L, t = 5/6 L; B₁ strikes at x = 0.5 L, t = 5/6 L.")
     # t'_A1 = 1.25 (5/6 - 0.3) = 2/3, t'_B1 = 17/12: 3/4 L apart
     assert "= 2/3 L" in lorentz and "= 17/12 L" in lorentz and "in S′ B₁ comes 0.75 L after A₁" in lorentz
     # the hidden momentum between A1 and B1 in S': total 2.625 (A 15/8, B 0, rod 0.75) less the rod's 0.75 = 15/8
@@ -517,7 +535,7 @@ def test_a_single_particles_answer_is_g_v_l():
     # single at v = 0.6: the left end follows on the hyperbola about B1 and reaches -0.6 after t - t_P = g v L
     # = 0.75 L, while the struck end moves 0.6 * 0.75 = 0.45 L to the left
     asked = questions(history("single", 0.6), paper_frames(0.6))
-    answer = answer_of(asked, "B₁ gives the rod's momentum the velocity −0.6 c")
+    answer = answer_of(asked, "B₁ gives the rod's momentum its velocity after B₁ (your table of S)")
     assert "takes 0.75 L of S's time" in answer and "moves 0.45 L to the left" in answer
 
 
@@ -544,8 +562,8 @@ def test_a_re_strike_on_one_rod_line_is_told_as_such_and_turns_keep_their_own_ca
     assert "A₁ and B₂ lie on one line of the rod's own simultaneity" in text
     assert "B₁ and B₂ happen at one event" in text
     assert "still turning from B₁:" in text  # the turn B1 started, not B2, which came after it
-    # L = 2: the text gives multiples of L, the tables the unit L is given in
-    assert "the tables give them in the unit L is given in, L = 2" in setup_text(h)
+    # L = 2: the text gives multiples of L, the tables the unit of length in which L is given
+    assert "the tables give them in the unit of length in which L = 2" in setup_text(h)
     # the timing frame given as a velocity
     assert "in the time of the frame of velocity +0.3 c relative to S" in setup_text(h)
 
@@ -580,6 +598,7 @@ def test_headings_are_the_scenarios_titles_without_internal_names(name):
 def test_the_first_section_states_the_paradox_cites_franklin_and_calls_the_rod_an_idealisation():
     first = build([("fig2", history("fig2", 0.6))]).sections[0]
     text = " ".join(b.text for b in first.blocks if isinstance(b, Paragraph))
-    assert "J. Franklin, “The ‘Sears paradox’”" in text  # the paper's own title (The `Sears paradox')
+    # the paper's own title (The `Sears paradox'), author and affiliation, in full; no journal the copy does not give
+    assert "Jerrold Franklin, “The ‘Sears paradox’” (Department of Physics, Temple University, Philadelphia)" in text
     assert "F. W. Sears" in text and "hidden momentum" in text
     assert "idealisation" in text and "before light from the impact could reach it" in text

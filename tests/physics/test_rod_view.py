@@ -204,8 +204,15 @@ def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_ca
     assert "about B\N{SUBSCRIPT ONE}, 0.6931 L long, about A\N{SUBSCRIPT ONE}, 1.386 L long, about " \
            "B\N{SUBSCRIPT TWO}, 0.6931 L long" in blocks[2].caption
     assert with_rod_views(Handout("t", (section,)), {}).sections[0].blocks == section.blocks
-    worksheet = with_rod_views(Handout("t", (section,), worksheet=True), {"fig2": (h,)})
-    assert "0.6931" not in worksheet.sections[0].blocks[2].caption  # a worksheet may ask how long a turn lasts
+    # a worksheet's goes to its answer key, before the section's explanation: the rod's own lines of simultaneity
+    # tell which impacts it takes together, which the questions ask
+    from rodparadox.handout.document import Heading
+    key = (Heading("Answer key"), Heading("Questions and answers", 2), Paragraph("explanation"))
+    worksheet = with_rod_views(Handout("t", (Section("introduction", "i", ()), section), True, key), {"fig2": (h,)})
+    assert worksheet.sections[1].blocks == section.blocks
+    assert [type(b).__name__ for b in worksheet.answer_key] == ["Heading", "Heading", "RodViewBlock", "Heading",
+                                                                "Paragraph"]
+    assert worksheet.answer_key[1].text == "The rod\u2019s own view"
 
 
 def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():

@@ -136,3 +136,51 @@ def test_update_strip_moves_the_bar_to_the_exact_rod_at_another_instant():
         assert b == pytest.approx(h.worldline("rod_right").seen_from(eta).event_at_time(t).x, abs=1e-11)
         said = artists.readout.get_text()
         assert said.startswith("$t$\N{PRIME} = ") and said.endswith(" $L$ in S\N{PRIME}"), said
+
+
+def test_the_parts_of_a_block_split_between_pages_keep_one_tick_step_and_one_axes_width():
+    """Issue 24: a block of strips split over two pages changed its tick step (each part's room was made for its
+    own labels, so its axes' width, and so the step, differed). With `span`, the whole block's."""
+    from matplotlib.figure import Figure
+
+    from rodparadox import render
+    from rodparadox.handout.strips import strip_times
+    from rodparadox.physics.rigid import run
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.io.scenario import load
+
+    h = run(load("while_turning").with_overrides(v=0.95))
+    frame = paper_frames(0.95)[1]
+    times = strip_times(h, frame)
+    parts = []
+    for part in (times[:2], times[2:]):
+        figure = Figure(figsize=(6.5, 1.2 * len(part) + 1.2))
+        with render.style_context("print"):
+            rows = render.draw_strips_into(figure, h, frame, part, "print", span=times)
+        parts.append((tuple(rows[0].get_xticks()), rows[0].get_position().x0, rows[0].get_position().x1))
+    assert parts[0] == parts[1]
+
+
+def test_a_colour_bar_only_where_the_rod_s_velocity_varies():
+    """Issue 24: fig1's rod never changes velocity (it takes both impulses together), yet its strips had a colour bar
+    from −0.0997 to +0.0997; now none, and less room under the rows. fig2's rod zig-zags: its bar stays."""
+    from matplotlib.figure import Figure
+
+    from rodparadox import render
+    from rodparadox.handout.strips import strip_times
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.physics.rigid import run
+
+    heights = {}
+    for name in ("fig1", "fig2"):
+        h = run(load(name))
+        frame = paper_frames(0.6)[1]
+        times = strip_times(h, frame)
+        figure = Figure(figsize=(6.5, 6.0))
+        with render.style_context("print"):
+            render.draw_strips_into(figure, h, frame, times, "print")
+        bars = [ax for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]
+        assert len(bars) == (0 if name == "fig1" else 1), name
+        heights[name] = render.strips_size(h, frame, times[:6], "print")[1]
+    assert heights["fig1"] < heights["fig2"]

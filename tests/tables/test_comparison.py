@@ -26,13 +26,12 @@ def test_fig2s_note_against_the_paper_and_a_hand_computation(fig2_note):
     # A placed for the rigid rod: A1 at (-3/4, 19/12) in S (the paper), so A starts at -3/4 - 0.6 * 19/12 = -1.7
     assert "A from x = \N{MINUS SIGN}1.7 L at speed 0.6 c and B from x = 1 L at speed 0.6 c" in fig2_note
     # the rigid rod: B1 (t = 5/6) and A1 (t = 19/12) simultaneous in S' at t' = 17/12 (the paper's Fig. 2)
-    assert ("The rigid rod: B\N{SUBSCRIPT ONE} and A\N{SUBSCRIPT ONE} are simultaneous in S\N{PRIME} (at 1.417 L), "
-            "not in S (B\N{SUBSCRIPT ONE} at 0.8333 L, A\N{SUBSCRIPT ONE} at 1.583 L)") in fig2_note
+    assert ("The rigid rod: A\N{SUBSCRIPT ONE} and B\N{SUBSCRIPT ONE} are simultaneous in S\N{PRIME} (at 1.417 L), "
+            "not in S (A\N{SUBSCRIPT ONE} at 1.583 L, B\N{SUBSCRIPT ONE} at 0.8333 L)") in fig2_note
     # the causal rod: B1 is the same event (B meets the resting right end at t = 0.5/0.6); A1 comes after the
     # front from B1 reaches the left end (t = 5/6 + 1) and before A would reach the resting end (t = 1.2/0.6 = 2)
     causal = fig2_note[fig2_note.index("The causal rod"):]
-    assert "not simultaneous in S (B\N{SUBSCRIPT ONE} at 0.8333 L" in causal
-    t_A1 = float(re.search(r"in S \(B₁ at 0\.8333 L, A₁ at ([0-9.]+) L\)", causal).group(1))
+    t_A1 = float(re.search(r"not simultaneous in S \(A₁ at ([0-9.]+) L, B₁ at 0\.8333 L\)", causal).group(1))
     assert 11 / 6 < t_A1 < 2.0
 
 
