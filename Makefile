@@ -38,3 +38,17 @@ readme-figures:
 	$(SEARS_PARADOX) ledger fig2 -o outputs/readme/fig2_ledger.svg
 	$(PYTHON) -m rodparadox.handout.readme_pictures outputs/readme
 	@$(PYTHON) -c 'import matplotlib; print("matplotlib", matplotlib.__version__)' > outputs/readme/made-with.txt
+
+# The documentation site (the docs extra: pip install -e '.[docs]'), built offline into docs/_build/html:
+#   make docs        the gallery's pictures that are out of date redrawn (make gallery), then the site, warnings as errors
+#   make gallery     docs/gallery/*.png and docs/gallery.md from configs/ (GALLERY_OPTIONS=--all: every picture again)
+DOCS_PYTHON ?= $(if $(wildcard .venv/bin/python),.venv/bin/python,$(PYTHON))
+GALLERY_OPTIONS ?=
+
+.PHONY: docs gallery
+
+gallery:
+	$(DOCS_PYTHON) docs/gallery.py $(GALLERY_OPTIONS)
+
+docs: gallery
+	$(DOCS_PYTHON) -m sphinx -b html -j 1 -W --keep-going docs docs/_build/html

@@ -75,7 +75,7 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     written, `PATH (unchanged)` for one left alone. The same command gives the
     same bytes.
 
-    Example: sears-paradox handout fig2 --v 0.6 --worksheet
+    Example: sears-paradox handout fig2 --worksheet --key separate
     """
     from sears_paradox_cli import planning as planned
 

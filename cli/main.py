@@ -133,8 +133,9 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 @main.command()
 @scenario_options(rods=ROD_WORDS)
 @frame_velocity_option
-@format_option("json: the documented contract (README); csv: one row per event and world-line point. "
-               "[default: the extension of -o FILE, else json]", type=click.Choice(EXPORT_FORMATS), default=None)
+@format_option("json: the documented contract (the documentation's \"The JSON contract\"); csv: one row per event "
+               "and world-line point. [default: the extension of -o FILE, else json]",
+               type=click.Choice(EXPORT_FORMATS), default=None)
 @output_option("File to write ('-' for standard output); written atomically, left untouched if unchanged.",
                default="-")
 @quiet_option

@@ -80,6 +80,24 @@ class Diagram:
     figure: Figure | SubFigure
     panels: tuple[PanelInfo, ...]
     artists: Mapping[str, Mapping[str, tuple]]
+    style: str = "default"  #: the style it was drawn in, whose fonts saving it needs
+
+    def savefig(self, fname, **kwargs) -> None:
+        """Save the figure as `Figure.savefig` does (the format from the file name or `format=`), in the diagram's
+        style and without dates or versions in the file: `render.draw(...).savefig("fig2.pdf")`."""
+        fmt = kwargs.get("format") or str(fname).rpartition(".")[2].lower()
+        kwargs.setdefault("metadata", FIGURE_METADATA.get(fmt))
+        with style_context(self.style) as st:
+            kwargs.setdefault("dpi", st.png_dpi if fmt == "png" else RASTER_DPI)
+            self.figure.savefig(fname, **kwargs)
+
+    def _repr_png_(self) -> bytes:
+        """What Jupyter shows for a diagram: a PNG at 100 dpi. (Not SVG: two inline SVGs in one notebook share
+        their element ids, `a-rod_left` and matplotlib's clip paths, so a browser would mix up their parts.)"""
+        buffer = io.BytesIO()
+        with style_context(self.style):
+            self.figure.savefig(buffer, format="png", dpi=100, metadata=FIGURE_METADATA["png"])
+        return buffer.getvalue()
 
 
 def _checked(frames: Sequence[Frame]) -> tuple[Frame, ...]:
@@ -270,4 +288,5 @@ class _Builder:
         legend.set_gid("legend")
         infos.sort(key=lambda info: info.letter)
         return Diagram(target, tuple(infos),
-                       MappingProxyType({name: MappingProxyType(by_panel) for name, by_panel in artists.items()}))
+                       MappingProxyType({name: MappingProxyType(by_panel) for name, by_panel in artists.items()}),
+                       self.style.name)

@@ -160,8 +160,7 @@ def test_an_unwritable_folder_is_refused(here, unwritable_folder):
 def _readme_handout_section() -> str:
     from pathlib import Path
 
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-    return readme[readme.index("<!-- handout:start -->"):readme.index("<!-- handout:end -->")]
+    return (Path(__file__).resolve().parents[2] / "docs" / "handout.md").read_text()
 
 
 def test_readme_lists_the_questions_fig2s_worksheet_asks():

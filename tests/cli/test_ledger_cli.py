@@ -21,7 +21,8 @@ from sears_paradox_cli.ledger import ledger
 from sears_paradox_cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]
-README = (ROOT / "README.md").read_text()
+#: the ledger's page of the documentation
+LEDGER_PAGE = (ROOT / "docs" / "ledger.md").read_text()
 
 
 def run(*args: str):
@@ -224,10 +225,10 @@ def test_a_missing_folder_is_said_before_any_work(in_tmp):
         "cannot write no/such/l.svg: the folder no/such does not exist; create it first.")
 
 
-# --- README ----------------------------------------------------------------------------------------------
+# --- the documentation ----------------------------------------------------------------------------------------------
 
 def _section() -> str:
-    return README.split("<!-- ledger:start -->")[1].split("<!-- ledger:end -->")[0]
+    return LEDGER_PAGE
 
 
 def test_readme_example_is_what_the_tool_prints_now():

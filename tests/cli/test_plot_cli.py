@@ -23,7 +23,8 @@ from sears_paradox_cli.main import main
 from sears_paradox_cli.plot import plot
 
 ROOT = Path(__file__).resolve().parents[2]
-README = (ROOT / "README.md").read_text()
+#: plot's page of the documentation
+PLOT_PAGE = (ROOT / "docs" / "plot.md").read_text()
 
 
 @pytest.fixture(autouse=True)
@@ -323,10 +324,10 @@ def test_make_figures_has_a_rule_for_every_config_builds_in_parallel_and_then_on
     assert svg.stat().st_mtime == mtime  # same bytes: left untouched
 
 
-# --- README --------------------------------------------------------------------------------------------
+# --- the documentation --------------------------------------------------------------------------------------------
 
 def _readme_plot_section() -> str:
-    return README.split("<!-- plot:start -->")[1].split("<!-- plot:end -->")[0]
+    return PLOT_PAGE
 
 
 def test_readme_documents_every_plot_option_and_style():

@@ -27,7 +27,7 @@ from rodparadox.tables.formats import BLANK_TEXT, table_format
 from sears_paradox_cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]
-README = (ROOT / "README.md").read_text()
+
 SUBSCRIPT_DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 
 
@@ -355,13 +355,13 @@ def test_ledger_without_hidden_part_prints_no_hidden_table():
     assert [c for c, _, _ in markdown_tables(text)] == ["Energy and momentum at each impact, frame S"]
 
 
-# --- README -----------------------------------------------------------------------------------------------
+# --- the documentation -----------------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("section, command", [
+@pytest.mark.parametrize("page, command", [
     ("commands", "sears-paradox events fig1 --format markdown"),
     ("ledger", "sears-paradox ledger fig1 --frame moving --format markdown"),
 ])
-def test_readme_markdown_examples_are_what_the_tool_prints_now(section, command):
-    text = README.split(f"<!-- {section}:start -->")[1].split(f"<!-- {section}:end -->")[0]
+def test_documented_markdown_examples_are_what_the_tool_prints_now(page, command):
+    text = (ROOT / "docs" / f"{page}.md").read_text()
     printed = text.split(f"$ {command}\n")[1].split("```")[0]
     assert printed == cli(*command.split()[1:])
