@@ -25,7 +25,7 @@ from matplotlib.patches import Rectangle
 
 from rodparadox.render.colour_scale import compression_range
 from rodparadox.physics.frames import sampling_tolerance
-from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
+from rodparadox.render.layer_base import Layer, LayerArtists, is_causal, line_handle
 from rodparadox.render.styles import Style
 
 #: a varying piece of an invariant is cut into cells this long, as a fraction of L (the shading is flat per cell)
@@ -36,11 +36,6 @@ FRONT_JUMP = 1e-9
 SHADES = 64
 #: swatches in the legend's ramp of the compression scale
 SWATCHES = 7
-
-
-def is_causal(history) -> bool:
-    """The causal rod (its chart, `solution`, is what these layers read); any other model draws none of them."""
-    return getattr(history, "kind", "") == "causal"
 
 
 # --- the compression scale: pure numbers, shared by the layer, its legend entry and the tests ----------------
