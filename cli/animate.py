@@ -15,8 +15,9 @@ import click
 from rodparadox.errors import OptionError
 
 from . import words
-from .common import (NUMBER, Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, rod_asked, run_scenario, scenario_options, style_option)
+from .edge import before_matplotlib, report, reports_errors
+from .options import (NUMBER, Whole, format_option, frame_option, output_option, quiet_option, rod_asked, run_scenario,
+                      scenario_options, style_option)
 
 #: the defaults: 6 seconds at 25 frames per second, a rate a GIF stores exactly (4 hundredths of a second)
 DEFAULT_FPS = 25

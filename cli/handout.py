@@ -12,8 +12,9 @@ import click
 
 from rodparadox.errors import OptionError
 
-from .common import (BadInput, before_matplotlib, format_option, frame_option, output_option, quiet_option, report,
-                     reports_errors, rod_asked, run_scenario, scenario_options, style_option)
+from .edge import BadInput, before_matplotlib, report, reports_errors
+from .options import (format_option, frame_option, output_option, quiet_option, rod_asked, run_scenario,
+                      scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")

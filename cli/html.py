@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import click
 
-from .common import (output_option, quiet_option, report, reports_errors, rod_asked, run_scenario, scenario_options,
-                     style_option)
+from .edge import report, reports_errors
+from .options import output_option, quiet_option, rod_asked, run_scenario, scenario_options, style_option
 
 #: what `html` writes: one page
 HTML_FORMATS = ("html",)

@@ -10,6 +10,7 @@ matplotlib is imported only to draw a figure.
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 
 import click
@@ -20,8 +21,9 @@ from rodparadox.errors import OptionError
 from rodparadox.numbers import decimal
 
 from . import words
-from .common import (BadInput, before_matplotlib, emit, format_option, frame_option, load_scenario, output_option,
-                     quiet_option, report, reports_errors, rod_asked, run_scenario, scenario_options, style_option)
+from .edge import before_matplotlib, emit, report, reports_errors
+from .options import (format_option, frame_option, load_scenario, output_option, quiet_option, rod_asked, run_rods,
+                      scenario_options, style_option)
 
 TABLE_FORMATS = ("text", "json", "csv", "markdown", "latex")
 _EXTENSIONS = {"txt": "text", "text": "text", "json": "json", "csv": "csv", "md": "markdown", "markdown": "markdown",
@@ -142,17 +144,11 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
             check_target(output)
         s = load_scenario(scenario, v, L)
         frames = planned.frames_of(frame, s.v)
-        from rodparadox.io import ledger_report
-        from rodparadox.tables import build as tables
 
-        history = run_scenario(s, scenario, frames)
-        _check_times(history, frames, times)
-        writers = {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
-                   "markdown": tables.ledger_markdown, "latex": tables.ledger_latex}
-        if history.kind == "causal" or rod_asked() == "both":
-            text = _causal_text(fmt, history, scenario, frames, times, writers)
-        else:
-            text = writers[fmt](history, frames, times)
+        histories = run_rods(s, scenario, frames)
+        for history in histories:
+            _check_times(history, frames, times)
+        text = _text(fmt, histories, frames, times)
         if output in (None, "-"):
             emit(text, nl=False)
             return
@@ -169,10 +165,7 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if rod == "both" and any(len(job.frames[0]) > 4 for job in jobs):
         raise OptionError("frame", frame, template="{what}: the ledger figure of both rods takes at most 4 frames "
                                                    "(a row of each rod per frame); give fewer.")
-    histories = [(run_scenario(job.scenario, job.name, job.frames[0]),) for job in jobs]
-    if rod == "both":  # the causal rod's beside the rigid one
-        histories = [(rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, job.frames[0]))
-                     for (rigid,), job in zip(histories, jobs)]
+    histories = [run_rods(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
     before_matplotlib()
@@ -186,25 +179,41 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
                quiet)
 
 
-def _causal_text(fmt: str, history, source: str, frames, times, writers) -> str:
-    """The causal rod's ledger (`tables.causal_ledger`), or with --rod both the rigid one's, then the causal one's."""
-    import json
-
+def _writers(history) -> dict:
+    """The ledger's writers for the history's rod: with fronts (the causal rod), its matter and stress parts
+    (`tables.causal_ledger`); with turns (the rigid rod), its kinetic and hidden parts (`io.ledger_report`)."""
+    from rodparadox.io import ledger_report
+    from rodparadox.tables import build as tables
     from rodparadox.tables import causal_ledger
 
-    causal = causal_ledger if history.kind == "causal" else None
-    if causal is not None:
-        return {"text": causal.to_text, "json": causal.to_json, "csv": causal.to_csv, "markdown": causal.to_markdown,
-                "latex": causal.to_latex}[fmt](history, frames, times)
-    rigid = history
-    history = run_scenario(rigid.scenario.with_overrides(rod="causal"), source, frames)
-    _check_times(history, frames, times)
-    parts = [writers[fmt](rigid, frames, times), _causal_text(fmt, history, source, frames, times, writers)]
+    if history.fronts is not None:
+        return {"text": causal_ledger.to_text, "json": causal_ledger.to_json, "csv": causal_ledger.to_csv,
+                "markdown": causal_ledger.to_markdown, "latex": causal_ledger.to_latex,
+                "document": causal_ledger.document, "rows": causal_ledger.csv_rows}
+    return {"text": ledger_report.to_text, "json": ledger_report.to_json, "csv": ledger_report.to_csv,
+            "markdown": tables.ledger_markdown, "latex": tables.ledger_latex,
+            "document": ledger_report.document, "rows": ledger_report.csv_rows}
+
+
+def _text(fmt: str, histories: tuple, frames, times) -> str:
+    """The ledger of one rod, or of both rods (the same particles): one after the other as text, tables and LaTeX;
+    one JSON object with a member per rod; one CSV table whose first column names the rod."""
+    import json
+
+    from rodparadox.io import ledger_report
+
+    if len(histories) == 1:
+        return _writers(histories[0])[fmt](histories[0], frames, times)
     if fmt == "json":
-        return json.dumps({"format": causal_ledger.FORMAT, "rod": "both", "rigid": json.loads(parts[0]),
-                           "causal": json.loads(parts[1])}, indent=1, allow_nan=False) + "\n"
-    if fmt == "csv":  # one table: a first column says which rod
-        rows = [["rod"] + parts[0].splitlines()[0].split(",")]
-        rows += [[rod] + line.split(",") for rod, text in zip(("rigid", "causal"), parts) for line in text.splitlines()[1:]]
+        return json.dumps({"format": ledger_report.FORMAT, "rod": "both",
+                           **{h.model: _writers(h)["document"](h, frames, times) for h in histories}},
+                          indent=1, allow_nan=False) + "\n"
+    if fmt == "csv":
+        rows = [["rod", *ledger_report.CSV_COLUMNS]]
+        rows += [[h.model, *row] for h in histories for row in _writers(h)["rows"](h, frames, times)]
         return "\n".join(",".join(row) for row in rows) + "\n"
-    return parts[0] + "\n" + parts[1]
+    from rodparadox.tables.comparison import comparison_note
+
+    note = textwrap.wrap(comparison_note(histories, frames), 110)
+    head = {"latex": "".join(f"% {line}\n" for line in note)}.get(fmt, "\n".join(note) + "\n\n")
+    return head + "\n".join(_writers(h)[fmt](h, frames, times) for h in histories)

@@ -8,15 +8,17 @@ from __future__ import annotations
 
 import errno
 import sys
+import textwrap
 from pathlib import Path
 
 import click
 
 from rodparadox import __version__
 
-from . import common, words
-from .common import (checked_frame_velocity, checked_output, emit, format_option, frame_velocity_option, load_scenario,
-                     output_option, quiet_option, report, reports_errors, run_scenario, scenario_options)
+from . import edge, words
+from .edge import emit, report, reports_errors
+from .options import (checked_frame_velocity, checked_output, format_option, frame_velocity_option, load_scenario,
+                      output_option, quiet_option, ROD_WORDS, run_rods, scenario_options)
 from .animate import animate  # imports matplotlib only when it runs
 from .handout import handout
 from .html import html  # never imports matplotlib
@@ -31,14 +33,14 @@ EVENTS_FORMATS = ("text", "markdown", "latex")
 
 class _Main(click.Group):
     """The group, with one more edge: help and version text that cannot be written (a full disk) is one
-    sentence and exit status 1; the commands' own output goes through `common.emit`."""
+    sentence and exit status 1; the commands' own output goes through `edge.emit`."""
 
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
         try:
             if not standalone_mode:
                 return super().main(args, prog_name, complete_var, standalone_mode, **extra)
             try:
-                with common.stopped_by_signals():
+                with edge.stopped_by_signals():
                     code = super().main(args, prog_name, complete_var, False, **extra)
             except click.UsageError as e:  # click's own checks (a bad --style, --rod-lines -1): one sentence too
                 click.echo(f"Error: {e.format_message()}", err=True)
@@ -46,10 +48,10 @@ class _Main(click.Group):
             except click.ClickException as e:
                 e.show()
                 sys.exit(e.exit_code)
-            except (common.Stopped, click.exceptions.Abort) as e:
+            except (edge.Stopped, click.exceptions.Abort) as e:
                 # Ctrl-C, kill, timeout, a closed terminal: every file and temporary folder was cleaned up on the
                 # way out (atomic writes, the encoders' `with` blocks); say so, and exit as the signal would
-                stopped = e if isinstance(e, common.Stopped) else common.Stopped(common.signal_number("SIGINT"))
+                stopped = e if isinstance(e, edge.Stopped) else edge.Stopped(edge.signal_number("SIGINT"))
                 try:
                     click.echo(f"Error: {stopped.sentence()}", err=True)
                 except OSError:  # the terminal went away with SIGHUP
@@ -60,7 +62,7 @@ class _Main(click.Group):
             # only help and version text are written outside the commands' edge (reports_errors, emit)
             if e.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EFBIG):
                 raise
-            common.stdout_to_devnull()
+            edge.stdout_to_devnull()
             click.echo(f"Error: cannot write to standard output: {(e.strerror or str(e)).lower()}.", err=True)
             sys.exit(1)
 
@@ -93,7 +95,7 @@ def list_scenarios() -> None:
 
 
 @main.command()
-@scenario_options()
+@scenario_options(rods=ROD_WORDS)
 @frame_velocity_option
 @format_option("text: aligned columns; markdown: a pipe table per frame; latex: a booktabs/siunitx fragment "
                "to \\input.", type=click.Choice(EVENTS_FORMATS, case_sensitive=False), default="text",
@@ -108,19 +110,28 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    history = run_scenario(s, scenario, frames)
-    if fmt == "text":
-        from rodparadox.io.export import to_table
+    histories = run_rods(s, scenario, frames)
+    from rodparadox.tables.comparison import comparison_note
 
-        emit(to_table(history, frames), nl=False)
+    note = comparison_note(histories, frames) if len(histories) > 1 else ""
+    if fmt == "text":
+        from rodparadox.io.export import rods_to_table, to_table
+
+        emit(to_table(histories[0], frames) if not note else rods_to_table(histories, frames, note), nl=False)
         return
     from rodparadox.tables import build as tables
 
-    emit((tables.events_markdown if fmt == "markdown" else tables.events_latex)(history, frames), nl=False)
+    write = tables.events_markdown if fmt == "markdown" else tables.events_latex
+    if not note:
+        emit(write(histories[0], frames), nl=False)
+        return
+    head = f"{note}\n\n" if fmt == "markdown" else "".join(f"% {line}\n" for line in textwrap.wrap(note, 110))
+    title = "**The {} rod**\n\n" if fmt == "markdown" else "% The {} rod\n"
+    emit(head + "\n".join(title.format(h.model) + write(h, frames) for h in histories), nl=False)
 
 
 @main.command()
-@scenario_options()
+@scenario_options(rods=ROD_WORDS)
 @frame_velocity_option
 @format_option("json: the documented contract (README); csv: one row per event and world-line point. "
                "[default: the extension of -o FILE, else json]", type=click.Choice(EXPORT_FORMATS), default=None)
@@ -136,7 +147,7 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
 
     Example: sears-paradox export fig2 --v 0.6 -o fig2.json
     """
-    from rodparadox.io.export import to_csv, to_json
+    from rodparadox.io.export import rods_to_csv, rods_to_json, to_csv, to_json
     from rodparadox.physics.frames import paper_frames
     from rodparadox.io.output import check_target, write_atomic
 
@@ -145,7 +156,11 @@ def export(scenario: str, v: float | None, L: float | None, frame_velocity: floa
         check_target(output)  # before the work: a missing folder is said at once
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
-    text = (to_json if fmt == "json" else to_csv)(run_scenario(s, scenario, frames), frames)
+    histories = run_rods(s, scenario, frames)
+    if len(histories) == 1:
+        text = (to_json if fmt == "json" else to_csv)(histories[0], frames)
+    else:
+        text = (rods_to_json if fmt == "json" else rods_to_csv)(histories, frames)
     if output == "-":
         emit(text, nl=False)
         return

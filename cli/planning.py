@@ -24,7 +24,8 @@ from rodparadox.io.output import check_folder, check_target, is_stream
 from rodparadox.io.scenario import load, stem_of
 
 from . import words
-from .common import BadInput, with_options
+from .edge import BadInput
+from .options import with_options
 
 #: where outputs go when -o is not given; the only output folder a command creates itself
 DEFAULT_FOLDER = "outputs"

@@ -11,8 +11,9 @@ import click
 
 from rodparadox.render.styles import FORMATS
 
-from .common import (BadInput, Whole, before_matplotlib, format_option, frame_option, output_option, quiet_option,
-                     report, reports_errors, rod_asked, run_scenario, scenario_options, style_option)
+from .edge import BadInput, before_matplotlib, report, reports_errors
+from .options import (Whole, format_option, frame_option, output_option, quiet_option, rod_asked, run_rods,
+                      scenario_options, style_option)
 
 _EXTRAS = (("other_axes", "axes"), ("light_cones", "cones"), ("hyperbolae", "hyperbolae"), ("grid", "grid"),
            ("rod_now", "now"), ("proper_time", "clocks"), ("equal_scales", "samescale"))
@@ -58,6 +59,7 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     Example: sears-paradox plot fig2 --v 0.6
     """
     from sears_paradox_cli import planning as planned
+    from sears_paradox_cli.planning import lorentz_frames
 
     extras = {"other_axes": other_axes, "light_cones": light_cones, "hyperbolae": hyperbolae, "grid": grid,
               "rod_now": rod_now, "proper_time": proper_time, "equal_scales": equal_scales}
@@ -69,8 +71,8 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     from rodparadox.physics.rod_view import refuse_frame_extras
     for job in jobs:  # every panel the rod's own view: the extras have nothing to draw on
         refuse_frame_extras(job.frames[0], **extras, rod_lines=rod_lines)
-    histories = [_run(job, rod == "both") for job in jobs]
-    if proper_time and any(h.kind == "causal" for run in histories for h in run):
+    histories = [run_rods(job.scenario, job.name, lorentz_frames(job.frames[0])) for job in jobs]
+    if proper_time and any(h.turning is None for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
     planned.prepare(jobs, described, output)
 
@@ -83,17 +85,6 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     figures = [_figure(run, job.frames[0], style, options) for run, job in zip(histories, jobs)]
     report(((path, write_atomic(path, render.figure_bytes(figure, f, style)))
             for figure, job in zip(figures, jobs) for f, path in job.paths.items()), quiet)
-
-
-def _run(job, both: bool) -> tuple:
-    """The job's history, and with --rod both the causal rod's beside the rigid one."""
-    from sears_paradox_cli.planning import lorentz_frames
-
-    frames = lorentz_frames(job.frames[0])
-    rigid = run_scenario(job.scenario, job.name, frames)
-    if not both:
-        return (rigid,)
-    return rigid, run_scenario(job.scenario.with_overrides(rod="causal"), job.name, frames)
 
 
 def _figure(run: tuple, frames: tuple, style: str, options):

@@ -75,5 +75,7 @@ def format_not_one_of(fmt: str, allowed: Sequence[str]) -> OptionError:
 def rod_not_here(rod: str, command: str, rods) -> str:
     """A rod model a command does not take (from --rod or a scenario's rod:), in one sentence."""
     takes = " or ".join(rods)
-    what = "--rod both (the two rods side by side)" if rod == "both" else f"the {rod} rod"
-    return f"{command} does not take {what} yet (from option --rod or the scenario's rod:); it takes {takes}."
+    if rod == "both":
+        return (f"{command} shows one rod at a time, so it does not take --rod both; run it once with --rod rigid "
+                f"and once with --rod causal.")
+    return f"{command} does not take the {rod} rod yet (from option --rod or the scenario's rod:); it takes {takes}."

@@ -136,7 +136,7 @@ def scene_data(path: Path) -> None:
     from rodparadox import render
     from rodparadox.animate.now_scene import NowScene
     from rodparadox.animate.timeline import image_count, timeline
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.rigid import run
     from rodparadox.physics.frames import paper_frames
     from rodparadox.render.strip import COLOUR_BAR_LABEL
     from rodparadox.io.scenario import load

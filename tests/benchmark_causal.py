@@ -54,7 +54,7 @@ def timed(args: list[str], cwd: Path) -> tuple[float, float, int]:
 def in_process(name: str, repeat: int) -> None:
     """The causal solve against the rigid run, in this process, and its profile."""
     from rodparadox.io.scenario import load
-    from rodparadox.physics.engine import run as run_rigid
+    from rodparadox.physics.rigid import run as run_rigid
 
     t0 = time.perf_counter()
     from rodparadox.physics.causal import run as run_causal  # what the first causal run of a process pays once

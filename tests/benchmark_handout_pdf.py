@@ -25,7 +25,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from handout_samples import handout  # noqa: E402
 from rodparadox import render  # noqa: E402
-from rodparadox.physics.engine import run  # noqa: E402
+from rodparadox.physics.rigid import run  # noqa: E402
 from rodparadox.physics.frames import paper_frames  # noqa: E402
 from rodparadox.handout.pdf import to_pdf  # noqa: E402
 from rodparadox.io.scenario import load  # noqa: E402

@@ -82,7 +82,7 @@ def figure_data(path: Path) -> None:
     from matplotlib.patches import Polygon
 
     from rodparadox import render
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.rigid import run
     from rodparadox.physics.frames import paper_frames
     from rodparadox.io.scenario import load
 

@@ -16,7 +16,8 @@ import pytest
 from hypothesis import settings
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.engine import History, run
+from rodparadox.physics.rigid.engine import History
+from rodparadox.physics.rigid import run
 
 # CI (CI=true) runs the same generated examples every time, so a landing never hangs on a lucky draw;
 # a developer's run draws new ones and finds what CI would not

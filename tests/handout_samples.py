@@ -11,7 +11,7 @@ import numpy as np
 
 from rodparadox.tables import build as tables
 from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, Question, Section, Strips
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames, time_window
 from rodparadox.io.scenario import load
 

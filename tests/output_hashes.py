@@ -8,7 +8,8 @@ gives the same bytes as separate processes (the determinism tests check that).
     python tests/output_hashes.py > after.txt       # on the new one
     diff before.txt after.txt
 
-`--quick` hashes a smaller grid (one speed, no animations of every style).
+`--quick` hashes a smaller grid (one speed, no animations of every style). `--models` adds the causal rod, both
+rods, the rod's own view and the html page at the presets' own speeds (with `--quick`, their grid alone).
 """
 
 from __future__ import annotations
@@ -80,11 +81,32 @@ def commands(quick: bool) -> list[list[str]]:
     return grid
 
 
+def model_commands() -> list[list[str]]:
+    """The causal rod, both rods, the rod's own view and the html page, each preset at its own speed."""
+    grid: list[list[str]] = []
+    for name in PRESETS:
+        for rod in ("causal", "both"):
+            grid.append(["events", name, "--rod", rod] if rod == "causal" else ["events", name, "--rod", "causal",
+                                                                                   "--format", "markdown"])
+            grid.append(["plot", name, "--rod", rod, "--frame", "both,rod", "--format", "svg,pdf", "-o", "{out}"])
+            grid.append(["ledger", name, "--rod", rod, "--format", "json"])
+            grid.append(["ledger", name, "--rod", rod, "--format", "text"])
+            grid.append(["ledger", name, "--rod", rod, "--format", "svg", "-o", "{out}"])
+            grid.append(["handout", name, "--rod", rod, "-o", "{out}"])
+            grid.append(["html", name, "--rod", rod, "-o", "{out}"])
+        grid.append(["export", name, "--rod", "causal", "--format", "json"])
+        grid.append(["plot", name, "--frame", "rod,rest", "--format", "svg", "-o", "{out}"])
+        grid.append(["animate", name, "--rod", "causal", "--fps", "4", "--seconds", "1", "-o", "{out}"])
+        grid.append(["html", name, "-o", "{out}"])
+    return grid
+
+
 def main_(argv: list[str]) -> int:
     quick = "--quick" in argv
     runner = CliRunner(mix_stderr=False) if 'mix_stderr' in CliRunner.__init__.__code__.co_varnames else CliRunner()
     with tempfile.TemporaryDirectory() as tmp:
-        for k, args in enumerate(commands(quick)):
+        grid = commands(quick) if not (quick and "--models" in argv) else []
+        for k, args in enumerate(grid + (model_commands() if "--models" in argv else [])):
             out = Path(tmp) / f"run{k}"
             out.mkdir()
             args = [a.replace("{out}", str(out)) for a in args]

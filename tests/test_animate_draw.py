@@ -12,10 +12,10 @@ from rodparadox import render
 from rodparadox.animate.now_scene import LENS_BELOW, NowScene
 from rodparadox.animate.scenes import images_of
 from rodparadox.animate.timeline import timeline
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.render.strip import PRINT_RAMP, colour_map
-from rodparadox.physics.rod import material_worldline
+from rodparadox.physics.rigid.turns import material_worldline
 from rodparadox.io.scenario import load
 from rodparadox.render.colour_scale import colour_scale
 

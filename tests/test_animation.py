@@ -9,11 +9,11 @@ import pytest
 
 from rodparadox.animate.timeline import (FLASH_FRACTION, MAX_IMAGES, boost_ends, boost_timeline, boost_velocities,
                                          image_count, now_timeline, now_times)
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.physics.kinematics import Event
-from rodparadox.physics.rod import material_worldline
+from rodparadox.physics.rigid.turns import material_worldline
 from rodparadox.physics.snapshot import strip_at
 from rodparadox.io.scenario import load
 from rodparadox.render.colour_scale import colour_scale

@@ -24,7 +24,7 @@ import pytest
 
 from rodparadox.io.scenario import builtin_names, load
 from rodparadox.physics.causal import run
-from rodparadox.physics.engine import run as run_rigid
+from rodparadox.physics.rigid import run as run_rigid
 from rodparadox.physics.model import Particle, Scenario, Timing
 
 #: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
@@ -203,7 +203,7 @@ def test_a_slice_through_a_contact_or_a_separation_itself_conserves_the_total():
     import math
 
     from rodparadox.io.scenario import load
-    from rodparadox.physics.rod_models import run_rod
+    from rodparadox.physics.models import run_rod
 
     for name in ("single", "fig2"):
         history = run_rod(load(name).with_overrides(rod="causal"))

@@ -91,6 +91,6 @@ def test_rod_key_and_option(tmp_path):
 
 
 def test_commands_without_both_refuse_it():  # (html takes the causal rod and both now: tests/test_html.py)
-    out = run("events", "fig1", "--rod", "both", expect=2).output
-    assert "does not take --rod both (the two rods side by side) yet" in out
+    out = run("animate", "fig1", "--rod", "both", expect=2).output
+    assert "shows one rod at a time, so it does not take --rod both; run it once with --rod rigid and once with --rod causal." in out
 

@@ -23,7 +23,7 @@ from rodparadox import render
 from rodparadox.io.scenario import builtin_names, load
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.physics.kinematics import ChartCurve
-from rodparadox.physics.rod_models import run_rod
+from rodparadox.physics.models import run_rod
 from rodparadox.render.causal_layers import compression_cells, compression_colour_map, compression_norm
 from rodparadox.render.styles import STYLE_NAMES, STYLES
 from sears_paradox_cli.main import main
@@ -353,7 +353,7 @@ def test_the_compression_scale_is_written_in_plain_decimals(lam, text):
 
 
 def test_the_causal_strip_read_off_the_chart_is_the_material_world_lines_at_that_instant():
-    from rodparadox.physics.snapshot import STRIP_POINTS, strip_at
+    from rodparadox.physics.snapshot import strip_at, STRIP_POINTS
 
     h = causal("fig2", 0.6)
     for frame in paper_frames(0.6):

@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 
 from conftest import causal_history
-from rodparadox.physics.causal_ode import falling_root, solve_contact
-from rodparadox.physics.causal_parts import rod_parts
-from rodparadox.physics.causal_solve import _Contact
+from rodparadox.physics.causal.ode import falling_root, solve_contact
+from rodparadox.physics.causal.parts import rod_parts
+from rodparadox.physics.causal.solve import _Contact
 
 
 class _Input:

@@ -61,7 +61,7 @@ def test_every_help_example_runs_in_an_empty_folder(command, tmp_path, monkeypat
 
 
 def test_the_commands_share_one_module_and_plot_does_not_import_main():
-    """cli.common holds what main and plot share; plot never imports main (main imports plot to register it)."""
+    """cli.options and cli.edge hold what main and plot share; plot never imports main (main imports plot to register it)."""
     cli = Path(__file__).resolve().parent.parent / "cli"
     assert not re.search(r"from \.main import|import sears_paradox_cli\.main", (cli / "plot.py").read_text())
     plot_help = {p.name: p.help for p in main.commands["plot"].params}
@@ -198,7 +198,7 @@ def test_export_json_contract_fig1():
 
 
 def test_export_json_round_trips_the_library_floats_exactly():
-    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.rigid import run as simulate
     from rodparadox.physics.frames import Frame, view
     from rodparadox.io.scenario import load
 
@@ -430,7 +430,7 @@ def test_frame_velocity_names_keep_every_digit(u, name):
 
 def test_frames_library_names_and_bounds_frames():
     from rodparadox.errors import FrameError
-    from rodparadox.physics.frames import FASTEST_FRAME, check_velocity, frame_of_velocity
+    from rodparadox.physics.frames import check_velocity, FASTEST_FRAME, frame_of_velocity
     from rodparadox.physics.model import FASTEST
 
     assert FASTEST_FRAME == FASTEST

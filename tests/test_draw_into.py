@@ -10,7 +10,7 @@ import pytest
 from matplotlib.figure import Figure
 
 from rodparadox import render
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.io.scenario import load
 

@@ -5,7 +5,7 @@ import math
 import pytest
 
 from rodparadox.physics.collision import elastic
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.kinematics import Event
 from rodparadox.io.scenario import Particle, Scenario, Timing, load
 

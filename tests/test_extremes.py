@@ -12,7 +12,7 @@ from rodparadox import render
 from rodparadox.animate.timeline import boost_ends, timeline
 from rodparadox.io.scenario import load
 from rodparadox.physics import kinematics
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.physics.kinematics import Event, WorldLine
 

@@ -14,11 +14,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.errors import FrameError, ScenarioError
-from rodparadox.physics.frames import (FASTEST_FRAME, MAX_PANELS, Frame, check_velocity, frame_heading, moving_frame,
-                                      named_frame, parse_frames, rest_frame, view)
-from rodparadox.physics.model import FASTEST, Timing, frame_velocity
+from rodparadox.physics.frames import check_velocity, FASTEST_FRAME, Frame, frame_heading, MAX_PANELS, moving_frame, named_frame, parse_frames, rest_frame, view
+from rodparadox.physics.model import FASTEST, frame_velocity, Timing
 from rodparadox.physics.kinematics import Line
 from rodparadox.io.scenario import builtin_names, load
 

@@ -18,7 +18,7 @@ from rodparadox.handout.causal_reading import compare
 from rodparadox.handout.document import Heading, Paragraph, Question, Table
 from rodparadox.handout.words import in_c, in_l, numeral
 from rodparadox.physics.frames import paper_frames
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 from sears_paradox_cli.main import main
 
 V = 0.6

@@ -165,7 +165,7 @@ def _readme_handout_section() -> str:
 
 
 def test_readme_lists_the_questions_fig2s_worksheet_asks():
-    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.rigid import run as simulate
     from rodparadox.physics.frames import paper_frames
     from rodparadox.handout.build import questions
     from rodparadox.io.scenario import load

@@ -21,7 +21,7 @@ from rodparadox.handout.strips import strip_times, strips_caption
 from rodparadox.handout.worksheet import questions
 from rodparadox.tables import build as tables
 from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragraph, Question, Strips, Table
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
 from rodparadox.physics.rod import rod_slice
 from rodparadox.io.scenario import builtin_names, load, parse

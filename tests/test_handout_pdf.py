@@ -21,7 +21,7 @@ from handout_samples import handout
 from rodparadox import render
 from rodparadox.tables import build as tables
 from rodparadox.handout.document import Cell, Handout, Heading, PageBreak, Paragraph, Question, Section, Table
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.handout.pdf import page_figures, to_pdf
 from rodparadox.handout.pdf_text import MARGIN, TextRuns, Type

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from rodparadox.handout.document import DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question, Section, Strips, Table
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import frame_of_velocity, frame_symbol, frame_word, paper_frames, sampling_tolerance, view
 from rodparadox.handout.tex import data_files, file_stem, number, tex_files
 from rodparadox.io.scenario import load

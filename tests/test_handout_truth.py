@@ -17,7 +17,7 @@ from test_invariants import history_of, timed, two_gaps, while_turning
 from rodparadox.handout.narrative import explanation
 from rodparadox.io.scenario import builtin_names, load
 from rodparadox.numbers import MINUS, impact_name
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 
 SPEEDS = (0.3, 0.6, 0.95)
@@ -121,7 +121,7 @@ def test_the_far_end_moves_before_light_from_the_impact_reaches_it(name, v):
     found = re.search(rf"(\S+) strikes the rod’s (left|right) end at t = ({NUMBER}) L in S, and the (left|right) end "
                       rf"starts to move at that same instant of S, while light from \1 reaches it only at t = "
                       rf"({NUMBER}) L\.", text)
-    if not any(t.rapidity_from == 0.0 for t in h.rigid.turns[:1]):
+    if not any(t.rapidity_from == 0.0 for t in h.turning.turns[:1]):
         assert found is None and "In the scenario" not in text  # fig1: the rod never turns
         return
     assert found, text

@@ -22,8 +22,7 @@ import pytest
 from click.testing import CliRunner
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.ledger import EnergyMomentum
-from rodparadox.physics.snapshot import rod_rapidities
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.render.styles import STYLES
 from rodparadox.web import data as web_data
 from rodparadox.web.page import asset, page
@@ -147,7 +146,7 @@ def test_sampled_lines_lie_on_the_exact_world_lines_within_tolerance_in_every_fr
 def test_the_colour_scale_is_the_largest_material_rapidity(fig2_data):
     """Independent of the samples: the extremes of every material point's rapidity are the turns' ends."""
     for v in (0.3, 0.6):
-        bound = max(abs(r) for r in rod_rapidities(history("fig2", v)))
+        bound = max(abs(r) for r in history("fig2", v).turning.rapidities())
         assert at_speed(fig2_data, v)["colour_bound"] == pytest.approx(bound, rel=1e-12)
 
 

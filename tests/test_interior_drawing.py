@@ -11,10 +11,11 @@ import pytest
 from click.testing import CliRunner
 
 from rodparadox import render
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames, time_window
 from rodparadox.physics.kinematics import Event
-from rodparadox.physics.rod import clock_step, material_worldline
+from rodparadox.physics.rod import clock_step
+from rodparadox.physics.rigid.turns import material_worldline
 from rodparadox.io.scenario import load
 from sears_paradox_cli.main import main
 

@@ -27,7 +27,8 @@ import pytest
 from hypothesis import HealthCheck, assume, example, given, note, settings
 from hypothesis import strategies as st
 
-from rodparadox.physics.engine import History, run
+from rodparadox.physics.rigid.engine import History
+from rodparadox.physics.rigid import run
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.frames import Frame, view
 from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, WorldLine

@@ -147,7 +147,7 @@ def read(path: Path) -> str:
 # --- the tree as it is ------------------------------------------------------------------------------------------
 
 def test_every_module_is_found():
-    assert {"rodparadox.physics.engine", "rodparadox.render.diagram", "rodparadox.animate.timeline",
+    assert {"rodparadox.physics.rigid.engine", "rodparadox.physics.causal.solve", "rodparadox.render.diagram", "rodparadox.animate.timeline",
             "rodparadox.handout.pdf", "rodparadox.tolerances", "sears_paradox_cli.main"} <= set(MODULES)
     assert all(part(m) in MAY_IMPORT or part(m) in ("cli", "rodparadox") for m in MODULES), \
         "a part of rodparadox with no rule in MAY_IMPORT"
@@ -176,7 +176,126 @@ def test_the_library_never_names_an_option():
     assert not worded, f"the library names options (\"{CLI_WORDING}...\") in {worded}"
 
 
+def import_graph(sources: dict[str, str], modules=MODULES) -> dict[str, set[str]]:
+    """Each module of ours -> the modules of ours it imports (anywhere in it: at the top, inside a function, or
+    under TYPE_CHECKING), `from a import b` of a name counted as an import of a."""
+    return {module: {target for target, _, _ in imports(parsed(source), modules) if target != module}
+            for module, source in sources.items()}
+
+
+def import_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """Every strongly connected set of modules larger than one (Tarjan): each is an import cycle."""
+    index, low, stack, on_stack, out = {}, {}, [], set(), []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on_stack.add(v)
+        for w in sorted(graph.get(v, ())):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on_stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                on_stack.discard(w)
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                out.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_cycle():
+    """No module imports, directly or through others, a module that imports it (not even inside a function, the
+    old way of dodging a cycle)."""
+    graph = import_graph({module: read(path) for module, path in MODULES.items()})
+    assert not import_cycles(graph), import_cycles(graph)
+
+
+#: the rod models' own packages; nothing shared imports them but the one door, `physics.models`
+MODEL_PACKAGES = ("rodparadox.physics.rigid", "rodparadox.physics.causal")
+THE_DOOR = "rodparadox.physics.models"
+
+
+def model_package_imports(sources: dict[str, str], modules=MODULES) -> list[str]:
+    """Imports of a model's package from outside it: only the door may, and one model never imports another."""
+    out = []
+    for module, targets in import_graph(sources, modules).items():
+        mine = next((p for p in MODEL_PACKAGES if module == p or module.startswith(p + ".")), None)
+        for target in sorted(targets):
+            theirs = next((p for p in MODEL_PACKAGES if target == p or target.startswith(p + ".")), None)
+            if theirs is not None and theirs != mine and module != THE_DOOR:
+                out.append(f"{module} imports {target}")
+    return out
+
+
+def test_only_the_door_opens_a_rod_model():
+    """render, tables, io, animate, handout, web and cli read a run through the rod interface and run one through
+    `physics.models`; the rigid and the causal rod never import each other."""
+    library = {m: read(p) for m, p in MODULES.items() if not m.startswith("sears_paradox_cli.__")}
+    assert model_package_imports(library) == []
+
+
+def model_branches(module: str, source: str) -> list[str]:
+    """Places that test a history's or a chart's model by name: `getattr(x, "kind"...)`, or a comparison of an
+    attribute `kind` or `model` with "rigid" or "causal". A consumer asks for a capability instead."""
+    out = []
+    for node in ast.walk(parsed(source)):
+        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "getattr"
+                and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant) and node.args[1].value == "kind"):
+            out.append(f"{module}, line {node.lineno}: getattr(..., 'kind')")
+        if isinstance(node, ast.Compare):
+            sides = [node.left, *node.comparators]
+            named = any(isinstance(x, ast.Attribute) and x.attr in ("kind", "model") for x in sides)
+            words = any(isinstance(x, ast.Constant) and x.value in ("rigid", "causal") for x in sides)
+            if named and words:
+                out.append(f"{module}, line {node.lineno}: compares a model's name")
+    return out
+
+
+def test_no_consumer_branches_on_a_models_name():
+    found = [b for module, path in MODULES.items() if not module.startswith("rodparadox.physics")
+             for b in model_branches(module, read(path))]
+    assert not found, "\n".join(found)
+
+
 # --- each check fails on a planted violation -----------------------------------------------------------------
+
+def test_a_planted_cycle_is_found_even_inside_a_function():
+    sources = {"rodparadox.physics.a": "def f():\n    from rodparadox.physics.b import g\n",
+               "rodparadox.physics.b": "from rodparadox.physics.c import h\n",
+               "rodparadox.physics.c": "from rodparadox.physics.a import f\n",
+               "rodparadox.physics.d": "from rodparadox.physics.a import f\n"}
+    modules = set(sources)
+    assert import_cycles(import_graph(sources, modules)) == [["rodparadox.physics.a", "rodparadox.physics.b",
+                                                              "rodparadox.physics.c"]]
+
+
+def test_a_planted_side_door_is_found():
+    sources = {"rodparadox.render.strip": "from rodparadox.physics.causal.history import run\n",
+               "rodparadox.physics.rigid.engine": "from rodparadox.physics.causal.solve import solve\n",
+               "rodparadox.physics.models": "from rodparadox.physics.causal.history import run\n",
+               "rodparadox.physics.causal.history": "", "rodparadox.physics.causal.solve": ""}
+    assert sorted(model_package_imports(sources, set(sources))) == [
+        "rodparadox.physics.rigid.engine imports rodparadox.physics.causal.solve",
+        "rodparadox.render.strip imports rodparadox.physics.causal.history"]
+
+
+@pytest.mark.parametrize("source", ['if getattr(history, "kind", "") == "causal":\n    pass\n',
+                                    'x = 1 if chart.kind == "rigid" else 2\n',
+                                    'ok = history.model != "causal"\n'])
+def test_a_planted_model_branch_is_found(source):
+    assert len(model_branches("rodparadox.render.strip", source)) == 1
+    assert model_branches("rodparadox.render.strip", 'if impact.kind == "separation":\n    pass\n') == []
 
 @pytest.mark.parametrize("module, source, expected", [
     ("rodparadox.physics.frames", "from rodparadox.render.diagram import draw\n", "physics imports render"),

@@ -32,11 +32,13 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import Frame, view
-from rodparadox.physics.ledger import (EnergyMomentum, impact_entries, initial_total, ledger_slice, rod_kinetic,
-                               turn_times)
-from rodparadox.physics.rod import material_worldline, now_lines, rod_slice, turn_interval
+from rodparadox.physics.types import EnergyMomentum
+from rodparadox.physics.ledger import impact_entries, initial_total
+from rodparadox.physics.rigid.ledger import ledger_slice, rod_kinetic
+from rodparadox.physics.rigid.turns import material_worldline, now_lines, turn_interval
+from rodparadox.physics.rod import rod_slice
 from rodparadox.io.scenario import Particle, Scenario, builtin_names, load
 
 from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
@@ -363,7 +365,7 @@ def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios
 def test_slices_include_every_turns_start_and_end():
     h = run(load("fig2"))
     for eta in (0.0, -math.atanh(0.6)):
-        times = turn_times(h, eta)
+        times = h.turning.turn_times(eta)
         assert len(times) >= 2 * len(h.turns) - 2  # consecutive turns may share an instant
         for turn in h.turns:
             lo, hi = turn_interval(turn, eta)

@@ -11,7 +11,7 @@ import pytest
 
 from rodparadox.io.ledger_report import to_text
 from rodparadox.io.scenario import builtin_names, load
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.tables import build as tables
 

@@ -14,8 +14,8 @@ import matplotlib
 import pytest
 from click.testing import CliRunner
 
-from rodparadox.physics.engine import run as simulate
-from rodparadox.physics.rod import turn_interval
+from rodparadox.physics.rigid import run as simulate
+from rodparadox.physics.rigid.turns import turn_interval
 from rodparadox.io.scenario import load
 from sears_paradox_cli.ledger import ledger
 from sears_paradox_cli.main import main

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.io.scenario import load

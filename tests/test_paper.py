@@ -45,7 +45,7 @@ from typing import Callable
 
 import pytest
 
-from rodparadox.physics import engine
+from rodparadox.physics.rigid import engine
 from rodparadox.io import scenario
 from rodparadox.physics.frames import Frame, view
 from rodparadox.physics.kinematics import HyperbolicArc

@@ -354,7 +354,7 @@ def test_readme_figures_are_what_the_tool_draws_now():
     import matplotlib
 
     from rodparadox import render
-    from rodparadox.physics.engine import run as simulate
+    from rodparadox.physics.rigid import run as simulate
     from rodparadox.physics.frames import paper_frames
     from rodparadox.io.scenario import load
 

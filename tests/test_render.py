@@ -27,7 +27,7 @@ from matplotlib.colors import to_rgb
 
 from conftest import history, measuring_renderer
 from rodparadox import render
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.frames import Frame, paper_frames, sampling_tolerance, view
 from rodparadox.physics.kinematics import HyperbolicArc

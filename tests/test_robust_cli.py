@@ -267,7 +267,7 @@ def test_a_signal_during_an_mp4_leaves_nothing(tmp_path, signum, said, status):
 
 @pytest.mark.parametrize("name, status", [("SIGHUP", 129), ("SIGTERM", 143), ("SIGINT", 130)])
 def test_each_stopping_signal_raises_where_the_program_is(name, status):
-    from sears_paradox_cli.common import Stopped, stopped_by_signals
+    from sears_paradox_cli.edge import Stopped, stopped_by_signals
 
     number = getattr(signal, name)
     before = signal.getsignal(number)
@@ -432,7 +432,7 @@ def test_a_rod_that_never_changes_velocity_seen_from_another_frame_draws_no_warn
     import warnings
 
     from rodparadox.io.scenario import load
-    from rodparadox.physics.engine import run as run_history
+    from rodparadox.physics.rigid import run as run_history
     from rodparadox.physics.frames import frame_of_velocity
     from rodparadox.render.colour_scale import STILL_BOUND, colour_scale
 

@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.engine import History, run
-from rodparadox.physics.history import RigidResponse, RodHistory
+from rodparadox.physics.rigid.engine import History
+from rodparadox.physics.rigid import run
+from rodparadox.physics.history import RodHistory, Turning
 
 
 @pytest.fixture(scope="module")
@@ -20,8 +21,8 @@ def fig2() -> History:
 
 
 def test_the_rigid_engine_implements_the_interface_and_its_rigid_part(fig2):
-    assert isinstance(fig2, RodHistory) and isinstance(fig2.rigid, RigidResponse)
-    assert fig2.kind == "rigid" and fig2.rigid.turns == fig2.turns
+    assert isinstance(fig2, RodHistory) and isinstance(fig2.turning, Turning)
+    assert fig2.model == "rigid" and fig2.fronts is None and fig2.turning.turns == fig2.turns
 
 
 def test_material_velocity_matches_the_paper_in_both_frames(fig2):
@@ -65,12 +66,12 @@ def test_energy_momentum_on_every_slice_adds_up_to_the_initial_total(fig2):
 
 
 def test_the_rigid_parts_own_lines_keep_the_rod_at_proper_length_L(fig2):
-    for a, b in fig2.rigid.now_lines():
+    for a, b in fig2.turning.now_lines():
         assert (b.x - a.x) ** 2 - (b.t - a.t) ** 2 == pytest.approx(1.0, abs=1e-12)
     moving = math.atanh(-0.6)
-    times = fig2.rigid.turn_times(moving)
+    times = fig2.turning.turn_times(moving)
     assert times == sorted(times) and len(times) >= 2
-    assert all(fig2.rigid.turn_interval(turn, moving)[0] in times for turn in fig2.turns)
+    assert all(fig2.turning.turn_interval(turn, moving)[0] in times for turn in fig2.turns)
 
 
 @dataclass(frozen=True)
@@ -83,7 +84,7 @@ class _WithoutRigidPart:
         return getattr(self.inner, name)
 
     @property
-    def rigid(self):
+    def turning(self):
         return None
 
 

@@ -9,7 +9,9 @@ import pytest
 
 from conftest import causal_history, history
 from rodparadox.physics.kinematics import Event
-from rodparadox.physics.rod_view import CausalChart, RigidChart, chart_polyline
+from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.rigid.chart import RigidChart
+from rodparadox.physics.rod_view import chart_polyline
 
 pytestmark = pytest.mark.xdist_group("causal")  # the causal histories, built once on the worker that has them
 
@@ -25,7 +27,7 @@ def test_the_chart_of_a_rod_never_struck_is_s_with_the_left_end_at_zero():
     # no contact: both invariants vanish, a(u) = u - L/2, b(w) = w + L/2, so t = T and x = X - L/2 everywhere
     from types import SimpleNamespace
 
-    from rodparadox.physics.causal_solve import Invariant, Solution
+    from rodparadox.physics.causal.solve import Invariant, Solution
 
     L = 2.0
     chart = CausalChart(SimpleNamespace(solution=Solution(L, Invariant(), Invariant(), [], {}),
@@ -292,7 +294,7 @@ def test_an_extra_with_only_the_rod_view_to_draw_on_is_refused_in_one_sentence(e
 def test_the_library_refuses_extras_only_when_every_panel_is_the_rod_view():
     from rodparadox.errors import OptionError
     from rodparadox.physics.frames import parse_frames
-    from rodparadox.physics.rod_view import ROD_VIEW, refuse_frame_extras
+    from rodparadox.physics.rod_view import refuse_frame_extras, ROD_VIEW
 
     with pytest.raises(OptionError) as refused:
         refuse_frame_extras((ROD_VIEW,), grid=False, rod_lines=4, hyperbolae=True)

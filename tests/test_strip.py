@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import Frame, time_window
 from rodparadox.physics.snapshot import strip_at
 from rodparadox.render import draw_strips_into, style_context

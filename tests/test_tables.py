@@ -18,7 +18,7 @@ import pytest
 from click.testing import CliRunner
 
 from rodparadox.handout.document import Cell, Table
-from rodparadox.physics.engine import run as simulate
+from rodparadox.physics.rigid import run as simulate
 from rodparadox.physics.frames import paper_frames
 from rodparadox.io.scenario import builtin_names, load
 from rodparadox.tables.build import (events_table, hidden_table, latex_text, ledger_table, slices_table, to_latex,

@@ -8,7 +8,7 @@ import math
 import pytest
 
 from rodparadox.handout.document import Cell, Table
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import moving_frame, rest_frame
 from rodparadox.numbers import MINUS, fraction, fraction_text, impact_name
 from rodparadox.io.scenario import load

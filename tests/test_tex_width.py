@@ -11,7 +11,7 @@ import subprocess
 import pytest
 
 from rodparadox.io.scenario import parse
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.tables.build import events_table, hidden_table, ledger_table
 from rodparadox.tables.formats import to_latex

@@ -14,7 +14,7 @@ from rodparadox.handout.build import build
 from rodparadox.handout.document import DiagramBlock, Heading, Paragraph, Question, Strips, Table
 from rodparadox.handout.words import in_c
 from rodparadox.io.scenario import builtin_names, load
-from rodparadox.physics.engine import run
+from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 
 SPEEDS = (0.3, 0.6, 0.95)

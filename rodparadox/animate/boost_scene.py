@@ -23,7 +23,8 @@ from matplotlib.ticker import FuncFormatter, MaxNLocator, ScalarFormatter
 from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import BoostTimeline
 from rodparadox.numbers import impact_name, shown
-from rodparadox.physics.engine import WORLDLINE_NAMES, History
+from rodparadox.physics.types import WORLDLINE_NAMES
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, sampling_tolerance, view
 from rodparadox.physics.model import frame_velocity
 from rodparadox.render.causal_layers import HANDLER_MAP, Compression, Fronts
@@ -43,7 +44,7 @@ SEPARATIONS = Separations()
 OPTIONS = Options()
 
 
-def boost_images(history: History, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:
+def boost_images(history: RodHistory, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:
     """Each instant of the boost as an image: `BoostScene` drawn once, then at each instant only what moves, over
     the saved background (blitting)."""
     from rodparadox import render
@@ -60,7 +61,7 @@ class BoostScene:
     and returns the artists it drew, in drawing order. A key to the right names every line; the title names the
     frame of the instant. Build it inside `render.style_context(style)`."""
 
-    def __init__(self, history: History, timeline: BoostTimeline, style: str):
+    def __init__(self, history: RodHistory, timeline: BoostTimeline, style: str):
         from rodparadox import render
 
         self.history, self.timeline = history, timeline

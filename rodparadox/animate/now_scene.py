@@ -20,13 +20,13 @@ from matplotlib.figure import Figure
 
 from rodparadox.animate.images import blitted
 from rodparadox.animate.timeline import NowTimeline
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.numbers import nice_number
 from rodparadox.physics.frames import Frame
 from rodparadox.render.styles import STYLES
 
 
-def now_images(history: History, timeline: NowTimeline, style: str, rod_view: str | None = None) -> Iterator[np.ndarray]:
+def now_images(history: RodHistory, timeline: NowTimeline, style: str, rod_view: str | None = None) -> Iterator[np.ndarray]:
     """The diagram as `plot` draws it, with each frame's own line of simultaneity (its "now", horizontal in its
     own panel) sweeping up, and under each panel a strip of that frame's space at that instant, on the panel's
     x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting).
@@ -78,7 +78,7 @@ class NowScene:
     bar.
     """
 
-    def __init__(self, history: History, timeline: NowTimeline, style: str, rod_view: str | None = None):
+    def __init__(self, history: RodHistory, timeline: NowTimeline, style: str, rod_view: str | None = None):
         from rodparadox import render
         from rodparadox.render.strip import draw_strip
 
@@ -226,7 +226,7 @@ def _move_rod_now(lines: list, k: int, count: int) -> list:
 class RodNowScene:
     """Now mode with the rod's own view alone (`--frame rod`): its panel, its "now" sweeping up."""
 
-    def __init__(self, history: History, style: str):
+    def __init__(self, history: RodHistory, style: str):
         from rodparadox import render
 
         st = STYLES[style]

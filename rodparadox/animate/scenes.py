@@ -26,11 +26,11 @@ import numpy as np
 from rodparadox.animate.boost_scene import boost_images
 from rodparadox.animate.now_scene import now_images
 from rodparadox.animate.timeline import BoostTimeline, NowTimeline
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
 
 
-def images_of(history: History, frames: tuple[Frame, ...], mode: str, style: str,
+def images_of(history: RodHistory, frames: tuple[Frame, ...], mode: str, style: str,
               timeline: NowTimeline | BoostTimeline, rod_view: str | None = None) -> Iterator[np.ndarray]:
     """Each instant of the timeline as an RGB image (see the module's docstring). `rod_view` ("first" or "last",
     now mode): the rod's own view (`--frame rod`) beside the panels, its own "now" (a level line) sweeping up."""

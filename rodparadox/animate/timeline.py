@@ -21,12 +21,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.errors import OptionError
 from rodparadox.physics.frames import Frame, sampling_tolerance, time_window, view
 from rodparadox.numbers import exact
 from rodparadox.physics.kinematics import WorldLine
-from rodparadox.physics.snapshot import Strip, material_points, strip_at
+from rodparadox.physics.snapshot import material_points, Strip, strip_at
 from rodparadox.render.colour_scale import ColourScale, colour_scale
 
 MODES = ("now", "boost")
@@ -78,7 +78,7 @@ def sweep(count: int) -> np.ndarray:
 
 # --- now mode --------------------------------------------------------------------------------------
 
-def now_times(history: History, frames: tuple[Frame, ...], count: int) -> np.ndarray:
+def now_times(history: RodHistory, frames: tuple[Frame, ...], count: int) -> np.ndarray:
     """(count, len(frames)): the time each panel shows at each instant, in that panel's frame.
 
     The panels move in lock-step on one parameter s, running evenly from 0 to 1: each frame's own time,
@@ -127,12 +127,12 @@ class NowTimeline:
     def __len__(self) -> int:
         return len(self.times)
 
-    def strip(self, history: History, k: int, panel: int) -> Strip:
+    def strip(self, history: RodHistory, k: int, panel: int) -> Strip:
         return strip_at(history, self.frames[panel], float(self.times[k, panel]), self.flash[panel],
                         material=self.material[panel] if self.material else None)
 
 
-def now_timeline(history: History, frames: tuple[Frame, ...], count: int) -> NowTimeline:
+def now_timeline(history: RodHistory, frames: tuple[Frame, ...], count: int) -> NowTimeline:
     times = now_times(history, frames, count)
     windows = tuple(time_window(history, f) for f in frames)
     return NowTimeline(tuple(frames), windows, times, tuple(flash_time(w, count) for w in windows),
@@ -200,7 +200,7 @@ class BoostTimeline:
         return len(self.frames)
 
 
-def boost_timeline(history: History, start: Frame, end: Frame, count: int) -> BoostTimeline:
+def boost_timeline(history: RodHistory, start: Frame, end: Frame, count: int) -> BoostTimeline:
     """The frames from `start` to `end` (`boost_velocities`; the ends keep their names), and the union of every
     frame's window: its time window (`time_window`, as `plot`) and the x its world-lines reach within it, so the
     axes stay still while the world-lines move."""
@@ -217,7 +217,7 @@ def boost_timeline(history: History, start: Frame, end: Frame, count: int) -> Bo
     return BoostTimeline(tuple(frames), (t_lo, t_hi), (x_lo, x_hi))
 
 
-def timeline(history: History, frames: tuple[Frame, ...], mode: str, count: int) -> NowTimeline | BoostTimeline:
+def timeline(history: RodHistory, frames: tuple[Frame, ...], mode: str, count: int) -> NowTimeline | BoostTimeline:
     """The timeline of `count` images: now mode over the panels `frames`, boost mode from frames[0] to frames[1]."""
     if mode == "now":
         return now_timeline(history, frames, count)

@@ -41,7 +41,8 @@ from rodparadox.handout.words import in_l, time_name, with_primes
 from rodparadox.handout.worksheet import questions
 from rodparadox.handout.worksheet_causal import causal_questions
 from rodparadox.numbers import exact, impact_name
-from rodparadox.physics.engine import History, Impact
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, frame_name, frame_word, moving_frame, paper_frames
 from rodparadox.tables import build as tables
 from rodparadox.tables.build import coordinates
@@ -50,20 +51,20 @@ from rodparadox.tolerances import ONE_INSTANT
 
 # --- the title and the headings ---------------------------------------------------------------------------------
 
-def _speed(history: History) -> str:
+def _speed(history: RodHistory) -> str:
     """v = 0.6, or v = 0.6, L = 2."""
     s = history.scenario
     return f"v = {exact(s.v)}" + (f", L = {exact(s.L)}" if s.L != 1.0 else "")
 
 
-def title(items: Sequence[tuple[str, History]]) -> str:
+def title(items: Sequence[tuple[str, RodHistory]]) -> str:
     """The Sears paradox, at v = 0.6 (one speed for every scenario), or The Sears paradox (several speeds, each
     section's heading then names its own)."""
     speeds = {_speed(item[1]) for item in items}
     return f"The Sears paradox, at {speeds.pop()}" if len(speeds) == 1 else "The Sears paradox"
 
 
-def heading(history: History, with_speed: bool = False) -> str:
+def heading(history: RodHistory, with_speed: bool = False) -> str:
     """The scenario's title (the YAML key `title`), else the first sentence of its description without
     parenthesised asides, else its name; with the speed when the sections differ in it."""
     s = history.scenario
@@ -76,7 +77,7 @@ def heading(history: History, with_speed: bool = False) -> str:
     return f"{text}, at {_speed(history)}" if with_speed else text
 
 
-def neutral_heading(history: History, with_speed: bool = False) -> str:
+def neutral_heading(history: RodHistory, with_speed: bool = False) -> str:
     """A worksheet's heading: who strikes the rod, never what follows (a preset's title may say "simultaneous in
     the moving frame", which a worksheet asks)."""
     particles = history.scenario.particles
@@ -130,7 +131,7 @@ def worksheet_introduction() -> Section:
     return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
 
 
-def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, str, float, float] | None:
+def far_end_and_light(histories: Sequence[RodHistory]) -> tuple[RodHistory, Impact, str, float, float] | None:
     """The numbers of the idealisation: in the first scenario whose rod turns from rest in S, the impact at the
     turn's pivot, the far end, when that end starts to move in S and when light from the impact reaches it.
 
@@ -138,7 +139,7 @@ def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, st
     its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
     t_P + L."""
     for h in histories:
-        turn = next(iter(h.rigid.turns), None)
+        turn = next(iter(h.turning.turns), None)
         if turn is None or turn.rapidity_from != 0.0:
             continue
         impact = next(i for i in h.impacts if math.hypot(i.event.x - turn.pivot.x, i.event.t - turn.pivot.t)
@@ -148,7 +149,7 @@ def far_end_and_light(histories: Sequence[History]) -> tuple[History, Impact, st
     return None
 
 
-def introduction(histories: Sequence[History] = ()) -> Section:
+def introduction(histories: Sequence[RodHistory] = ()) -> Section:
     """The first section: Sears's paradox, the paper's resolution, and the rigid rod as an idealisation (with the
     numbers of the first scenario whose rod turns: when its far end moves, when light could reach it)."""
     idealisation = IDEALISATION
@@ -170,7 +171,7 @@ def _table_unit(L: float) -> str:
     return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
 
 
-def _in_rods_order(history: History, table: Table) -> Table:
+def _in_rods_order(history: RodHistory, table: Table) -> Table:
     """A worksheet's events table: its rows in the rod's own order, without notes (the frame's order, and which
     impacts the rod takes together, are what the questions ask)."""
     order = {impact_name(i.label): k for k, i in enumerate(history.impacts)}
@@ -178,7 +179,7 @@ def _in_rods_order(history: History, table: Table) -> Table:
                    rows=tuple(sorted(table.rows, key=lambda row: order[row[0].text])))
 
 
-def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list[Block]]:
+def _worksheet_tables(history: RodHistory, frame: Frame) -> tuple[list[Block], list[Block]]:
     """A worksheet's blank events table of the frame, and the filled tables its answer key prints (`_tables`): the
     ledger and hidden tables wait for the key, since a ledger's row of one instant ("B₁ and A₁") tells which impacts
     are simultaneous in the frame, and its slices' times tell when the impacts come."""
@@ -192,7 +193,7 @@ def _worksheet_tables(history: History, frame: Frame) -> tuple[list[Block], list
     return asked, _tables(history, frame, blank=False)
 
 
-def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
+def _tables(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
     """The frame's events, ledger and hidden tables (`tables.build`), each after the sentence that says how to read it;
     `blank`: a worksheet's copies, their numbers left to fill in."""
     symbol, time = frame_name(frame), time_name(frame)
@@ -223,7 +224,7 @@ def _tables(history: History, frame: Frame, blank: bool) -> list[Block]:
 
 # --- the document ----------------------------------------------------------------------------------------------
 
-def _section(stem: str, history: History, frames: tuple[Frame, ...], worksheet: bool,
+def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], worksheet: bool,
              with_speed: bool = False, compare_v: float | None = None,
              chosen: Sequence[int] | None = None, equal_scales: bool = False,
              causal=None) -> tuple[Section, list[Block]]:

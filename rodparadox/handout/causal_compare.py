@@ -17,7 +17,7 @@ from rodparadox.handout.document import Block, Heading, Paragraph, Table
 from rodparadox.handout.words import in_c, in_l, listed, numeral, time_name
 from rodparadox.numbers import impact_name
 from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.tables import build as tables
 
 HEADING = "The causal rod beside the rigid rod"

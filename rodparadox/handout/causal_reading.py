@@ -12,9 +12,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from rodparadox.physics.engine import Impact
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, rest_frame
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 from rodparadox.tables import build as tables
 from rodparadox.tolerances import SAME_RAPIDITY
 
@@ -112,7 +112,7 @@ def far_end(rigid, causal) -> FarEnd:
     own = next((i for i in causal.impacts if i.kind == "contact" and i.end == far), None)
     by_light = own is None or own.event.t / L > t_causal + 1e-9 * (1.0 + abs(t_causal))
     u_causal = math.tanh(line.rapidity_at_time(line.first.t, after=True))
-    turn = next(iter(rigid.rigid.turns), None)
+    turn = next(iter(rigid.turning.turns), None)
     t_rigid = turn.pivot.t / L if turn is not None and turn.rapidity_from == 0.0 else None
     return FarEnd(contact, far, contact.event.t / L, contact.event.t / L + 1.0, t_causal, by_light,
                   None if by_light else own, u_causal, contact.rod_rapidity_after, t_rigid)

@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Union
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, frame_symbol
 from rodparadox.tables.table import ALIGNS, Cell, Table  # noqa: F401 (a handout's tables: re-exported)
 
@@ -49,7 +49,7 @@ class DiagramBlock:
     text width (the drawn diagram is `render.Diagram`)."""
 
     name: str
-    history: History
+    history: RodHistory
     frames: tuple[Frame, ...]
     caption: str
     #: the panels' titles give the rod's velocity before and after (a worksheet asks it: only "(a) frame S" there)
@@ -85,7 +85,7 @@ class Strips:
     `animate`, as stills), earliest first."""
 
     name: str
-    history: History
+    history: RodHistory
     frame: Frame
     times: tuple[float, ...]
     caption: str

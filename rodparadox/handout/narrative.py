@@ -4,7 +4,7 @@ the diagram shows (simultaneity and order, the rod's velocity, zig-zags, rests a
 Every sentence is generated from the computed history (`reading.Reading`):
 which impacts share a line of simultaneity is tested, pair by pair, in each
 frame shown and on the rod's own lines (`Impact.collision`); the rod's velocity
-is read from the impacts' rapidities; turns come from `History.turns`.
+is read from the impacts' rapidities; turns come from `RodHistory.turns`.
 """
 
 from __future__ import annotations
@@ -16,9 +16,9 @@ from rodparadox.handout.document import Paragraph
 from rodparadox.handout.reading import Reading, zigzags
 from rodparadox.handout.words import (impact_names, in_c, in_l, listed, numeral, pushed, time_name)
 from rodparadox.numbers import MINUS, exact, impact_name
-from rodparadox.physics.engine import History, Impact
-from rodparadox.physics.frames import (PANEL_LETTERS, Frame, frame_name, frame_symbol, moving_frame, rest_frame,
-                                       time_order)
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.types import Impact
+from rodparadox.physics.frames import Frame, frame_name, frame_symbol, moving_frame, PANEL_LETTERS, rest_frame, time_order
 from rodparadox.tolerances import ONE_INSTANT, SAME_RAPIDITY
 
 
@@ -33,7 +33,7 @@ def _timing_frame(frame: str | float) -> str:
     return f"the frame of velocity {in_c(float(frame))} relative to S"
 
 
-def setup_text(history: History, tell: bool = True) -> str:
+def setup_text(history: RodHistory, tell: bool = True) -> str:
     """One paragraph: the rod, v and the frames, then each particle's mass, speed, end and start; with `tell`, how a
     particle's start was chosen (at the same instant of S′ as B's first impact: a worksheet asks it, and gives the
     start alone)."""
@@ -90,7 +90,7 @@ def _frame_described(frame: Frame, v: float) -> str:
     return f"the frame {frame_symbol(frame)}, moving at {in_c(frame.velocity)} relative to S"
 
 
-def diagram_caption(history: History, frames: Sequence[Frame], tell: bool = True) -> str:
+def diagram_caption(history: RodHistory, frames: Sequence[Frame], tell: bool = True) -> str:
     """Which panel is which frame, how to read the lines of simultaneity, and (`tell`; a worksheet asks it) which
     impacts share one."""
     r = Reading(history, tuple(frames))
@@ -313,7 +313,7 @@ def _why(r: Reading) -> str:
                              f"{impact_names(collisions[k - 1])} the rod's {i.end} end moved at {in_c(u_end)} in S while "
                              f"{i.particle}, since {impact_name(previous.label)}, {particle}: the rod's {i.end} end "
                              f"closed on {i.particle} again.")
-    for k, turn in enumerate(t for t in h.rigid.turns if not t.completed):
+    for k, turn in enumerate(t for t in h.turning.turns if not t.completed):
         stopper = impact_name(turn.stopped_by)
         cause = impact_names(r.turn_cause(turn))
         far = "left" if turn.pivot_end == "right" else "right"
@@ -328,11 +328,11 @@ def _why(r: Reading) -> str:
         else:
             sentences.append(f"Likewise {stopper} strikes the {far} end while the rod is still turning from {cause}, "
                              f"when that end had got only to {reached}, on its way to {target}.")
-    if any(not t.completed for t in h.rigid.turns):
+    if any(not t.completed for t in h.turning.turns):
         ranges = []
         for f in r.frames:
             speeds = [r.velocity(x, f) for x in [0.0, h.final_rapidity]
-                      + [y for t in h.rigid.turns for y in (t.rapidity_from, t.rapidity_stop)]]
+                      + [y for t in h.turning.turns for y in (t.rapidity_from, t.rapidity_stop)]]
             ranges.append(f"from {in_c(min(speeds))} to {in_c(max(speeds))} in {frame_name(f)}")
         sentences.append("Because its turns are cut short, the rod's material only ever moves at velocities "
                          + listed(ranges) + ".")
@@ -372,7 +372,7 @@ def _rest_at_full_length(r: Reading, frame: Frame) -> list[str]:
     return out
 
 
-def explanation(history: History, frames: Sequence[Frame]) -> tuple[Paragraph, ...]:
+def explanation(history: RodHistory, frames: Sequence[Frame]) -> tuple[Paragraph, ...]:
     """One to three paragraphs generated from the history: simultaneity and order; the rod's velocity; zig-zags,
     stops at full length and stopped turns, when and why."""
     r = Reading(history, tuple(frames))

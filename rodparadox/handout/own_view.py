@@ -22,7 +22,7 @@ def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
              "line are its own clock."]
     for h in histories:
         chart = chart_of(h)
-        if chart.kind == "rigid":
+        if h.turning is not None:
             turns = [f"about {impact_name(_pivot_label(h, t))}, {shown((b - a) / h.scenario.L, 4)} L long"
                      for t, (a, b, _) in zip(h.turns, chart.turns)]
             parts.append("Rigid rod: between turns T is the time of its rest frame. During a turn about an impact, T "

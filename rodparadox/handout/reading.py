@@ -16,10 +16,10 @@ from functools import cached_property
 from typing import Sequence
 
 from rodparadox.handout.words import PROSE_DIGITS, impact_names, in_l, listed, time_name
-from rodparadox.physics.engine import History, Impact, Turn
+from rodparadox.physics.history import RodHistory, Turn
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, rest_frame, time_order
 from rodparadox.tolerances import ONE_INSTANT, SAME_RAPIDITY
-from rodparadox.physics.rod import turn_interval
 
 
 @dataclass(frozen=True)
@@ -28,7 +28,7 @@ class Reading:
     frame, the instants at which impacts coincide, the rod's collisions in its own order, the impacts that started
     each turn, velocities."""
 
-    history: History
+    history: RodHistory
     frames: tuple[Frame, ...]
 
     @property
@@ -113,17 +113,17 @@ class Reading:
 
     @cached_property
     def turn_causes(self) -> tuple[tuple[Impact, ...], ...]:
-        """For each of `History.turns`, the impacts that started it: those on the line after which the rod's
+        """For each of `RodHistory.turns`, the impacts that started it: those on the line after which the rod's
         momentum no longer matches the line (engine: a turn starts where the rod's rapidity differs from the
         line's). Should the count ever differ, the impacts at each turn's pivot."""
         starting = [line for line in self.lines if line[-1].rod_rapidity_after != line[-1].line_rapidity]
-        if len(starting) == len(self.history.rigid.turns):
+        if len(starting) == len(self.history.turning.turns):
             return tuple(starting)
-        return tuple(self.impacts_at(turn.pivot) for turn in self.history.rigid.turns)
+        return tuple(self.impacts_at(turn.pivot) for turn in self.history.turning.turns)
 
     def turn_cause(self, turn: Turn) -> tuple[Impact, ...]:
-        """The impacts that started the turn (one of `History.turns`)."""
-        return self.turn_causes[next(k for k, t in enumerate(self.history.rigid.turns) if t is turn)]
+        """The impacts that started the turn (one of `RodHistory.turns`)."""
+        return self.turn_causes[next(k for k, t in enumerate(self.history.turning.turns) if t is turn)]
 
     def rests(self, frame: Frame) -> list[tuple[Turn, float, float | None, Turn | None]]:
         """Each stretch of the frame's time in which the whole rod stands still in it after a turn that completes:
@@ -131,18 +131,18 @@ class Reading:
         a line of simultaneity of the frame, so every point reaches rest at one instant of it, at the rod's full
         length."""
         out = []
-        turns = self.history.rigid.turns
+        turns = self.history.turning.turns
         for k, turn in enumerate(turns):
             if not turn.completed or abs(turn.rapidity_stop - frame.rapidity) > SAME_RAPIDITY:
                 continue
-            end = turn_interval(turn, frame.rapidity)[1]
-            later = sorted(((turn_interval(t, frame.rapidity)[0], t) for t in turns[k + 1:]), key=lambda st: st[0])
+            end = turn.interval(frame.rapidity)[1]
+            later = sorted(((t.interval(frame.rapidity)[0], t) for t in turns[k + 1:]), key=lambda st: st[0])
             if later and later[0][0] < end - ONE_INSTANT * self.scale:
                 continue  # another turn already moves part of the rod
             # the next turn is the next in the rod's own order (two turns may start at one instant of the frame,
             # and a rounding must not let a later one stand for it)
             following = turns[k + 1] if k + 1 < len(turns) else None
-            start = turn_interval(following, frame.rapidity)[0] if following is not None else None
+            start = following.interval(frame.rapidity)[0] if following is not None else None
             out.append((turn, end, start, following))
         return out
 
@@ -151,7 +151,7 @@ class Reading:
         turns from, the velocity it reaches, the impacts that started the turn). A turn cut short by an impact on
         the far end reaches only `rapidity_stop`, never the rod's velocity after the impact."""
         return tuple((self.velocity(t.rapidity_from, frame), self.velocity(t.rapidity_stop, frame), self.turn_cause(t))
-                     for t in self.history.rigid.turns)
+                     for t in self.history.turning.turns)
 
     def velocity(self, rapidity: float, frame: Frame) -> float:
         """The velocity in the frame of a body of this rapidity in S; a rounding-sized one is 0."""

@@ -11,7 +11,7 @@ from pathlib import Path
 
 def handout_first_page() -> bytes:
     """Page 1 of `sears-paradox handout fig2` (A4, print style) as a PNG."""
-    from rodparadox.physics.engine import run
+    from rodparadox.physics.models import run_rod as run
     from rodparadox.handout.build import build
     from rodparadox.handout.pdf import page_png
     from rodparadox.io.scenario import load

@@ -8,9 +8,8 @@ from typing import Sequence
 
 from rodparadox.handout.reading import Reading
 from rodparadox.handout.words import impact_names, in_c, in_l, listed, numeral, time_name
-from rodparadox.physics.engine import History, Turn
+from rodparadox.physics.history import RodHistory, Turn
 from rodparadox.physics.frames import Frame, frame_name, time_window
-from rodparadox.physics.rod import turn_corners, turn_interval
 from rodparadox.numbers import impact_name
 from rodparadox.tolerances import SAME_RAPIDITY
 
@@ -25,8 +24,8 @@ def _end_changes(r: Reading, frame: Frame) -> dict[str, list[tuple[float, float,
     struck: it is the turn's pivot and jumps at the impact, else it follows the turn's hyperbola."""
     eta = frame.rapidity
     out: dict[str, list] = {"left": [], "right": []}
-    for turn in r.history.rigid.turns:
-        pivot, far_start, far_end = turn_corners(turn)
+    for turn in r.history.turning.turns:
+        pivot, far_start, far_end = turn.corners()
         out[turn.pivot_end].append((pivot.time_in(eta), pivot.time_in(eta), turn, True))
         if abs(turn.rapidity_stop - turn.rapidity_from) > SAME_RAPIDITY:
             far = "left" if turn.pivot_end == "right" else "right"
@@ -34,7 +33,7 @@ def _end_changes(r: Reading, frame: Frame) -> dict[str, list[tuple[float, float,
     return out
 
 
-def strip_times(history: History, frame: Frame) -> tuple[float, ...]:
+def strip_times(history: RodHistory, frame: Frame) -> tuple[float, ...]:
     """Six to eight instants of the frame's time that teach, earliest first, all within `frames.time_window`:
     before the first change, every instant at which an impact strikes, the start of any turn before its impact
     (the far end moving first), the middle of each turn, and after the last change."""
@@ -42,7 +41,7 @@ def strip_times(history: History, frame: Frame) -> tuple[float, ...]:
     eta = frame.rapidity
     t_lo, t_hi = time_window(history, frame)
     impacts = [t for t, _ in r.instants(frame)]
-    turns = [turn_interval(turn, eta) for turn in history.rigid.turns]
+    turns = [turn.interval(eta) for turn in history.turning.turns]
     changes = sorted(impacts + [t for interval in turns for t in interval])
     first, last = changes[0], changes[-1]
     # (priority, time): the lower the priority, the surer an instant is kept
@@ -106,7 +105,7 @@ def _which_end_first(r: Reading, frame: Frame) -> str:
     h = r.history
     symbol, time = frame_name(frame), time_name(frame)
     eta = frame.rapidity
-    if not h.rigid.turns:
+    if not h.turning.turns:
         u = r.rod_velocities(frame)[0]
         changes = listed([f"{i.particle}'s at {impact_name(i.label)} ({r.when([i], frame)})"
                            for _, g in r.instants(frame) for i in g])
@@ -158,7 +157,7 @@ def _which_end_first(r: Reading, frame: Frame) -> str:
     return text + "."
 
 
-def strips_caption(history: History, frame: Frame, times: Sequence[float]) -> str:
+def strips_caption(history: RodHistory, frame: Frame, times: Sequence[float]) -> str:
     """What the stills show, at which instants, and what to look at."""
     r = Reading(history, (frame,))
     symbol = frame_name(frame)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from rodparadox.handout.document import (PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question,
                                          RodViewBlock, Section, Strips, Table)
 from rodparadox.handout.words import math_pieces
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, frame_word, sampling_tolerance, view
 from rodparadox.render.styles import STYLES
 from rodparadox.tables.formats import latex_text, to_latex
@@ -298,13 +298,13 @@ def worldline_dat(points) -> str:
     return "x t\n" + "".join(f"{number(x)} {number(t)}\n" for x, t in points)
 
 
-def events_dat(history: History, frame: Frame) -> str:
+def events_dat(history: RodHistory, frame: Frame) -> str:
     """The impacts in one frame, in its time order (the rod's order at one instant): `label x t`."""
     events = sorted(view(history, frame).events, key=lambda e: e.t)
     return "label x t\n" + "".join(f"{e.impact.label} {number(e.x)} {number(e.t)}\n" for e in events)
 
 
-def _shown_frames(section: Section) -> list[tuple[str, History, Frame]]:
+def _shown_frames(section: Section) -> list[tuple[str, RodHistory, Frame]]:
     """The (file prefix, history, frame) of each frame the section's diagrams show, each once: the prefix is the
     section's name, or the diagram's where the section draws more than one history."""
     diagrams = [b for b in section.blocks if isinstance(b, DiagramBlock)]

@@ -16,7 +16,7 @@ from typing import Sequence
 
 from rodparadox.handout.document import Fact
 from rodparadox.numbers import MINUS, SCIENTIFIC_BELOW, fraction_text, impact_name, shown
-from rodparadox.physics.engine import Impact
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame
 from rodparadox.tables.build import coordinates
 

@@ -16,11 +16,11 @@ from rodparadox.handout.worksheet_frames import (Asked, frame_pair, lorentz_pair
                                                  question_other_speed, question_read, question_velocity)
 from rodparadox.handout.worksheet_rod import (question_at_rest, question_hidden, question_momentum, question_single,
                                               question_stopped_turn, question_together, question_zigzag)
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
 
 
-def questions(history: History, frames: Sequence[Frame], compare_v: float | None = None,
+def questions(history: RodHistory, frames: Sequence[Frame], compare_v: float | None = None,
               chosen: Sequence[int] | None = None) -> tuple[Question, ...]:
     """Five to eight questions on the scenario, numbered from 1, each with a worked answer computed by the tool:
     read an event off the panels; a Lorentz transformation; velocity addition; the hidden momentum on a slice;

@@ -20,9 +20,10 @@ from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, 
                                       in_c, in_c_approx, in_l, in_l_approx, listed, numeral_approx, order_facts,
                                       signed_numeral, simultaneity_facts, told_claim, told_number)
 from rodparadox.numbers import MINUS, exact, impact_name
-from rodparadox.physics.engine import History, Impact, run
-from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, moving_frame, relative_velocity, rest_frame
-from rodparadox.physics.rod import turn_interval
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.types import Impact
+from rodparadox.physics.models import run_rod as run
+from rodparadox.physics.frames import Frame, frame_name, moving_frame, PANEL_LETTERS, relative_velocity, rest_frame
 from rodparadox.tables.build import coordinates
 
 #: the speeds a "what if" question tries, in this order, for one that differs meaningfully from the scenario's
@@ -209,7 +210,7 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
 
     asks: list[Fact] = []  # what the run at v2 finds (at v the other questions ask it, or the set-up gives it)
 
-    def facts(history: History) -> str:
+    def facts(history: RodHistory) -> str:
         at = f"at v = {exact(history.scenario.v)}"
         told = len(asks)
         reading = Reading(history, tuple(moving_frame(history.scenario.v) if f.name == "moving" else f
@@ -228,8 +229,8 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
                            f"{names[0]} in {frame_name(f)}")
         elif len(labels) == 2:
             out.append(f"the rod is struck {len(history.impacts)} times: {impact_names(history.impacts)}")
-        elif history.rigid.turns:
-            start, end = turn_interval(history.rigid.turns[0], 0.0)
+        elif history.turning.turns:
+            start, end = history.turning.turns[0].interval(0.0)
             asks.append(told_number(f"the far end's delay in S {at}", reading.length(end - start)))
             out.append(f"the far end takes {in_l(reading.length(end - start), ANSWER_DIGITS)} of S's time to reach "
                        f"the rod's new velocity")

@@ -13,7 +13,7 @@ from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, 
                                       in_l_approx, listed, numeral_approx, pushed, summand, time_name, told_claim,
                                       told_number)
 from rodparadox.handout.worksheet_frames import Asked, gamma, momentum
-from rodparadox.physics.engine import Impact
+from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, frame_name, rest_frame
 from rodparadox.physics.rod import rod_slice
 from rodparadox.tables import build as tables
@@ -119,7 +119,7 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
 def question_stopped_turn(r: Reading) -> Asked | None:
     """A turn stopped by an impact: the far end's velocity there, from the two events, against the rod's."""
     h = r.history
-    turn = next((t for t in h.rigid.turns if not t.completed), None)
+    turn = next((t for t in h.turning.turns if not t.completed), None)
     if turn is None:
         return None
     stopper = next(i for i in h.impacts if i.label == turn.stopped_by)
@@ -183,9 +183,9 @@ def question_at_rest(r: Reading) -> Asked | None:
 def question_single(r: Reading) -> Asked | None:
     """One particle: how long the far end takes to follow, and how far the struck end moves meanwhile, in S."""
     h = r.history
-    if len(h.scenario.particles) != 1 or not h.rigid.turns or not h.rigid.turns[0].completed:
+    if len(h.scenario.particles) != 1 or not h.turning.turns or not h.turning.turns[0].completed:
         return None
-    turn = h.rigid.turns[0]
+    turn = h.turning.turns[0]
     struck = impact_name(r.turn_cause(turn)[-1].label)
     far = "left" if turn.pivot_end == "right" else "right"
     u = r.velocity(turn.rapidity_to, rest_frame())

@@ -10,10 +10,11 @@ from __future__ import annotations
 import csv
 import io
 import json
+import textwrap
 from typing import Any
 
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, FrameView, check_below_c, frame_heading, sampling_tolerance, view
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.frames import check_below_c, Frame, frame_heading, FrameView, sampling_tolerance, view
 from rodparadox.numbers import coordinate_format, exact, exact_signed, velocity_format
 from rodparadox.physics.kinematics import ChartCurve, HyperbolicArc, Line, Segment
 
@@ -56,7 +57,7 @@ def frame_document(fv: FrameView, tolerance: float, history=None) -> dict[str, A
         "worldlines": {name: points.tolist() for name, points in fv.worldline_points(tolerance).items()},
         "segments": {name: [_segment(s) for s in pieces] for name, pieces in fv.segments},
     }
-    if history is not None and history.rigid is None:
+    if history is not None and history.turning is None:
         L, eta = history.scenario.L, fv.frame.rapidity
         out["material_worldlines"] = [
             {"sigma": k * L / MATERIAL_POINTS,
@@ -65,13 +66,13 @@ def frame_document(fv: FrameView, tolerance: float, history=None) -> dict[str, A
     return out
 
 
-def document(history: History, frames: tuple[Frame, ...]) -> dict[str, Any]:
+def document(history: RodHistory, frames: tuple[Frame, ...]) -> dict[str, Any]:
     s = history.scenario
     starts = dict(history.starts)
     tolerance = sampling_tolerance(history)
     return {
         "format": FORMAT,
-        "rod": history.kind,
+        "rod": history.model,
         "scenario": {
             "name": s.name, "description": s.description, "v": s.v, "L": s.L,
             "particles": {p.name: {"mass": p.mass, "speed": s.speed(p), "start": _point(starts[p.name])}
@@ -82,7 +83,7 @@ def document(history: History, frames: tuple[Frame, ...]) -> dict[str, Any]:
     }
 
 
-def to_json(history: History, frames: tuple[Frame, ...]) -> str:
+def to_json(history: RodHistory, frames: tuple[Frame, ...]) -> str:
     return json.dumps(_without_negative_zeros(document(history, frames)), indent=1, allow_nan=False) + "\n"
 
 
@@ -100,26 +101,54 @@ def _without_negative_zeros(value: Any) -> Any:
 CSV_COLUMNS = ("frame", "kind", "name", "particle", "end", "index", "x", "t")
 
 
-def to_csv(history: History, frames: tuple[Frame, ...]) -> str:
+def to_csv(history: RodHistory, frames: tuple[Frame, ...]) -> str:
     """One row per event and per world-line point: frame,kind,name,particle,end,index,x,t."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(CSV_COLUMNS)
+    _write_rows(writer, history, frames)
+    return out.getvalue()
+
+
+def _write_rows(writer, history: RodHistory, frames: tuple[Frame, ...], *first: str) -> None:
+    """`to_csv`'s rows, each after the cells `first` (the rod's name, where several rods share a table)."""
     tolerance = sampling_tolerance(history)
     for f in frames:
         fv = view(history, f)
         for k, e in enumerate(fv.events):
-            writer.writerow([f.name, "event", e.impact.label, e.impact.particle, e.impact.end, k,
+            writer.writerow([*first, f.name, "event", e.impact.label, e.impact.particle, e.impact.end, k,
                              repr(e.x + 0.0), repr(e.t + 0.0)])  # + 0.0: never -0.0
         for name, points in fv.worldline_points(tolerance).items():
             for k, (x, t) in enumerate(points.tolist()):
-                writer.writerow([f.name, "worldline", name, "", "", k, repr(x + 0.0), repr(t + 0.0)])
+                writer.writerow([*first, f.name, "worldline", name, "", "", k, repr(x + 0.0), repr(t + 0.0)])
+
+
+def rods_to_json(histories, frames: tuple[Frame, ...]) -> str:
+    """Several rods struck by the same particles: one object, each rod's document (`document`) under "rods"."""
+    return json.dumps({"format": FORMAT, "rods": {h.model: _without_negative_zeros(document(h, frames))
+                                                  for h in histories}}, indent=1, allow_nan=False) + "\n"
+
+
+def rods_to_csv(histories, frames: tuple[Frame, ...]) -> str:
+    """Several rods in one table: `to_csv`'s rows after a first column naming the rod."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(("rod", *CSV_COLUMNS))
+    for h in histories:
+        _write_rows(writer, h, frames, h.model)
     return out.getvalue()
+
+
+def rods_to_table(histories, frames: tuple[Frame, ...], note: str = "") -> str:
+    """Several rods' events tables, one after the other, each headed by its rod, after a `note` (the particles
+    they share, where their first impacts fall)."""
+    head = "\n".join(textwrap.wrap(note, 110)) + "\n\n" if note else ""
+    return head + "\n".join(f"The {h.model} rod\n\n" + to_table(h, frames) for h in histories)
 
 
 # --- the events table ---------------------------------------------------------------------------------
 
-def to_table(history: History, frames: tuple[Frame, ...]) -> str:
+def to_table(history: RodHistory, frames: tuple[Frame, ...]) -> str:
     """A readable table of the impacts in each frame, for `sears-paradox events`.
 
     x and t are in the unit L is given in (with L = 2 the right end is at x = 1), with the digits their

@@ -12,11 +12,10 @@ import io
 import json
 from typing import Any, Sequence
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, frame_heading, time_window
-from rodparadox.physics.rod import turn_interval
-from rodparadox.physics.ledger import (EnergyMomentum, ImpactEntry, Slice, impact_entries, instant_entries,
-                                       rounding_zero)
+from rodparadox.physics.types import EnergyMomentum, Slice
+from rodparadox.physics.ledger import impact_entries, ImpactEntry, instant_entries, rounding_zero
 from rodparadox.numbers import number_text
 
 FORMAT = "sears-paradox-ledger/1"
@@ -25,7 +24,7 @@ FORMAT = "sears-paradox-ledger/1"
 DENSE_SLICES = 240
 
 
-def slice_times(history: History, frame: Frame, at: Sequence[float] | None = None) -> tuple[float, ...]:
+def slice_times(history: RodHistory, frame: Frame, at: Sequence[float] | None = None) -> tuple[float, ...]:
     """The times `at` as given, or a dense sampling of the frame's time window with every turn's start and end and
     every impact's instant."""
     if at is not None:
@@ -33,7 +32,7 @@ def slice_times(history: History, frame: Frame, at: Sequence[float] | None = Non
     lo, hi = time_window(history, frame)
     eta = frame.rapidity
     times = {lo + (hi - lo) * k / (DENSE_SLICES - 1) for k in range(DENSE_SLICES)}
-    times.update(t for t in history.rigid.turn_times(eta) if lo <= t <= hi)
+    times.update(t for t in history.turning.turn_times(eta) if lo <= t <= hi)
     times.update(i.event.time_in(eta) for i in history.impacts)
     return tuple(sorted(times))
 
@@ -58,7 +57,7 @@ def _slice(s: Slice) -> dict[str, Any]:
             "hidden": _em(s.hidden)}
 
 
-def document(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> dict[str, Any]:
+def document(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> dict[str, Any]:
     s = history.scenario
     out_frames = {}
     for f in frames:
@@ -67,7 +66,7 @@ def document(history: History, frames: Sequence[Frame], at: Sequence[float] | No
             "velocity": f.velocity + 0.0,
             "total": _em(history.initial_total(eta)),
             "turns": [{"pivot": turn.pivot_end, "start": lo + 0.0, "end": hi + 0.0}
-                      for turn in history.rigid.turns for lo, hi in [turn_interval(turn, eta)]],
+                      for turn in history.turning.turns for lo, hi in [turn.interval(eta)]],
             "impacts": [_impact(e) for e in impact_entries(history, eta)],
             "slices": [_slice(history.energy_momentum(eta, t)) for t in slice_times(history, f, at)],
         }
@@ -78,18 +77,25 @@ def document(history: History, frames: Sequence[Frame], at: Sequence[float] | No
             "frames": out_frames}
 
 
-def to_json(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+def to_json(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     return json.dumps(document(history, frames, at), indent=1, allow_nan=False) + "\n"
 
 
 CSV_COLUMNS = ("frame", "kind", "label", "t", "body", "E", "p")
 
 
-def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+def to_csv(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """Rows frame,kind,label,t,body,E,p: kind is `before`/`after` (an impact's instant), `impulse` or `slice`."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(CSV_COLUMNS)
+    writer.writerows(csv_rows(history, frames, at))
+    return out.getvalue()
+
+
+def csv_rows(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> list[list[str]]:
+    """`to_csv`'s rows, without its header (CSV_COLUMNS)."""
+    rows: list[list[str]] = []
     for f in frames:
         eta = f.rapidity
         names = sorted(p.name for p in history.scenario.particles)
@@ -98,18 +104,18 @@ def to_csv(history: History, frames: Sequence[Frame], at: Sequence[float] | None
             for kind, particle, kinetic, hidden, rod in (
                     ("before", e.particle_before, e.kinetic_before, e.hidden_before, e.rod_dynamical_before),
                     ("after", e.particle_after, e.kinetic_after, e.hidden_after, e.rod_dynamical_after)):
-                rows = [(e.impact.particle, particle), ("rod", e.rod_kinetic), ("rod_dynamical", rod),
-                        ("kinetic", kinetic), ("hidden", hidden)]
-                for body, em in rows:
-                    writer.writerow([f.name, kind, label, t, body, repr(em.E + 0.0), repr(em.p + 0.0)])
-            writer.writerow([f.name, "impulse", label, t, e.impact.particle, repr(e.impulse.E + 0.0),
-                             repr(e.impulse.p + 0.0)])
+                bodies = [(e.impact.particle, particle), ("rod", e.rod_kinetic), ("rod_dynamical", rod),
+                          ("kinetic", kinetic), ("hidden", hidden)]
+                for body, em in bodies:
+                    rows.append([f.name, kind, label, t, body, repr(em.E + 0.0), repr(em.p + 0.0)])
+            rows.append([f.name, "impulse", label, t, e.impact.particle, repr(e.impulse.E + 0.0),
+                         repr(e.impulse.p + 0.0)])
         for t in slice_times(history, f, at):
             s = history.energy_momentum(eta, t)
             for body, em in (*s.bodies, ("kinetic", s.kinetic), ("hidden", s.hidden)):
                 if body in names or body in ("rod", "kinetic", "hidden"):
-                    writer.writerow([f.name, "slice", "", repr(t + 0.0), body, repr(em.E + 0.0), repr(em.p + 0.0)])
-    return out.getvalue()
+                    rows.append([f.name, "slice", "", repr(t + 0.0), body, repr(em.E + 0.0), repr(em.p + 0.0)])
+    return rows
 
 
 def fixed(value: float, zero: float = 0.0) -> str:
@@ -131,7 +137,7 @@ def _table(rows: list[list[str]], left: int = 1) -> list[str]:
             for row in rows]
 
 
-def to_text(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+def to_text(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """For each frame: every impact with each body's (E, p) just before and after, the impulse, and the totals;
     then each slice at the times asked for."""
     s = history.scenario

@@ -15,7 +15,7 @@ from typing import Any
 import yaml
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.model import PARTICLE_NAMES, Particle, Scenario, Timing, described
+from rodparadox.physics.model import described, Particle, PARTICLE_NAMES, Scenario, Timing
 
 #: the largest scenario file read: a scenario is a few hundred bytes, and PyYAML reads about 100 kB a second
 MAX_FILE_BYTES = 100_000

@@ -16,7 +16,8 @@ from typing import Sequence
 
 import numpy as np
 
-from rodparadox.physics.engine import WORLDLINE_NAMES, History, Impact
+from rodparadox.physics.types import Impact, WORLDLINE_NAMES
+from rodparadox.physics.history import RodHistory
 from rodparadox.errors import FrameError
 from rodparadox.physics.kinematics import Event, Segment
 from rodparadox.physics.model import FASTEST, FRAME_NAMES, frame_velocity
@@ -208,7 +209,7 @@ def time_order(times: Sequence[float], scale: float) -> list[int]:
     return sorted(range(len(times)), key=lambda k: (instants[k], k))
 
 
-def time_window(history: History, frame: Frame) -> tuple[float, float]:
+def time_window(history: RodHistory, frame: Frame) -> tuple[float, float]:
     """The frame's times to show: every body's whole history that changes, with a lead before and after.
 
     The changes are every impact and the start and end of every exact segment
@@ -235,7 +236,7 @@ def time_window(history: History, frame: Frame) -> tuple[float, float]:
     return first - lead, last + lead
 
 
-def view(history: History, frame: Frame, window: tuple[float, float] | None = None) -> FrameView:
+def view(history: RodHistory, frame: Frame, window: tuple[float, float] | None = None) -> FrameView:
     """The history in the frame, over `window` (the frame's times) or its own `time_window`."""
     eta = frame.rapidity
     t_lo, t_hi = window or time_window(history, frame)
@@ -250,7 +251,7 @@ def view(history: History, frame: Frame, window: tuple[float, float] | None = No
     return FrameView(frame, tuple(events), (t_lo, t_hi), segments)
 
 
-def sampling_tolerance(history: History) -> float:
+def sampling_tolerance(history: RodHistory) -> float:
     return SAMPLING_TOLERANCE * history.scenario.L
 
 

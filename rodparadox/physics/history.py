@@ -1,21 +1,29 @@
-"""The rod interface: what every command reads from a run of a rod model (README, "From Python").
+"""The rod interface: what every command reads from a run of a rod model (docs, "From Python").
 
-A drawing, a table, the ledger, an animation and a handout read a run only through `RodHistory`:
+A drawing, a table, the ledger, an animation, a handout and the page read a run only through `RodHistory`:
 
-* the scenario it ran, and its events (`impacts`: each contact of a particle with an end, in the rod's own
-  order), with the rod's velocity after the last one;
+* the scenario it ran, each particle's event at t = 0 (`starts`), and its events (`impacts`: each contact of a
+  particle with an end, and for a rod whose contacts last, each separation, in the rod's own order), with the
+  rod's velocity after the last one;
 * exact world-lines in S of the particles and the rod's ends (`worldline`) and of any material point
   (`material_worldline(sigma)`, sigma its proper distance from the left end); `WorldLine.seen_from` gives
   them in any frame;
 * a material point's velocity at an instant of any frame (`material_velocity`);
 * energy and momentum of every body on any slice of any frame (`energy_momentum`), and the system's total
-  (`initial_total`).
+  (`initial_total`);
+* the rod's own chart, in which it is a fixed strip (`own_chart`, the rod's own view).
 
-What only a rigid rod has is the optional, named part `rigid` (`RigidResponse`): the turns of its lines of
-simultaneity about each impact (the paper's rule 3), its own "now" (the fans and the lines between turns),
-and when each turn starts and ends in a frame. A model without it (the causal rod, whose signals run at c)
-gives `rigid = None`, and every command leaves out what needs it. `engine.History`, the paper's rigid rod, is
-the first implementation.
+What only one model has is a named, optional capability, None where the model lacks it; a consumer asks for the
+capability, never for the model's name:
+
+* `turning` (`Turning`): the rigid rod's turns of its lines of simultaneity about each impact (the paper's
+  rule 3), its own "now" (the fans and the lines between turns), and when each turn starts and ends in a frame;
+* `fronts` (`Fronts`): the causal rod's signals at c: its solution in characteristic coordinates (the chart
+  map, the fronts, the compression), the matter and stress parts of its energy-momentum, its ringing after the
+  last separation.
+
+`model` names the model for people (headings, file names: "rigid", "causal"), not for branching.
+The implementations are `physics.rigid.History` and `physics.causal.CausalHistory`; `physics.models` runs them.
 """
 
 from __future__ import annotations
@@ -23,28 +31,76 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 if TYPE_CHECKING:  # the types only: the interface imports no implementation
-    from rodparadox.physics.engine import Impact, Turn
     from rodparadox.physics.kinematics import Event, WorldLine
-    from rodparadox.physics.ledger import EnergyMomentum, Slice
     from rodparadox.physics.model import Scenario
+    from rodparadox.physics.types import EnergyMomentum, Impact, Slice
+
+
+class Turn(Protocol):
+    """One turn of the rigid rod's lines of simultaneity about its pivot (rule 3), as `Turning.turns` gives it."""
+
+    pivot: "Event"
+    pivot_end: str
+    rapidity_from: float
+    rapidity_to: float
+    rapidity_stop: float
+    stopped_by: str | None
+
+    @property
+    def completed(self) -> bool:
+        """The turn reached the rod's dynamical rapidity (no impact on the far end stopped it)."""
+
+    def corners(self) -> tuple["Event", "Event", "Event"]:
+        """The pivot, and the far end where the turn starts and where it stops."""
+
+    def interval(self, frame_rapidity: float) -> tuple[float, float]:
+        """When the turn starts and ends in the frame's time."""
 
 
 @runtime_checkable
-class RigidResponse(Protocol):
-    """The part of a run only a rigid rod has: its turns and its own lines of simultaneity (README, "Inside the
+class Turning(Protocol):
+    """The part of a run only a rigid rod has: its turns and its own lines of simultaneity (docs, "Inside the
     rod")."""
 
-    turns: tuple["Turn", ...]
+    turns: tuple[Turn, ...]
 
     def now_lines(self, per_turn: int = 4, between: int = 2) -> list[tuple["Event", "Event"]]:
         """The rod's own lines of simultaneity as (left end, right end) event pairs in S: each turn's fan through
         its pivot, and lines of its rest frame between turns."""
 
-    def turn_interval(self, turn: "Turn", frame_rapidity: float) -> tuple[float, float]:
+    def turn_interval(self, turn, frame_rapidity: float) -> tuple[float, float]:
         """When the turn starts and ends in the frame's time (its earliest and latest corner)."""
 
     def turn_times(self, frame_rapidity: float) -> list[float]:
         """Every instant of the frame's time where a turn starts or ends, in order."""
+
+    def rapidities(self) -> tuple[float, ...]:
+        """Every rapidity, in S, a material point takes at the start or end of a piece of its world-line (the
+        extremes of every point's rapidity are among these)."""
+
+
+@runtime_checkable
+class Fronts(Protocol):
+    """The part of a run only a rod whose signals run at c has (the causal rod, docs "The causal rod"): its
+    invariants and chart map (`solution`), where each end is on a slice (`end_chart_time`), the matter and stress
+    parts of its (E, p), and how it rings after the last separation."""
+
+    solution: object
+
+    def end_chart_time(self, end: str, frame_rapidity: float, t: float) -> float:
+        """The chart time T at which the end ("left" or "right") crosses the slice t of the frame."""
+
+    def rod_parts(self, frame_rapidity: float, t: float) -> tuple["EnergyMomentum", "EnergyMomentum"]:
+        """The rod's (E, p) on the slice split into its matter part and its stress part."""
+
+    def rod_parts_on_slices(self, frame_rapidity: float, times) -> tuple:
+        """The matter and stress parts on many slices of one frame at once: two (n, 2) arrays of (E, p)."""
+
+    def period_advance(self) -> tuple[float, float]:
+        """(Dt, Dx) of every material point over one period 2L of chart time after the last separation."""
+
+    def compression_range(self) -> tuple[float, float]:
+        """The least and largest ln lam (lam the compression) anywhere in the rod over its whole history."""
 
 
 @runtime_checkable
@@ -54,11 +110,20 @@ class RodHistory(Protocol):
 
     scenario: "Scenario"
     impacts: tuple["Impact", ...]
+    starts: tuple[tuple[str, "Event"], ...]
     final_rapidity: float
+    model: str
 
     @property
-    def rigid(self) -> RigidResponse | None:
-        """The rigid rod's own part (turns, its lines of simultaneity), or None for a model without one."""
+    def turning(self) -> Turning | None:
+        """The rigid rod's turns and its own lines of simultaneity, or None for a model without them."""
+
+    @property
+    def fronts(self) -> Fronts | None:
+        """The causal rod's fronts, chart and stress, or None for a model without them."""
+
+    def own_chart(self):
+        """The rod's own chart (T, X), in which the rod is the fixed strip 0 <= X <= L (`physics.rod_view`)."""
 
     def worldline(self, name: str) -> "WorldLine | None":
         """The world-line in S of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
@@ -68,6 +133,9 @@ class RodHistory(Protocol):
 
     def material_velocity(self, sigma: float, frame_rapidity: float, t: float) -> float:
         """The velocity of material point sigma at the instant t of the frame."""
+
+    def rapidity_range(self) -> tuple[float, float]:
+        """The least and largest rapidity in S of any material point over the whole history, 0 included."""
 
     def energy_momentum(self, frame_rapidity: float, t: float) -> "Slice":
         """Each body's (E, p) on the slice t of the frame, their total and the hidden part."""

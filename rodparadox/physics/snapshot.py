@@ -14,7 +14,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.kinematics import WorldLine
 
@@ -43,7 +43,7 @@ class Strip:
 
 
 @lru_cache(maxsize=32)
-def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
+def material_points(history: RodHistory, frame: Frame, points: int = STRIP_POINTS) -> tuple[WorldLine, ...]:
     """The exact world-lines, in `frame`, of `points` material points evenly spaced in proper distance from the
     left end (sigma = 0) to the right end (sigma = L): what a strip shows of the rod. Built once per history,
     frame and count, and kept (both are frozen): a handout reads the strips of one frame at many instants, first
@@ -53,12 +53,12 @@ def material_points(history: History, frame: Frame, points: int = STRIP_POINTS) 
                  for sigma in np.linspace(0.0, history.scenario.L, points))
 
 
-def strip_at(history: History, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS,
+def strip_at(history: RodHistory, frame: Frame, t: float, flash: float, points: int = STRIP_POINTS,
              material: tuple[WorldLine, ...] | None = None) -> Strip:
     """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
     the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
     eta = frame.rapidity
-    if getattr(history, "kind", "") == "causal":  # the causal rod: read off its chart directly (`_on_chart`), not world-line by line
+    if history.fronts is not None:  # the causal rod: read off its chart directly (`_on_chart`), not world-line by line
         sigmas = np.linspace(0.0, history.scenario.L, points if material is None else len(material))
         x, rapidity = _on_chart(history, eta, t, sigmas)
     else:
@@ -72,20 +72,6 @@ def strip_at(history: History, frame: Frame, t: float, flash: float, points: int
     lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
     return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
                  tuple(i.event.seen_from(eta).x for i in lit))
-
-
-def rod_rapidities(history: History) -> tuple[float, ...]:
-    """Every rapidity, in S, a material point of the rod takes at the start or end of a piece of its world-line.
-
-    A point's rapidity is 0 before the first turn, runs monotonically from `rapidity_from` to `rapidity_stop`
-    during each turn, stays there between turns, and is `final_rapidity` after the last: so the extremes of
-    every point's rapidity over the whole history are among these. (A turn's `rapidity_to`, the rod's
-    dynamical rapidity, is not: a stopped turn never reaches it.)
-    """
-    values = [0.0, history.final_rapidity]
-    for turn in history.rigid.turns:
-        values += [turn.rapidity_from, turn.rapidity_stop]
-    return tuple(values)
 
 
 def _on_chart(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -1,7 +1,7 @@
 """The causal rod's own layers (README, "The causal rod"): its world-sheet shaded by compression lam, the light
 fronts that carry each disturbance, and each contact drawn as the stretch where a particle rides with an end.
 
-A rigid history (`history.rigid` not None) draws none of these; the rigid layers that need the rigid part (the
+A history with turns (`history.turning` not None) draws none of these; the rigid layers that need the rigid part (the
 fans of the rod's own lines of simultaneity) draw nothing for the causal rod.
 
 The shading is exact where it matters: the material chart is cut along the light lines u = T + X and w = T - X
@@ -23,7 +23,6 @@ from matplotlib.legend_handler import HandlerBase
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from rodparadox.render.colour_scale import compression_range
 from rodparadox.physics.frames import sampling_tolerance
 from rodparadox.render.layer_base import Layer, LayerArtists, is_causal, line_handle
 from rodparadox.render.styles import Style
@@ -42,7 +41,7 @@ SWATCHES = 7
 
 def compression_norm(history) -> TwoSlopeNorm:
     """ln lam to [0, 1]: stretched below 0.5, unstressed at 0.5, compressed above (each side its own range)."""
-    lo, hi = compression_range(history)
+    lo, hi = history.fronts.compression_range()
     return TwoSlopeNorm(0.0, min(lo, -1e-3), max(hi, 1e-3))
 
 
@@ -95,7 +94,7 @@ def compression_cells(history, f: float, t_lo: float, t_hi: float) -> tuple[np.n
     sol, L = history.solution, history.scenario.L
     u_lo, u_hi, w_lo, w_hi = chart_window(history, f, t_lo, t_hi)
     U_of, V_of = _frame_chart(history, f)
-    low, high = compression_range(history)
+    low, high = history.fronts.compression_range()
     step = 2 * (high - low) / SHADES  # ln lam is -(r+ + r-)/2: a change of r by this is one shade
     us, ws = _cell_edges(sol.plus, u_lo, u_hi, L, step), _cell_edges(sol.minus, w_lo, w_hi, L, step)
     U, V = np.array([U_of(u) for u in us]), np.array([V_of(w) for w in ws])
@@ -215,7 +214,7 @@ class Compression(CausalLayer):
     def legend_entry(self, style, history, options, clock_step=None):
         if not is_causal(history):
             return None
-        lo, hi = compression_range(history)
+        lo, hi = history.fronts.compression_range()
         cmap, norm = compression_colour_map(style), compression_norm(history)
         ramp = np.linspace(lo, hi, SWATCHES)
         handle = RampHandle([], [])

@@ -5,15 +5,11 @@ timeline reads it before anything is drawn; `render.strip` maps it to a colour m
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
-from rodparadox.physics.snapshot import rod_rapidities
 from rodparadox.tolerances import DIFFERENCE_ROUNDING
 
 #: the colour scale's half-range, in rapidity, when the rod never changes velocity in a frame (every point at the
@@ -44,56 +40,15 @@ class ColourScale:
         return self.shown or self.limits
 
 
-def colour_scale(history: History, frame: Frame) -> ColourScale:
+def colour_scale(history: RodHistory, frame: Frame) -> ColourScale:
     """Centred on the rod's velocity in `frame` before any impact; bound the largest distance in rapidity from it
     of any material point's velocity over the whole history, so the colours mean the same at every instant."""
     centre = frame.rod_velocity()
     eta = frame.rapidity
-    extremes = causal_rapidity_range(history) if getattr(history, "kind", "") == "causal" else rod_rapidities(history)
-    rapidities = [r - eta for r in extremes]
+    rapidities = [r - eta for r in history.rapidity_range()]
     bound = max(abs(r - math.atanh(centre)) for r in rapidities)
     # a rod that never changes velocity, seen from a frame that leaves an ulp between its velocity and the centre
     # (fig1 from u = 0.3: -0.30000000000000004 against -0.3): still, not a scale zero wide
     if bound <= 0 or max(rapidities) - min(rapidities) <= DIFFERENCE_ROUNDING:
         return ColourScale(centre, STILL_BOUND)
     return ColourScale(centre, bound, (math.tanh(min(rapidities)), math.tanh(max(rapidities))))
-
-
-# --- the causal rod (README, "The causal rod"): its fields' extremes over its whole history ---------------------
-
-def _chart_extremes(history) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """r+(u), r-(w) on a grid of each invariant's pieces (both sides of every jump, and inside), over the whole
-    history (the ringing tail is periodic: one period of it is all of it), and which (u, w) pairs lie in the rod."""
-    sol, L = history.solution, history.scenario.L
-    lo = min(sol.plus.starts[0], sol.minus.starts[0]) - 2 * L
-    hi = max(sol.plus.tail_start, sol.minus.tail_start) + 3 * L
-    us, ws = _knots(sol.plus, lo, hi), _knots(sol.minus, lo, hi)
-    rp = np.array([sol.r_plus(u) for u in us])
-    rm = np.array([sol.r_minus(w) for w in ws])
-    inside = (us[None, :] - ws[:, None] >= -1e-12) & (us[None, :] - ws[:, None] <= 2 * L + 1e-12)
-    return rp, rm, inside
-
-
-def _knots(invariant, lo: float, hi: float) -> np.ndarray:
-    cuts = [lo, *invariant.breaks(lo, hi), hi]
-    out = []
-    for a, b in zip(cuts, cuts[1:]):
-        out += list(np.linspace(a, b, 9)[:-1]) + [np.nextafter(b, -math.inf)]
-    return np.array(out)
-
-
-@functools.lru_cache(maxsize=16)
-def compression_range(history) -> tuple[float, float]:
-    """The least and largest ln lam (lam = exp(-(r+ + r-)/2)) anywhere in the causal rod over its whole history,
-    with 0 (unstressed) always inside."""
-    rp, rm, inside = _chart_extremes(history)
-    ln_lam = -0.5 * (rp[None, :] + rm[:, None])
-    return float(min(0.0, ln_lam[inside].min())), float(max(0.0, ln_lam[inside].max()))
-
-
-@functools.lru_cache(maxsize=16)
-def causal_rapidity_range(history) -> tuple[float, float]:
-    """The least and largest rapidity in S (th = (r+ - r-)/2) of any material point of the causal rod, 0 included."""
-    rp, rm, inside = _chart_extremes(history)
-    th = 0.5 * (rp[None, :] - rm[:, None])
-    return float(min(0.0, th[inside].min())), float(max(0.0, th[inside].max()))

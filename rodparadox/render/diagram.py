@@ -19,8 +19,8 @@ from matplotlib.figure import Figure, SubFigure
 from matplotlib.legend_handler import HandlerTuple
 
 from rodparadox.physics import rod
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import PANEL_LETTERS, Frame, time_window
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
 from rodparadox.render.styles import FORMATS, STYLES, Style
 from rodparadox.render.layer_base import is_causal
 from rodparadox.render.layers import Options, legend_entries
@@ -88,7 +88,7 @@ def _checked(frames: Sequence[Frame]) -> tuple[Frame, ...]:
     return tuple(frames)
 
 
-def draw(history: History, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Diagram:
+def draw(history: RodHistory, frames: Sequence[Frame], style: str = "default", options: Options = Options()) -> Diagram:
     """The diagram of a scenario's history: one panel per frame, side by side, in the given order, in a new Figure
     sized by the layout (`Diagram.figure`), with its panels and every layer's artists."""
     frames = _checked(frames)
@@ -99,7 +99,7 @@ def draw(history: History, frames: Sequence[Frame], style: str = "default", opti
         return builder.render(figure, layout, layout.width, layout.height)
 
 
-def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "default",
+def draw_both(rigid: RodHistory, causal, frames: Sequence[Frame], style: str = "default",
               options: Options = Options()) -> Diagram:
     """The two rod models of one scenario in one figure (`plot --rod both`): a row of panels for the rigid rod
     above a row for the causal rod, one panel per frame, each frame's two panels on the same scales (their data
@@ -112,7 +112,7 @@ def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "def
         return builder.render(figure, layout, layout.width, layout.height)
 
 
-def draw_panel_into(ax, history: History, frame: Frame, style: str = "default", options: Options = Options(),
+def draw_panel_into(ax, history: RodHistory, frame: Frame, style: str = "default", options: Options = Options(),
                     letter: str = "a") -> Mapping[str, tuple]:
     """Draw one frame's panel of a history into a caller's Axes (as mplhep's functions do); returns its artists by
     layer name (`layers.LAYERS`: `rod`, `particle-A`, `impacts`, ...), labels included.
@@ -140,7 +140,7 @@ def draw_panel_into(ax, history: History, frame: Frame, style: str = "default", 
         return MappingProxyType(draw_panel(ax, p, (step, step), metrics, history, st, options, builder.clock_step))
 
 
-def natural_size(history: History, frames: Sequence[Frame], width: float, height: float, style: str = "default",
+def natural_size(history: RodHistory, frames: Sequence[Frame], width: float, height: float, style: str = "default",
                  options: Options = Options()) -> tuple[float, float]:
     """The (width, height) in points `draw` would give the diagram on a page `width` x `height` points (its panels
     no taller than the style's): the size of a target `draw_into` fills exactly, e.g. a handout's full text width."""
@@ -150,7 +150,7 @@ def natural_size(history: History, frames: Sequence[Frame], width: float, height
     return layout.width, layout.height
 
 
-def draw_into(target: Figure | SubFigure, history: History, frames: Sequence[Frame], style: str = "default",
+def draw_into(target: Figure | SubFigure, history: RodHistory, frames: Sequence[Frame], style: str = "default",
               options: Options = Options()) -> Diagram:
     """Draw the diagram into a Figure or SubFigure the caller has sized; returns its panels and artists.
 
@@ -207,7 +207,7 @@ def _causal_handlers(history) -> dict:
 class _Builder:
     """One diagram's panels, laid out and then drawn into a target."""
 
-    def __init__(self, history: History | tuple, frames: tuple[Frame, ...], style: Style, options: Options):
+    def __init__(self, history: RodHistory | tuple, frames: tuple[Frame, ...], style: Style, options: Options):
         histories = history if isinstance(history, tuple) else (history,)  # two: the rigid row, the causal row
         self.history, self.style, self.options = histories[0], style, options
         self.fs = font_sizes(style)

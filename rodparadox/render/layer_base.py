@@ -10,14 +10,14 @@ from typing import Any, NamedTuple
 import numpy as np
 from matplotlib.lines import Line2D
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import FrameView
 from rodparadox.render.styles import Ink, Style
 
 
 def is_causal(history) -> bool:
     """The causal rod (its chart, `solution`, is what its own layers read); any other model draws none of them."""
-    return getattr(history, "kind", "") == "causal"
+    return history.fronts is not None
 
 
 class Options(NamedTuple):
@@ -75,7 +75,7 @@ def widest_line(style: Style) -> float:
 class PanelContext:
     """One panel as the layers see it: the history in one frame, the axes' limits and tick steps, the style."""
 
-    history: History
+    history: RodHistory
     style: Style
     options: Options
     fs: dict[str, float]  # type sizes, points
@@ -106,9 +106,10 @@ class PanelContext:
 
     @property
     def simultaneity_labels(self) -> frozenset[str]:
-        """The events lines of simultaneity go through: every rigid impact; a causal rod's first contact of each
-        particle (its re-contacts and separations crowd one end: more lines there would hide them)."""
-        if getattr(self.history, "kind", "") != "causal":
+        """The events lines of simultaneity go through: every impact of a rod whose impacts are instantaneous; of a
+        rod whose contacts last (a causal rod), each particle's first contact (its re-contacts and separations crowd
+        one end: more lines there would hide them)."""
+        if not any(i.is_separation for i in self.history.impacts):  # every impact instantaneous: each gets its line
             return self.contact_labels
         first = {}
         for e in self.view.events:
@@ -147,7 +148,7 @@ class Layer:
     def draw(self, ax, panel: PanelContext) -> LayerArtists:
         raise NotImplementedError
 
-    def legend_entry(self, style: Style, history: History, options: Options,
+    def legend_entry(self, style: Style, history: RodHistory, options: Options,
                      clock_step: float | None = None) -> tuple[Any, str] | None:
         return None
 

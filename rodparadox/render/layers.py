@@ -25,7 +25,8 @@ from matplotlib.patches import Patch, Polygon
 
 from rodparadox.physics import kinematics
 from rodparadox.physics import rod
-from rodparadox.physics.engine import WORLDLINE_NAMES, History
+from rodparadox.physics.types import WORLDLINE_NAMES
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.physics.kinematics import Event, HyperbolicArc
 from rodparadox.numbers import impact_name, shown
@@ -103,7 +104,7 @@ class MaterialLines(Layer):
 @dataclass(frozen=True)
 class RodNow(Layer):
     """Options.rod_now: the rod's own lines of simultaneity, drawn across the rod only (a rigid rod's: a model
-    without them, `history.rigid` None, draws none)."""
+    without them, `history.turning` None, draws none)."""
 
     name = "rod-now"
 
@@ -111,11 +112,11 @@ class RodNow(Layer):
         return options.rod_now
 
     def draw(self, ax, panel):
-        if panel.history.rigid is None:
+        if panel.history.turning is None:
             return LayerArtists()
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
-        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.rigid.now_lines()]
+        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.turning.now_lines()]
         drawn, segments = [], []
         for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
             segment = np.array([[a.x, a.t], [b.x, b.t]]) / panel.L
@@ -500,7 +501,7 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def legend_entries(style: Style, history: History, options: Options, clock_step: float,
+def legend_entries(style: Style, history: RodHistory, options: Options, clock_step: float,
                    rod_lines: dict[str, int] | None = None) -> tuple[list, list[str]]:
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
     time between clock ticks, chosen by the diagram from its panels' time spans; `rod_lines`: the material lines

@@ -9,7 +9,7 @@ from typing import NamedTuple, Sequence
 
 import numpy as np
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
 from rodparadox.numbers import nice_number
 from rodparadox.render.styles import Style
@@ -46,7 +46,7 @@ class Panel:
         self.history = None  # the run this panel draws (`panel_of`): two rod models draw in one figure (--rod both)
 
 
-def panel_of(history: History, letter: str, frame: Frame, window: tuple[float, float] | None = None) -> Panel:
+def panel_of(history: RodHistory, letter: str, frame: Frame, window: tuple[float, float] | None = None) -> Panel:
     """A frame's panel: its world-lines in units of L and its data box, before the layout sizes it (over the
     frame's times `window`, else the history's own `frames.time_window`)."""
     L = history.scenario.L
@@ -59,7 +59,7 @@ def panel_of(history: History, letter: str, frame: Frame, window: tuple[float, f
     margin = MARGIN * max(x1 - x0, t1 - t0)
     box = [x0 - margin, x1 + margin, t0 - margin, t1 + margin]
     fit_aspect(box, *ASPECT_RANGE)
-    ringing = math.tanh(history.final_rapidity - frame.rapidity) if getattr(history, "kind", "") == "causal" else None
+    ringing = math.tanh(history.final_rapidity - frame.rapidity) if history.fronts is not None else None
     panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing))
     panel.history = history
     return panel
@@ -247,7 +247,7 @@ class Layout(NamedTuple):
     metrics: Metrics
 
 
-def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, float], legend_labels: list[str],
+def lay_out(history: RodHistory, panels: list[Panel], style: Style, fs: dict[str, float], legend_labels: list[str],
             page: Page, titled: bool = True, per_row: int | None = None) -> Layout:
     """Lay the figure out in points: suptitle; rows of panels, each with its title, axes and tick labels; legend.
 
@@ -279,7 +279,7 @@ def lay_out(history: History, panels: list[Panel], style: Style, fs: dict[str, f
                   legend_h, legend_cols, m)
 
 
-def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs: dict[str, float],
+def _arrange(history: RodHistory, panels: list[Panel], m: Metrics, steps: list, fs: dict[str, float],
              labels: list[str], page: Page, titled: bool = True,
              per_row: int | None = None) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
     """(rows of panels, the panels' height, the figure's width, the legend's rows and columns).
@@ -359,7 +359,7 @@ def _arrange(history: History, panels: list[Panel], m: Metrics, steps: list, fs:
     for row in rows:
         spare = width - row_width(row, height)  # room the figure has anyway (a wide legend): titles may use it
         # the causal rod's long titles ("finally at ..., ringing") share the room; the rigid rod's figures keep theirs
-        fair = per_row is not None or getattr(history, "kind", "") == "causal"
+        fair = per_row is not None or history.fronts is not None
         shares.append(_share(widths(row, height), [m.one_line(p.title) for p in row], spare, fair))
     if per_row is not None and len({len(row) for row in rows}) == 1:  # --rod both: a frame's panels one above the other
         columns = [max(share[k] for share in shares) for k in range(len(rows[0]))]  # keep one data box

@@ -26,9 +26,10 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter
 
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import PANEL_LETTERS, Frame, time_window
-from rodparadox.physics.ledger import ZERO, impact_entries
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
+from rodparadox.physics.types import ZERO
+from rodparadox.physics.ledger import impact_entries
 from rodparadox.io.ledger_report import slice_times
 from rodparadox.tables.causal_ledger import event_name, instants
 from rodparadox.numbers import impact_name, shown
@@ -37,7 +38,7 @@ from rodparadox.render.styles import Style
 from rodparadox.tolerances import SAME_INSTANT
 
 
-def _series(history: History, frame: Frame, window: tuple[float, float] | None = None):
+def _series(history: RodHistory, frame: Frame, window: tuple[float, float] | None = None):
     """Times and values of every curve, with each impact's instant twice (just before, then just after), so the
     curves jump where a particle is struck instead of sloping across the instant; over `window` if given (the
     frame's own window: `slice_times`)."""
@@ -77,16 +78,15 @@ CAUSAL_SLICES = 200
 
 def causal_series(history, frame: Frame, window: tuple[float, float] | None = None):
     """The causal rod's curves: times (the window's slices and every contact's and separation's instant), and for
-    E and p each particle's, the rod's matter and stress parts (`physics.causal_parts.rod_parts_on_slices`), and
+    E and p each particle's, the rod's matter and stress parts (`Fronts.rod_parts_on_slices`), and
     the particles plus matter; with the events (label, kind, t) in the frame's time order."""
-    from rodparadox.physics.causal_parts import rod_parts_on_slices
 
     lo, hi = window or time_window(history, frame)
     events = [(label, kind, t) for label, kind, t, _ in instants(history, frame)]
     times = np.unique(np.concatenate([np.linspace(lo, hi, CAUSAL_SLICES), [t for *_, t in events]]))
     eta = frame.rapidity
     names = sorted(p.name for p in history.scenario.particles)
-    matter, stress = rod_parts_on_slices(history, eta, times)
+    matter, stress = history.fronts.rod_parts_on_slices(eta, times)
     particles = {n: [history.particle_energy_momentum(n, eta, t) for t in times] for n in names}
     values = {}
     for k, q in enumerate(("E", "p")):
@@ -97,18 +97,18 @@ def causal_series(history, frame: Frame, window: tuple[float, float] | None = No
     return times, values, events
 
 
-def draw(history: History, frames: Sequence[Frame], style: str = "default") -> Figure:
+def draw(history: RodHistory, frames: Sequence[Frame], style: str = "default") -> Figure:
     """The ledger figure: one column per frame (at most eight), momentum above energy; the causal rod's with its
     matter and stress parts."""
     if not 1 <= len(frames) <= len(PANEL_LETTERS):
         raise ValueError(f"the ledger figure takes 1 to {len(PANEL_LETTERS)} frames, got {len(frames)}")
     with style_context(style) as st:
-        if getattr(history, "kind", "") == "causal":
+        if history.fronts is not None:
             return _draw_rods((history,), tuple(frames), st)
         return _draw(history, tuple(frames), st)
 
 
-def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "default") -> Figure:
+def draw_both(rigid: RodHistory, causal, frames: Sequence[Frame], style: str = "default") -> Figure:
     """The two rods' ledgers in one figure (`ledger --rod both`): the rigid rod's rows above the causal rod's, each
     frame's panels over one time window (the union of the two) and on one scale of E and of p."""
     if not 1 <= len(frames) <= len(PANEL_LETTERS) // 2:
@@ -118,7 +118,7 @@ def draw_both(rigid: History, causal, frames: Sequence[Frame], style: str = "def
         return _draw_rods((rigid, causal), tuple(frames), st)
 
 
-def _draw(history: History, frames: tuple[Frame, ...], st: Style) -> Figure:
+def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
     """Laid out in points from the type size (no layout engine: fast, and the same bytes on every save)."""
     fs = st.font_size
     per_row = min(len(frames), 3 if st.max_width >= 10 else 2)
@@ -314,7 +314,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                for f in frames]
     shared: dict = {}  # (frame, q) -> the panels that share a scale
     for b, history in enumerate(histories):
-        causal = getattr(history, "kind", "") == "causal"
+        causal = history.fronts is not None
         for k, frame in enumerate(frames):
             letter = PANEL_LETTERS[b * len(frames) + k]
             r, c = divmod(k, per_row)

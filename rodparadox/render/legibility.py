@@ -14,8 +14,8 @@ import numpy as np
 
 from rodparadox.numbers import SCIENTIFIC_ABOVE, impact_name, nice_number, shown
 from rodparadox.physics import rod
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import FrameView, relative_velocity, rest_frame, moving_frame, sampling_tolerance
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.frames import FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.render.labels import boxes_hit_segments
 from rodparadox.render.layer_base import clip_line, impact_marker, line_kwargs
 from rodparadox.render.styles import Style
@@ -63,7 +63,7 @@ def sheet_width(worldlines: dict[str, np.ndarray], points_per_L: float) -> float
 
 # --- material lines -------------------------------------------------------------------------------------------
 
-def material_lines_that_fit(history: History, fv: FrameView, worldlines: dict[str, np.ndarray], points_per_L: float,
+def material_lines_that_fit(history: RodHistory, fv: FrameView, worldlines: dict[str, np.ndarray], points_per_L: float,
                             asked: int) -> int:
     """How many of `asked` evenly spaced material lines fit in the panel with MATERIAL_LINE_GAP between neighbours
     (the ends included): a first guess from the world-sheet's least width, checked on the lines themselves."""
@@ -202,7 +202,7 @@ def label_boxes(ax, box: Sequence[float], scale: float, pad: float) -> list[tupl
     return out
 
 
-def draw_inset(ax, plan: InsetPlan, history: History, fv: FrameView, style: Style, letter: str, font_size: float,
+def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: Style, letter: str, font_size: float,
                width: float, height: float) -> tuple:
     """The inset as a child Axes of the panel: the world-sheet, the rod's ends, the particles, the lines of
     simultaneity through the impacts and the impacts, at equal scales, framed, its magnification written in it."""

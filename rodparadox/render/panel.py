@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.render.styles import Style
 from rodparadox.render.labels import Area, place
 from rodparadox.render.layer_base import is_causal
@@ -14,7 +14,7 @@ from rodparadox.render.legibility import draw_inset, inset_plan, label_boxes, ma
 from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
 
 
-def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: History, style: Style,
+def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: RodHistory, style: Style,
                options: Options, clock_step: float, rod_lines: int | None = None,
                crowded: bool = False) -> dict[str, tuple]:
     """Draw a laid-out panel into `ax`; returns the artists of every enabled layer, its labels' included, by name,

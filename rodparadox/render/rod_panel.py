@@ -54,7 +54,7 @@ def rod_box(history, chart=None) -> tuple[float, float, float, float]:
     chart = chart or chart_of(history)
     L = history.scenario.L
     times = [chart.to_chart(i.event)[0] / L for i in history.impacts]
-    if chart.kind == "rigid":
+    if history.turning is not None:
         times += [T1 / L for _, T1, _ in chart.turns]
     first = min(times)
     return -X_MARGIN, 1 + X_MARGIN, first - min(2.0, max(0.5, first)), max(times) + 1.5
@@ -72,7 +72,7 @@ def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r
     drawn: dict[str, list] = {}
     _axes(ax, (X0, X1, T0, T1), st, fs, title or _title(history, letter))
     drawn["strip"] = _strip(ax, history, chart, st, (X0, X1, T0, T1), letter)
-    if chart.kind == "causal":
+    if history.fronts is not None:
         drawn["fronts"] = _fronts(ax, chart, st, T0 * L, T1 * L, letter)
         drawn["contacts"] = _contacts(ax, history, chart, st, letter)
     else:
@@ -113,7 +113,7 @@ def _strip(ax, history, chart, st: Style, box, letter: str) -> list:
     X0, X1, T0, T1 = box
     L = history.scenario.L
     out = []
-    if chart.kind == "causal":
+    if history.fronts is not None:
         out += _compression(ax, history, chart, st, T0 * L, T1 * L, letter)
     else:
         out.append(ax.add_patch(Rectangle((0, T0), 1, T1 - T0, facecolor=st.sheet, edgecolor="none", zorder=1,
@@ -357,7 +357,7 @@ def _key(ax, history, chart, st: Style, fs, step: float):
     handles = [Line2D([], [], color=st.rod_interior.colour, linewidth=st.rod_interior.width, marker="_",
                       markersize=6, markeredgewidth=1.2)]
     labels = [f"material point: a tick\nevery {tick_text(step, step)} L of its\nown (proper) time"]
-    if chart.kind == "causal":
+    if history.fronts is not None:
         handles.append(Line2D([], [], color=st.front.colour, linewidth=st.front.width, linestyle=st.front.dashes))
         labels.append("light front: always\nat 45\N{DEGREE SIGN} here")
         handles.append(Line2D([], [], color="#777777", alpha=0.35, linewidth=st.rod.width * 3.2))

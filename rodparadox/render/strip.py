@@ -34,7 +34,7 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 from matplotlib.ticker import NullLocator
 
-from rodparadox.physics.engine import History
+from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import impact_name, shown
@@ -263,7 +263,7 @@ def _set_letters_apart(artists: StripArtists, strip: Strip, L: float) -> None:
 # --- a block of stills: the rod at successive instants ---------------------------------------------------
 
 
-def draw_strips_into(target: Figure | SubFigure, history: History, frame: Frame, times: Sequence[float],
+def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Frame, times: Sequence[float],
                      style: str, span: Sequence[float] | None = None) -> tuple[Axes, ...]:
     """For one frame, the rod and the particles in that frame's space at each of `times` (the frame's own
     time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
@@ -403,7 +403,7 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
 
 
 @lru_cache(maxsize=64)
-def strips_at(history: History, frame: Frame, times: tuple[float, ...], flash: float) -> tuple[Strip, ...]:
+def strips_at(history: RodHistory, frame: Frame, times: tuple[float, ...], flash: float) -> tuple[Strip, ...]:
     """The strips (`physics.snapshot.strip_at`) of these instants, kept: a handout measures a block of strips for
     every row count it tries, then draws it. Their arrays are made read-only, as they are shared."""
     strips = tuple(strip_at(history, frame, t, flash) for t in times)
@@ -413,7 +413,7 @@ def strips_at(history: History, frame: Frame, times: tuple[float, ...], flash: f
     return strips
 
 
-def strips_size(history: History, frame: Frame, times: Sequence[float], style: str,
+def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style: str,
                 row_scale: float = 1.0) -> tuple[float, float]:
     """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
     `row_scale` times the least row's height: what a page must leave for the block."""

@@ -13,7 +13,7 @@ from matplotlib.cbook import is_math_text
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import text_to_path
 
-from rodparadox.physics.frames import Frame, FrameView, frame_symbol
+from rodparadox.physics.frames import Frame, frame_symbol, FrameView
 from rodparadox.render import mathtext_parses  # noqa: F401 -- installs the process-wide cache of mathtext parses
 from rodparadox.physics.model import Scenario
 from rodparadox.numbers import MINUS, SCIENTIFIC_ABOVE, impact_parts, shown, shown_signed

@@ -15,8 +15,8 @@ from __future__ import annotations
 from typing import Sequence
 
 from rodparadox.tables.table import Cell, Table
-from rodparadox.physics.engine import History
-from rodparadox.physics.frames import Frame, check_below_c, frame_symbol, frame_word, time_order, view
+from rodparadox.physics.history import RodHistory
+from rodparadox.physics.frames import check_below_c, Frame, frame_symbol, frame_word, time_order, view
 from rodparadox.physics.ledger import instant_entries, rounding_zero
 from rodparadox.numbers import MINUS, coordinate_format, exact, fraction_text, impact_name, number_text, velocity_format
 from rodparadox.tables.formats import latex_text, tables_latex, tables_markdown, to_latex, to_markdown  # noqa: F401 (re-exported)
@@ -34,7 +34,7 @@ def with_fraction(text: str, value: float) -> str:
     return f"{text} ({exact})" if exact and float(text.replace(MINUS, "-")) != 0.0 else text
 
 
-def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
+def events_table(history: RodHistory, frame: Frame, blank: bool = False) -> Table:
     """The impacts in one frame, in the frame's time order: label, end, x, t, and the particle's and the rod's
     velocities just before and after (c = 1; x and t in the unit L is given in)."""
     fv = view(history, frame)
@@ -65,7 +65,7 @@ def events_table(history: History, frame: Frame, blank: bool = False) -> Table:
                  tuple(rows), "llnnnnnn", tuple(notes))
 
 
-def _zero_below(history: History, frame: Frame) -> float:
+def _zero_below(history: RodHistory, frame: Frame) -> float:
     """Differences of totals below this are rounding (`ledger.rounding_zero`)."""
     return rounding_zero(history.initial_total(frame.rapidity))
 
@@ -88,7 +88,7 @@ def _body_name(name: str) -> str:
     return {"rod": "rod, kinetic", "hidden": "hidden"}.get(name, f"particle {name}")
 
 
-def ledger_table(history: History, frame: Frame, blank: bool = False) -> Table:
+def ledger_table(history: RodHistory, frame: Frame, blank: bool = False) -> Table:
     """Per instant of the frame at which impacts happen (impacts at one instant are one row group: just before all
     of them, just after all of them), in its time order: each particle's (E, p), the rod's kinetic part, the hidden
     part, and their total (the same as before the first impact); then, apart and not a summand, the rod's
@@ -132,15 +132,15 @@ def impact_names_text(impacts) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
-def hidden_instants(history: History, frame: Frame) -> tuple[float, ...]:
+def hidden_instants(history: RodHistory, frame: Frame) -> tuple[float, ...]:
     """The middle of each stretch of the frame's time between consecutive changes (impacts, a turn's start or end)."""
     eta = frame.rapidity
-    changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(history.rigid.turn_times(eta)))
+    changes = sorted({i.event.time_in(eta) for i in history.impacts} | set(history.turning.turn_times(eta)))
     scale = history.scenario.L + max((abs(t) for t in changes), default=0.0)
     return tuple(0.5 * (a + b) for a, b in zip(changes, changes[1:]) if b - a > ONE_INSTANT * scale)
 
 
-def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table | None:
+def hidden_table(history: RodHistory, frame: Frame, blank: bool = False) -> Table | None:
     """The hidden (E, p) on the slices between impacts where it is not zero, or None where it is zero on all."""
     zero = _zero_below(history, frame)
     rows = []
@@ -157,7 +157,7 @@ def hidden_table(history: History, frame: Frame, blank: bool = False) -> Table |
                  ("Each slice lies halfway between two consecutive impacts or ends of a turn.",))
 
 
-def slices_table(history: History, frame: Frame, times: Sequence[float], blank: bool = False) -> Table:
+def slices_table(history: RodHistory, frame: Frame, times: Sequence[float], blank: bool = False) -> Table:
     """Each body's kinetic (E, p), the kinetic total and the hidden part on the slices t = `times` of the frame (the
     slices `sears-paradox ledger` is asked for), a row per body, the time on the first row of each slice."""
     zero = _zero_below(history, frame)
@@ -181,12 +181,12 @@ def slices_table(history: History, frame: Frame, times: Sequence[float], blank: 
 
 # --- the tables of a command, as one Markdown or LaTeX text -----------------------------------------------
 
-def events_tables(history: History, frames: Sequence[Frame]) -> tuple[Table, ...]:
+def events_tables(history: RodHistory, frames: Sequence[Frame]) -> tuple[Table, ...]:
     """`sears-paradox events` as tables: the impacts in each frame."""
     return tuple(events_table(history, f) for f in frames)
 
 
-def ledger_tables(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> tuple[Table, ...]:
+def ledger_tables(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> tuple[Table, ...]:
     """`sears-paradox ledger` as tables: for each frame the ledger per impact, the hidden part between impacts
     where it is not zero, and the slices at `at` if any."""
     out: list[Table] = []
@@ -200,7 +200,7 @@ def ledger_tables(history: History, frames: Sequence[Frame], at: Sequence[float]
     return tuple(out)
 
 
-def heading(history: History, units: str) -> str:
+def heading(history: RodHistory, units: str) -> str:
     """The line above a command's tables: the scenario, its v and L, and the units (`units`, after c = 1)."""
     s = history.scenario
     return f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)} (c = 1; {units})"
@@ -211,17 +211,17 @@ EVENTS_UNITS = "x and t in the unit L is given in"
 LEDGER_UNITS = "E in M c², p in M c, M the rod's mass; t in the unit L is given in"
 
 
-def events_markdown(history: History, frames: Sequence[Frame]) -> str:
+def events_markdown(history: RodHistory, frames: Sequence[Frame]) -> str:
     return tables_markdown(heading(history, EVENTS_UNITS), events_tables(history, frames))
 
 
-def events_latex(history: History, frames: Sequence[Frame]) -> str:
+def events_latex(history: RodHistory, frames: Sequence[Frame]) -> str:
     return tables_latex(heading(history, EVENTS_UNITS), events_tables(history, frames))
 
 
-def ledger_markdown(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+def ledger_markdown(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     return tables_markdown(heading(history, LEDGER_UNITS), ledger_tables(history, frames, at))
 
 
-def ledger_latex(history: History, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
+def ledger_latex(history: RodHistory, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     return tables_latex(heading(history, LEDGER_UNITS), ledger_tables(history, frames, at))

@@ -22,7 +22,8 @@ from typing import Any, Sequence
 
 from rodparadox.numbers import MINUS, exact, impact_name
 from rodparadox.physics.frames import Frame, frame_heading, frame_symbol, frame_word, time_window
-from rodparadox.physics.ledger import EnergyMomentum, rounding_zero
+from rodparadox.physics.types import EnergyMomentum
+from rodparadox.physics.ledger import rounding_zero
 from rodparadox.tables.build import coordinates, fixed
 from rodparadox.tables.formats import tables_latex, tables_markdown
 from rodparadox.tables.table import Cell, Table
@@ -175,15 +176,22 @@ CSV_COLUMNS = ("frame", "kind", "label", "t", "body", "E", "p")
 
 def to_csv(history, frames: Sequence[Frame], at: Sequence[float] | None = None) -> str:
     """Rows frame,kind,label,t,body,E,p: kind `contact` or `separation` (every summand at the event), `slice`."""
-    doc = document(history, frames, at)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(CSV_COLUMNS)
+    writer.writerows(csv_rows(history, frames, at))
+    return out.getvalue()
+
+
+def csv_rows(history, frames: Sequence[Frame], at: Sequence[float] | None = None) -> list[list[str]]:
+    """`to_csv`'s rows, without its header (CSV_COLUMNS)."""
+    doc = document(history, frames, at)
+    rows = []
     for name, frame in doc["frames"].items():
         for e in frame["events"]:
             for body, em in e["bodies"].items():
-                writer.writerow([name, e["kind"], e["label"], repr(e["t"]), body, repr(em["E"]), repr(em["p"])])
+                rows.append([name, e["kind"], e["label"], repr(e["t"]), body, repr(em["E"]), repr(em["p"])])
         for s in frame["slices"]:
             for body, em in s["bodies"].items():
-                writer.writerow([name, "slice", "", repr(s["t"]), body, repr(em["E"]), repr(em["p"])])
-    return out.getvalue()
+                rows.append([name, "slice", "", repr(s["t"]), body, repr(em["E"]), repr(em["p"])])
+    return rows

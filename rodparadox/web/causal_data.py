@@ -420,7 +420,6 @@ def model_data(history, v: float, frames, reach: float, tolerance: float, materi
     """The causal rod at one speed: what the page draws and prints (the module's docstring). `frames`: the
     ledger's frames in the rigid rod's order (S', S, the others)."""
     from rodparadox.numbers import impact_name
-    from rodparadox.render.colour_scale import causal_rapidity_range, compression_range
     from rodparadox.tables.causal_ledger import event_name
 
     s, L = history.scenario, history.scenario.L
@@ -453,8 +452,8 @@ def model_data(history, v: float, frames, reach: float, tolerance: float, materi
         X = L * k / MATERIAL_LINES
         T0 = history.material_worldline(X).segments[0].T_start
         material.append(line(tables, X, T0, T_hi, material_tolerance, material_digits))
-    compression = compression_range(history)
-    bound = max(abs(r) for r in causal_rapidity_range(history))
+    compression = history.fronts.compression_range()
+    bound = max(abs(r) for r in history.rapidity_range())
     # the ledger: every frame's instants at once
     rapidities = np.array([fr.rapidity for fr in frames])
     spans = windows(changes_L, starts_L, rapidities) * L

@@ -27,9 +27,9 @@ from typing import Any, Sequence
 
 from rodparadox.errors import RodParadoxError
 from rodparadox.numbers import impact_name
-from rodparadox.physics.engine import WORLDLINE_NAMES
-from rodparadox.physics.rod_models import run_rod
-from rodparadox.physics.frames import Frame, check_below_c, frame_of_velocity, moving_frame, rest_frame, time_window
+from rodparadox.physics.types import WORLDLINE_NAMES
+from rodparadox.physics.models import run_rod
+from rodparadox.physics.frames import check_below_c, Frame, frame_of_velocity, moving_frame, rest_frame, time_window
 from rodparadox.physics.kinematics import HyperbolicArc, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.tables.build import events_table
@@ -140,7 +140,7 @@ def model_data(history, v: float) -> dict[str, Any]:
     frames = (rest_frame(), moving_frame(v), *(frame_of_velocity(u) for u in LEDGER_FRAMES if u != -v))
     for frame in frames:  # the check reads the frame and the impacts only: no need to sample a view
         check_below_c(SimpleNamespace(frame=frame, events=[SimpleNamespace(impact=i) for i in history.impacts]))
-    if history.kind == "causal":
+    if history.fronts is not None:
         from rodparadox.web import causal_data
 
         ledger_frames = (frames[1], frames[0], *(frame_of_velocity(u) for u in CAUSAL_LEDGER_FRAMES if u != -v))
@@ -164,7 +164,7 @@ def model_data(history, v: float) -> dict[str, Any]:
                                                  *(s.rapidity_at_start for s in w.segments),
                                                  *(s.rapidity_at_end for s in w.segments)))
     return {
-        "model": history.kind,
+        "model": history.model,
         "impacts": impacts,
         "worldlines": {name: sampled(w, L, LINE_TOLERANCE) for name, w in worldlines.items()},
         "material": material,

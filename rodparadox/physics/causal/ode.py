@@ -22,7 +22,6 @@ at every node of every step: an event, never a step.
 from __future__ import annotations
 
 import bisect
-import math
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb

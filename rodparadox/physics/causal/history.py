@@ -2,7 +2,7 @@
 
 `run(scenario)` places the particles as the rigid engine does (a gap, or an impact timed against the other
 particle's first contact, here in the causal rod), solves the invariants (`causal_solve`) and returns a
-`CausalHistory`, the rod interface (`history.RodHistory`) with `rigid = None`. Its events are each contact's
+`CausalHistory`, the rod interface (`history.RodHistory`) with the capability `fronts`. Its events are each contact's
 start ("contact") and end ("separation"); every world-line is exact (`kinematics.ChartCurve`, boosted by
 scaling the chart map), the rod's ends and material points ringing for ever after the last separation.
 
@@ -21,20 +21,30 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal_solve import Rider, Solution, solve
-from rodparadox.physics.engine import WORLDLINE_NAMES, Impact
+from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
+from rodparadox.physics.causal.parts import rod_parts
+from rodparadox.physics.causal.solve import Rider, Solution, solve
 from rodparadox.physics.kinematics import ChartCurve, Event, Line, WorldLine
-from rodparadox.physics.ledger import EnergyMomentum, Slice, ZERO, initial_total as _initial_total_rigid
+from rodparadox.physics.ledger import initial_total
 from rodparadox.physics.model import Scenario
+from rodparadox.physics.types import EnergyMomentum, Impact, Slice, ZERO
 
 
-def run(scenario: Scenario) -> "CausalHistory":
-    """The causal rod's history of a scenario (the same scenarios the rigid engine runs)."""
+def run(scenario: Scenario, starts: dict[str, Event] | None = None) -> "CausalHistory":
+    """The causal rod's history of a scenario (the same scenarios the rigid engine runs), the particles starting
+    at `starts` (default: `particle_starts`)."""
+    return _run(scenario, particle_starts(scenario) if starts is None else starts)
+
+
+def particle_starts(scenario: Scenario) -> dict[str, Event]:
+    """Each particle's event at t = 0: from its gap, or timed against the other particle's first contact in the
+    causal rod."""
     starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
     for p in scenario.particles:
         if p.timed_with is not None:
             starts[p.name] = _start_from_timing(scenario, p, starts)
-    return _run(scenario, starts)
+    return starts
 
 
 def _rapidity(scenario: Scenario, p) -> float:
@@ -92,8 +102,35 @@ class RodParts:
 class CausalHistory:
     """The rod interface (`history.RodHistory`) for the causal rod. Coordinates in S, units of L, M = 1."""
 
-    kind = "causal"
-    rigid = None
+    model = "causal"
+    turning = None  # no turns: its lines of simultaneity are not the rigid rod's (physics.history.Turning)
+
+    @property
+    def fronts(self) -> "CausalHistory":
+        """The causal rod's own part of the interface (`physics.history.Fronts`): itself."""
+        return self
+
+    def own_chart(self) -> CausalChart:
+        """The rod's own chart: its material chart (T, X)."""
+        return CausalChart(self)
+
+    def rapidity_range(self) -> tuple[float, float]:
+        """The least and largest rapidity in S of any material point over the whole history, 0 included."""
+        return causal_rapidity_range(self)
+
+    def rod_parts_on_slices(self, frame_rapidity: float, times) -> tuple:
+        """The matter and stress parts on many slices of one frame at once, as arrays (`causal.parts`)."""
+        from rodparadox.physics.causal.parts import rod_parts_on_slices  # scipy's splines: only for this
+
+        return rod_parts_on_slices(self, frame_rapidity, times)
+
+    def compression_range(self) -> tuple[float, float]:
+        """The least and largest ln lam anywhere in the rod over its whole history, 0 (unstressed) inside."""
+        return compression_range(self)
+
+    def rod_parts(self, frame_rapidity: float, t: float) -> tuple[EnergyMomentum, EnergyMomentum]:
+        """The rod's (E, p) on the slice split into its matter part and its stress part (`causal.parts`)."""
+        return rod_parts(self, frame_rapidity, t)
 
     def __init__(self, scenario: Scenario, solution: Solution, starts: dict[str, Event]):
         self.scenario, self.solution = scenario, solution
@@ -194,14 +231,12 @@ class CausalHistory:
             total += em
         parts = ()
         if split:
-            from rodparadox.physics.causal_parts import rod_parts
-
             matter, stress = rod_parts(self, frame_rapidity, t)
             parts = (("matter", matter), ("stress", stress))
         return Slice(t, tuple(bodies), total, self.initial_total(frame_rapidity) - total, parts)
 
     def initial_total(self, frame_rapidity: float) -> EnergyMomentum:
-        return _initial_total_rigid(self, frame_rapidity)
+        return initial_total(self, frame_rapidity)
 
     def _final_rapidity(self) -> float:
         """The rod's centre-of-momentum rapidity after the last separation: of its (E, p) over one period,

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from rodparadox.physics.ledger import EnergyMomentum
+from rodparadox.physics.types import EnergyMomentum
 
 #: Gauss-Legendre nodes on each smooth piece of the slice
 NODES = 16

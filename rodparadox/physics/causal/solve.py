@@ -35,7 +35,7 @@ import math
 from dataclasses import dataclass, field
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal_ode import falling_root, solve_contact
+from rodparadox.physics.causal.ode import falling_root, solve_contact
 #: windows of chart time L processed before a scenario is refused as never settling
 MAX_WINDOWS = 5000
 

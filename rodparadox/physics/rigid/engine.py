@@ -27,81 +27,16 @@ from dataclasses import dataclass, field, replace
 from rodparadox.physics.collision import elastic
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, Segment, WorldLine
+from rodparadox.physics.ledger import initial_total
 from rodparadox.physics.model import Particle, Scenario
+from rodparadox.physics.rigid.chart import RigidChart
+from rodparadox.physics.rigid.ledger import ledger_slice
+from rodparadox.physics.rigid.turns import RigidTurns, Turn, material_worldline
+from rodparadox.physics.types import EnergyMomentum, Impact, Slice, WORLDLINE_NAMES
 from rodparadox.tolerances import DIFFERENCE_ROUNDING, SAME_EVENT, SIMULTANEITY_TOLERANCE, TIMING_MATCH, TURN_LINE_ROUNDING
 
 #: a scenario with more impacts than this is refused rather than run forever
 MAX_IMPACTS = 1000
-
-WORLDLINE_NAMES = ("A", "B", "rod_left", "rod_right")
-
-
-@dataclass(frozen=True)
-class Impact:
-    """One particle striking one end of the rod, at `event` (coordinates in S).
-
-    Rapidities are in S. The rod's `rod_rapidity_before`/`after` are its
-    dynamical rapidity (that of its energy-momentum M(cosh, sinh)) just before
-    and just after the collision; `line_rapidity` is that of the rod's line of
-    simultaneity through the impact, the rest frame of its shape there (the
-    same as `rod_rapidity_before` unless the rod is still turning, rule 6).
-    `collision` numbers the collisions from 0: impacts sharing it are one
-    collision (rule 5). `simultaneous_with` names the impact at the other end
-    on the same line of the rod's simultaneity; `while_turning` says the rod
-    had not finished its previous turn.
-    """
-
-    label: str
-    particle: str
-    end: str
-    event: Event
-    particle_rapidity_before: float
-    particle_rapidity_after: float
-    rod_rapidity_before: float
-    rod_rapidity_after: float
-    simultaneous_with: str | None = None
-    while_turning: bool = False
-    line_rapidity: float = 0.0
-    collision: int = 0
-    #: "contact" (a particle meets an end; every rigid impact) or "separation" (it leaves a causal rod's end)
-    kind: str = "contact"
-
-
-@dataclass(frozen=True)
-class Turn:
-    """The rod's lines of simultaneity turning about `pivot` (rule 3), from `rapidity_from` towards `rapidity_to`.
-
-    `rapidity_to` is the rod's dynamical rapidity during the turn; the turn
-    ends on the line `rapidity_stop`, which is `rapidity_to` unless the impact
-    `stopped_by` struck the far end first (rule 6). The material point at
-    proper distance d from the pivot moves on the hyperbola of radius d
-    centred on it (`arc(d)`).
-    """
-
-    pivot: Event
-    pivot_end: str
-    rapidity_from: float
-    rapidity_to: float
-    rapidity_stop: float
-    stopped_by: str | None
-    L: float
-
-    @property
-    def side(self) -> int:
-        """+1 when the pivot is the left end (the rod lies at +x from it on its own lines), else -1."""
-        return 1 if self.pivot_end == "left" else -1
-
-    @property
-    def completed(self) -> bool:
-        return self.stopped_by is None
-
-    def arc(self, d: float) -> HyperbolicArc:
-        """The path of the material point at proper distance d from the pivot during this turn."""
-        return HyperbolicArc(self.pivot, d, self.side, self.rapidity_from, self.rapidity_stop)
-
-    def distance(self, sigma: float) -> float:
-        """Proper distance from the pivot of the material point sigma (its distance from the left end)."""
-        return sigma if self.pivot_end == "left" else self.L - sigma
 
 
 @dataclass(frozen=True)
@@ -117,52 +52,58 @@ class History:
     final_rapidity: float = 0.0
 
     # The rod interface (physics.history.RodHistory), of which this rigid rod is the first implementation.
-    # Its interior and its ledger live in physics.rod and physics.ledger, which import this module: hence the
-    # imports inside the methods.
 
-    kind = "rigid"
+    model = "rigid"
+    fronts = None  # its signals are instantaneous: no fronts (physics.history.Fronts)
 
     def worldline(self, name: str) -> WorldLine | None:
         """The world-line of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
         return dict(self.worldlines).get(name)
 
     @property
-    def rigid(self):
+    def turning(self) -> RigidTurns:
         """The rigid rod's own part of the interface: its turns and its own lines of simultaneity."""
-        from rodparadox.physics.rod import RigidTurns
-
         return RigidTurns(self)
+
+    def own_chart(self) -> RigidChart:
+        """The rod's own chart: its rest frames between turns, each turn's Rindler chart (`rigid.chart`)."""
+        return RigidChart(self)
 
     def material_worldline(self, sigma: float) -> WorldLine:
         """The exact world-line in S of the material point at proper distance sigma from the left end."""
-        from rodparadox.physics.rod import material_worldline
-
         return material_worldline(self, sigma)
+
+    def rapidity_range(self) -> tuple[float, float]:
+        """The least and largest rapidity in S of any material point over the whole history, 0 included (the
+        turns' ends: `RigidTurns.rapidities`)."""
+        rapidities = self.turning.rapidities()
+        return min(rapidities), max(rapidities)
 
     def material_velocity(self, sigma: float, frame_rapidity: float, t: float) -> float:
         """The velocity of material point sigma at the instant t of the frame of rapidity `frame_rapidity`."""
         return math.tanh(self.material_worldline(sigma).seen_from(frame_rapidity).rapidity_at_time(t))
 
-    def energy_momentum(self, frame_rapidity: float, t: float):
-        """Each body's (E, p) on the slice t of the frame, their total and the hidden part (`ledger.Slice`)."""
-        from rodparadox.physics.ledger import ledger_slice
-
+    def energy_momentum(self, frame_rapidity: float, t: float) -> Slice:
+        """Each body's (E, p) on the slice t of the frame, their total and the hidden part (`types.Slice`)."""
         return ledger_slice(self, frame_rapidity, t)
 
-    def initial_total(self, frame_rapidity: float):
-        """The system's total (E, p) in the frame (`ledger.EnergyMomentum`)."""
-        from rodparadox.physics.ledger import initial_total
-
+    def initial_total(self, frame_rapidity: float) -> EnergyMomentum:
+        """The system's total (E, p) in the frame."""
         return initial_total(self, frame_rapidity)
 
 
-def run(scenario: Scenario) -> History:
-    """The history of a scenario: particles placed (gap or timing), then simulated in S."""
+def particle_starts(scenario: Scenario) -> dict[str, Event]:
+    """Each particle's event at t = 0: from its gap, or timed against the other particle's first impact."""
     starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
     for p in scenario.particles:
         if p.timed_with is not None:
             starts[p.name] = _start_from_timing(scenario, p, starts)
-    history = _simulate(scenario, starts)
+    return starts
+
+
+def run(scenario: Scenario, starts: dict[str, Event] | None = None) -> History:
+    """The history of a scenario: particles placed (`starts`, default `particle_starts`), then simulated in S."""
+    history = _simulate(scenario, particle_starts(scenario) if starts is None else starts)
     for p in scenario.particles:
         if not any(i.particle == p.name for i in history.impacts):
             raise ScenarioError(f"particles.{p.name} never reaches the rod; give it a speed towards the rod.",
