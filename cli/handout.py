@@ -13,11 +13,13 @@ import click
 from rodparadox.errors import OptionError
 
 from .edge import BadInput, before_matplotlib, report, reports_errors
-from .options import (format_option, frame_option, output_option, quiet_option, rod_asked, run_scenario,
+from .options import (format_option, frame_option, output_option, quiet_option, rod_asked, run_rods, run_scenario,
                       scenario_options, style_option)
 
 #: what `handout` writes: one PDF, or a folder of LaTeX pieces (handout.tex, figures, table fragments, .dat files)
 HANDOUT_FORMATS = ("pdf", "tex")
+#: how a file name says which rods a handout compares: --rod causal and --rod both give the same document
+ROD_WORDS = {"causal": "compared", "both": "compared"}
 #: handouts are photocopied in black and white
 HANDOUT_STYLE = "print"
 PAPER_NAMES = ("a4", "letter")
@@ -42,6 +44,12 @@ HANDOUT_PAPER = "a4"
               show_default=True,
               help="With --worksheet: inline, the answer key at the end; separate, the key as its own PDF, "
                    "NAME_worksheet_key.pdf beside the worksheet.")
+@click.option("--sections", "parts", default=None, metavar="paradox,diagrams,...",
+              help="The parts each document holds, comma-separated: paradox (the paradox and its resolution), "
+                   "diagrams (each diagram and what it shows), strips (the rod at successive instants), tables (the "
+                   "impacts), ledger (energy and momentum), comparison (the causal rod beside the rigid one, with "
+                   "--rod both or causal), rod (the rod's own view, as --frame both,rod). A worksheet keeps its "
+                   "diagrams and tables, which its questions read. [default: all]")
 @click.option("--equal-scales", is_flag=True, help="Draw the diagram's panels to one scale (the same length of L on "
                                                     "the page), not each filling its panel, as plot's --equal-scales.")
 @format_option("pdf: one document to print; tex: a folder with handout.tex (pdflatex), the figures as PDF, the "
@@ -54,8 +62,8 @@ HANDOUT_PAPER = "a4"
 @quiet_option
 @reports_errors
 def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: str, paper: str, worksheet: bool,
-            chosen: str | None, compare_v: float | None, key: str, equal_scales: bool, fmt: str, style: str,
-            output: str | None, quiet: bool) -> None:
+            chosen: str | None, compare_v: float | None, key: str, parts: str | None, equal_scales: bool, fmt: str,
+            style: str, output: str | None, quiet: bool) -> None:
     """Write a teaching handout (or --worksheet) of each SCENARIO, one section each, computed at the speed given.
 
     Each section holds the setup, the two-frame diagram with an explanation
@@ -74,32 +82,43 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     paper = paper.lower()
     key = key.lower()
     numbers = _worksheet_options(worksheet, chosen, compare_v, key, fmt.lower())
+    sections = _sections(parts, worksheet)
     described = planned.Outputs(formats=HANDOUT_FORMATS, default="pdf", kind="worksheet" if worksheet else "handout",
                                 folders={"tex": "the LaTeX pieces"}, check=_check_output,
                                 together=True, default_style=HANDOUT_STYLE, frames=planned.frames_with_rod)
-    rod = rod_asked()  # named as plot names: fig1_causal_handout.pdf, fig1_both_handout.pdf
-    extras = ([rod] if rod in ("causal", "both") else []) + ([paper] if paper != HANDOUT_PAPER else [])
+    rod = rod_asked()
+    # the rods compared, named once (fig2_handout_compared.pdf; `both` beside --frame both,rod read twice)
+    extras = ([ROD_WORDS[rod]] if rod in ROD_WORDS else []) + ([paper] if paper != HANDOUT_PAPER else [])
     [job] = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt.lower(), output=output, style=style,
                          extras=extras + (["samescale"] if equal_scales else []))
+    from rodparadox.handout.build import Item
+
     items, views = [], {}
     for s, name, shown_frames, stem in zip(job.scenarios, job.names, job.frames, job.stems):
         frames = planned.lorentz_frames(shown_frames)
         if not frames:
             raise BadInput("--frame rod needs a frame beside it in a handout, whose tables are read in frames: give "
                            "e.g. both,rod.")
-        # the rigid rod's sections always (the diagrams draw it); the causal rod's run for the comparison
-        compared = rod in ("causal", "both") or s.rod == "causal"
-        causal = run_scenario(s.with_overrides(rod="causal"), name, frames) if compared else None
-        items.append((stem, run_scenario(s.with_overrides(rod="rigid"), name, frames), frames, causal))
-        if frames != shown_frames:  # the rod's own view: of the rigid rod, and of the causal rod when compared
-            views[stem] = (items[-1][1],) + ((causal,) if causal is not None else ())
+        # the rigid rod's sections always (the diagrams draw it); the causal rod beside it, struck by the same
+        # particles (placed once, by the scenario's own rod: `physics.models.run_rods`), when compared
+        compared = (rod in ("causal", "both") or s.rod == "causal") and "comparison" in sections
+        if compared:
+            rigid, causal = run_rods(s, name, frames, rods="both")
+        else:
+            rigid, causal = run_scenario(s.with_overrides(rod="rigid"), name, frames), None
+        items.append(Item(stem, rigid, frames, causal))
+        # the rod's own view (--frame both,rod, or rod among --sections): of the rigid rod, and of the causal rod when
+        # compared
+        if "rod" in sections and (frames != shown_frames or parts is not None):
+            views[stem] = (items[-1].history,) + ((causal,) if causal is not None else ())
     planned.prepare([job], described, output)
 
     before_matplotlib()
     from rodparadox.handout.build import build
     from rodparadox.io.output import write_atomic, write_folder
 
-    document = build(items, worksheet=worksheet, compare_v=compare_v, chosen=numbers, equal_scales=equal_scales)
+    document = build(items, worksheet=worksheet, compare_v=compare_v, chosen=numbers, equal_scales=equal_scales,
+                     sections=sections)
     if views:
         from rodparadox.handout.own_view import with_rod_views
 
@@ -131,6 +150,25 @@ def _check_output(output: str, fmt: str, suffix: str) -> None:
     if fmt == "tex" and suffix == "pdf" and not Path(output).is_dir():
         raise OptionError("output", output, template="{what} names {value!r} but {format} is tex, which writes a "
                                                      "folder; name the folder.")
+
+
+#: the parts of a handout (`handout.build.SECTIONS`: named here, so that --help needs no import of the library)
+SECTIONS = ("paradox", "diagrams", "strips", "tables", "ledger", "comparison", "rod")
+
+
+def _sections(parts: str | None, worksheet: bool) -> tuple[str, ...]:
+    """--sections: the parts asked for, checked before anything is computed (all of them when not given)."""
+    if parts is None:
+        return SECTIONS
+    asked = tuple(dict.fromkeys(p.strip().lower() for p in parts.split(",")))
+    unknown = [p for p in asked if p not in SECTIONS]
+    if unknown or not asked:
+        raise OptionError("sections", parts, f"parts among {', '.join(SECTIONS)}, comma-separated")
+    missing = [p for p in ("diagrams", "tables") if p not in asked]
+    if worksheet and missing:
+        raise OptionError("sections", parts, template="{what} leaves out " + " and ".join(missing)
+                          + ", which a worksheet's questions read; add them.")
+    return asked
 
 
 def _worksheet_options(worksheet: bool, chosen: str | None, compare_v: float | None, key: str,

@@ -52,12 +52,13 @@ def rod_asked() -> str | None:
     return context.meta.get(ROD_META) if context is not None else None
 
 
-def run_rods(scenario, source: str, frames=()) -> tuple:
-    """The scenario run in the rods --rod asks for (`physics.models.run_rods`: with both, the two rods struck by
-    the same particles), each checked as `run_scenario` checks one."""
+def run_rods(scenario, source: str, frames=(), rods: str | None = None) -> tuple:
+    """The scenario run in the rods --rod asks for (or `rods`: a handout compares both whenever the causal rod is
+    asked for) (`physics.models.run_rods`: with both, the two rods struck by the same particles), each checked as
+    `run_scenario` checks one."""
     from rodparadox.physics.models import run_rods as run
 
-    return _checked(lambda: run(scenario, rod_asked()), source, frames)
+    return _checked(lambda: run(scenario, rods or rod_asked()), source, frames)
 
 
 def run_scenario(scenario, source: str, frames=()):
@@ -135,6 +136,10 @@ class Whole(click.IntRange):
             except ValueError:
                 self.fail(_not_decimal(value, "integer"), param, ctx)
         return super().convert(value, param, ctx)
+
+    def _describe_range(self) -> str:
+        """The bounds as help shows them, or nothing for a whole number without bounds (click wrote "x<=None")."""
+        return "" if self.min is None and self.max is None else super()._describe_range()
 
 
 NUMBER = Decimal()

@@ -16,7 +16,7 @@ from rodparadox.errors import ChoiceError, FrameError, OptionError, ScenarioErro
 OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--frame-velocity", "output": "-o",
            "format": "--format", "fps": "--fps", "seconds": "--seconds", "mode": "--mode", "paper": "--paper",
            "at": "--at", "questions": "--questions", "compare_v": "--compare-v", "key": "--key",
-           "allow_long": "--allow-long", "rod": "--rod", "other_axes": "--other-axes", "light_cones": "--light-cones",
+           "sections": "--sections", "allow_long": "--allow-long", "rod": "--rod", "other_axes": "--other-axes", "light_cones": "--light-cones",
            "hyperbolae": "--hyperbolae", "grid": "--grid", "rod_lines": "--rod-lines", "rod_now": "--rod-now",
            "proper_time": "--proper-time", "equal_scales": "--equal-scales"}
 

@@ -31,6 +31,15 @@ class ScenarioError(ValueError, RodParadoxError):
         return f"{where}: {self.message}" if where else self.message
 
 
+class BeyondBounds(ScenarioError):
+    """A computation would need more than its bound (pieces of a table, stretches of a sum, ...): `what` names it;
+    a caller that only offers the result (the html page's other speeds) leaves it out."""
+
+    def __init__(self, what: str):
+        self.what = what
+        super().__init__(f"the causal rod would need more than {what} here; choose a lower v.")
+
+
 class OutputError(OSError, RodParadoxError):
     """A file that cannot be written; says which and why."""
 

@@ -35,6 +35,11 @@ cases = [
  "handout fig2 --v 0.9999999", "handout mm.yaml --format tex -o mmtex", "handout fig2 fig2", "handout fig1 fig2 fig1 --worksheet",
  "ledger fig2 --at 1_000", "ledger fig2 --at 0x10", "ledger fig2 --at 1e308", "ledger fig2 --at nan", "ledger fig2 --at inf",
  "plot fig2 --v 1", "plot fig2 --v 0.99999999999", "plot fig2 --L -1", "plot nosuch.yaml", "plot fig2 --frame 1",
+ # html (issue 27, item 1): a page never waits on a run it was not asked for, its cost bounded whatever v, L, masses
+ "html heavy.yaml --v 0.6", "html heavy.yaml --v 0.1", "html heavy.yaml", "html mm.yaml", "html mm.yaml --v 0.05",
+ "html fig2 --L 1e100 --rod both", "html fig2 --L 1e-100 --rod both", "html fig2 --v 0.9999999 --rod both",
+ "html fig2 --v 0.9999999 --rod causal", "html single --v 0.9999999 --rod causal", "html fig1 --v 0.97 --rod both",
+ "html fig2 --v 0.99 --rod both", "html gap.yaml --rod both", "html fig1 fig2 heavy.yaml --v 0.3",
 ]
 os.chmod(ro, 0o500)
 bad = 0

@@ -29,12 +29,12 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Sequence
 
 from rodparadox.handout.causal_compare import comparison
 from rodparadox.handout.causal_reading import compare
-from rodparadox.handout.document import Block, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
+from rodparadox.handout.document import Block, Cell, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
 from rodparadox.handout.narrative import diagram_caption, explanation, setup_text
 from rodparadox.handout.strips import strip_times, strips_caption
 from rodparadox.handout.words import in_l, time_name, with_primes
@@ -91,9 +91,10 @@ def neutral_heading(history: RodHistory, with_speed: bool = False) -> str:
 
 # --- the first section: the paradox and its resolution -----------------------------------------------------------
 
-#: the paper this tool implements, as its own text gives it (title, author, affiliation; the copy carries no journal
-#: or arXiv details)
-FRANKLIN = "J. Franklin, \u201cThe \u2018Sears paradox\u2019\u201d (Department of Physics, Temple University)"
+#: the paper the handout follows, in full as its own text gives it (author, title, affiliation); the copy seen carries
+#: no journal, year or arXiv number, so none is cited, nor Sears's own paper, which it cites without details
+FRANKLIN = ("Jerrold Franklin, \u201cThe \u2018Sears paradox\u2019\u201d (Department of Physics, Temple University, "
+            "Philadelphia)")
 
 PARADOX = (
     "F. W. Sears proposed a paradox about forces on a rigid body in special relativity. A rigid rod at rest in a "
@@ -164,22 +165,39 @@ def introduction(histories: Sequence[RodHistory] = ()) -> Section:
                                                    Paragraph(RESOLUTION), Paragraph(idealisation)))
 
 
+#: the parts of a handout a teacher may choose (`build`'s `sections`), in the order they come: the paradox and its
+#: resolution, each scenario's diagram and its explanation, the rod at successive instants, the events tables, the
+#: ledger and hidden tables, the comparison with the causal rod (where its history is given), the rod's own view
+#: (where the frames ask for it: `own_view`)
+SECTIONS = ("paradox", "diagrams", "strips", "tables", "ledger", "comparison", "rod")
+
+
 # --- the numbers -----------------------------------------------------------------------------------------------
 
 def _table_unit(L: float) -> str:
-    """How the tables give x and t: in units of L, or, for L other than 1, in the unit L is given in."""
-    return "in units of L" if L == 1.0 else f"in the unit L is given in (L = {exact(L)})"
+    """How the tables give x and t: in units of L, or, for L other than 1, in the unit of length in which L is given."""
+    return "in units of L" if L == 1.0 else f"in the unit of length in which L = {exact(L)}"
 
 
-def _in_rods_order(history: RodHistory, table: Table) -> Table:
+def _in_rods_order(history: RodHistory, table: Table, frame: Frame) -> Table:
     """A worksheet's events table: its rows in the rod's own order, without notes (the frame's order, and which
-    impacts the rod takes together, are what the questions ask)."""
+    impacts the rod takes together, are what the questions ask), and the velocities the set-up gives filled in:
+    the rod's before its first impact (at rest in S, +v in S′), and in S each particle's before its first impact."""
     order = {impact_name(i.label): k for k, i in enumerate(history.impacts)}
-    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(),
-                   rows=tuple(sorted(table.rows, key=lambda row: order[row[0].text])))
+    rows = sorted(table.rows, key=lambda row: order[row[0].text])
+    particle, rod = table.header.index("particle before"), table.header.index("rod before")
+    given = {(0, rod)} if frame.name in ("rest", "moving") else set()
+    if frame.name == "rest":
+        firsts = {}
+        for k, row in enumerate(rows):
+            firsts.setdefault(row[0].text[0], k)
+        given |= {(k, particle) for k in firsts.values()}
+    rows = [tuple(Cell(c.text) if (k, j) in given else c for j, c in enumerate(row)) for k, row in enumerate(rows)]
+    return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(), rows=tuple(rows))
 
 
-def _worksheet_tables(history: RodHistory, frame: Frame) -> tuple[list[Block], list[Block]]:
+def _worksheet_tables(history: RodHistory, frame: Frame, parts: frozenset[str] = frozenset()
+                      ) -> tuple[list[Block], list[Block]]:
     """A worksheet's blank events table of the frame, and the filled tables its answer key prints (`_tables`): the
     ledger and hidden tables wait for the key, since a ledger's row of one instant ("B₁ and A₁") tells which impacts
     are simultaneous in the frame, and its slices' times tell when the impacts come."""
@@ -188,21 +206,33 @@ def _worksheet_tables(history: RodHistory, frame: Frame) -> tuple[list[Block], l
     asked: list[Block] = [
         Paragraph(f"The impacts in {symbol}, in the rod's own order: fill in where and when each strikes ({x} and "
                   f"{time} {_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and "
-                  f"of the rod just before and just after it."),
-        _in_rods_order(history, tables.events_table(history, frame, blank=True))]
-    return asked, _tables(history, frame, blank=False)
+                  f"of the rod just before and just after it; those the set-up gives are filled in."),
+        _in_rods_order(history, tables.events_table(history, frame, blank=True), frame)]
+    return asked, _tables(history, frame, blank=False, parts=parts or frozenset(SECTIONS))
 
 
-def _tables(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
+def _tables(history: RodHistory, frame: Frame, blank: bool, parts: frozenset[str] = frozenset(SECTIONS)
+            ) -> list[Block]:
     """The frame's events, ledger and hidden tables (`tables.build`), each after the sentence that says how to read it;
-    `blank`: a worksheet's copies, their numbers left to fill in."""
+    `blank`: a worksheet's copies, their numbers left to fill in; `parts`: the events tables with `tables`, the
+    ledger and hidden ones with `ledger`."""
+    return ((_events(history, frame, blank) if "tables" in parts else [])
+            + (_ledger(history, frame, blank) if "ledger" in parts else []))
+
+
+def _events(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
     symbol, time = frame_name(frame), time_name(frame)
     x = coordinates(frame)[0]
-    blocks: list[Block] = [
+    return [
         Paragraph(f"The impacts in {symbol}, in the order of its time: where and when each strikes ({x} and {time} "
                   f"{_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and of the "
                   f"rod just before and just after it."),
-        tables.events_table(history, frame, blank),
+        tables.events_table(history, frame, blank)]
+
+
+def _ledger(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
+    symbol, time = frame_name(frame), time_name(frame)
+    blocks: list[Block] = [
         Paragraph(f"The ledger in {symbol}: at each instant of {symbol} at which the rod is struck (impacts at one "
                   f"instant taken together), the energy E and momentum p just before and just after of each "
                   f"particle, of the rod's motion (its kinetic part, the sum over its material points on the slice "
@@ -227,7 +257,7 @@ def _tables(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
 def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], worksheet: bool,
              with_speed: bool = False, compare_v: float | None = None,
              chosen: Sequence[int] | None = None, equal_scales: bool = False,
-             causal=None) -> tuple[Section, list[Block]]:
+             causal=None, parts: frozenset[str] = frozenset(SECTIONS)) -> tuple[Section, list[Block]]:
     """One scenario's section, and for a worksheet its part of the answer key (a heading, the filled tables and
     the questions again). A worksheet asks and never tells before its key: the explanation, the caption's sentences
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
@@ -238,31 +268,34 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
         caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
     diagram = DiagramBlock(f"{stem}_diagram", history, frames, caption, tell=not worksheet, equal_scales=equal_scales)
     title = neutral_heading if worksheet else heading
-    blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet)),
-                           diagram]
-    told: list[Block] = [Heading("What the diagram shows", 2), *explanation(history, frames)]
-    for f in frames:  # each frame's strips under a heading naming it, so a block that starts a page says its frame
-        times = strip_times(history, f)
+    blocks: list[Block] = [Heading(title(history, with_speed)), Paragraph(setup_text(history, tell=not worksheet))]
+    told: list[Block] = []
+    if "diagrams" in parts:
+        blocks.append(diagram)
+        told += [Heading("What the diagram shows", 2), *explanation(history, frames)]
+    for f in frames if "strips" in parts else ():  # each frame's strips under a heading naming it, so a block
+        times = strip_times(history, f)            # that starts a page says its frame
         told.append(Heading(f"The rod at successive instants of {frame_name(f)}", 2))
         told.append(Strips(f"{stem}_strips_{frame_word(f)}", history, f, times, strips_caption(history, f, times)))
     if not worksheet:
         blocks += told
-    blocks.append(Heading("The numbers", 2))
+    if parts & {"tables", "ledger"}:
+        blocks.append(Heading("The numbers", 2))
     filled: list[Block] = []
     for f in frames:
         if worksheet:
-            asked_tables, key_tables = _worksheet_tables(history, f)
+            asked_tables, key_tables = _worksheet_tables(history, f, parts)
             blocks += asked_tables
             # the key's tables named after the section (their LaTeX files fig2_ledger_rest_key.tex, one per scenario)
             filled += [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b for b in key_tables]
         else:
-            blocks += _tables(history, f, blank=False)
+            blocks += _tables(history, f, blank=False, parts=parts)
     section_title = title(history, with_speed=True)
     key: list[Block] = []
     compared: tuple[list[Block], list[Block]] = ([], [])
-    numbers = compare(history, causal, frames) if causal is not None else None
+    numbers = compare(history, causal, frames) if causal is not None and "comparison" in parts else None
     if numbers is not None:
-        compared = comparison(numbers, causal, frames, worksheet)
+        compared = comparison(numbers, history, causal, frames, stem, worksheet, equal_scales)
         if not worksheet:
             blocks += compared[0]
     if worksheet:
@@ -270,48 +303,66 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
         blocks.append(Heading("Questions", 2))
         blocks += asked
         if numbers is not None:
-            more = causal_questions(numbers, len(asked) + 1)
+            more = causal_questions(numbers, len(asked) + 1, tabled=any(f.name == "rest" for f in frames))
             blocks += compared[0] + [Heading("Questions on the causal rod", 2), *more]
             asked += more
             compared = ([], [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b
                              for b in compared[1]])
         # the key: the scenario's own title and set-up (which may say what the questions asked), the numbers
         key += [Heading(heading(history, with_speed=True), 2), Paragraph(setup_text(history)),
-                Heading("The numbers", 2), *filled, Heading("Questions and answers", 2)]
+                *([Heading("The numbers", 2), *filled] if filled else []), Heading("Questions and answers", 2)]
         key += asked
         key += told
         key += compared[1]
     return Section(stem, section_title, tuple(blocks)), key
 
 
-def build(items: Sequence[tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False,
-          compare_v: float | None = None, chosen: Sequence[int] | None = None, equal_scales: bool = False) -> Handout:
+@dataclass(frozen=True)
+class Item:
+    """One scenario of a handout: its file stem (fig2), its rigid rod's history, the frames its section shows (None:
+    S and S′ of its own v, or `build`'s), and its causal rod's history to compare with (None: no comparison)."""
+
+    stem: str
+    history: RodHistory
+    frames: tuple[Frame, ...] | None = None
+    causal: object = None
+
+
+def build(items: Sequence[Item | tuple], frames: Sequence[Frame] | None = None, worksheet: bool = False,
+          compare_v: float | None = None, chosen: Sequence[int] | None = None, equal_scales: bool = False,
+          sections: Sequence[str] = SECTIONS) -> Handout:
     """The handout (or, with `worksheet`, the worksheet and its answer key) of each (stem, history) item, one
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
     scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames` (None: not),
     or (stem, history, frames, causal), the causal rod's history of the same scenario: the section then compares
     the two rods (README, "Teaching handouts").
     `equal_scales`: each diagram's panels drawn to one scale (`render.Options.equal_scales`)."""
+    parts = frozenset(sections)
+    unknown = parts - set(SECTIONS)
+    if unknown:
+        raise ValueError(f"unknown handout sections {sorted(unknown)}; the sections are {', '.join(SECTIONS)}")
     entries = []
     for item in items:
-        stem, history, *own = item
-        if own and own[0] is not None:
-            shown_frames = tuple(own[0])
+        item = item if isinstance(item, Item) else Item(*item)
+        if item.frames is not None:
+            shown_frames = tuple(item.frames)
         elif frames is None:
-            shown_frames = paper_frames(history.scenario.v)
+            shown_frames = paper_frames(item.history.scenario.v)
         else:
-            shown_frames = tuple(moving_frame(history.scenario.v) if f.name == "moving" else f for f in frames)
-        entries.append((stem, history, shown_frames, own[1] if len(own) > 1 else None))
-    first = introduction([history for _, history, _, _ in entries])
-    sections, key = [worksheet_introduction() if worksheet else first], []
-    several_speeds = len({_speed(history) for _, history, _, _ in entries}) > 1
-    for stem, history, shown_frames, causal in entries:
-        section, answers = _section(stem, history, shown_frames, worksheet, several_speeds, compare_v, chosen,
-                                    equal_scales, causal)
-        sections.append(section)
+            shown_frames = tuple(moving_frame(item.history.scenario.v) if f.name == "moving" else f for f in frames)
+        entries.append(replace(item, frames=shown_frames))
+    first = introduction([e.history for e in entries])
+    opening = [worksheet_introduction() if worksheet else first] if "paradox" in parts else []
+    key: list[Block] = []
+    several_speeds = len({_speed(e.history) for e in entries}) > 1
+    body = []
+    for e in entries:
+        section, answers = _section(e.stem, e.history, e.frames, worksheet, several_speeds, compare_v, chosen,
+                                    equal_scales, e.causal, parts)
+        body.append(section)
         key += answers
-    resolution = first.blocks[1:]  # the paradox, its resolution and the idealisation
-    answer_key = (Heading("Answer key"), Heading("The paradox and its resolution", 2), *resolution, *key) \
-        if worksheet else ()
-    return Handout(title([(stem, history) for stem, history, _, _ in entries]), tuple(sections), worksheet,
+    resolution = first.blocks[1:] if "paradox" in parts else ()  # the paradox, its resolution and the idealisation
+    answer_key = ((Heading("Answer key"), *((Heading("The paradox and its resolution", 2),) if resolution else ()),
+                   *resolution, *key) if worksheet else ())
+    return Handout(title([(e.stem, e.history) for e in entries]), tuple(opening + body), worksheet,
                    tuple(answer_key))

@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, rest_frame
 from rodparadox.physics.types import EnergyMomentum
@@ -79,7 +81,8 @@ class Ringing:
 
 @dataclass(frozen=True)
 class StressSlice:
-    """One slice of one frame: the rigid ledger's hidden part and the causal rod's matter and stress parts there."""
+    """One slice of one frame: the rigid ledger's hidden part and, made the same way, the causal rod's part that its
+    material points' motion does not show (its total less its rest-mass motion); its matter and stress parts."""
 
     frame: Frame
     t: float
@@ -89,6 +92,100 @@ class StressSlice:
     #: the particles' (E, p) on the slice in the causal run, by name, and the causal total before the first contact
     particles: tuple[tuple[str, EnergyMomentum], ...]
     total: EnergyMomentum
+    #: the causal rod's (E, p) on the slice, and its rest-mass motion (M/L)∫(cosh ψ, sinh ψ)dσ there, as (E, p)
+    rod: tuple[float, float] = (0.0, 0.0)
+    motion: tuple[float, float] = (0.0, 0.0)
+
+    @property
+    def unshown(self) -> tuple[float, float]:
+        """What the causal rod carries beyond its material points' motion: its total less (M/L)∫(cosh ψ, sinh ψ)dσ,
+        the counterpart of the rigid rod's hidden part (elastic energy and the momentum its stress carries)."""
+        return self.rod[0] - self.motion[0], self.rod[1] - self.motion[1]
+
+
+#: Gauss-Legendre nodes on each smooth piece of a slice across the causal rod, and the longest piece (in L)
+MOTION_NODES, MOTION_PIECE = 10, 0.125
+
+
+def rest_mass_motion(causal, frame_rapidity: float, t: float) -> tuple[float, float]:
+    """(E, p) of the causal rod's material points' rest mass moving at their own velocities on the slice t of the
+    frame, (M/L)∫₀ᴸ(cosh ψ, sinh ψ)dσ (M = 1), ψ the rapidity of the material point σ where it crosses the slice.
+
+    In the material chart the slice is a curve T(σ) with |dT/dσ| < 1 (it is space-like and light runs at 45°), on
+    which ψ = (r+(T + σ) − r−(T − σ))/2 − f is smooth between the fronts: where T + σ meets a break of r+ or T − σ
+    one of r− (each found by bisection, T ± σ being monotonic). Gauss-Legendre on each piece then."""
+    from scipy.optimize import brentq
+
+    from rodparadox.physics.kinematics import ChartCurve
+
+    fronts = causal.fronts  # the causal rod's capability: its solution in the material chart
+    sol, L, f = fronts.solution, causal.scenario.L, frame_rapidity
+
+    def T_of(sigma: float) -> float:
+        return ChartCurve(sol, sigma, -math.inf, math.inf, f).chart_time(t)
+
+    T_L, T_R = fronts.end_chart_time("left", f, t), fronts.end_chart_time("right", f, t)
+    cuts = {0.0, L}
+    for u in sol.plus.breaks(T_L, T_R + L):
+        cuts.add(brentq(lambda s: T_of(s) + s - u, 0.0, L, xtol=1e-14 * L))
+    for w in sol.minus.breaks(T_R - L, T_L):
+        cuts.add(brentq(lambda s: T_of(s) - s - w, 0.0, L, xtol=1e-14 * L))
+    cuts = sorted(cuts)
+    z, wz = np.polynomial.legendre.leggauss(MOTION_NODES)
+    E = p = 0.0
+    for a, b in zip(cuts, cuts[1:]):
+        n = max(1, math.ceil((b - a) / (MOTION_PIECE * L)))
+        for k in range(n):
+            lo, hi = a + (b - a) * k / n, a + (b - a) * (k + 1) / n
+            for zi, wi in zip(z, wz):
+                sigma = 0.5 * (lo + hi) + 0.5 * (hi - lo) * zi
+                T = T_of(sigma)
+                psi = 0.5 * (sol.r_plus(T + sigma) - sol.r_minus(T - sigma)) - f
+                E += 0.5 * (hi - lo) * wi * math.cosh(psi) / L
+                p += 0.5 * (hi - lo) * wi * math.sinh(psi) / L
+    return E, p
+
+
+@dataclass(frozen=True)
+class Energy:
+    """Where the particles' energy went, in one frame: what they lose from before the first impact to after the
+    last (their energy then less now), and, for the causal rod, its split into the rise of the rod's rest mass
+    (internal energy, the same in every frame) and the change of its bulk kinetic energy (rest mass times γ − 1 of
+    its centre); the rigid rod keeps its rest mass M, so what the particles lose to it is all bulk kinetic energy.
+    Energies in M c²."""
+
+    frame: Frame
+    lost_causal: float
+    internal: float
+    bulk_before: float
+    bulk_after: float
+    lost_rigid: float
+
+    @property
+    def bulk_change(self) -> float:
+        return self.bulk_after - self.bulk_before
+
+
+def energies(rigid, causal, frames, ring: "Ringing") -> tuple[Energy, ...]:
+    """`Energy` in each frame, from the rod's (E, p) in S after the last separation (its period's advance) and the
+    particles' rapidities before their first and after their last impact: E′ = E cosh η − p sinh η in the frame of
+    rapidity η, the rod at rest in S before (E′ = M cosh η)."""
+    def particles(history, eta: float, after: bool) -> float:
+        total = 0.0
+        for q in history.scenario.particles:
+            mine = [i for i in history.impacts if i.particle == q.name]
+            th = mine[-1].particle_rapidity_after if after else mine[0].particle_rapidity_before
+            total += q.mass * math.cosh(th - eta)
+        return total
+
+    out = []
+    for frame in frames:
+        eta = frame.rapidity
+        rod_after = ring.E * math.cosh(eta) - ring.p * math.sinh(eta)
+        out.append(Energy(frame, particles(causal, eta, False) - particles(causal, eta, True), ring.rest_mass - 1.0,
+                          math.cosh(eta) - 1.0, rod_after - ring.rest_mass,
+                          particles(rigid, eta, False) - particles(rigid, eta, True)))
+    return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -100,6 +197,8 @@ class Comparison:
     leaving: tuple[Leaving, ...]
     ringing: Ringing
     stress: StressSlice
+    #: where the particles' energy went, in each frame shown
+    energy: tuple[Energy, ...] = ()
 
 
 def far_end(rigid, causal) -> FarEnd:
@@ -179,13 +278,16 @@ def stress_slice(rigid, causal, frames) -> StressSlice:
         parts = dict(s.rod_parts)
         if abs(parts["stress"].p) > UNSTRESSED * s.kinetic.E:
             break
+    rod = dict(s.bodies)["rod"]
     return StressSlice(frame, t, rigid.energy_momentum(f, t).hidden, parts["matter"], parts["stress"],
-                       tuple((n, em) for n, em in s.bodies if n != "rod"), causal.initial_total(f))
+                       tuple((n, em) for n, em in s.bodies if n != "rod"), causal.initial_total(f),
+                       (rod.E, rod.p), rest_mass_motion(causal, f, t))
 
 
 def compare(rigid, causal, frames) -> Comparison:
     """The numbers of the comparison of one scenario's two rods, `frames` the handout's (S, S′ ...)."""
     first = {p.name: (p.mass, math.tanh(next(i for i in causal.impacts if i.particle == p.name)
                                         .particle_rapidity_before)) for p in causal.scenario.particles}
-    return Comparison(causal.scenario.L, first, far_end(rigid, causal), leaving(rigid, causal, frames), ringing(rigid, causal),
-                      stress_slice(rigid, causal, frames))
+    ring = ringing(rigid, causal)
+    return Comparison(causal.scenario.L, first, far_end(rigid, causal), leaving(rigid, causal, frames), ring,
+                      stress_slice(rigid, causal, frames), energies(rigid, causal, frames, ring))

@@ -54,8 +54,16 @@ class DiagramBlock:
     caption: str
     #: the panels' titles give the rod's velocity before and after (a worksheet asks it: only "(a) frame S" there)
     tell: bool = True
-    #: every panel drawn to one scale (one length of L as long on the page in each), as `plot --equal-scales`
+    #: every panel drawn to one scale (one length of L as long on the page in each)
     equal_scales: bool = False
+    #: the causal rod's history of the same scenario: its row of panels drawn under the rigid rod's, in the same
+    #: frames, each frame's two panels on one scale (`render.draw_both`)
+    compared: object = None
+
+    @property
+    def drawn(self):
+        """What the renderer draws: the history, or (rigid, causal) for two rows."""
+        return self.history if self.compared is None else (self.history, self.compared)
 
     def retitle(self, diagram) -> None:
         """After `render.draw_into` or `render.draw` (a `render.Diagram`): a block that does not tell names only

@@ -72,7 +72,7 @@ def setup_text(history: RodHistory, tell: bool = True) -> str:
             text += (f", so at t = 0 it is {in_l(gap / s.L)} from that end." if gap >= 0 else
                      f", so at t = 0 it is at x = {in_l(starts[p.name].x / s.L)}.")
         sentences.append(text)
-    tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit L is given in, L = {exact(s.L)})"
+    tables_unit = "" if s.L == 1.0 else f" (the tables give them in the unit of length in which L = {exact(s.L)})"
     where = "the particles are where this paragraph puts them" if len(particles) > 1 else \
         "the particle is where this paragraph puts it"  # `single`: one particle
     sentences.append(f"Below, lengths and times are given as multiples of L{tables_unit}, speeds as fractions of c "
@@ -103,23 +103,22 @@ def diagram_caption(history: RodHistory, frames: Sequence[Frame], tell: bool = T
     dashed = " and ".join(f"the particle {name} is {looks[name]}" for name in particles)
     # a worksheet lists the labels without "and" (a ledger's row "B₁ and A₁" is a claim of simultaneity it asks)
     labels = labels if tell else ", ".join(impact_name(i.label) for i in history.impacts)
-    impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
-               f"The impacts are labelled in the order of the rod's own time: {labels}. Through each impact run" if
-               not tell else f"The impacts are labelled {labels} in the order of the rod's own time. Through each "
-                             f"impact run")
     sentences = [f"At v = {exact(s.v)}: {panels}.",
                  f"Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
-                 f"its shaded world-sheet, and {dashed}.",
-                 f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted)."]
-    if not tell:
+                 f"its shaded world-sheet, and {dashed}."]
+    if not tell:  # no lines of simultaneity through the impacts: which impacts share one is asked
+        sentences.append(f"The impact is labelled {labels}." if len(history.impacts) == 1 else
+                         f"The impacts are labelled in the order of the rod's own time: {labels}.")
         return " ".join(sentences)
+    impacts = (f"The impact is labelled {labels}. Through it run" if len(history.impacts) == 1 else
+               f"The impacts are labelled {labels} in the order of the rod's own time. Through each impact run")
+    sentences.append(f"{impacts} the line of simultaneity of S (dotted) and of S′ (dash-dotted).")
     styles = {"rest": "dotted", "moving": "dash-dotted"}
     shared = []
     for frame in (rest_frame(), moving_frame(s.v)):
         for t, group in r.instants(frame):
             if len(group) > 1:
-                shared.append(f"{impact_names(group)} share one {styles[frame.name]} line, of {frame_symbol(frame)} "
-                              f"({r.when(group, frame)})")
+                shared.append(f"{impact_names(group)} share one {styles[frame.name]} line, of {frame_symbol(frame)}")
     if shared:
         sentences.append(listed(shared) + ".")
     elif len(history.impacts) > 1:
@@ -156,6 +155,7 @@ def _simultaneity(r: Reading) -> str:
     for frame in r.frames:
         groups += [g for _, g in r.instants(frame) if len(g) > 1]
     seen = set()
+    said: set[tuple[str, str]] = set()  # (impact, frame) whose time a sentence has given: the order leaves it out
     for group in groups:
         key = tuple(i.label for i in group)
         if key in seen:
@@ -172,6 +172,7 @@ def _simultaneity(r: Reading) -> str:
         if together:
             text = (f"{impact_names(group)} lie on one line of simultaneity of "
                     + listed([f"{frame_name(f)} ({r.when(group, f)})" for f in together]))
+            said |= {(i.label, f.name) for i in group for f in together}
             if not on_rod_line:
                 text += ", but the rod takes them one at a time, as collisions of their own"
         else:
@@ -184,6 +185,7 @@ def _simultaneity(r: Reading) -> str:
                 gap = r.length(r.t(last, f) - r.t(first, f), [first, last], f)
                 details.append(f"in {frame_name(f)}, where {impact_name(first.label)} comes at {r.when([first], f)} "
                                f"and {impact_name(last.label)} at {in_l(r.length(r.t(last, f), [last], f))}, {in_l(gap)} later")
+                said |= {(first.label, f.name), (last.label, f.name)}
             text += ". They are not simultaneous " + "; nor ".join(details)
         sentences.append(text + ".")
     if not groups:
@@ -192,10 +194,12 @@ def _simultaneity(r: Reading) -> str:
     # the order in each frame's time, and where it is not the rod's own
     orders = []
     for f in r.frames:
-        steps = []
-        for k, (t, group) in enumerate(r.instants(f)):
-            time = r.when(group, f) if k == 0 else in_l(r.length(t, group, f))
-            steps.append(f"{impact_names(group)}{' together' if len(group) > 1 else ''} ({time})")
+        steps, named = [], False  # named: the frame's time (t′ = ...) said once in this list
+        for t, group in r.instants(f):
+            told = all((i.label, f.name) in said for i in group)  # its time given above: not again
+            time = in_l(r.length(t, group, f)) if named else r.when(group, f)
+            named = named or not told
+            steps.append(f"{impact_names(group)}{' together' if len(group) > 1 else ''}" + ("" if told else f" ({time})"))
         orders.append(f"in {frame_name(f)} {', then '.join(steps)}")
     sentences.append("In each frame's own time the order is: " + "; ".join(orders) + ".")
     for f in r.frames:
@@ -234,7 +238,8 @@ def _velocities(r: Reading) -> str:
     for f in r.frames:
         u = r.rod_velocities(f)
         steps = [f"{in_c(u[0])} before {impact_names(collisions[0])}"]
-        steps += [f"{in_c(u[k + 1])} after {impact_names(c)} ({r.when(c, f)})" for k, c in enumerate(collisions)]
+        # the impacts' times are the first paragraph's: not again
+        steps += [f"{in_c(u[k + 1])} after {impact_names(c)}" for k, c in enumerate(collisions)]
         order = "" if [c[0] for c in collisions] == _first_of_each(r, f) else \
             f" (the clocks of {frame_name(f)} put these impacts in another order)"
         sentences.append(f"In {frame_name(f)}, in the rod's own order{order}: " + "; ".join(steps) + ".")
@@ -272,9 +277,9 @@ def _why(r: Reading) -> str:
                 middle = 0.5 * (r.t(first, f) + r.t(last, f))
                 hidden = h.energy_momentum(f.rapidity, middle).hidden
                 sentences.append(
-                    f"In {frame_name(f)} {impact_name(first.label)} comes at {r.when([first], f)} and "
-                    f"{impact_name(last.label)} only at {in_l(r.length(r.t(last, f)))}, yet the rod moves on at "
-                    f"{in_c(r.rod_velocities(f)[0])} between them: it takes both impulses together, on its own "
+                    f"In {frame_name(f)} {impact_name(first.label)} comes before {impact_name(last.label)}, yet the "
+                    f"rod moves on at {in_c(r.rod_velocities(f)[0])} between them: it takes both impulses together, on "
+                    f"its own "
                     f"line of simultaneity, where they cancel. Between them in {frame_name(f)}, {first.particle} "
                     f"has already been struck and {last.particle} not yet, so the momentum {first.particle} gave up, "
                     f"{numeral(hidden.p)} M c, is carried by the stress in the rod: the hidden part of the ledger.")

@@ -7,10 +7,13 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Sequence
 
-from rodparadox.handout.causal_compare import DRAWN_IN_OWN_VIEW, NOT_DRAWN
-from rodparadox.handout.document import DiagramBlock, Handout, Paragraph, RodViewBlock
+from rodparadox.handout.document import DiagramBlock, Handout, Heading, RodViewBlock
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.rod_view import chart_of
+
+#: the heading of a section's worked answers in a worksheet's key, before which the key shows the rod's own view
+ANSWERED = "Questions and answers"
+ROD_VIEW = "The rod\u2019s own view"
 
 
 def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
@@ -31,8 +34,8 @@ def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
                          "and the far end's runs on, as if it knew of the impact at once. "
                          + (f"Turns: {', '.join(turns)}. " if turns and tell else "")
                          + ("" if turns else "No turns: the rod never moves. ")
-                         + ("Hatched: beyond the pivot during its turn, where the rod's own time gives an event no "
-                            "single place (the rest frames before and after the turn both reach it, or neither does)."
+                         + ("Hatched: beyond the pivot during its turn, where the rod's own time places an event "
+                            "twice, once on a line of the rest frame before the turn and once on one after it."
                             if turns else ""))
         else:
             parts.append("Causal rod: the chart in which every material point stands still and every light ray runs "
@@ -50,7 +53,18 @@ def _pivot_label(history, turn) -> str:
 
 def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
     """The handout with the rod's own view after the first diagram of each section named in `views` (section
-    name -> its histories, the rigid rod first)."""
+    name -> its histories, the rigid rod first). A worksheet's go to its answer key, before each section's
+    questions and answers: the rod's lines of simultaneity tell which impacts it takes together, which they ask."""
+    if handout.worksheet:
+        key = list(handout.answer_key)
+        told = [k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == ANSWERED]
+        scenarios = [s for s in handout.sections if s.name != "introduction"]
+        for at, section in reversed(list(zip(told, scenarios))):
+            histories = views.get(section.name)
+            if histories:
+                key.insert(at, RodViewBlock(f"{section.name}_rod_view", tuple(histories), rod_view_caption(histories)))
+                key.insert(at, Heading(ROD_VIEW, 2))
+        return replace(handout, answer_key=tuple(key))
     sections = []
     for section in handout.sections:
         histories = views.get(section.name)
@@ -59,8 +73,5 @@ def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
             at = next((k for k, b in enumerate(blocks) if isinstance(b, DiagramBlock)), len(blocks) - 1)
             caption = rod_view_caption(histories, tell=not handout.worksheet)
             blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), caption))
-            if len(histories) > 1:  # the causal rod drawn after all: the comparison's introduction says where
-                blocks = [Paragraph(b.text.replace(NOT_DRAWN, DRAWN_IN_OWN_VIEW)) if isinstance(b, Paragraph) else b
-                          for b in blocks]
         sections.append(replace(section, blocks=tuple(blocks)))
     return replace(handout, sections=tuple(sections))

@@ -47,7 +47,8 @@ from matplotlib.figure import Figure
 
 from rodparadox import render
 from rodparadox.handout.document import PAPERS, Handout, Heading
-from rodparadox.handout.pdf_blocks import Break, Measured, Picture, QuestionSet, TableSet, TextBlock, measure
+from rodparadox.handout.pdf_blocks import (Break, Measured, Picture, QuestionSet, SectionBreak, StripsSet, TableSet,
+                                         TextBlock, measure)
 from rodparadox.handout.pdf_text import Pages, Type
 from rodparadox.render.diagram import FIGURE_METADATA
 from rodparadox.render.styles import STYLES
@@ -55,6 +56,10 @@ from rodparadox.tolerances import FIT_SLACK
 
 #: a page, but a section's last, is left at most this part empty (a picture shrinks, a question's lines stretch)
 EMPTY_MOST = 0.25
+#: a section starts a new page only where less than this part of the page is left: else it runs on after the last
+#: (a handout's first page held the paradox alone, 60 % empty), so no page but the last is left more than a third
+#: empty
+SECTION_ROOM = 1 / 3
 #: a picture shrunk to fit is made this much smaller again (points), so the sums of heights never miss by a rounding
 ROUNDING = 0.01
 
@@ -175,27 +180,78 @@ def _set_pages(handout: Handout, paper: str, style: str, drawing: bool = True
                 measured.append(Break())
                 key_started = True
             if isinstance(block, Heading) and block.level == 1 and headings:
-                measured.append(Break())  # a section's heading, after the document's first
+                # a section's heading, after the document's first: a new page where the page is nearly full
+                measured.append(SectionBreak(SECTION_ROOM))
             headings = headings or isinstance(block, Heading)
             measured.append(measure(block, pages, st, ruled=handout.worksheet and not in_key))
-        plan = []
+        plan: dict[int, Placed] = {}
+        order = list(range(len(measured)))  # each set block's place in the document (a picture may float)
         needs = _needs(measured)
-        for k, (item, following) in enumerate(zip(measured, measured[1:] + [None])):
+        floated: set[int] = set()
+        k = 0
+        while k < len(measured):
+            item, following = measured[k], measured[k + 1] if k + 1 < len(measured) else None
             if _fit(measured, needs, k, pages):
                 needs = _needs(measured)
+            at, moved = _float(measured, needs, k, pages)
+            if moved:  # the text after a picture that misses the page fills it; the picture tops the next
+                floated.add(id(measured[at + moved]))  # set before the picture, not as its introduction
+                measured[at:at + moved + 1] = measured[at + 1:at + moved + 1] + [measured[at]]
+                order[at:at + moved + 1] = order[at + 1:at + moved + 1] + [order[at]]
+                needs = _needs(measured)
+                continue
             marks = len(pages.marks)
             keep = getattr(following, "gap", 0.0) + needs[k + 1] if following is not None else 0.0
             if isinstance(item, TextBlock) and item.heading and following and not isinstance(following, Break):
                 item.set(pages, keep=keep)  # a heading is never left alone at the foot of a page
-            elif _introduces(item, following):
+            elif _introduces(item, following) and id(item) not in floated:
                 item.set(pages, keep=keep)  # nor an introduction, apart from its table or figure
             else:
                 item.set(pages)
-            plan.append(Placed(item.kind, tuple(pages.marks[marks:])))
+            plan[order[k]] = Placed(item.kind, tuple(pages.marks[marks:]))
+            k += 1
         if not pages.figures:
             pages.new_page()
         pages.footers(handout.title)
-        return tuple(pages.figures), PagePlan(pages.text_height, tuple(plan), len(pages.figures))
+        return tuple(pages.figures), PagePlan(pages.text_height, tuple(plan[j] for j in sorted(plan)),
+                                              len(pages.figures))
+
+
+def _float(measured: list[Measured], needs: list[float], k: int, pages: Pages) -> tuple[int, int]:
+    """As a book floats a figure: where a picture (shrunk as far as it goes), or the paragraph introducing it with
+    it, misses the page and would leave more than EMPTY_MOST of it empty, the headings and paragraphs after the
+    picture that fit the page (whole, or the last split between lines; none an introduction to a table or a figure,
+    the last no heading) fill it, and the picture starts the next page. (the picture's index, how many blocks to set before it); (k, 0): none."""
+    item = measured[k]
+    if pages.at_top or not pages.figures:
+        return k, 0
+    room = pages.room
+    if isinstance(item, TextBlock) and _introduces(item, measured[k + 1] if k + 1 < len(measured) else None):
+        at = k + 1
+        room -= _gap(item) + len(item.lines) * item.leading  # the introduction set whole here
+    else:
+        at = k
+    picture = measured[at]
+    if not isinstance(picture, Picture) or isinstance(picture, StripsSet) or room < 0.0:
+        return k, 0
+    if _gap(picture) + needs[at] <= room + FIT_SLACK or room <= EMPTY_MOST * pages.text_height:
+        return k, 0
+    count = best = 0
+    for j in range(at + 1, len(measured)):
+        block = measured[j]
+        following = measured[j + 1] if j + 1 < len(measured) else None
+        if not isinstance(block, TextBlock) or _introduces(block, following):
+            break
+        height = _gap(block) + len(block.lines) * block.leading
+        if height > room + FIT_SLACK:
+            if block.breakable and room >= _gap(block) + 2 * block.leading:  # it fills the page, its rest goes on
+                best = count + 1                                              # the next, before the picture
+            break
+        room -= height
+        count += 1
+        if not block.heading:
+            best = count
+    return at, best
 
 
 def to_pdf(handout: Handout, paper: str = "a4", style: str = "print") -> bytes:

@@ -98,6 +98,18 @@ class Break(Measured):
             pages.new_page()
 
 
+class SectionBreak(Break):
+    """Before a section's heading: a new page only where less than `room` of the page is left (a part of the text
+    height), so that no page is left more than that empty where a section ends; else the section runs on."""
+
+    def __init__(self, room: float):
+        self.least = room
+
+    def set(self, pages: Pages) -> None:
+        if not pages.at_top and pages.room < self.least * pages.text_height:
+            pages.new_page()
+
+
 class TableSet(Measured):
     """A table measured: its type size (shrunk if the natural width exceeds the text width), column widths and
     positions, the height of its parts; `set` places it whole, or split between groups of rows."""
@@ -433,12 +445,13 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
     caption = wrap(words_of(block.caption), t.caption, pages.text_width)
     room = pages.text_height - 0.5 * t.body - len(caption) * 1.3 * t.caption
     if isinstance(block, DiagramBlock):
-        # no title above the panels: the section's heading and the caption say what it shows
-        untitled = render.Options(titled=False, equal_scales=block.equal_scales)
-        _, height = render.natural_size(block.history, block.frames, pages.text_width, room, style.name, untitled)
+        # no title above the panels: the section's heading and the caption say what it shows; a worksheet's without
+        # the lines of simultaneity through the impacts (which impacts share one is asked)
+        untitled = render.Options(titled=False, equal_scales=block.equal_scales, simultaneity=block.tell)
+        _, height = render.natural_size(block.drawn, block.frames, pages.text_width, room, style.name, untitled)
 
         def draw_diagram(target, block=block):
-            block.retitle(render.draw_into(target, block.history, block.frames, style.name, untitled))
+            block.retitle(render.draw_into(target, block.drawn, block.frames, style.name, untitled))
         return Picture(height, caption, pages, 1.2 * t.body, draw_diagram)
     if isinstance(block, Strips):
         return StripsSet(block, style.name, caption, pages, 1.2 * t.body, room)

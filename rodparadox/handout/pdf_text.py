@@ -153,9 +153,9 @@ def _runs(line: list[tuple[str, bool, bool, float, bool]]) -> Line:
 def words_of(text: str, bold: bool = False, italic: bool = False) -> list[tuple[str, bool, bool, bool]]:
     """The text's words (text, bold, italic, glued); a variable (`words.math_pieces`: v, L, t′, x, E, p, u) is a
     piece of its word set in math italics, glued to the piece before it (upright text around it stays upright; in
-    italic text it stays italic)."""
+    italic text it stays italic). An apostrophe is set as a typographic one (rod’s), as the LaTeX sets it."""
     out = []
-    for word in text.split():
+    for word in text.replace("'", "\N{RIGHT SINGLE QUOTATION MARK}").split():
         for k, (piece, variable) in enumerate(math_pieces(word)):
             out.append((piece, bold, italic or variable, k > 0))
     return out

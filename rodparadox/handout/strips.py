@@ -11,6 +11,7 @@ from rodparadox.handout.words import impact_names, in_c, in_l, listed, numeral, 
 from rodparadox.physics.history import RodHistory, Turn
 from rodparadox.physics.frames import Frame, frame_name, time_window
 from rodparadox.numbers import impact_name
+from rodparadox.render.colour_scale import colour_scale
 from rodparadox.tolerances import SAME_RAPIDITY
 
 #: the fewest and the most instants of the rod shown per frame
@@ -162,8 +163,12 @@ def strips_caption(history: RodHistory, frame: Frame, times: Sequence[float]) ->
     r = Reading(history, (frame,))
     symbol = frame_name(frame)
     instants = listed([numeral(r.length(t)) for t in times])
+    if colour_scale(history, frame).shown is None:  # the rod never changes velocity: one shade, no colour bar
+        bar = (f"The bar runs from the rod's left end to its right end; its material points keep the rod's first "
+               f"velocity in {symbol}, {in_c(frame.rod_velocity())}, throughout, so it has one shade")
+    else:
+        bar = (f"The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of each of "
+               f"its material points (the scale is centred on {in_c(frame.rod_velocity())}, the rod's velocity in "
+               f"{symbol} before it is struck)")
     return (f"The rod and the particles in {symbol} at {time_name(frame)} = {instants} (in units of L), earliest "
-            f"first. The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of "
-            f"each of its material points (the scale is centred on {in_c(frame.rod_velocity())}, the rod's "
-            f"velocity in {symbol} before it is struck); the dots are the particles. "
-            + _which_end_first(r, frame))
+            f"first. {bar}; the dots are the particles. " + _which_end_first(r, frame))

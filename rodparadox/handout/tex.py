@@ -85,7 +85,7 @@ def _content_key(block: Block) -> tuple:
     if isinstance(block, Table):
         return ("table", to_latex(block))
     if isinstance(block, DiagramBlock):
-        return ("diagram", id(block.history), block.frames)
+        return ("diagram", id(block.history), id(block.compared), block.frames)
     if isinstance(block, RodViewBlock):
         return ("rod view", tuple(id(h) for h in block.histories))
     assert isinstance(block, Strips)
@@ -268,9 +268,12 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
     from rodparadox import render
 
     if isinstance(block, DiagramBlock):
-        # a worksheet's diagram without the scenario's title (a preset's may say what it asks) or the panels' velocities
-        options = render.Options(titled=block.tell, equal_scales=block.equal_scales)
-        diagram = render.draw(block.history, block.frames, style, options)
+        # a worksheet's diagram without the scenario's title (a preset's may say what it asks), the panels' velocities
+        # or the lines of simultaneity through the impacts (which impacts share one is asked)
+        # no title above the panels, as in the PDF: the plot's title names the scenario by its file name (fig2),
+        # which a student never reads; the section's heading and the caption say what it shows
+        options = render.Options(titled=False, equal_scales=block.equal_scales, simultaneity=block.tell)
+        diagram = render.draw(block.drawn, block.frames, style, options)
         block.retitle(diagram)
         figure = diagram.figure
     elif isinstance(block, RodViewBlock):
@@ -307,7 +310,7 @@ def events_dat(history: RodHistory, frame: Frame) -> str:
 def _shown_frames(section: Section) -> list[tuple[str, RodHistory, Frame]]:
     """The (file prefix, history, frame) of each frame the section's diagrams show, each once: the prefix is the
     section's name, or the diagram's where the section draws more than one history."""
-    diagrams = [b for b in section.blocks if isinstance(b, DiagramBlock)]
+    diagrams = [b for b in section.blocks if isinstance(b, DiagramBlock) and b.compared is None]
     several = len({id(d.history) for d in diagrams}) > 1
     out, seen = [], set()
     for d in diagrams:

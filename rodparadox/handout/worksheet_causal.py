@@ -10,8 +10,8 @@ from typing import Sequence
 
 from rodparadox.handout.causal_reading import Comparison
 from rodparadox.handout.document import Question
-from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, in_c, in_l, listed, summand,
-                                      time_name, told_claim, told_number)
+from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, in_c, in_l, listed, signed_numeral,
+                                      summand, time_name, told_claim, told_number)
 from rodparadox.handout.worksheet_frames import Asked, gamma
 from rodparadox.numbers import impact_name
 from rodparadox.physics.frames import frame_name
@@ -21,11 +21,14 @@ def _zero(x: float, scale: float = 1.0) -> float:
     return 0.0 if abs(x) <= 1e-12 * max(1.0, abs(scale)) else x
 
 
-def question_far_end(c: Comparison) -> Asked:
-    """When light from the first contact reaches the far end, and when each model moves that end."""
+def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
+    """When light from the first contact reaches the far end, and when each model moves that end; `tabled`: the
+    worksheet's events table of S asks the contact's time (the rigid rod's first impact, the same event), so the
+    question points to it rather than give it."""
     f = c.far_end
     C = impact_name(f.contact.label)
-    start = f"{C} strikes the {f.contact.end} end of the rod, at rest in S, at t = {in_l(f.t_contact, ANSWER_DIGITS)}."
+    when = (f"at the time t your table of S gives for {C}" if tabled else f"at t = {in_l(f.t_contact, ANSWER_DIGITS)}")
+    start = f"{C} strikes the {f.contact.end} end of the rod, at rest in S, {when}."
     light = (f"Light from {C} crosses the rod\u2019s length L, at rest in S, in a time L: it reaches the {f.far} end at "
              f"t = {in_l(f.t_contact, ANSWER_DIGITS)} + L = {in_l(f.t_light, ANSWER_DIGITS)}.")
     rigid = (f" The rigid rod\u2019s {f.far} end starts to move at t = {in_l(f.t_rigid, ANSWER_DIGITS)}, at {C}\u2019s "
@@ -33,25 +36,28 @@ def question_far_end(c: Comparison) -> Asked:
              if f.t_rigid is not None else "")
     asks = [told_number(f"when light from {C} reaches the {f.far} end", f.t_light)]
     if f.by_light:
-        th = abs(f.rapidity_struck)
+        th = f.rapidity_struck  # signed: negative where the struck end is pushed left
         text = (f"{start} When does light from {C} reach the {f.far} end? When does the {f.far} end of the rigid rod "
                 f"start to move, and when that of the causal rod, whose sound travels at c? The compression front "
                 f"comes back from the free {f.far} end as tension, so that end\u2019s rapidity jumps to twice the struck "
                 f"end\u2019s: how fast does it start?")
-        answer = (light + rigid,
+        answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
                   f"The causal rod\u2019s {f.far} end feels nothing until the front, at speed c, arrives: it starts at "
                   f"t = {in_l(f.t_causal, ANSWER_DIGITS)}, exactly when light does.",
-                  f"The struck end takes {f.contact.particle}\u2019s velocity at once, rapidity θ₀ = artanh "
-                  f"{answer_numeral(math.tanh(th))} = {answer_numeral(th)}; the far end starts at rapidity 2θ₀ = "
-                  f"{answer_numeral(2 * th)}, velocity tanh 2θ₀ = {in_c(f.u_causal, ANSWER_DIGITS)} "
-                  f"(= 2u/(1 + u²) with u = {answer_numeral(math.tanh(th))}).")
+                  f"The struck end takes {f.contact.particle}\u2019s velocity at once, u = "
+                  f"{in_c(math.tanh(th), ANSWER_DIGITS)} in S, rapidity θ₀ = artanh u = "
+                  f"{signed_numeral(th, ANSWER_DIGITS)}; the far end starts at rapidity 2θ₀ = "
+                  f"{signed_numeral(2 * th, ANSWER_DIGITS)}, velocity tanh 2θ₀ = {in_c(f.u_causal, ANSWER_DIGITS)} "
+                  f"(= 2u/(1 + u²)).")
         asks += [told_number(f"the causal far end's starting velocity", f.u_causal)]
         return Asked(text, answer, tuple(asks))
     D = impact_name(f.own.label)
-    text = (f"{start} {D} strikes the {f.far} end at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}. When "
+    same = abs(f.own.event.t / c.L - f.t_contact) <= 1e-12 * (1.0 + abs(f.t_contact))
+    at = "at the same instant of S" if same else f"at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}"
+    text = (f"{start} {D} strikes the {f.far} end {at}. When "
             f"does light from {C} reach the {f.far} end? What sets the causal rod\u2019s {f.far} end moving, and when "
             f"does the rigid rod\u2019s {f.far} end start to move?")
-    answer = (light + rigid,
+    answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
               f"{D} comes first, so in the causal rod, where no push travels faster than light, the {f.far} end is set "
               f"moving by {D} itself, and the fronts from {C} and {D} cross inside the rod.")
     asks.append(told_claim(f"{D} sets the causal far end moving", f"set moving by {D} itself"))
@@ -78,8 +84,8 @@ def question_ringing(c: Comparison) -> Asked:
               f"Its rest mass: √(E² − p²) = √({bracketed(E)}² − {bracketed(p)}²) = {answer_numeral(mass)} M; its centre "
               f"moves at p/E = {in_c(u, ANSWER_DIGITS)}.",
               f"It is more than M by {answer_numeral(mass - 1.0)} M: the rod rings for ever after the particles leave, "
-              f"and the energy of its vibration counts in its rest mass. The tool\u2019s run gives the same from the "
-              f"ringing itself: every material point advances by (Δt, Δx) = ({in_l(r.dt, ANSWER_DIGITS)}, "
+              f"and the energy of its vibration counts in its rest mass. The same follows from the ringing "
+              f"itself: every material point advances by (Δt, Δx) = ({in_l(r.dt, ANSWER_DIGITS)}, "
               f"{in_l(_zero(r.dx, r.dt), ANSWER_DIGITS)}) per period, and (M/2L)(Δt, Δx) = ({answer_numeral(r.E)} M c², "
               f"{answer_numeral(_zero(r.p, r.E))} M c)."]
     given = listed([f"{n} at {in_c(u, ANSWER_DIGITS)}" for n, _, u in leaving])
@@ -95,36 +101,39 @@ def question_ringing(c: Comparison) -> Asked:
 
 
 def question_stress(c: Comparison) -> Asked:
-    """The causal rod's stress momentum on a slice, from the total less the particles' and the matter part's."""
+    """Like with like: the causal rod's momentum beyond its material points' motion on a slice (the total less the
+    particles' and (M/L)∫ sinh ψ dσ), against the rigid rod's hidden momentum on the same slice."""
     s = c.stress
     symbol, time = frame_name(s.frame), time_name(s.frame)
     scale = s.total.E
     particles = [(n, _zero(em.p, scale)) for n, em in s.particles]
-    matter, stress, hidden = _zero(s.matter.p, scale), _zero(s.stress.p, scale), _zero(s.hidden.p, scale)
+    motion, hidden = _zero(s.motion[1], scale), _zero(s.hidden.p, scale)
+    unshown = _zero(s.total.p - sum(q for _, q in particles) - motion, scale)
     slice_name = f"{time} = {in_l(s.t, ANSWER_DIGITS)} of {symbol}"
     text = (f"On the slice {slice_name} the particles carry momentum "
-            f"{listed([f'{answer_numeral(q)} M c ({n})' for n, q in particles])}, and the causal rod\u2019s matter (its "
-            f"material points\u2019 rest-frame energy moving with them) {answer_numeral(matter)} M c. From the bodies\u2019 "
-            f"total momentum in {symbol} before the first impact (the set-up), how much momentum does the causal "
-            f"rod\u2019s stress carry on this slice? What is its counterpart in the rigid rod\u2019s ledger?")
-    terms = [q for _, q in particles] + [matter]
-    answer = (f"Before the first impact the bodies\u2019 momentum in {symbol} is {answer_numeral(s.total.p)} M c, and it "
-              f"is conserved.",
-              f"The stress carries {answer_numeral(s.total.p)} − ({' + '.join(summand(q) for q in terms)}) = "
-              f"{answer_numeral(stress)} M c: the pressure of the compressed rod, moving, carries momentum "
-              f"(p(uu − η) in its stress-energy).",
-              f"In the rigid rod the same role is played by the hidden part of the ledger"
-              + (f", {answer_numeral(hidden)} M c on this slice" if hidden != 0.0 else
-                 ", zero on this slice")
-              + ": the stress part is its real, local version.")
-    asks = [told_number(f"the causal rod's stress momentum on {slice_name}", stress),
+            f"{listed([f'{answer_numeral(q)} M c ({n})' for n, q in particles])}, and the causal rod\u2019s material "
+            f"points, each its share of M moving at its own velocity, (M/L)∫ sinh ψ dσ = {answer_numeral(motion)} M c. "
+            f"From the bodies\u2019 total momentum in {symbol} before the first impact (the set-up), how much momentum "
+            f"does the causal rod carry on this slice beyond its material points\u2019 motion, and what carries it? "
+            f"Is it the same as the rigid rod\u2019s hidden momentum on this slice?")
+    terms = [q for _, q in particles] + [motion]
+    answer = (f"Before the first impact the bodies\u2019 momentum in {symbol} is {answer_numeral(s.total.p)} M c, and "
+              f"it is conserved.",
+              f"Beyond its material points\u2019 motion the causal rod carries {answer_numeral(s.total.p)} − "
+              f"({' + '.join(summand(q) for q in terms)}) = {answer_numeral(unshown)} M c: the momentum of its "
+              f"stress, where the fronts have compressed it (p(uu − η) in its stress-energy), real and local.",
+              f"The rigid rod\u2019s hidden momentum on this slice, made the same way (the total less every body\u2019s "
+              f"motion), is {answer_numeral(hidden)} M c: not the same. The rigid rod\u2019s stress takes an impulse "
+              f"across the whole rod at once, the causal rod\u2019s only as far as the fronts have come.")
+    asks = [told_number(f"the causal rod's momentum beyond its material points' motion on {slice_name}", unshown),
             told_number(f"the bodies' total momentum in {symbol}", s.total.p)]
     if hidden != 0.0:
         asks.append(told_number(f"the rigid rod's hidden momentum on {slice_name}", hidden))
     return Asked(text, answer, tuple(asks))
 
 
-def causal_questions(c: Comparison, first: int) -> tuple[Question, ...]:
-    """The comparison's questions, numbered from `first` (after the rigid rod's)."""
-    asked: Sequence[Asked] = (question_far_end(c), question_ringing(c), question_stress(c))
+def causal_questions(c: Comparison, first: int, tabled: bool = True) -> tuple[Question, ...]:
+    """The comparison's questions, numbered from `first` (after the rigid rod's); `tabled`: the worksheet has an
+    events table of S to fill in."""
+    asked: Sequence[Asked] = (question_far_end(c, tabled), question_ringing(c), question_stress(c))
     return tuple(Question(first + k, q.text, q.answer, q.asks) for k, q in enumerate(asked))

@@ -111,9 +111,13 @@ def question_lorentz(r: Reading, a: Frame, b: Frame, pair: tuple[Impact, ...]) -
     xb, tb = coordinates(b)
     A, B = frame_name(a), frame_name(b)
     sign, W = ("+" if w < 0 else MINUS), answer_numeral(abs(w))
-    given = "; ".join(f"{impact_name(i.label)} strikes at {xa} = {in_l(r.length(r.x(i, a)), ANSWER_DIGITS)}, "
-                      f"{ta} = {in_l(r.length(r.t(i, a)), ANSWER_DIGITS)}" for i in pair)
-    steps = [f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so {tb} = γ({ta} − w {xa}) = "
+    stated = "; ".join(f"{impact_name(i.label)} strikes at {xa} = {in_l(r.length(r.x(i, a)), ANSWER_DIGITS)}, "
+                       f"{ta} = {in_l(r.length(r.t(i, a)), ANSWER_DIGITS)}" for i in pair)
+    # a frame shown has its events table to fill in: the question takes the coordinates from it, never gives them
+    given = (f"take the {xa} and {ta} of " + " and of ".join(impact_name(i.label) for i in pair)
+             + f" from your table of {A}" if a in r.frames else stated)
+    steps = ([f"In {A}, {stated}."] if a in r.frames else []) + [
+             f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so {tb} = γ({ta} − w {xa}) = "
              f"γ({ta} {sign} {W} {xa}) and {xb} = γ({xa} {sign} {W} {ta}), with γ = 1/√(1 − w²) = 1/√(1 − {W}²) = "
              f"{numeral_approx(g)}."]
     times = []
@@ -172,9 +176,11 @@ def question_velocity(r: Reading, a: Frame, b: Frame) -> Asked:
                       for i in r.history.impacts
                       for when, rapidity in (("before", i.particle_rapidity_before), ("after", i.particle_rapidity_after))]
         candidates = [c for c in candidates if c[2] != 0.0]
-    given, what, u = max(candidates, key=lambda c: abs(relative_velocity(c[2], w)))
+    stated, what, u = max(candidates, key=lambda c: abs(relative_velocity(c[2], w)))
+    # a frame shown has its events table to fill in: the question takes the velocity from it, never gives it
+    given = f"Take {what} in {A} from your table of {A}." if a in r.frames else stated
     result = relative_velocity(u, w)
-    answer = [f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so a velocity u in {A} is "
+    answer = ([stated] if a in r.frames else []) + [f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so a velocity u in {A} is "
               f"(u − w)/(1 − u w) in {B}.",
               f"({signed_numeral(u, ANSWER_DIGITS)} − ({signed_numeral(w, ANSWER_DIGITS)}))/"
               f"(1 − ({signed_numeral(u, ANSWER_DIGITS)}) × ({signed_numeral(w, ANSWER_DIGITS)})) = "
@@ -254,5 +260,5 @@ def question_other_speed(r: Reading, a: Frame, b: Frame, compare_v: float | None
     else:
         asked = "How long does the far end of the rod take, in S, to reach the rod's new velocity? How does the rod end?"
     text = f"Now take v = {v2} instead of {v} ({changes}). {asked} Compare with v = {v}."
-    answer = (f"At v = {v}: {facts(h)}.", f"At v = {v2} (the tool runs the scenario again): {facts(other)}.")
+    answer = (f"At v = {v}: {facts(h)}.", f"At v = {v2}: {facts(other)}.")
     return Asked(text, answer, tuple(asks))

@@ -87,8 +87,8 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
         known.append(f"the rod moves as a whole at {in_c(u, ANSWER_DIGITS)}")
         steps.append(f"The rod: 1 × {bracketed(u)}/√(1 − {bracketed(u)}²) = {answer_numeral(rod_p)} M c.")
     else:
-        known.append(f"the rod is turning: the momentum of its material points, added up along it as the ledger "
-                     f"does, is {answer_numeral(rod_p)} M c")
+        known.append(f"the rod is turning, its material points moving at different velocities: their momenta "
+                     f"(each point's share of M at its own velocity) add up to {answer_numeral(rod_p)} M c")
         steps.append(f"The rod: {answer_numeral(rod_p)} M c, as given.")
     terms.append(rod_p)
     kinetic = sum(terms)
@@ -108,9 +108,16 @@ def question_hidden(r: Reading, a: Frame, b: Frame) -> Asked | None:
     steps[:0] = [f"The slice lies {_between(r, f, t)}. Before the first impact the bodies' total momentum in "
                  f"{symbol}, m u/√(1 − u²) summed over the rod and the particles at their first velocities, is "
                  f"{answer_numeral(total.p)} M c, and it is conserved."]
-    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol}, {listed(known)}. Find the bodies' "
-            f"total momentum in {symbol} before the first impact, from the set-up. How much momentum is hidden on "
-            f"this slice, and where is it?")
+    if f in r.frames:  # a frame shown has its events table to fill in: the velocities are taken from it
+        turning = [k for k in known if k.startswith("the rod is turning")]
+        given = (f"take {'each body' if whole else 'each particle'}\u2019s velocity on it from your table of {symbol}"
+                 + "".join(f"; {k}" for k in turning))
+        steps.insert(1, f"On the slice: {listed(known)}.")
+    else:
+        given = listed(known)
+    text = (f"On the slice {time} = {in_l(r.length(t), ANSWER_DIGITS)} of {symbol}, {given}. Find the bodies' "
+            f"total momentum in {symbol} before the first impact, from the set-up. How much momentum does no body's "
+            f"motion carry on this slice (the momentum Sears called hidden), and where is it?")
     asks = (told_number(f"the hidden momentum on the slice {time} = {in_l(r.length(t))} of {symbol}", hidden),
             told_number(f"the bodies' total momentum in {symbol}", total.p))
     return Asked(text, tuple(steps), asks)
@@ -191,9 +198,12 @@ def question_single(r: Reading) -> Asked | None:
     u = r.velocity(turn.rapidity_to, rest_frame())
     g = gamma(u)
     delay = abs(u) * g  # the far end's hyperbola about the impact reaches velocity u at t − t_P = L sinh φ = γ|u| L
-    text = (f"{struck} gives the rod's momentum the velocity {in_c(u, ANSWER_DIGITS)} in S at once, but the "
-            f"{far} end follows only gradually, on the hyperbola of radius L about {struck}. How long after {struck}, "
-            f"in S, does the {far} end reach {in_c(u, ANSWER_DIGITS)}? How far has the struck end moved by then?")
+    # S shown has its events table to fill in, the rod's velocity after the impact among its cells: taken from it
+    velocity = (f"its velocity after {struck} (your table of S)" if any(f.name == "rest" for f in r.frames) else
+                f"the velocity {in_c(u, ANSWER_DIGITS)} in S")
+    text = (f"{struck} gives the rod's momentum {velocity} at once, but the {far} end follows only gradually, on the "
+            f"hyperbola of radius L about {struck}. How long after {struck}, in S, does the {far} end reach that "
+            f"velocity? How far has the struck end moved by then?")
     answer = (f"On that hyperbola t − t_P = L sinh φ and the velocity is tanh φ; it reaches |u| = "
               f"{answer_numeral(abs(u))} where sinh φ = γ|u| = {answer_numeral(g)} × {answer_numeral(abs(u))} = "
               f"{answer_numeral(delay)}.",

@@ -93,14 +93,23 @@ class Fronts(Protocol):
     def rod_parts(self, frame_rapidity: float, t: float) -> tuple["EnergyMomentum", "EnergyMomentum"]:
         """The rod's (E, p) on the slice split into its matter part and its stress part."""
 
-    def rod_parts_on_slices(self, frame_rapidity: float, times) -> tuple:
-        """The matter and stress parts on many slices of one frame at once: two (n, 2) arrays of (E, p)."""
+    def rod_parts_on_slices(self, frame_rapidity, times, tables=None, tolerance: float | None = None,
+                            ends=None) -> tuple:
+        """The matter and stress parts on many slices at once (one frame, or a frame per slice): two (n, 2) arrays
+        of (E, p); read from `tables` (`chart_tables`) to `tolerance` where given."""
+
+    def chart_tables(self, lo: float, hi: float, tolerance: float | None = None):
+        """Tables of the invariants and the chart map over chart times [lo, hi], evaluated for whole arrays at once
+        (r, a and b within `tolerance` L of the solution's)."""
 
     def period_advance(self) -> tuple[float, float]:
         """(Dt, Dx) of every material point over one period 2L of chart time after the last separation."""
 
     def compression_range(self) -> tuple[float, float]:
         """The least and largest ln lam (lam the compression) anywhere in the rod over its whole history."""
+
+    def points_on_slice(self, frame_rapidity: float, t: float, sigmas) -> tuple:
+        """Where each material point sigma is on the slice t of the frame, and its rapidity there (two arrays)."""
 
 
 @runtime_checkable

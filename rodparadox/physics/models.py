@@ -42,9 +42,13 @@ def particle_starts(scenario: Scenario) -> dict[str, Event]:
     return _module(scenario.rod).particle_starts(scenario)
 
 
-def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None) -> RodHistory:
+def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None, budget: int | None = None) -> RodHistory:
     """The history of the scenario in its own rod model (`scenario.rod`), the particles starting at `starts`
-    (default: placed by that model's rules)."""
+    (default: placed by that model's rules). `budget`: a bound on the causal rod's work (windows of chart time L,
+    stretches and steps of its contacts), refused past it; None: the solver's own bounds. The rigid rod's run is a
+    short list of impacts, unbounded by it."""
+    if budget is not None and scenario.rod == "causal":
+        return _module(scenario.rod).run(scenario, starts, budget)
     return _module(scenario.rod).run(scenario, starts)
 
 

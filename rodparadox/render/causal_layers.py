@@ -25,14 +25,9 @@ from matplotlib.patches import Rectangle
 
 from rodparadox.physics.frames import sampling_tolerance
 from rodparadox.render.layer_base import Layer, LayerArtists, is_causal, line_handle
+from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 from rodparadox.render.styles import Style
 
-#: a varying piece of an invariant is cut into cells this long, as a fraction of L (the shading is flat per cell)
-CELL = 1.0 / 24
-#: a jump of an invariant smaller than this is no front (a piece boundary where r is continuous: a kink)
-FRONT_JUMP = 1e-9
-#: shades of the compression scale a cell may differ from its neighbour by at most about one of
-SHADES = 64
 #: swatches in the legend's ramp of the compression scale
 SWATCHES = 7
 
@@ -75,16 +70,8 @@ def chart_window(history, f: float, t_lo: float, t_hi: float) -> tuple[float, fl
 
 
 def _cell_edges(invariant, lo: float, hi: float, L: float, step: float) -> np.ndarray:
-    """The cuts of [lo, hi]: every piece boundary, and inside a piece where r varies, cells no longer than CELL L
-    and enough of them that r changes by about `step` (a shade of the scale) from one to the next."""
-    edges = [lo]
-    cuts = [lo, *invariant.breaks(lo, hi), hi]
-    for a, b in zip(cuts, cuts[1:]):
-        ends = [invariant.r(s) for s in (a + 1e-9 * (b - a), 0.5 * (a + b), b - 1e-9 * (b - a))]
-        varies = max(ends) - min(ends)
-        n = min(math.ceil((b - a) / (CELL * L)), math.ceil(2 * varies / step)) if varies > FRONT_JUMP else 1
-        edges += list(np.linspace(a, b, max(n, 1) + 1)[1:])
-    return np.array(edges)
+    """The cuts of [lo, hi] (`shading.cell_edges`) at every piece boundary of the invariant."""
+    return cell_edges(invariant.r, invariant.breaks(lo, hi), lo, hi, L, step)
 
 
 def compression_cells(history, f: float, t_lo: float, t_hi: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -34,6 +34,7 @@ class Options(NamedTuple):
     proper_time: bool = False  # clock ticks of equal proper time along each particle and each rod end
     equal_scales: bool = False  # every panel drawn to one scale (points per L), not each filling its panel
     insets: bool = True  # a magnified inset where the world-sheet is drawn thinner than a few millimetres
+    simultaneity: bool = True  # the lines of simultaneity of S and S' through every impact (a worksheet asks them)
 
 
 # --- ink: how the style says a line or a marker is drawn, in one place ---------------------------------------

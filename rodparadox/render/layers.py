@@ -227,6 +227,9 @@ class Simultaneity(Layer):
     def name(self) -> str:
         return f"simultaneity-{self.family}"
 
+    def enabled(self, options):
+        return options.simultaneity
+
     def ink(self, style: Style) -> Ink:
         return style.rest_simultaneity if self.family == "rest" else style.moving_simultaneity
 

@@ -381,7 +381,7 @@ def _key(ax, history, chart, st: Style, fs, step: float):
             handles.append(Line2D([], [], **_pivot_ink(st)))
             labels.append("pivot: one event all\nturn, its clock stopped")
             handles.append(Patch(facecolor="none", edgecolor=st.other_axes.colour, hatch="////", linewidth=0))
-            labels.append("beyond the pivot's\nhorizon: no place in\nthe rod's chart")
+            labels.append("beyond the pivot's\nhorizon: placed twice,\nbefore and after the turn")
     legend = ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.04, 1.0), borderaxespad=0.0,
                        fontsize=fs["tick"] * 0.85, handlelength=2.0, borderpad=0.0, labelspacing=0.6,
                        frameon=False, handler_map=HANDLER_MAP)

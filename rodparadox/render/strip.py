@@ -272,11 +272,12 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
     scale of the whole history, `render.colour_scale`, so a colour is the same velocity in every row and
     in the animation). Fills the target (a Figure or SubFigure the caller has sized).
 
-    `span`: the instants whose rod and particles the x axis spans (default `times`): the parts of one block set on
-    two pages pass the whole block's, so they share one x axis.
+    `span`: the instants whose rod and particles the x axis spans, and whose labels its room is made for (default
+    `times`): the parts of one block set on two pages pass the whole block's, so they share one x axis and one tick
+    step.
 
     Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid
-    `strips-colour-bar`. A target too small for the rows, their labels and the colour bar is refused
+    `strips-colour-bar` (none where the rod's velocity never changes). A target too small for the rows, their labels and the colour bar is refused
     (ValueError, naming the size needed).
     """
     from rodparadox.render.diagram import style_context
@@ -296,7 +297,12 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
         labels, notes = _stills_labels(strips, frame, L)
-        room = _stills_room(labels, notes, fs)
+        spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
+        # the room for the whole block's labels: the parts of a block split between pages keep one axes width, and
+        # so one tick step
+        # a colour bar only where the rod's velocity varies (fig1's rod never changes: no bar of ±0.0997)
+        bar = scale.shown is not None
+        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L)), fs, bar)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -306,7 +312,6 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
         # the x range: every rod end and particle at these instants, with a margin
-        spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
         xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
@@ -339,6 +344,8 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
             rows.append(ax)
         rows[-1].set_xlabel(axis_label(xname), fontsize=fs["label"], labelpad=4.0,
                             fontstyle="normal" if "$" in xname else "italic")
+        if not bar:
+            return tuple(rows)
         bar_y = below - (3.5 + 3.5 + tick_h + 4.0 + label_h) - 10.0 - bar_h
         colour_ax = target.add_axes(((gutter + 0.15 * axes_w) / width, bar_y / height, 0.7 * axes_w / width,
                                      bar_h / height))
@@ -386,8 +393,9 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[lis
     return labels, notes
 
 
-def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float]) -> _StillsRoom:
-    """The room of `draw_strips_into` for rows with these labels, in a style's type sizes."""
+def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float], bar: bool = True) -> _StillsRoom:
+    """The room of `draw_strips_into` for rows with these labels, in a style's type sizes; `bar`: with room for the
+    colour bar (none where the rod's velocity never changes)."""
     from rodparadox.render.text import approximate_size
 
     # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
@@ -396,7 +404,7 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
     label_h = approximate_size("$x_u/L$", fs["label"])[1]
     small = 0.8 * fs["tick"]
     bar_h = max(5.0, 0.7 * small)
-    below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + 10.0 + bar_h + (2 + 1 + 1.2 * small) * 2 + 4.0
+    below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + ((10.0 + bar_h + (2 + 1 + 1.2 * small) * 2) if bar else 0.0) + 4.0
     least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
     return _StillsRoom(gutter, 10.0, below, 4.0, 0.25 * fs["tick"], least_row, 8 * fs["tick"], tick_h, label_h,
                        small, bar_h)
@@ -425,7 +433,8 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
     L = history.scenario.L
     with style_context(style) as st:
         strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
-        return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st)).size(len(strips), row_scale)
+        bar = colour_scale(history, frame).shown is not None
+        return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st), bar).size(len(strips), row_scale)
 
 
 class _Ticks:

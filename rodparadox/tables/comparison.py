@@ -25,12 +25,23 @@ def particle_starts_text(history) -> str:
 
 
 def first_impacts(history) -> list:
-    """Each particle's first impact on the rod (its first contact), in the order of S's time."""
+    """Each particle's first impact on the rod (its first contact), A's before B's."""
     firsts = {}
     for i in history.impacts:
         if not i.is_separation:
             firsts.setdefault(i.particle, i)
-    return sorted(firsts.values(), key=lambda i: i.event.t)
+    return [firsts[name] for name in sorted(firsts)]
+
+
+def first_impact_times(history, frames: Sequence[Frame]) -> list[tuple[Frame, list[float], bool]]:
+    """For each frame: the first impacts' times there (units of L, in `first_impacts`' order) and whether they
+    are simultaneous there."""
+    L = history.scenario.L
+    out = []
+    for f in frames:
+        times = [i.event.time_in(f.rapidity) / L for i in first_impacts(history)]
+        out.append((f, times, len(times) > 1 and abs(times[0] - times[1]) <= SIMULTANEOUS * (1 + max(map(abs, times)))))
+    return out
 
 
 def first_impacts_text(history, frames: Sequence[Frame]) -> str:
@@ -42,10 +53,9 @@ def first_impacts_text(history, frames: Sequence[Frame]) -> str:
         i = firsts[0]
         return f"its first impact {impact_name(i.label)} at t = {shown(i.event.t / L, 4)} L in S"
     same, apart = [], []
-    for f in frames:
-        times = [i.event.time_in(f.rapidity) / L for i in firsts]
+    for f, times, simultaneous in first_impact_times(history, frames):
         symbol = frame_name(f)
-        if abs(times[0] - times[1]) <= SIMULTANEOUS * (1 + max(abs(t) for t in times)):
+        if simultaneous:
             same.append(f"{symbol} (at {shown(times[0], 4)} L)")
         else:
             at = ", ".join(f"{impact_name(i.label)} at {shown(t, 4)} L" for i, t in zip(firsts, times))

@@ -39,6 +39,7 @@ _MATH = {"\N{MINUS SIGN}": "-", "\N{MULTIPLICATION SIGN}": r"\times", "\N{PLUS-M
          "\N{LESS-THAN OR EQUAL TO}": r"\le", "\N{GREATER-THAN OR EQUAL TO}": r"\ge",
          "\N{ALMOST EQUAL TO}": r"\approx", "\N{NOT EQUAL TO}": r"\ne", "\N{RIGHTWARDS ARROW}": r"\to",
          "\N{INFINITY}": r"\infty", "\N{SQUARE ROOT}": r"\surd", "\N{DEGREE SIGN}": r"^\circ",
+         "\N{INTEGRAL}": r"\int",
          "\N{PRIME}": "'", "\N{DOUBLE PRIME}": "''",
          "\N{GREEK SMALL LETTER ALPHA}": r"\alpha", "\N{GREEK SMALL LETTER BETA}": r"\beta",
          "\N{GREEK SMALL LETTER GAMMA}": r"\gamma", "\N{GREEK SMALL LETTER DELTA}": r"\delta",

@@ -3,9 +3,12 @@
 
   inks   the styles' inks as the page draws them (from `render.styles`, no matplotlib)
   data   what the page embeds, computed by the engine: world-lines, impacts, tables, the ledger, per speed and model
-  causal_data  the causal rod's part of it: its invariants tabulated per speed, its lines, cells of compression,
-               fronts and ledger (matter and stress) computed for whole arrays at once
-  page   the page itself: inline CSS, the data as inline JSON, the script `page.js` (plain JavaScript, no build)
+  causal_data  the causal rod's part of it, from its invariants' tables (`physics.causal.slices`, through the
+               rod interface): its lines, cells of compression, fronts and ledger (matter and stress), for whole
+               arrays at once, within the page's bounds (a speed beyond them is left out)
+  page   the page itself: inline CSS, the data as inline JSON, the script in four parts by job (`page.js`: data,
+         state, numbers, boosts; `page_draw.js`; `page_tables.js`: tables and legend; `page_controls.js`), plain
+         JavaScript joined into one <script>, no build
 
 No matplotlib anywhere here: `sears-paradox html` never imports it.
 """

@@ -56,6 +56,10 @@ CAUSAL_MATERIAL_TOLERANCE = 2e-3
 CAUSAL_DIGITS = 6
 #: the rod models every page embeds, in the switch's order
 MODELS = ("rigid", "causal")
+#: the causal rod's runs the page only offers (other speeds, a rod it does not open on) are bounded: windows of
+#: chart time L and steps of its contacts (`causal.solve.Budget`; every preset takes at most 150 at every speed of
+#: the grid, about a millisecond each), or the speed is left out: a page never waits on a run it was not asked for
+OFFERED_WORK = 1000
 #: the ledger's frames (velocities relative to S) besides S', and its instants per frame's time window
 LEDGER_FRAMES = (-0.9, -0.6, -0.3, 0.3, 0.6, 0.9)
 #: the causal rod's (its matter and stress are integrated across each slice: half the frames, half the cost)
@@ -109,11 +113,19 @@ def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAW
             "before": worldline.rapidity_before + 0.0, "after": worldline.rapidity_after + 0.0}
 
 
+#: the heading's paragraph where the page holds several scenarios: true where the chooser sits beside the diagram
+#: (a laptop) and where it sits under it (a phone)
+ABOUT_SEVERAL = "This page holds several scenarios: choose one with the scenario menu."
+#: how the shared tables name the unit (`tables.build`); the page says it as a textbook does
+TABLE_UNITS = "in the unit L is given in"
+
+
 def table_rows(history, frame: Frame) -> dict[str, Any]:
     """The events table of one frame as `events` writes it (digits and fractions), cells as text."""
     table = events_table(history, frame)
     return {"caption": table.caption, "header": list(table.header),
-            "rows": [[cell.text for cell in row] for row in table.rows], "notes": list(table.notes)}
+            "rows": [[cell.text for cell in row] for row in table.rows],
+            "notes": [note.replace(TABLE_UNITS, "in units of L") for note in table.notes]}
 
 
 def ledger(history, frames: Sequence[Frame]) -> list[dict[str, Any]]:
@@ -178,23 +190,34 @@ def model_data(history, v: float) -> dict[str, Any]:
 
 def scenario_data(name: str, scenario: Scenario, extra: Sequence[float] = (), shown: str | None = None,
                   models: Sequence[str] | None = None) -> dict[str, Any]:
-    """One scenario at every speed of its grid that the engine runs, in each rod model of `models` (a speed a
-    model refuses, or at which some body would move at c in double precision in a frame of the page, is left out
-    of that model and named in `left_out`). `shown`: the rod the page opens on (rigid, causal or both; by default
-    the scenario's own)."""
+    """One scenario at every speed of its grid that the engine runs, in each rod model of `models`. `shown`: the
+    rod the page opens on (rigid, causal or both; by default the scenario's own).
+
+    The page opens on its own speeds (the scenario's v and `extra`) in the rods it is asked for: those run as every
+    command runs them, and their refusal is the page's. Every other run (another speed, a rod only offered by the
+    switch) is bounded (`OFFERED_WORK`, the causal rod's bounds on what it draws): a speed a model refuses, or
+    would not finish within those bounds, or at which some body would move at c in double precision in a frame of
+    the page, is left out of that model and named in `left_out`, which the page says."""
     models = MODELS if models is None else models
+    opened = {"both": ("rigid", "causal")}.get(shown or scenario.rod, (shown or scenario.rod,))
     entries, left_out = [], {model: [] for model in models}
-    for v in speeds(scenario, extra):
+    grid = speeds(scenario, extra)
+    own = [v for v in grid if v == scenario.v or v in extra]
+    for v in own + [v for v in grid if v not in own]:  # a refusal of the page's own speeds first, at once
         ran = []
         for model in models:
+            asked = v in own and model in opened
             try:
-                ran.append(model_data(run_rod(scenario.with_overrides(v=v, rod=model)), v))
+                history = run_rod(scenario.with_overrides(v=v, rod=model), budget=None if asked else OFFERED_WORK)
+                ran.append(model_data(history, v))
             except RodParadoxError:
-                if (v == scenario.v or v in extra) and model == scenario.rod:
+                if asked:
                     raise
                 left_out[model].append(v)
         if ran:
             entries.append({"v": v, "models": ran})
+    entries.sort(key=lambda e: e["v"])
+    left_out = {model: sorted(vs) for model, vs in left_out.items()}
     return {"name": name, "title": scenario.title or name, "description": scenario.description.strip(),
             "v": scenario.v, "L": scenario.L, "speeds": entries, "left_out": left_out, "rod": shown or scenario.rod,
             "one_instant": ONE_INSTANT, "frame_reach": FRAME_REACH}
@@ -205,5 +228,7 @@ def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str 
     the rod the page opens on (rigid, causal or both; by default each scenario's own)."""
     from rodparadox.web.inks import inks
 
-    return {"format": FORMAT, "style": style, "styles": inks(),
+    from rodparadox.render.shading import SHADES
+
+    return {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL, "shades": SHADES,
             "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}

@@ -1,9 +1,9 @@
 """The page: one self-contained HTML document (README, "One page to explore: `sears-paradox html`"). Pure.
 
-Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (`page.js`, plain JavaScript
-kept as its own file, no build step): nothing is fetched, so the page opens from `file://` with no network. The
-same scenarios, options and package give the same bytes: JSON with sorted keys and Python's shortest round-trip
-floats, no date, no version.
+Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in four files
+by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from
+`file://` with no network. The same scenarios, options and package give the same bytes: JSON with sorted keys and
+Python's shortest round-trip floats, no date, no version.
 """
 
 from __future__ import annotations
@@ -15,12 +15,21 @@ from typing import Sequence
 
 from rodparadox.physics.model import Scenario
 from rodparadox.render.styles import STYLE_NAMES
-from rodparadox.web.data import page_data
+from rodparadox.web.data import ABOUT_SEVERAL, page_data
 
 
 def asset(name: str) -> str:
     """A file of the package beside this module (`page.js`, `page.css`), as text."""
     return resources.files("rodparadox.web").joinpath(name).read_text(encoding="utf-8")
+
+
+#: the script's parts, by job, joined in this order into the page's one <script> (one scope; no build step)
+SCRIPTS = ("page.js", "page_draw.js", "page_tables.js", "page_controls.js")
+
+
+def script() -> str:
+    """The page's script: its parts (`SCRIPTS`) one after the other, verbatim."""
+    return "".join(asset(name) for name in SCRIPTS)
 
 
 def data_json(data: dict) -> str:
@@ -38,12 +47,12 @@ def page(scenarios: Sequence[tuple[str, Scenario]], style: str = "default", show
         raise ValueError(f"shown must be rigid, causal or both, got {shown!r}")
     data = page_data(scenarios, style, shown)
     first = data["scenarios"][0]
-    title = " · ".join(s["name"] for s in data["scenarios"])
-    about = first["description"] if len(data["scenarios"]) == 1 else "Choose a scenario below."
+    title = " · ".join(s["title"] for s in data["scenarios"])
+    about = first["description"] if len(data["scenarios"]) == 1 else ABOUT_SEVERAL
     styles = "".join(f'<option value="{name}">{name}</option>' for name in STYLE_NAMES)
-    return TEMPLATE.format(title=html.escape(f"sears-paradox: {title}"), heading=html.escape(first["title"]),
+    return TEMPLATE.format(title=html.escape(title), heading=html.escape(first["title"]),
                            about=html.escape(about), styles=styles, css=asset("page.css"), data=data_json(data),
-                           script=asset("page.js"))
+                           script=script())
 
 
 TEMPLATE = """<!DOCTYPE html>
@@ -81,10 +90,13 @@ TEMPLATE = """<!DOCTYPE html>
 <legend class="group">Explore</legend>
 <div class="control"><label for="scenario">scenario</label><select id="scenario"></select></div>
 <fieldset class="control" id="rod"><legend>rod</legend><label><input type="radio" name="rod" id="rod-rigid" value="rigid"> rigid</label><label><input type="radio" name="rod" id="rod-causal" value="causal"> causal (sound at c)</label><label><input type="radio" name="rod" id="rod-both" value="both"> both, side by side</label></fieldset>
+<div id="sliders" role="group" aria-label="speed, frame and time">
 <div class="control"><label for="speed">speed v of S′</label><input type="range" id="speed" min="0" max="0" step="1" value="0"><output id="speed-value" for="speed"></output></div>
 <div class="control"><label for="frame">frame: velocity u relative to S</label><input type="range" id="frame" min="-95" max="95" step="1" value="0"><output id="frame-value" for="frame"></output></div>
-<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="time">time: the now-line</label><input type="range" id="time" min="0" max="1000" step="1" value="500"><output id="time-value" for="time"></output><button type="button" id="play" aria-pressed="false">Play</button></div>
+</div>
+<p class="notes" id="left-out" hidden></p>
+<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="cones">light cones</label><input type="checkbox" id="cones"></div>
 <div class="control"><label for="style">style</label><select id="style">{styles}</select></div>
 </fieldset>

@@ -21,29 +21,31 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.causal.chart import CausalChart, points_on_slice
 from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
 from rodparadox.physics.causal.parts import rod_parts
-from rodparadox.physics.causal.solve import Rider, Solution, solve
+from rodparadox.physics.causal.solve import Budget, Rider, Solution, solve
 from rodparadox.physics.kinematics import ChartCurve, Event, Line, WorldLine
 from rodparadox.physics.ledger import initial_total
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.types import EnergyMomentum, Impact, Slice, ZERO
 
 
-def run(scenario: Scenario, starts: dict[str, Event] | None = None) -> "CausalHistory":
+def run(scenario: Scenario, starts: dict[str, Event] | None = None, budget: int | None = None) -> "CausalHistory":
     """The causal rod's history of a scenario (the same scenarios the rigid engine runs), the particles starting
-    at `starts` (default: `particle_starts`)."""
-    return _run(scenario, particle_starts(scenario) if starts is None else starts)
+    at `starts` (default: `particle_starts`); `budget`: a bound on its work, in windows of chart time L, stretches
+    of an end's window and steps of its contacts (`solve.Budget`), or None for the solver's own bounds."""
+    spend = None if budget is None else Budget(budget)
+    return _run(scenario, particle_starts(scenario, spend) if starts is None else starts, spend)
 
 
-def particle_starts(scenario: Scenario) -> dict[str, Event]:
+def particle_starts(scenario: Scenario, budget: Budget | None = None) -> dict[str, Event]:
     """Each particle's event at t = 0: from its gap, or timed against the other particle's first contact in the
-    causal rod."""
+    causal rod (that run within `budget`, where given)."""
     starts = {p.name: _start_from_gap(scenario, p) for p in scenario.particles if p.gap is not None}
     for p in scenario.particles:
         if p.timed_with is not None:
-            starts[p.name] = _start_from_timing(scenario, p, starts)
+            starts[p.name] = _start_from_timing(scenario, p, starts, budget)
     return starts
 
 
@@ -56,12 +58,13 @@ def _start_from_gap(scenario: Scenario, p) -> Event:
     return Event(side * scenario.L * (0.5 + p.gap), 0.0)
 
 
-def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event]) -> Event:
+def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event], budget: Budget | None = None) -> Event:
     """As the rigid engine (`engine._start_from_timing`), in the causal rod: the target is p's end, at the timing
     frame's time of the other particle's first contact plus the delay, in the run without p."""
     timing = p.timed_with
     other = scenario.particle(timing.particle)
-    alone = _run(Scenario(scenario.name, scenario.v, (other,), scenario.L), {other.name: starts[other.name]})
+    alone = _run(Scenario(scenario.name, scenario.v, (other,), scenario.L), {other.name: starts[other.name]},
+                 budget)
     reference = next(i for i in alone.impacts if i.particle == other.name)
     eta = math.atanh(scenario.frame_velocity(timing.frame))
     end_line = alone.worldline(f"rod_{p.end}").seen_from(eta)
@@ -69,7 +72,7 @@ def _start_from_timing(scenario: Scenario, p, starts: dict[str, Event]) -> Event
     return Event(target.x - math.tanh(_rapidity(scenario, p)) * target.t, 0.0)
 
 
-def _run(scenario: Scenario, starts: dict[str, Event]) -> "CausalHistory":
+def _run(scenario: Scenario, starts: dict[str, Event], budget: Budget | None = None) -> "CausalHistory":
     L = scenario.L
     riders = {}
     T_first = math.inf
@@ -80,7 +83,7 @@ def _run(scenario: Scenario, starts: dict[str, Event]) -> "CausalHistory":
         riders[p.name] = Rider(p.name, p.end, p.mass, th, start.t, start.x)
         end_x = -0.5 * L if p.end == "left" else 0.5 * L
         T_first = min(T_first, start.t + (end_x - start.x) / math.tanh(th))  # the resting rod's end: T = t
-    solution = solve(L, {n: 1.0 / r.mass for n, r in riders.items()}, riders, T_first)
+    solution = solve(L, {n: 1.0 / r.mass for n, r in riders.items()}, riders, T_first, budget)
     history = CausalHistory(scenario, solution, starts)
     for p in scenario.particles:
         if p.name in starts and not any(i.particle == p.name for i in history.impacts):
@@ -118,11 +121,23 @@ class CausalHistory:
         """The least and largest rapidity in S of any material point over the whole history, 0 included."""
         return causal_rapidity_range(self)
 
-    def rod_parts_on_slices(self, frame_rapidity: float, times) -> tuple:
-        """The matter and stress parts on many slices of one frame at once, as arrays (`causal.parts`)."""
-        from rodparadox.physics.causal.parts import rod_parts_on_slices  # scipy's splines: only for this
+    def rod_parts_on_slices(self, frame_rapidity, times, tables=None, tolerance: float | None = None,
+                            ends=None) -> tuple:
+        """The matter and stress parts on many slices at once, as arrays (`causal.slices`)."""
+        from rodparadox.physics.causal.slices import PARTS_TOLERANCE, rod_parts_on_slices
 
-        return rod_parts_on_slices(self, frame_rapidity, times)
+        return rod_parts_on_slices(self, frame_rapidity, times, tables,
+                                   PARTS_TOLERANCE if tolerance is None else tolerance, ends)
+
+    def chart_tables(self, lo: float, hi: float, tolerance: float | None = None):
+        """Tables of r+, a and r-, b over chart times [lo, hi] (`causal.slices.ChartTables`)."""
+        from rodparadox.physics.causal.slices import TABLE_TOLERANCE, ChartTables
+
+        return ChartTables(self, lo, hi, TABLE_TOLERANCE if tolerance is None else tolerance)
+
+    def points_on_slice(self, frame_rapidity: float, t: float, sigmas) -> tuple:
+        """Where each material point sigma is on the slice t of the frame, and its rapidity there (`chart`)."""
+        return points_on_slice(self, frame_rapidity, t, sigmas)
 
     def compression_range(self) -> tuple[float, float]:
         """The least and largest ln lam anywhere in the rod over its whole history, 0 (unstressed) inside."""

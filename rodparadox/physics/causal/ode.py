@@ -137,16 +137,19 @@ def _newton(psi: np.ndarray, r_in: np.ndarray, psi_a: float, half: float, c: flo
     return None
 
 
-def solve_contact(lo: float, hi: float, inp, psi0: float, c: float) -> tuple[Solved, float | None]:
+def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, budget=None) -> tuple[Solved, float | None]:
     """Integrate d psi/dT = -c sinh(psi - in(T)) from lo (psi = psi0, psi0 > in(lo)) to hi, stopping where
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
-    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi)."""
+    Returns the dense solution and the chart time of the separation (None when the contact lasts to hi).
+    `budget`: a `solve.Budget` each step tried is spent from, or None."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
     halvings = 0
     noise = _roughness(inp, lo, hi)
     while a < hi:
+        if budget is not None:
+            budget.spend()
         b = hi if a + h >= hi else a + h
         s = a + 0.5 * (b - a) * (_X + 1.0)
         s[0], s[-1] = a, b

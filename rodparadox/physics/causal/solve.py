@@ -40,6 +40,21 @@ from rodparadox.physics.causal.ode import falling_root, solve_contact
 MAX_WINDOWS = 5000
 
 
+class Budget:
+    """A bound on a run's work that a caller may set (the page's offered speeds): each window, each stretch of an
+    end's window (free, in contact, a separation) and each step of a contact's integration spends one; past `limit`
+    the run is refused."""
+
+    def __init__(self, limit: int):
+        self.limit, self.spent = limit, 0
+
+    def spend(self) -> None:
+        self.spent += 1
+        if self.spent > self.limit:
+            raise ScenarioError(f"the causal rod's run takes more than {self.limit} steps here; this scenario does "
+                                f"not settle within the bound asked for.")
+
+
 # --- pieces of an invariant ------------------------------------------------------------------------------------
 
 class _Const:
@@ -302,8 +317,10 @@ def _end_coordinates(sol_a, sol_b, end: str, T: float, L: float) -> tuple[float,
     return (sol_a(T), sol_b(T)) if end == "left" else (sol_a(T + L), sol_b(T - L))
 
 
-def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_first: float) -> Solution:
-    """Run the rod from chart time T_first (the first contact; before it the rod rests unstressed)."""
+def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_first: float,
+          budget: Budget | None = None) -> Solution:
+    """Run the rod from chart time T_first (the first contact; before it the rod rests unstressed); `budget`: a bound
+    on its work besides MAX_WINDOWS, or None."""
     plus, minus = Invariant(), Invariant()
     # undisturbed before the first contact; the windows start one crossing time early
     plus.append(_Const(T_first - 2 * L, T_first, 0.0))
@@ -359,6 +376,8 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
     windows = 0
     while True:
         windows += 1
+        if budget is not None:
+            budget.spend()
         if windows > MAX_WINDOWS:
             raise ScenarioError(f"the rod and particles are still in contact after {MAX_WINDOWS} crossing times of "
                                 f"the rod; this scenario does not settle.")
@@ -370,6 +389,8 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
             for lo, hi, inp in end_inputs(end, T0, T1):
                 T = lo
                 while T < hi:
+                    if budget is not None:  # each contact, separation and free stretch
+                        budget.spend()
                     if rider is not None and rider.riding:
                         any_contact = True
                         c = M_over_m[rider.name] / L
@@ -387,7 +408,7 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
                             state[end] = piece.psi(hi)
                             T = hi
                             continue
-                        piece, T_sep = solve_contact(T, hi, inp, psi, c)
+                        piece, T_sep = solve_contact(T, hi, inp, psi, c, budget)
                         out_append(end, piece)
                         if T_sep is None:
                             state[end] = piece.psi(hi)
