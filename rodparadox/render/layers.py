@@ -465,8 +465,7 @@ _A, _B = Particle("A"), Particle("B")
 _REST, _MOVING = Simultaneity("rest", 2.2), Simultaneity("moving", 2.1)
 _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS = OtherAxes(), LightCones(), Hyperbolae(), Impacts()
 _SEPARATIONS = Separations()
-#: the causal rod's own layers (`causal_layers`), by name here: their module is imported only when a causal rod is
-#: drawn (`drawing_order`), so a rigid figure never loads it
+#: the causal rod's own layers, by name: `causal_layers` is imported only when one is drawn (`drawing_order`)
 _COMPRESSION, _FRONTS, _CONTACTS = "compression", "fronts", "contacts"
 
 #: the drawing order: the grid behind, the world-sheet, the rod's inside, its ends, the particles, the lines of
@@ -491,8 +490,7 @@ def _ordered(order: tuple, causal: bool) -> tuple[Layer, ...]:
 
 
 def drawing_order(history, legend: bool = False) -> tuple[Layer, ...]:
-    """The layers that may draw for `history` (one, or a tuple of them), in `LAYERS`' order; `legend`: that may
-    give it a legend entry, in `LEGEND`'s order."""
+    """The layers that may draw for `history` (one or a tuple), in `LAYERS`' order (`legend`: in `LEGEND`'s)."""
     causal = any(is_causal(h) for h in (history if isinstance(history, tuple) else (history,)))
     return _ordered(_LEGEND if legend else _DRAWING, causal)
 
