@@ -9,6 +9,7 @@ This module holds what every chart shares: the view's word, a material clock, an
 from __future__ import annotations
 
 import bisect
+import functools
 import math
 from dataclasses import dataclass
 
@@ -43,8 +44,11 @@ def refuse_frame_extras(frames, **extras) -> None:
                           "{view} has only the rod's own view: leave it out, or give a frame beside it ({frame} "
                           "rest,{view}).", view=ROD_WORD)
 
-#: Gauss-Legendre nodes for a material clock between fronts (the integrand is analytic there)
-_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)
+@functools.cache
+def _gauss_legendre() -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights for a material clock between fronts (the integrand is analytic there);
+    made on first use: numpy.polynomial is not loaded by what never reads a clock (`--frame rod` does)."""
+    return np.polynomial.legendre.leggauss(24)
 
 
 def chart_of(history):
@@ -94,7 +98,7 @@ class Clock:
 
     def _integral(self, a: float, b: float) -> float:
         mid, half = 0.5 * (a + b), 0.5 * (b - a)
-        return half * sum(w * self.rate(mid + half * s) for s, w in zip(_NODES, _WEIGHTS))
+        return half * sum(w * self.rate(mid + half * s) for s, w in zip(*_gauss_legendre()))
 
     def tau(self, T: float) -> float:
         k = max(0, min(len(self.knots) - 2, bisect.bisect_right(self.knots, T) - 1))

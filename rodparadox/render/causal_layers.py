@@ -24,17 +24,12 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from rodparadox.physics.frames import sampling_tolerance
-from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
+from rodparadox.render.layer_base import Layer, LayerArtists, is_causal, line_handle
 from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 from rodparadox.render.styles import Style
 
 #: swatches in the legend's ramp of the compression scale
 SWATCHES = 7
-
-
-def is_causal(history) -> bool:
-    """The causal rod (its chart, `solution`, is what these layers read); any other model draws none of them."""
-    return history.fronts is not None
 
 
 # --- the compression scale: pure numbers, shared by the layer, its legend entry and the tests ----------------

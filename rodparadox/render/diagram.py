@@ -22,7 +22,7 @@ from rodparadox.physics import rod
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
 from rodparadox.render.styles import FORMATS, STYLES, Style
-from rodparadox.render.causal_layers import HANDLER_MAP, is_causal
+from rodparadox.render.layer_base import is_causal
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, one_scale, panel_of, tick_step
 from rodparadox.render.legibility import material_lines_that_fit
@@ -212,6 +212,16 @@ def _same_scales(panels: list[Panel], per_row: int) -> None:
             p.title_lines = [p.title]
 
 
+def _causal_handlers(history) -> dict:
+    """The legend handlers of the causal rod's entries (its compression scale), where one is drawn: a rigid figure
+    never imports `causal_layers`. (`tuple` beside them: the rod's entry, strip and line in one.)"""
+    if not any(is_causal(h) for h in (history if isinstance(history, tuple) else (history,))):
+        return {}
+    from rodparadox.render.causal_layers import HANDLER_MAP
+
+    return HANDLER_MAP
+
+
 class _Builder:
     """One diagram's panels, laid out and then drawn into a target."""
 
@@ -284,7 +294,7 @@ class _Builder:
                                bbox_to_anchor=(0.5, (oy + layout.legend_height - 2) / height),
                                ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
-                               handler_map={tuple: HandlerTuple(ndivide=1), **HANDLER_MAP})  # the rod: strip and line in one
+                               handler_map={tuple: HandlerTuple(ndivide=1), **_causal_handlers(self.histories)})
         legend.set_gid("legend")
         infos.sort(key=lambda info: info.letter)
         return Diagram(target, tuple(infos),

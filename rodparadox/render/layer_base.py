@@ -15,6 +15,11 @@ from rodparadox.physics.frames import FrameView
 from rodparadox.render.styles import Ink, Style
 
 
+def is_causal(history) -> bool:
+    """The causal rod (its chart, `solution`, is what its own layers read); any other model draws none of them."""
+    return history.fronts is not None
+
+
 class Options(NamedTuple):
     """The teacher's extras, all off by default because they crowd a printed figure; and what keeps a fast
     scenario legible (`insets`, on by default; `equal_scales`)."""

@@ -15,6 +15,7 @@ beside their marker).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -31,9 +32,9 @@ from rodparadox.physics.kinematics import Event, HyperbolicArc
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
-                                          impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
+                                          impact_marker, is_causal, line_handle, line_kwargs, marker_kwargs,
+                                          widest_line)
 from rodparadox.render.labels import Label
-from rodparadox.render.causal_layers import Compression, Contacts, Fronts, is_causal
 from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
@@ -463,16 +464,42 @@ _SHEET, _ROD_LINES, _ROD_NOW, _CLOCKS, _ROD = WorldSheet(), MaterialLines(), Rod
 _A, _B = Particle("A"), Particle("B")
 _REST, _MOVING = Simultaneity("rest", 2.2), Simultaneity("moving", 2.1)
 _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS = OtherAxes(), LightCones(), Hyperbolae(), Impacts()
-_COMPRESSION, _FRONTS, _CONTACTS, _SEPARATIONS = Compression(), Fronts(), Contacts(), Separations()
+_SEPARATIONS = Separations()
+#: the causal rod's own layers, by name: `causal_layers` is imported only when one is drawn (`drawing_order`)
+_COMPRESSION, _FRONTS, _CONTACTS = "compression", "fronts", "contacts"
 
 #: the drawing order: the grid behind, the world-sheet, the rod's inside, its ends, the particles, the lines of
 #: simultaneity, the extras' lines, the impacts on top (zorders decide what covers what; this order breaks ties)
-LAYERS: tuple[Layer, ...] = (Grid(), _SHEET, _COMPRESSION, _ROD_LINES, _FRONTS, _ROD_NOW, _CLOCKS, _CONTACTS, _ROD,
-                             _A, _B, _REST, _MOVING, _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS, _SEPARATIONS)
+_DRAWING = (Grid(), _SHEET, _COMPRESSION, _ROD_LINES, _FRONTS, _ROD_NOW, _CLOCKS, _CONTACTS, _ROD, _A, _B, _REST,
+            _MOVING, _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS, _SEPARATIONS)
 #: the legend's order, as the paper's caption reads: bodies, impacts, lines of simultaneity, then the extras
-LEGEND: tuple[Layer, ...] = (_ROD, _COMPRESSION, _A, _B, _IMPACTS, _SEPARATIONS, _CONTACTS, _FRONTS, _REST, _MOVING,
-                             _OTHER_AXES, _CONES, _ROD_LINES, _ROD_NOW, _CLOCKS, _HYPERBOLAE)
-assert set(LEGEND) <= set(LAYERS)
+_LEGEND = (_ROD, _COMPRESSION, _A, _B, _IMPACTS, _SEPARATIONS, _CONTACTS, _FRONTS, _REST, _MOVING, _OTHER_AXES, _CONES,
+           _ROD_LINES, _ROD_NOW, _CLOCKS, _HYPERBOLAE)
+assert set(_LEGEND) <= set(_DRAWING)
+
+
+@functools.cache
+def _ordered(order: tuple, causal: bool) -> tuple[Layer, ...]:
+    """`order` with the causal rod's layers in their places (their module imported then), or without them."""
+    if not causal:  # they draw nothing, and give no legend entry, for another rod
+        return tuple(layer for layer in order if not isinstance(layer, str))
+    from rodparadox.render.causal_layers import Compression, Contacts, Fronts
+
+    own = {layer.name: layer for layer in (Compression(), Fronts(), Contacts())}
+    return tuple(own[layer] if isinstance(layer, str) else layer for layer in order)
+
+
+def drawing_order(history, legend: bool = False) -> tuple[Layer, ...]:
+    """The layers that may draw for `history` (one or a tuple), in `LAYERS`' order (`legend`: in `LEGEND`'s)."""
+    causal = any(is_causal(h) for h in (history if isinstance(history, tuple) else (history,)))
+    return _ordered(_LEGEND if legend else _DRAWING, causal)
+
+
+def __getattr__(name: str):
+    """`LAYERS` (the drawing order) and `LEGEND` (the legend's order): every layer, the causal rod's included."""
+    if name in ("LAYERS", "LEGEND"):
+        return _ordered(_LEGEND if name == "LEGEND" else _DRAWING, True)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def legend_entries(style: Style, history: RodHistory, options: Options, clock_step: float,
@@ -482,7 +509,7 @@ def legend_entries(style: Style, history: RodHistory, options: Options, clock_st
     drawn in each panel, when fewer than asked)."""
     # two rod models in one figure (--rod both): each layer's entry for the causal rod, else for the rigid one
     histories = sorted(history, key=lambda h: not is_causal(h)) if isinstance(history, tuple) else (history,)
-    enabled = [layer for layer in LEGEND if layer.enabled(options)]
+    enabled = [layer for layer in drawing_order(history, legend=True) if layer.enabled(options)]
     entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
                      if e is not None), None) for layer in enabled]
     if rod_lines and options.rod_lines:

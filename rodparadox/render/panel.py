@@ -6,9 +6,9 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.history import RodHistory
 from rodparadox.render.styles import Style
-from rodparadox.render.causal_layers import is_causal
 from rodparadox.render.labels import Area, place
-from rodparadox.render.layers import LAYERS, Options, PanelContext, widest_line
+from rodparadox.render.layer_base import is_causal
+from rodparadox.render.layers import Options, PanelContext, drawing_order, widest_line
 from rodparadox.render.layout import Metrics, Panel
 from rodparadox.render.legibility import draw_inset, inset_plan, label_boxes, material_lines_that_fit
 from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
@@ -31,7 +31,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
                          clock_step, rod_lines)
     drawn: dict[str, list] = {}
     obstacles, guides, labels = [], [], []
-    for layer in LAYERS:
+    for layer in drawing_order(history):
         if not (layer.enabled(options) and layer.applies(history)):
             continue
         out = layer.draw(ax, panel)
