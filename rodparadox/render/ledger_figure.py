@@ -10,8 +10,8 @@ determinism and gids as `render`.
 
 The causal rod (README, "The causal rod") has nothing hidden: its (E, p) is split into its matter part (a solid
 line, as the rigid rod's kinetic part) and its stress part, shaded between the particles plus matter and the
-total: the real, local version of the rigid rod's hidden momentum, which sits where the rigid figure shades the
-hidden part. Its events are contacts and separations (B₁, A′₁), labelled above the panel on two tiers where close.
+total: its pressure's share (von Laue's momentum of a stressed body), drawn where the rigid figure shades the hidden
+part, though the two are not the same quantity. Its events are contacts and separations (B₁, A′₁), labelled above the panel on two tiers where close.
 With two histories (`draw_both`) the rigid rod's rows sit above the causal rod's, each frame's panels on one
 time axis and one scale of E and of p.
 """
@@ -355,7 +355,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
 
 
 #: the legend's words for the causal rod's stress part (README, "The causal rod")
-STRESS_TEXT = "rod, stress (hatched): the real, local version\nof the rigid rod's hidden momentum"
+STRESS_TEXT = "rod, stress (hatched): its pressure's share\nof the rod's energy and momentum"
 
 
 def _rods_legend(histories: tuple, st: Style) -> tuple[list, list[str]]:

@@ -1,9 +1,10 @@
 """The causal rod's ledger (README, "The causal rod"): each body's (E, p) at every contact and separation and on
 chosen slices of a frame, the rod's split into its matter part and its stress part. Pure.
 
-The stress part, p (u u - eta) integrated across the slice, is the real, local version of the rigid model's
-hidden momentum: the rigid ledger's "hidden" row is a total less the bodies (no field carries it), here it is the
-rod's own stress, so the rows add up to the total before the first contact with nothing hidden. The split costs
+The stress part, p (u u - eta) integrated across the slice, is von Laue's momentum of a stressed body. The rigid
+ledger's "hidden" row is a total less the bodies (no field carries it); here every part is the rod's own, so the
+rows add up to the total before the first contact with nothing hidden. (What corresponds to the rigid hidden part is
+the total less the rest mass moving with the rod, not the stress part alone: their near match in fig2 is chance.) The split costs
 an integral along the slice (`physics.causal_parts`), so it is taken at the events and at the times asked for;
 a dense sampling (JSON, CSV without times) gives the rod's total only, which is exact and cheap.
 
@@ -32,12 +33,13 @@ FORMAT = "sears-paradox-ledger/1"
 #: slices of a frame's window in the dense sampling (JSON and CSV without times): the rod's total only
 DENSE_SLICES = 240
 #: the rows' labels: the stress row says what it is
-MATTER, STRESS = "rod, matter", "rod, stress (the real hidden momentum)"
+MATTER, STRESS = "rod, matter", "rod, stress"
 UNITS = "E in M c², p in M c, M the rod's mass; t in the unit L is given in"
 NOTE = ("The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, elastic "
-        "energy included) and its stress part (its pressure's p (u u - η), integrated across the slice): the "
-        "stress part is the real, local version of the rigid model's hidden momentum. Particles, matter and "
-        "stress add up to the total before the first contact; nothing is hidden.")
+        "energy included) and its stress part (its pressure's p (u u - η), integrated across the slice: von "
+        "Laue's momentum of a stressed body). Particles, matter and stress add up to the total before the first "
+        "contact; nothing is hidden. The rigid ledger's hidden part corresponds to this rod's total less its rest "
+        "mass moving with it, (M/L)∫(cosh ψ, sinh ψ) dσ, not to the stress part alone.")
 
 
 def event_name(label: str) -> str:
@@ -186,8 +188,8 @@ def document(history, frames: Sequence[Frame], at: Sequence[float] | None = None
                          "masses": {"rod": 1.0, **{p.name: p.mass for p in s.particles}}},
             "units": {"E": "M c^2", "p": "M c", "t": "the unit L is given in"},
             "bodies": {"rod_matter": "the rod's matter part: rest-frame energy density moving with it",
-                       "rod_stress": "the rod's stress part: the real, local version of the rigid model's hidden "
-                                     "momentum"},
+                       "rod_stress": "the rod's stress part: its pressure's p (u u - eta) integrated across the "
+                                     "slice (von Laue's momentum of a stressed body)"},
             "frames": out}
 
 

@@ -1,5 +1,5 @@
 """The causal rod's ledger figure (issue 16, item 5): its matter and stress parts drawn as the table gives them, the
-stress part named as the real, local version of the rigid rod's hidden momentum, and with both rods the rigid rows
+stress part named as its pressure's share of the rod's energy and momentum, and with both rods the rigid rows
 above the causal ones on one scale.
 
 The figure's values are checked against `tables.causal_ledger` (the split integrated slice by slice by
@@ -86,7 +86,7 @@ def test_the_stress_band_closes_the_ledger_on_every_slice():
 
 def test_the_legend_names_the_stress_part_as_the_real_local_hidden_momentum():
     texts = [t.get_text().replace("\n", " ") for t in causal_figure().legends[0].get_texts()]
-    assert "rod, stress (hatched): the real, local version of the rigid rod's hidden momentum" in texts
+    assert "rod, stress (hatched): its pressure's share of the rod's energy and momentum" in texts
     assert any(t.startswith("rod, matter") for t in texts) and "total before the first contact" in texts
     names = sorted(a.get_text() for a in causal_figure().findobj(lambda a: str(a.get_gid()).startswith("a-label-")))
     assert names == ["B\N{PRIME}\N{SUBSCRIPT ONE}", "B\N{SUBSCRIPT ONE}"]

@@ -118,7 +118,7 @@ def _run(scenario: Scenario, starts: dict[str, Event], budget: Budget | None = N
 @dataclass(frozen=True)
 class RodParts:
     """The causal rod's (E, p) on a slice: matter (rho u u, rho the rest-frame energy density, elastic energy
-    included) and stress (p (u u - eta), the real, local hidden momentum); their sum is the rod's total."""
+    included) and stress (p (u u - eta), von Laue's momentum of a stressed body); their sum is the rod's total."""
 
     matter: EnergyMomentum
     stress: EnergyMomentum
