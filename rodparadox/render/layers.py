@@ -31,9 +31,9 @@ from rodparadox.physics.kinematics import Event, HyperbolicArc
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
-                                          impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
+                                          contacts_last, impact_marker, line_handle, line_kwargs, marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
-from rodparadox.render.causal_layers import Compression, Contacts, Fronts, is_causal
+from rodparadox.render.causal_layers import Compression, Contacts, Fronts
 from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
 from rodparadox.tolerances import SAME_LINE
@@ -110,9 +110,10 @@ class RodNow(Layer):
     def enabled(self, options):
         return options.rod_now
 
+    def applies(self, history):
+        return history.turning is not None
+
     def draw(self, ax, panel):
-        if panel.history.turning is None:
-            return LayerArtists()
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
         lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.turning.now_lines()]
@@ -137,7 +138,7 @@ class Clocks(Layer):
         return options.proper_time
 
     def applies(self, history):
-        return not is_causal(history)  # a chart curve's proper time is not integrated yet (plot refuses it)
+        return history.fronts is None  # a chart curve's proper time is not integrated yet (plot refuses it)
 
     def draw(self, ax, panel):
         st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
@@ -418,8 +419,8 @@ class Impacts(Layer):
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if is_causal(history):  # named by its first contact, so the legend shows how labels read
-            first = next(i for i in history.impacts if i.kind == "contact")
+        if contacts_last(history):  # named by its first contact, so the legend shows how labels read
+            first = next(i for i in history.impacts if not i.is_separation)
             return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
         return Line2D([], [], **impact_marker(style)), "impact"
 
@@ -431,13 +432,13 @@ class Separations(Layer):
     name = "separations"
 
     def applies(self, history):
-        return is_causal(history)
+        return contacts_last(history)
 
     def draw(self, ax, panel):
         return LayerArtists()
 
     def legend_entry(self, style, history, options, clock_step=None):
-        first = next((i for i in history.impacts if i.kind == "separation"), None)
+        first = next((i for i in history.impacts if i.is_separation), None)
         if first is None:
             return None
         name = impact_name(first.label[:-1])
@@ -477,8 +478,9 @@ def legend_entries(style: Style, history: RodHistory, options: Options, clock_st
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
     time between clock ticks, chosen by the diagram from its panels' time spans; `rod_lines`: the material lines
     drawn in each panel, when fewer than asked)."""
-    # two rod models in one figure (--rod both): each layer's entry for the causal rod, else for the rigid one
-    histories = sorted(history, key=lambda h: not is_causal(h)) if isinstance(history, tuple) else (history,)
+    # two rod models in one figure (--rod both): each layer's entry for the first rod that gives one, a rod whose
+    # contacts last first (the impacts' entry names them contacts)
+    histories = sorted(history, key=lambda h: not contacts_last(h)) if isinstance(history, tuple) else (history,)
     enabled = [layer for layer in LEGEND if layer.enabled(options)]
     entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
                      if e is not None), None) for layer in enabled]
