@@ -150,8 +150,9 @@ class BoostScene:
         for artist in self.layered:
             artist.remove()
         panel = self.panel(frame)
-        sheet = tuple(artist for layer in SHEET for artist in layer.draw(ax, panel).artists)
-        bodies = tuple(artist for layer in BODIES for artist in layer.draw(ax, panel).artists)
+        # each layer where the run has what it draws (the compression and fronts: a run with fronts)
+        sheet = tuple(artist for layer in SHEET if layer.applies(history) for artist in layer.draw(ax, panel).artists)
+        bodies = tuple(artist for layer in BODIES if layer.applies(history) for artist in layer.draw(ax, panel).artists)
         impacts = IMPACTS.draw(ax, panel).artists
         self.layered = (*sheet, *bodies, *impacts)
         for (other, axis), line in self.axes_of.items():
