@@ -10,6 +10,7 @@ matplotlib is imported only to draw a figure.
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 
 import click
@@ -211,4 +212,8 @@ def _text(fmt: str, histories: tuple, frames, times) -> str:
         rows = [["rod", *ledger_report.CSV_COLUMNS]]
         rows += [[h.model, *row] for h in histories for row in _writers(h)["rows"](h, frames, times)]
         return "\n".join(",".join(row) for row in rows) + "\n"
-    return "\n".join(_writers(h)[fmt](h, frames, times) for h in histories)
+    from rodparadox.tables.comparison import comparison_note
+
+    note = textwrap.wrap(comparison_note(histories, frames), 110)
+    head = {"latex": "".join(f"% {line}\n" for line in note)}.get(fmt, "\n".join(note) + "\n\n")
+    return head + "\n".join(_writers(h)[fmt](h, frames, times) for h in histories)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import errno
 import sys
+import textwrap
 from pathlib import Path
 
 import click
@@ -110,19 +111,23 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
     s = load_scenario(scenario, v, L)
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
     histories = run_rods(s, scenario, frames)
+    from rodparadox.tables.comparison import comparison_note
+
+    note = comparison_note(histories, frames) if len(histories) > 1 else ""
     if fmt == "text":
         from rodparadox.io.export import rods_to_table, to_table
 
-        emit(to_table(histories[0], frames) if len(histories) == 1 else rods_to_table(histories, frames), nl=False)
+        emit(to_table(histories[0], frames) if not note else rods_to_table(histories, frames, note), nl=False)
         return
     from rodparadox.tables import build as tables
 
     write = tables.events_markdown if fmt == "markdown" else tables.events_latex
-    if len(histories) == 1:
+    if not note:
         emit(write(histories[0], frames), nl=False)
         return
+    head = f"{note}\n\n" if fmt == "markdown" else "".join(f"% {line}\n" for line in textwrap.wrap(note, 110))
     title = "**The {} rod**\n\n" if fmt == "markdown" else "% The {} rod\n"
-    emit("\n".join(title.format(h.model) + write(h, frames) for h in histories), nl=False)
+    emit(head + "\n".join(title.format(h.model) + write(h, frames) for h in histories), nl=False)
 
 
 @main.command()

@@ -136,6 +136,10 @@ class Whole(click.IntRange):
                 self.fail(_not_decimal(value, "integer"), param, ctx)
         return super().convert(value, param, ctx)
 
+    def _describe_range(self) -> str:
+        """The bounds as help shows them, or nothing for a whole number without bounds (click wrote "x<=None")."""
+        return "" if self.min is None and self.max is None else super()._describe_range()
+
 
 NUMBER = Decimal()
 

@@ -1,4 +1,5 @@
-"""Fixtures and helpers shared by the test files, hypothesis's profile, and how the suite spreads over processes.
+"""Fixtures shared by the test files, hypothesis's profile, and how the suite spreads over processes (the
+helpers the test files import are in tests/helpers.py, on the path through pyproject's `pythonpath`).
 
 `python -m pytest` runs on two worker processes (pytest-xdist, `-n auto` capped at 2 in pyproject.toml and
 below) with `--dist loadgroup`: tests are handed out one by one, except those of a file marked
@@ -7,7 +8,6 @@ one worker so that their session and module fixtures are built once. Every other
 files (histories, drawn figures) is filled by each worker for itself.
 """
 
-import functools
 import gc
 import os
 from pathlib import Path
@@ -15,9 +15,6 @@ from pathlib import Path
 import pytest
 from hypothesis import settings
 
-from rodparadox.io.scenario import load
-from rodparadox.physics.rigid.engine import History
-from rodparadox.physics.rigid import run
 
 # CI (CI=true) runs the same generated examples every time, so a landing never hangs on a lucky draw;
 # a developer's run draws new ones and finds what CI would not
@@ -71,20 +68,6 @@ def pytest_sessionfinish(session):
     gc.freeze()
 
 
-@functools.lru_cache(maxsize=None)
-def history(name: str, v: float | None = None, L: float | None = None) -> History:
-    """A built-in scenario's history at v and L (None: the scenario's own), run once per process; it is immutable."""
-    return run(load(name).with_overrides(v=v, L=L))
-
-
-@functools.lru_cache(maxsize=None)
-def causal_history(name: str, v: float | None = None, L: float | None = None):
-    """A built-in scenario's causal rod (README, "The causal rod") at v and L, run once per process (fig2: ~0.3 s)."""
-    from rodparadox.physics.causal import run as run_causal
-
-    return run_causal(load(name).with_overrides(v=v, L=L, rod="causal"))
-
-
 @pytest.fixture
 def unwritable_folder(tmp_path):
     """A folder no new file can be written into: /sys for root (who writes through mode bits), else a locked one."""
@@ -98,101 +81,3 @@ def unwritable_folder(tmp_path):
         yield folder
     finally:
         folder.chmod(0o700)
-
-
-# --- shared by test_cli.py, test_animate_cli.py, test_robust_cli.py (t13cli) ---------------------------------
-
-#: runs several command lines one after another in one interpreter (argv[1]: JSON list of argvs, argv[2]: the
-#: file the results go to, argv[3]: a file to point standard output at before each command, or ""). Before each
-#: command a marker is written to standard output and error, so that each command's output can be told apart;
-#: after it, both streams are flushed (data a fresh process would have left for its last flush is a failure) and
-#: the drawing and integrating packages imported so far are recorded: the first command after which one is
-#: there is the one that imported it.
-_IN_ONE_PROCESS = """
-import json, os, sys
-from sears_paradox_cli.main import main
-argvs, results, stdout_path = json.loads(sys.argv[1]), sys.argv[2], sys.argv[3]
-MARK = b"\\n--- sears-paradox command %d ---\\n"
-found = []
-for k, argv in enumerate(argvs):
-    if stdout_path:  # the command's standard output, afresh (a failed write points it at /dev/null)
-        fd = os.open(stdout_path, os.O_WRONLY)
-        os.dup2(fd, 1)
-        os.close(fd)
-    else:
-        os.write(1, MARK % k)
-    os.write(2, MARK % k)
-    code, left = 0, None
-    try:
-        main(argv)
-    except SystemExit as e:
-        code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.flush()
-        except OSError as e:
-            left = repr(e)
-    found.append({"argv": argv, "code": code, "left_unflushed": left,
-                  "modules": sorted({m.split(".")[0] for m in sys.modules} & {"matplotlib", "scipy", "numpy"})})
-with open(results, "w") as f:
-    json.dump(found, f)
-"""
-
-
-def commands_in_one_process(argvs, tmp_path, stdout_path: str = "") -> list[dict]:
-    """Run `argvs` one after another in one fresh interpreter (a subprocess, its output in pipes; with
-    `stdout_path`, standard output pointed at that file before each command). Returns, for each command, a dict:
-    argv, code (exit status), stdout and stderr (its own part of each stream), left_unflushed (None, or the error a
-    last flush raised) and modules (which of matplotlib, scipy, numpy were imported by then)."""
-    import json
-    import subprocess
-    import sys
-
-    results = tmp_path / "commands_in_one_process.json"
-    process = subprocess.run([sys.executable, "-c", _IN_ONE_PROCESS, json.dumps(argvs), str(results), stdout_path],
-                             capture_output=True, timeout=300)
-    assert process.returncode == 0, process.stderr.decode()[-2000:]
-    found = json.loads(results.read_text())
-    assert [r["argv"] for r in found] == [list(a) for a in argvs]
-
-    def parts(data: bytes) -> list[bytes]:
-        pieces = data.split(b"\n--- sears-paradox command ")
-        assert pieces[0] == b"", pieces[0]
-        return [piece.split(b" ---\n", 1)[1] for piece in pieces[1:]]
-
-    errs = parts(process.stderr)
-    outs = parts(process.stdout) if not stdout_path else [b""] * len(argvs)
-    assert len(errs) == len(outs) == len(argvs)
-    for result, out, err in zip(found, outs, errs):
-        result.update(stdout=out, stderr=err)
-    return found
-
-
-# --- shared by test_render.py, test_causal_draw.py, test_legible_panels.py (t13render) ---
-
-#: one Agg renderer per dpi for every measuring draw: a text's extent depends only on its font and the dpi, and
-#: matplotlib caches text metrics per renderer, so a new renderer for each figure measured every tick label again
-_MEASURING_RENDERERS: dict = {}
-#: the shared renderers' size in pixels; a larger figure gets its own renderer, as Agg would give it
-_MEASURING_SIZE = 3000
-
-
-def measuring_renderer(fig):
-    """Lay out `fig` as Agg draws it, without rasterising (Figure.draw_without_rendering), and return the renderer
-    that measured it: every text's extent and every tick is what a rendered PNG has. Call it inside the figure's
-    style_context. The renderer is shared by every figure of the same dpi that fits it."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
-
-    class MeasuringCanvas(FigureCanvasAgg):
-        def get_renderer(self):
-            w, h = self.figure.bbox.size
-            if max(w, h) > _MEASURING_SIZE:
-                return super().get_renderer()
-            dpi = self.figure.dpi
-            if dpi not in _MEASURING_RENDERERS:
-                _MEASURING_RENDERERS[dpi] = RendererAgg(_MEASURING_SIZE, _MEASURING_SIZE, dpi)
-            return _MEASURING_RENDERERS[dpi]
-
-    canvas = MeasuringCanvas(fig)
-    fig.draw_without_rendering()
-    return canvas.get_renderer()

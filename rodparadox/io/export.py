@@ -10,10 +10,12 @@ from __future__ import annotations
 import csv
 import io
 import json
+import textwrap
 from typing import Any
 
 from rodparadox.physics.history import RodHistory
-from rodparadox.physics.frames import check_below_c, Frame, frame_heading, FrameView, sampling_tolerance, view
+from rodparadox.physics.frames import (check_below_c, Frame, frame_heading, FrameView, sampling_tolerance, time_order,
+                                      view)
 from rodparadox.numbers import coordinate_format, exact, exact_signed, velocity_format
 from rodparadox.physics.kinematics import ChartCurve, HyperbolicArc, Line, Segment
 
@@ -138,9 +140,11 @@ def rods_to_csv(histories, frames: tuple[Frame, ...]) -> str:
     return out.getvalue()
 
 
-def rods_to_table(histories, frames: tuple[Frame, ...]) -> str:
-    """Several rods' events tables, one after the other, each headed by its rod."""
-    return "\n".join(f"The {h.model} rod\n\n" + to_table(h, frames) for h in histories)
+def rods_to_table(histories, frames: tuple[Frame, ...], note: str = "") -> str:
+    """Several rods' events tables, one after the other, each headed by its rod, after a `note` (the particles
+    they share, where their first impacts fall)."""
+    head = "\n".join(textwrap.wrap(note, 110)) + "\n\n" if note else ""
+    return head + "\n".join(f"The {h.model} rod\n\n" + to_table(h, frames) for h in histories)
 
 
 # --- the events table ---------------------------------------------------------------------------------
@@ -155,7 +159,10 @@ def to_table(history: RodHistory, frames: tuple[Frame, ...]) -> str:
     views = [view(history, f) for f in frames]
     for fv in views:
         check_below_c(fv)
-    events = [e for fv in views for e in fv.events]
+    ordered = [[fv.events[k] for k in time_order([e.t for e in fv.events],
+                                                   s.L + max((abs(e.t) for e in fv.events), default=0.0))]
+               for fv in views]  # each frame's time order (the rod's own order at one instant), as the handout's
+    events = [e for frame_events in ordered for e in frame_events]
     coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
     velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
                                                                e.rod_velocity_before, e.rod_velocity_after)])
@@ -176,11 +183,11 @@ def to_table(history: RodHistory, frames: tuple[Frame, ...]) -> str:
 
     lines = [f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)}   (c = 1; x and t in the unit L is given in)"]
     row = iter(rows)
-    for f, fv in zip(frames, views):
+    for f, frame_events in zip(frames, ordered):
         lines += ["", frame_heading(f) + f": velocity {exact_signed(f.velocity)} relative to S; the rod first moves at "
                   f"{exact_signed(f.rod_velocity())}",
                   line(heads)]
-        for e in fv.events:
+        for e in frame_events:
             note = f"  simultaneous with {e.impact.simultaneous_with}" if e.impact.simultaneous_with else ""
             note += "  (rod still turning)" if e.impact.while_turning else ""
             lines.append(line(next(row)) + note)

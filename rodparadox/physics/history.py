@@ -102,6 +102,9 @@ class Fronts(Protocol):
     def compression_range(self) -> tuple[float, float]:
         """The least and largest ln lam (lam the compression) anywhere in the rod over its whole history."""
 
+    def points_on_slice(self, frame_rapidity: float, t: float, sigmas) -> tuple:
+        """Where each material point sigma is on the slice t of the frame, and its rapidity there (two arrays)."""
+
 
 @runtime_checkable
 class RodHistory(Protocol):

@@ -8,7 +8,6 @@ world-lines once, for a caller that reads many instants of one frame.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -58,9 +57,9 @@ def strip_at(history: RodHistory, frame: Frame, t: float, flash: float, points: 
     """The strip of frame `frame` at its time t; an impact flashes when |t - its time| <= `flash`. `material`:
     the world-lines `material_points(history, frame, points)` gives, when the caller keeps them."""
     eta = frame.rapidity
-    if history.fronts is not None:  # the causal rod: read off its chart directly (`_on_chart`), not world-line by line
+    if history.fronts is not None:  # the causal rod: read off its chart directly, not world-line by world-line
         sigmas = np.linspace(0.0, history.scenario.L, points if material is None else len(material))
-        x, rapidity = _on_chart(history, eta, t, sigmas)
+        x, rapidity = history.fronts.points_on_slice(eta, t, sigmas)
     else:
         if material is None:
             material = material_points(history, frame, points)
@@ -72,40 +71,3 @@ def strip_at(history: RodHistory, frame: Frame, t: float, flash: float, points: 
     lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
     return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
                  tuple(i.event.seen_from(eta).x for i in lit))
-
-
-def _on_chart(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Where each material point X = sigma of the causal rod is at time t of the frame of rapidity f, and its
-    rapidity there: the chart time T on the slice, t(T) = (e^-f a(T + X) + e^f b(T - X))/2 = t, by Newton's method
-    (dt/dT = (e^(r+ - f) + e^(r- + f))/2 > 0) kept inside a bracket, from the neighbour's T; to 1e-13 of t."""
-    sol = history.solution
-    ef = math.exp(f)
-    xs, rapidities = [], []
-    T = None
-    for X in sigmas:
-        def time(T_: float) -> float:
-            return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
-        if T is None:
-            T = t
-        lo, hi, step = T, T, 1.0
-        while time(lo) > t:
-            lo, step = lo - step, 2 * step
-        step = 1.0
-        while time(hi) < t:
-            hi, step = hi + step, 2 * step
-        for _ in range(100):
-            error = time(T) - t
-            if abs(error) <= 1e-13 * (1.0 + abs(t)):
-                break
-            if error > 0:
-                hi = T
-            else:
-                lo = T
-            slope = 0.5 * (math.exp(sol.r_plus(T + X)) / ef + ef * math.exp(sol.r_minus(T - X)))
-            T = T - error / slope
-            if not lo < T < hi:  # out of the bracket (a front's kink): bisect instead
-                T = 0.5 * (lo + hi)
-        U, V = sol.a(T + X) / ef, ef * sol.b(T - X)
-        xs.append(0.5 * (U - V))
-        rapidities.append(0.5 * (sol.r_plus(T + X) - sol.r_minus(T - X)) - f)
-    return np.array(xs), np.array(rapidities)

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from rodparadox.physics.kinematics import Event
 from rodparadox.physics.rod_view import Clock
 
@@ -78,3 +80,40 @@ class CausalChart:
         lo = min(0.0, T_lo)
         clock = Clock(lambda T: 1.0 / self.compression(T, X), self.solution.breaks(X, lo, T_hi), lo, T_hi, self.L)
         return clock.ticks(step, T_lo)
+
+
+def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Where each material point X = sigma of the causal rod is at time t of the frame of rapidity f, and its
+    rapidity there: the chart time T on the slice, t(T) = (e^-f a(T + X) + e^f b(T - X))/2 = t, by Newton's method
+    (dt/dT = (e^(r+ - f) + e^(r- + f))/2 > 0) kept inside a bracket, from the neighbour's T; to 1e-13 of t."""
+    sol = history.solution
+    ef = math.exp(f)
+    xs, rapidities = [], []
+    T = None
+    for X in sigmas:
+        def time(T_: float) -> float:
+            return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
+        if T is None:
+            T = t
+        lo, hi, step = T, T, 1.0
+        while time(lo) > t:
+            lo, step = lo - step, 2 * step
+        step = 1.0
+        while time(hi) < t:
+            hi, step = hi + step, 2 * step
+        for _ in range(100):
+            error = time(T) - t
+            if abs(error) <= 1e-13 * (1.0 + abs(t)):
+                break
+            if error > 0:
+                hi = T
+            else:
+                lo = T
+            slope = 0.5 * (math.exp(sol.r_plus(T + X)) / ef + ef * math.exp(sol.r_minus(T - X)))
+            T = T - error / slope
+            if not lo < T < hi:  # out of the bracket (a front's kink): bisect instead
+                T = 0.5 * (lo + hi)
+        U, V = sol.a(T + X) / ef, ef * sol.b(T - X)
+        xs.append(0.5 * (U - V))
+        rapidities.append(0.5 * (sol.r_plus(T + X) - sol.r_minus(T - X)) - f)
+    return np.array(xs), np.array(rapidities)

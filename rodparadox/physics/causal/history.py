@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal.chart import CausalChart
+from rodparadox.physics.causal.chart import CausalChart, points_on_slice
 from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
 from rodparadox.physics.causal.parts import rod_parts
 from rodparadox.physics.causal.solve import Rider, Solution, solve
@@ -123,6 +123,10 @@ class CausalHistory:
         from rodparadox.physics.causal.parts import rod_parts_on_slices  # scipy's splines: only for this
 
         return rod_parts_on_slices(self, frame_rapidity, times)
+
+    def points_on_slice(self, frame_rapidity: float, t: float, sigmas) -> tuple:
+        """Where each material point sigma is on the slice t of the frame, and its rapidity there (`chart`)."""
+        return points_on_slice(self, frame_rapidity, t, sigmas)
 
     def compression_range(self) -> tuple[float, float]:
         """The least and largest ln lam anywhere in the rod over its whole history, 0 (unstressed) inside."""

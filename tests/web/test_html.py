@@ -28,12 +28,12 @@ from rodparadox.web import data as web_data
 from rodparadox.web.page import asset, page
 from sears_paradox_cli.main import main
 
-from conftest import causal_history, history
+from helpers import causal_history, history
 
 #: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
 pytestmark = pytest.mark.xdist_group("html")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 MB = 1 << 20
 
 

@@ -18,7 +18,7 @@ import pytest
 from click.testing import CliRunner
 from matplotlib.colors import to_rgb
 
-from conftest import history
+from helpers import history
 from rodparadox import render
 from rodparadox.io.scenario import builtin_names, load
 from rodparadox.physics.frames import Frame, paper_frames, time_window

@@ -26,7 +26,7 @@ from rodparadox.tables.build import (events_table, hidden_table, latex_text, led
 from rodparadox.tables.formats import BLANK_TEXT, table_format
 from sears_paradox_cli.main import main
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 SUBSCRIPT_DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 

@@ -8,7 +8,7 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
-from conftest import commands_in_one_process
+from helpers import commands_in_one_process
 from rodparadox.animate.encoders import check_fps, open_sink
 from rodparadox.animate.timeline import boost_ends, image_count, timeline
 from sears_paradox_cli.main import main

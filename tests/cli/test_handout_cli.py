@@ -160,7 +160,7 @@ def test_an_unwritable_folder_is_refused(here, unwritable_folder):
 def _readme_handout_section() -> str:
     from pathlib import Path
 
-    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     return readme[readme.index("<!-- handout:start -->"):readme.index("<!-- handout:end -->")]
 
 
@@ -184,7 +184,7 @@ def test_readme_page_picture_is_the_first_page_the_tool_sets_now():
 
     from rodparadox.handout.readme_pictures import handout_first_page
 
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     assert "outputs/readme/fig2_handout_page1.png" in _readme_handout_section()
     committed = (root / "outputs" / "readme" / "fig2_handout_page1.png").read_bytes()
     made_with = (root / "outputs" / "readme" / "made-with.txt").read_text().split()

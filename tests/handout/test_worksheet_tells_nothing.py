@@ -20,7 +20,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
-from conftest import causal_history, history
+from helpers import causal_history, history
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Fact, Heading, Paragraph, Question

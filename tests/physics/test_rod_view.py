@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import causal_history, history
+from helpers import causal_history, history
 from rodparadox.physics.kinematics import Event
 from rodparadox.physics.causal.chart import CausalChart
 from rodparadox.physics.rigid.chart import RigidChart

@@ -41,7 +41,7 @@ from rodparadox.physics.rigid.turns import material_worldline, now_lines, turn_i
 from rodparadox.physics.rod import rod_slice
 from rodparadox.io.scenario import Particle, Scenario, builtin_names, load
 
-from test_invariants import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
+from generated import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
 
 PRESETS = builtin_names()
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from conftest import commands_in_one_process
+from helpers import commands_in_one_process
 from sears_paradox_cli.main import main
 
 

@@ -11,7 +11,7 @@ import functools
 
 import pytest
 
-from conftest import history
+from helpers import history
 from rodparadox.handout.build import build
 from rodparadox.handout.pdf import page_plan
 from rodparadox.io.scenario import builtin_names

@@ -11,7 +11,7 @@ import math
 import pytest
 from click.testing import CliRunner
 
-from conftest import causal_history, history
+from helpers import causal_history, history
 from rodparadox.handout.build import build
 from rodparadox.handout.causal_compare import HEADING
 from rodparadox.handout.causal_reading import compare

@@ -21,7 +21,7 @@ from matplotlib.patches import Patch
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-from conftest import history
+from helpers import history
 from rodparadox import render
 from rodparadox.physics import rod
 from rodparadox.physics.frames import paper_frames, view

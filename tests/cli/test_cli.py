@@ -12,10 +12,10 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from conftest import commands_in_one_process
+from helpers import commands_in_one_process
 from sears_paradox_cli.main import main
 
-README = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+README = (Path(__file__).resolve().parents[2] / "README.md").read_text()
 
 
 def run(*args, expect=0):
@@ -62,7 +62,7 @@ def test_every_help_example_runs_in_an_empty_folder(command, tmp_path, monkeypat
 
 def test_the_commands_share_one_module_and_plot_does_not_import_main():
     """cli.options and cli.edge hold what main and plot share; plot never imports main (main imports plot to register it)."""
-    cli = Path(__file__).resolve().parent.parent / "cli"
+    cli = Path(__file__).resolve().parents[2] / "cli"
     assert not re.search(r"from \.main import|import sears_paradox_cli\.main", (cli / "plot.py").read_text())
     plot_help = {p.name: p.help for p in main.commands["plot"].params}
     for command in ("events", "export"):
@@ -496,7 +496,7 @@ def test_clicks_own_checks_are_one_sentence_too(tmp_path):
 def test_every_package_of_the_source_is_installed():
     """A non-editable install takes only the packages pyproject.toml names: rodparadox.render once went missing
     (`pip install .` then failed with ImportError on every drawing command; the editable test install hid it)."""
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     line = re.search(r"^packages = \[(.*?)\]$", (root / "pyproject.toml").read_text(), re.M | re.S).group(1)
     listed = set(re.findall(r'"([\w.]+)"', line))
     found = {".".join(p.relative_to(root).parent.parts) for p in (root / "rodparadox").rglob("__init__.py")}

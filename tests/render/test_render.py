@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 from matplotlib.colors import to_rgb
 
-from conftest import history, measuring_renderer
+from helpers import history, measuring_renderer
 from rodparadox import render
 from rodparadox.physics.rigid import run
 from rodparadox.errors import ScenarioError
@@ -35,7 +35,7 @@ from rodparadox.io.scenario import builtin_names, load
 from rodparadox.numbers import impact_name
 from rodparadox.render.styles import FORMATS, STYLE_NAMES, STYLES
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 SPEEDS = (0.1, 0.6, 0.95)
 
 

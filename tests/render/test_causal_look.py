@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from conftest import causal_history, history
+from helpers import causal_history, history
 from rodparadox.physics.frames import Frame, paper_frames
 from rodparadox.render import ledger_figure
 from rodparadox.tables import causal_ledger

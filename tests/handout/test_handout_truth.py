@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from test_invariants import history_of, timed, two_gaps, while_turning
+from generated import history_of, timed, two_gaps, while_turning
 
 from rodparadox.handout.narrative import explanation
 from rodparadox.io.scenario import builtin_names, load

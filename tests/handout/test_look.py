@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import history
+from helpers import history
 from rodparadox.handout.narrative import setup_text
 from rodparadox.io.scenario import builtin_names
 

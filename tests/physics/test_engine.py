@@ -211,7 +211,7 @@ def test_a_stopped_turn_conserves_the_systems_energy(delay):
 def test_event_and_rapidity_at_time_are_event_at_time_and_rapidity_at_time(name):
     """The one-pass reading rod slices use gives what the two readings give, at every joint (and an ulp either
     side), between joints and beyond both ends, in S and in a boosted frame."""
-    from conftest import history
+    from helpers import history
 
     h = history(name)
     for sigma in (0.0, 0.37, 1.0):

@@ -17,7 +17,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import causal_history
+from helpers import causal_history
 from rodparadox.physics.causal.ode import falling_root, solve_contact
 from rodparadox.physics.causal.parts import rod_parts
 from rodparadox.physics.causal.solve import _Contact

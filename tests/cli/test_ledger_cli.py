@@ -20,7 +20,7 @@ from rodparadox.io.scenario import load
 from sears_paradox_cli.ledger import ledger
 from sears_paradox_cli.main import main
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 
 

@@ -22,7 +22,7 @@ from click.testing import CliRunner
 from sears_paradox_cli.main import main
 from sears_paradox_cli.plot import plot
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 
 

@@ -1,0 +1,66 @@
+"""What a comparison of rods says first: where each particle started, and where each rod's first impacts fall
+(docs, "The causal rod": like for like). Every table, figure and paragraph that puts two rods side by side states
+it, so a reader never compares rods struck by different particles. Pure.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+from rodparadox.numbers import impact_name, shown
+from rodparadox.physics.frames import Frame, frame_name
+
+#: two first impacts closer in a frame's time than this (in units of L) are simultaneous there
+SIMULTANEOUS = 1e-9
+
+
+def particle_starts_text(history) -> str:
+    """Where each particle is at t = 0 in S and how fast it moves (units of L, c = 1)."""
+    s = history.scenario
+    L = s.L
+    starts = dict(history.starts)
+    parts = [f"{p.name} from x = {shown(starts[p.name].x / L, 4)} L at speed {shown(s.speed(p), 4)} c"
+             for p in sorted(s.particles, key=lambda p: p.name) if p.name in starts]
+    return " and ".join(parts)
+
+
+def first_impacts(history) -> list:
+    """Each particle's first impact on the rod (its first contact), in the order of S's time."""
+    firsts = {}
+    for i in history.impacts:
+        if not i.is_separation:
+            firsts.setdefault(i.particle, i)
+    return sorted(firsts.values(), key=lambda i: i.event.t)
+
+
+def first_impacts_text(history, frames: Sequence[Frame]) -> str:
+    """In which of `frames` the first impacts of the two particles are simultaneous, with their times there."""
+    firsts = first_impacts(history)
+    L = history.scenario.L
+    names = " and ".join(impact_name(i.label) for i in firsts)
+    if len(firsts) < 2:
+        i = firsts[0]
+        return f"its first impact {impact_name(i.label)} at t = {shown(i.event.t / L, 4)} L in S"
+    same, apart = [], []
+    for f in frames:
+        times = [i.event.time_in(f.rapidity) / L for i in firsts]
+        symbol = frame_name(f)
+        if abs(times[0] - times[1]) <= SIMULTANEOUS * (1 + max(abs(t) for t in times)):
+            same.append(f"{symbol} (at {shown(times[0], 4)} L)")
+        else:
+            at = ", ".join(f"{impact_name(i.label)} at {shown(t, 4)} L" for i, t in zip(firsts, times))
+            apart.append(f"{symbol} ({at})")
+    said = []
+    if same:
+        said.append(f"{names} are simultaneous in {' and '.join(same)}")
+    if apart:
+        said.append(f"{'not' if same else names + ' are not simultaneous'} in {' or '.join(apart)}")
+    return ", ".join(said)
+
+
+def comparison_note(histories, frames: Sequence[Frame]) -> str:
+    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall."""
+    every = "Both rods are" if len(histories) == 2 else "Every rod is"
+    lines = [f"{every} struck by the same particles: {particle_starts_text(histories[0])}, at t = 0 in S."]
+    lines += [f"The {h.model} rod: {first_impacts_text(h, frames)}." for h in histories]
+    return " ".join(lines)
