@@ -118,7 +118,7 @@ class BoostScene:
         self.particles = {name: ax.text(0, 0, name, ha="left", va="center", color=st.particles[name].colour,
                                         fontsize=big, style="italic", zorder=9, bbox=ground, animated=True)
                           for name in ("A", "B") if history.worldline(name) is not None}
-        self.labels = [ax.text(0, 0, impact_name(i.label, math_text=True) if i.kind == "contact" else
+        self.labels = [ax.text(0, 0, impact_name(i.label, math_text=True) if not i.is_separation else
                                separation_text(i.label, fs)[0], fontsize=1.1 * fs, va="center", zorder=9,
                                bbox=ground, animated=True) for i in history.impacts]
         figure.legend([h for h, _ in key], [text for _, text in key], loc="upper left",
@@ -150,8 +150,9 @@ class BoostScene:
         for artist in self.layered:
             artist.remove()
         panel = self.panel(frame)
-        sheet = tuple(artist for layer in SHEET for artist in layer.draw(ax, panel).artists)
-        bodies = tuple(artist for layer in BODIES for artist in layer.draw(ax, panel).artists)
+        # each layer where the run has what it draws (the compression and fronts: a run with fronts)
+        sheet = tuple(artist for layer in SHEET if layer.applies(history) for artist in layer.draw(ax, panel).artists)
+        bodies = tuple(artist for layer in BODIES if layer.applies(history) for artist in layer.draw(ax, panel).artists)
         impacts = IMPACTS.draw(ax, panel).artists
         self.layered = (*sheet, *bodies, *impacts)
         for (other, axis), line in self.axes_of.items():

@@ -1,8 +1,9 @@
 """The causal rod's own layers (README, "The causal rod"): its world-sheet shaded by compression lam, the light
 fronts that carry each disturbance, and each contact drawn as the stretch where a particle rides with an end.
 
-A history with turns (`history.turning` not None) draws none of these; the rigid layers that need the rigid part (the
-fans of the rod's own lines of simultaneity) draw nothing for the causal rod.
+Each applies (`CausalLayer.applies`) to a run with fronts (`RodHistory.fronts` not None) alone: the diagram draws
+a layer only where it applies, and its legend entry is None elsewhere; the rigid layers that need the rigid part
+(the fans of the rod's own lines of simultaneity, `RodHistory.turning`) apply only where it is.
 
 The shading is exact where it matters: the material chart is cut along the light lines u = T + X and w = T - X
 at every front (a jump of r+ or r-) and inside every piece where an invariant varies, and each cell, bounded by
@@ -24,7 +25,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from rodparadox.physics.frames import sampling_tolerance
-from rodparadox.render.layer_base import Layer, LayerArtists, is_causal, line_handle
+from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
 from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 from rodparadox.render.styles import Style
 
@@ -166,10 +167,10 @@ HANDLER_MAP = {RampHandle: _Ramp()}
 
 @dataclass(frozen=True)
 class CausalLayer(Layer):
-    """A layer only the causal rod has: it applies to a causal history alone."""
+    """A layer only a rod with fronts has (the causal rod: its chart, `solution`, is what these layers read)."""
 
     def applies(self, history):
-        return is_causal(history)
+        return history.fronts is not None
 
 
 @dataclass(frozen=True)
@@ -181,8 +182,6 @@ class Compression(CausalLayer):
 
     def draw(self, ax, panel):
         history = panel.history
-        if not is_causal(history):
-            return LayerArtists()
         L, f = panel.L, panel.view.frame.rapidity
         polygons, ln_lam, _ = compression_cells(history, f, *sheet_window(panel))
         cmap, norm = compression_colour_map(panel.style), compression_norm(history)
@@ -199,7 +198,7 @@ class Compression(CausalLayer):
         return LayerArtists(artists=(mesh,))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not is_causal(history):
+        if not self.applies(history):
             return None
         lo, hi = history.fronts.compression_range()
         cmap, norm = compression_colour_map(style), compression_norm(history)
@@ -231,8 +230,6 @@ class Fronts(CausalLayer):
     name = "fronts"
 
     def draw(self, ax, panel):
-        if not is_causal(panel.history):
-            return LayerArtists()
         drawn, segments = [], []
         for k, (family, _s, segment) in enumerate(fronts(panel.history, panel.view.frame.rapidity,
                                                          *sheet_window(panel))):
@@ -243,7 +240,7 @@ class Fronts(CausalLayer):
         return LayerArtists(artists=tuple(drawn), obstacles=tuple(segments))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not is_causal(history):
+        if not self.applies(history):
             return None
         return line_handle(style.front), "light front (a jump in \N{GREEK SMALL LETTER LAMDA})"
 
@@ -256,8 +253,6 @@ class Contacts(CausalLayer):
 
     def draw(self, ax, panel):
         history = panel.history
-        if not is_causal(history):
-            return LayerArtists()
         st, L = panel.style, panel.L
         tolerance = sampling_tolerance(history)
         drawn = []
@@ -278,7 +273,7 @@ class Contacts(CausalLayer):
         return LayerArtists(artists=tuple(drawn))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not is_causal(history):
+        if not self.applies(history):
             return None
         return (Line2D([], [], color="#777777", alpha=0.35, linewidth=style.rod.width * 3.2, solid_capstyle="butt"),
                 "contact: particle rides with end")

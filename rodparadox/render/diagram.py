@@ -22,7 +22,7 @@ from rodparadox.physics import rod
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
 from rodparadox.render.styles import FORMATS, STYLES, Style
-from rodparadox.render.layer_base import is_causal
+from rodparadox.render.layer_base import has_fronts
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, one_scale, panel_of, tick_step
 from rodparadox.render.legibility import material_lines_that_fit
@@ -207,15 +207,14 @@ def _same_scales(panels: list[Panel], per_row: int) -> None:
                min(p.data_box[2] for p in same), max(p.data_box[3] for p in same))
         for p in same:
             p.data_box, p.box = box, list(box)
-            model = "causal rod" if is_causal(p.history) else "rigid rod"
-            p.title = p.title.replace(") frame ", f") {model}, frame ", 1)
+            p.title = p.title.replace(") frame ", f") {p.history.model} rod, frame ", 1)
             p.title_lines = [p.title]
 
 
 def _causal_handlers(history) -> dict:
     """The legend handlers of the causal rod's entries (its compression scale), where one is drawn: a rigid figure
     never imports `causal_layers`. (`tuple` beside them: the rod's entry, strip and line in one.)"""
-    if not any(is_causal(h) for h in (history if isinstance(history, tuple) else (history,))):
+    if not any(has_fronts(h) for h in (history if isinstance(history, tuple) else (history,))):
         return {}
     from rodparadox.render.causal_layers import HANDLER_MAP
 

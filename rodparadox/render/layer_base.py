@@ -15,8 +15,8 @@ from rodparadox.physics.frames import FrameView
 from rodparadox.render.styles import Ink, Style
 
 
-def is_causal(history) -> bool:
-    """The causal rod (its chart, `solution`, is what its own layers read); any other model draws none of them."""
+def has_fronts(history) -> bool:
+    """The run has fronts (the causal rod's capability, whose chart its own layers read); any other draws none of them."""
     return history.fronts is not None
 
 
@@ -70,6 +70,12 @@ def widest_line(style: Style) -> float:
                                      style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
 
 
+def contacts_last(history) -> bool:
+    """Whether the rod's contacts last, each ended by a separation (the causal rod's): its ends crowd with contacts,
+    re-contacts and separations, and its impacts are named contacts."""
+    return any(i.is_separation for i in history.impacts)
+
+
 # --- what a layer is given and gives back ------------------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -103,18 +109,18 @@ class PanelContext:
     @property
     def contact_labels(self) -> frozenset[str]:
         """The labels of this frame's contacts (every rigid impact; a causal rod's separations are not)."""
-        return frozenset(e.impact.label for e in self.view.events if e.impact.kind == "contact")
+        return frozenset(e.impact.label for e in self.view.events if not e.impact.is_separation)
 
     @property
     def simultaneity_labels(self) -> frozenset[str]:
         """The events lines of simultaneity go through: every impact of a rod whose impacts are instantaneous; of a
         rod whose contacts last (a causal rod), each particle's first contact (its re-contacts and separations crowd
         one end: more lines there would hide them)."""
-        if not any(i.is_separation for i in self.history.impacts):  # every impact instantaneous: each gets its line
+        if not contacts_last(self.history):  # every impact instantaneous: each gets its line
             return self.contact_labels
         first = {}
         for e in self.view.events:
-            if e.impact.kind == "contact":
+            if not e.impact.is_separation:
                 first.setdefault(e.impact.particle, e.impact.label)
         return frozenset(first.values())
 

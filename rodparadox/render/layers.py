@@ -32,8 +32,8 @@ from rodparadox.physics.kinematics import Event, HyperbolicArc
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
-                                          impact_marker, is_causal, line_handle, line_kwargs, marker_kwargs,
-                                          widest_line)
+                                          contacts_last, impact_marker, has_fronts, line_handle, line_kwargs,
+                                          marker_kwargs, widest_line)
 from rodparadox.render.labels import Label
 from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
@@ -44,7 +44,6 @@ from rodparadox.tolerances import SAME_LINE
 HYPERBOLA_SAMPLING = 1e-5
 #: length of a light cone's arms (each way, in t) as a fraction of the shorter side of the panel
 CONE_REACH = 0.16
-
 
 
 # --- the layers ----------------------------------------------------------------------------------------------
@@ -111,9 +110,10 @@ class RodNow(Layer):
     def enabled(self, options):
         return options.rod_now
 
+    def applies(self, history):
+        return history.turning is not None
+
     def draw(self, ax, panel):
-        if panel.history.turning is None:
-            return LayerArtists()
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
         lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.turning.now_lines()]
@@ -138,7 +138,7 @@ class Clocks(Layer):
         return options.proper_time
 
     def applies(self, history):
-        return not is_causal(history)  # a chart curve's proper time is not integrated yet (plot refuses it)
+        return history.fronts is None  # a chart curve's proper time is not integrated yet (plot refuses it)
 
     def draw(self, ax, panel):
         st, L, eta = panel.style, panel.L, panel.view.frame.rapidity
@@ -422,8 +422,8 @@ class Impacts(Layer):
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if is_causal(history):  # named by its first contact, so the legend shows how labels read
-            first = next(i for i in history.impacts if i.kind == "contact")
+        if contacts_last(history):  # named by its first contact, so the legend shows how labels read
+            first = next(i for i in history.impacts if not i.is_separation)
             return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
         return Line2D([], [], **impact_marker(style)), "impact"
 
@@ -435,13 +435,13 @@ class Separations(Layer):
     name = "separations"
 
     def applies(self, history):
-        return is_causal(history)
+        return contacts_last(history)
 
     def draw(self, ax, panel):
         return LayerArtists()
 
     def legend_entry(self, style, history, options, clock_step=None):
-        first = next((i for i in history.impacts if i.kind == "separation"), None)
+        first = next((i for i in history.impacts if i.is_separation), None)
         if first is None:
             return None
         name = impact_name(first.label[:-1])
@@ -491,7 +491,7 @@ def _ordered(order: tuple, causal: bool) -> tuple[Layer, ...]:
 
 def drawing_order(history, legend: bool = False) -> tuple[Layer, ...]:
     """The layers that may draw for `history` (one or a tuple), in `LAYERS`' order (`legend`: in `LEGEND`'s)."""
-    causal = any(is_causal(h) for h in (history if isinstance(history, tuple) else (history,)))
+    causal = any(has_fronts(h) for h in (history if isinstance(history, tuple) else (history,)))
     return _ordered(_LEGEND if legend else _DRAWING, causal)
 
 
@@ -507,8 +507,8 @@ def legend_entries(style: Style, history: RodHistory, options: Options, clock_st
     """The legend's handles and texts: every enabled layer's own entry, in LEGEND order (`clock_step`: the proper
     time between clock ticks, chosen by the diagram from its panels' time spans; `rod_lines`: the material lines
     drawn in each panel, when fewer than asked)."""
-    # two rod models in one figure (--rod both): each layer's entry for the causal rod, else for the rigid one
-    histories = sorted(history, key=lambda h: not is_causal(h)) if isinstance(history, tuple) else (history,)
+    # --rod both: each layer's entry for the first rod giving one, a rod whose contacts last first (they're contacts)
+    histories = sorted(history, key=lambda h: not contacts_last(h)) if isinstance(history, tuple) else (history,)
     enabled = [layer for layer in drawing_order(history, legend=True) if layer.enabled(options)]
     entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
                      if e is not None), None) for layer in enabled]
@@ -517,4 +517,4 @@ def legend_entries(style: Style, history: RodHistory, options: Options, clock_st
         entries = [(entry[0], thinned) if layer is _ROD_LINES and entry is not None else entry
                    for layer, entry in zip(enabled, entries)]
     entries = [entry for entry in entries if entry is not None]
-    return [handle for handle, _ in entries], [text for _, text in entries]
+    return [h for h, _ in entries], [text for _, text in entries]

@@ -44,6 +44,7 @@ class Panel:
         self.width = self.height = 0.0  # points
         self.title_lines: list[str] = [title]
         self.history = None  # the run this panel draws (`panel_of`): two rod models draw in one figure (--rod both)
+        self.ringing: float | None = None  # the velocity its title says the rod rings about, if it does
 
 
 def panel_of(history: RodHistory, letter: str, frame: Frame, window: tuple[float, float] | None = None) -> Panel:
@@ -62,6 +63,7 @@ def panel_of(history: RodHistory, letter: str, frame: Frame, window: tuple[float
     ringing = math.tanh(history.final_rapidity - frame.rapidity) if history.fronts is not None else None
     panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing))
     panel.history = history
+    panel.ringing = ringing
     return panel
 
 
@@ -358,8 +360,8 @@ def _arrange(history: RodHistory, panels: list[Panel], m: Metrics, steps: list, 
     shares = []
     for row in rows:
         spare = width - row_width(row, height)  # room the figure has anyway (a wide legend): titles may use it
-        # the causal rod's long titles ("finally at ..., ringing") share the room; the rigid rod's figures keep theirs
-        fair = per_row is not None or history.fronts is not None
+        # long titles of a rod that rings ("finally at ..., ringing") share the room; other figures keep theirs
+        fair = per_row is not None or any(p.ringing is not None for p in row)
         shares.append(_share(widths(row, height), [m.one_line(p.title) for p in row], spare, fair))
     if per_row is not None and len({len(row) for row in rows}) == 1:  # --rod both: a frame's panels one above the other
         columns = [max(share[k] for share in shares) for k in range(len(rows[0]))]  # keep one data box

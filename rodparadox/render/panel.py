@@ -7,8 +7,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter
 from rodparadox.physics.history import RodHistory
 from rodparadox.render.styles import Style
 from rodparadox.render.labels import Area, place
-from rodparadox.render.layer_base import is_causal
-from rodparadox.render.layers import Options, PanelContext, drawing_order, widest_line
+from rodparadox.render.layers import Options, PanelContext, contacts_last, drawing_order, widest_line
 from rodparadox.render.layout import Metrics, Panel
 from rodparadox.render.legibility import draw_inset, inset_plan, label_boxes, material_lines_that_fit
 from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
@@ -41,7 +40,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or is_causal(history))
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or contacts_last(history))
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     if options.insets:

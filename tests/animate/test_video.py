@@ -12,6 +12,7 @@ import pytest
 from PIL import Image
 
 from rodparadox.animate import encoders as video
+from rodparadox.animate import palette
 from rodparadox.errors import OptionError, OutputError, ToolMissing
 
 
@@ -89,20 +90,10 @@ def test_the_gif_counts_every_pixel_of_every_image_though_it_looks_only_at_what_
     sink = video.GifSink(Path("unused.gif"), 25)
     for image in made:
         sink.add(image)
-    colours, counts = np.unique(np.concatenate([video.pack(f).ravel() for f in made]), return_counts=True)
+    colours, counts = np.unique(np.concatenate([palette.pack(f).ravel() for f in made]), return_counts=True)
     assert np.array_equal(sink._colours, colours)
     assert np.array_equal(sink._counts, counts)
     sink.abort()
-
-
-def test_the_palette_is_every_colour_when_there_are_few_and_stays_within_256():
-    colours = np.array([0x000000, 0x00FF00, 0xFFFFFF], dtype=np.uint32)
-    assert video.palette_of(colours, np.array([5, 1, 9])).tolist() == [[0, 0, 0], [0, 255, 0], [255, 255, 255]]
-    many = np.arange(0, 2 ** 24, 4099, dtype=np.uint32)
-    counts = np.ones(len(many), dtype=np.int64)
-    counts[0] = 10 ** 6  # black covers most of the picture: it keeps its own entry, exactly
-    palette = video.palette_of(many, counts)
-    assert len(palette) == 256 and [0, 0, 0] in palette.tolist()
 
 
 @pytest.mark.parametrize("fps", [0, 3, 30, 60, -5])

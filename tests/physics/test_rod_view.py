@@ -153,13 +153,14 @@ def test_the_rigid_panel_shows_the_rod_as_the_strip_and_hatches_only_where_turns
     for name in ("fig1", "fig2"):
         ax = Figure().add_subplot()
         drawn[name] = draw_rod_panel(ax, history(name, 0.6), "print")
-        left, right = (line.get_xdata() for line in drawn[name]["strip"][-2:])
+        left, right = (line.get_xdata() for line in drawn[name].strip[-2:])
         assert list(left) == [0.0, 0.0] and list(right) == [1.0, 1.0]
-    assert drawn["fig1"]["horizon"] == () and len(drawn["fig2"]["horizon"]) == 1
-    assert len(drawn["fig2"]["turns"]) == 12  # each of 3 turns: its start, its end, its pivot (on a blanked end)
-    assert len(drawn["fig2"]["light"]) == 3  # from each impact
+    assert drawn["fig1"].horizon == () and len(drawn["fig2"].horizon) == 1
+    assert len(drawn["fig2"].turns) == 6 and len(drawn["fig2"].pivots) == 6  # 3 turns: start and end; pivot, blanked end
+    assert drawn["fig1"].fronts == drawn["fig1"].contacts == ()  # a rod without fronts draws none
+    assert len(drawn["fig2"].light) == 3  # from each impact
     # fig1 never turns: its chart is S (left end at X = 0), so A1's light (X = 0, T = 5/6) runs X = T - 5/6
-    ray = drawn["fig1"]["light"][0].get_xydata()
+    ray = drawn["fig1"].light[0].get_xydata()
     ray = ray[np.isfinite(ray[:, 0])]
     assert ray[:, 1] - ray[:, 0] == pytest.approx(np.full(len(ray), 5 / 6), abs=1e-12)
     assert (ray[0, 0], ray[-1, 0]) == (pytest.approx(0.0, abs=1e-12), pytest.approx(1.0, abs=0.03))
@@ -276,8 +277,8 @@ def test_a_pivot_is_drawn_dotted_on_the_end_as_its_key_says_in_every_style():
         solid = column(T_a - 0.4, T_a - 0.2)  # the end before the turn, clear of clock ticks or not: no paper
         assert (solid > 230).mean() == 0.0, style
         key = {text.get_text().split(":")[0]: handle for text, handle in
-               zip(drawn["key"][0].get_texts(), drawn["key"][0].legend_handles)}["pivot"]
-        line = next(a for a in drawn["turns"] if a.get_gid() == "r-pivot-0")
+               zip(drawn.key[0].get_texts(), drawn.key[0].legend_handles)}["pivot"]
+        line = next(a for a in drawn.pivots if a.get_gid() == "r-pivot-0")
         assert (key.get_linestyle(), key.get_linewidth(), key.get_color()) == \
                (line.get_linestyle(), line.get_linewidth(), line.get_color())
 
@@ -317,7 +318,7 @@ def test_the_particles_names_sit_clear_of_every_line_of_the_rod_view(v):
     # no point of any line of the panel, each line sampled every half pixel, nor by an impact's marker
     ax, drawn, _ = _rasterised("fig2", v, "default")
     renderer = ax.get_figure(root=True).canvas.get_renderer()
-    names = [a for a in drawn["particles"] if hasattr(a, "get_text")]
+    names = [a for a in drawn.particles if hasattr(a, "get_text")]
     assert sorted(a.get_text() for a in names) == ["A", "B"]
     for text in names:
         box = text.get_window_extent(renderer)
