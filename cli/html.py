@@ -1,4 +1,4 @@
-"""`sears-paradox html`: one self-contained HTML page to explore speed, frame and time (README, "One page to
+"""`sears-paradox html`: one self-contained HTML page to explore speed, frame and time (the docs, "One page to
 explore: `sears-paradox html`").
 
 Thin: parse the options, plan and check through `sears_paradox_cli.planning` (named as `plot` names figures), build

@@ -1,4 +1,4 @@
-"""`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (README,
+"""`sears-paradox ledger`: each body's energy and momentum in each frame, and the hidden part (the docs,
 "Energy and momentum").
 
 Thin: parse the options, call `rodparadox.io.ledger_report` (text, JSON, CSV),
@@ -46,7 +46,7 @@ def _times(spec: str | None) -> tuple[float, ...] | None:
     return tuple(out)
 
 
-#: --at: a time farther than this many lengths of a frame's window (README, "The ledger") outside it is refused:
+#: --at: a time farther than this many lengths of a frame's window (docs/ledger.md, "The ledger") outside it is refused:
 #: nothing changes outside the window, so such a time is a slip (1e308 for 1e3), not a question
 AT_WINDOWS = 1000
 

@@ -1,4 +1,4 @@
-"""Which files a command writes, and under what names (README, "Drawing the figures": file names). Pure.
+"""Which files a command writes, and under what names (docs/plot.md, "Drawing the figures": file names). Pure.
 
 One planner for every command that writes files (`plot`, `ledger`'s figures, `animate`, `handout`), driven
 by the command's own description of its outputs (`Outputs`: its formats, which of them fill a folder, the

@@ -1,5 +1,5 @@
 """The project's errors: one base class, each concrete error also a builtin (as pint's are); the command line says
-each in one sentence naming what to fix (README, "Commands")."""
+each in one sentence naming what to fix (docs/commands.md, "Commands")."""
 
 from __future__ import annotations
 

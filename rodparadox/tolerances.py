@@ -22,7 +22,7 @@ TURN_LINE_ROUNDING = 1e-12
 #: how far rounding moves a difference of terms, relative to the terms: a thousand ulps of double precision
 DIFFERENCE_ROUNDING = 1e3 * 2.2e-16
 #: a timed particle strikes where it was aimed if within this, relative to L and the target's coordinates: the
-#: engine places events to about 1e-9 relative at its bounds (README, "Scenario files")
+#: engine places events to about 1e-9 relative at its bounds (docs/scenarios.md, "Scenario files")
 TIMING_MATCH = 1e-9
 #: two rapidities closer than this are one velocity (a handout's reading of a history): the engine ends a turn
 #: within TURN_LINE_ROUNDING of its line, and a boost shifts a rapidity by a rounding of about 1e-15 of it
@@ -32,7 +32,7 @@ SAME_RAPIDITY = 1e-9
 
 #: two impacts closer than this in a frame's time, relative to L plus the largest |t|, are at one instant of it:
 #: boosting puts an ulp or two between impacts on one line of the frame, and the engine places events to about
-#: 1e-9 relative at its bounds (README, "Scenario files"), so impacts meant to be simultaneous may differ by that.
+#: 1e-9 relative at its bounds (docs/scenarios.md, "Scenario files"), so impacts meant to be simultaneous may differ by that.
 #: A block of stills (`render.strip`) takes an impact as at a still's instant within ONE_INSTANT * L: the stills'
 #: times are multiples of L written as floats (17/12 as 1.4166666666666667), rounded far below what a reader sees
 ONE_INSTANT = 1e-9
@@ -63,7 +63,7 @@ FIT_SLACK = 1e-6
 
 #: a printed number below this fraction of its table's scale (the largest coordinate; a frame's kinetic energy
 #: and momentum for a difference of totals) is rounding, printed 0: double precision carries 16 digits, and the
-#: engine's events are exact to about 1e-9 relative at its bounds (README, "Scenario files")
+#: engine's events are exact to about 1e-9 relative at its bounds (docs/scenarios.md, "Scenario files")
 PRINTED_ZERO = 1e-12
 #: a fraction stands for a float within this relative distance (the engine's rounding is about 1e-15 relative)
 FRACTION_MATCH = 1e-12

@@ -1,4 +1,4 @@
-"""Boost mode (README, "The paradox in motion"): one panel over fixed axes whose frame runs smoothly from one
+"""Boost mode (docs/animate.md, "The paradox in motion"): one panel over fixed axes whose frame runs smoothly from one
 velocity to another, the world-lines redrawn in the frame of each instant. matplotlib (Agg) is imported here; import this
 module only after every input has been checked.
 

@@ -1,4 +1,4 @@
-"""Writing an animation's images to files: GIF, MP4 or numbered PNG stills (README, "The paradox in
+"""Writing an animation's images to files: GIF, MP4 or numbered PNG stills (the docs, "The paradox in
 motion"). No matplotlib.
 
 An image is an RGB uint8 numpy array of shape (H, W, 3); every image of one

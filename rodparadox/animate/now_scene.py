@@ -1,4 +1,4 @@
-"""Now mode (README, "The paradox in motion"): `plot`'s diagram with each frame's "now" sweeping up and its space below.
+"""Now mode (docs/animate.md, "The paradox in motion"): `plot`'s diagram with each frame's "now" sweeping up and its space below.
 
 Draws the diagram once, as `plot` does, grows the figure downward by a band of strips, and for each
 instant redraws only what moves over the saved background (blitting): each frame's own line of

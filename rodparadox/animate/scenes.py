@@ -1,4 +1,4 @@
-"""The animation's images (README, "The paradox in motion"): now mode over `plot`'s diagram, boost mode over fixed axes.
+"""The animation's images (docs/animate.md, "The paradox in motion"): now mode over `plot`'s diagram, boost mode over fixed axes.
 
   now_scene    `NowScene`: the diagram with each frame's "now" sweeping up, and a band of strips below
   boost_scene  `BoostScene`: one panel whose frame runs smoothly from one velocity to another

@@ -1,4 +1,4 @@
-"""The timeline of an animation: what each panel shows at each instant (README, "The paradox
+"""The timeline of an animation: what each panel shows at each instant (the docs, "The paradox
 in motion"). Pure, no matplotlib.
 
 Two modes:
@@ -61,7 +61,7 @@ def image_count(seconds: float, fps: int) -> int:
 
 def check_cost(count: int, width: int, height: int, seconds: float, fps: int, allow_long: bool = False) -> None:
     """Refuse `count` images of `width` x `height` pixels past MAX_PIXELS in all, unless `allow_long`: a long
-    animation is asked for, not stumbled into (README, "Animating": Length)."""
+    animation is asked for, not stumbled into (docs/animate.md, "Animating": Length)."""
     pixels = count * width * height
     if pixels > MAX_PIXELS and not allow_long:
         raise OptionError("seconds", seconds, MAX_PIXELS // 1_000_000, "{seconds} {value:g} at {fps} {fps_value} "

@@ -1,4 +1,4 @@
-"""What a handout and a worksheet say, as `document` blocks (README, "Teaching handouts"): `build`. Pure: no
+"""What a handout and a worksheet say, as `document` blocks (docs/handout.md, "Teaching handouts"): `build`. Pure: no
 matplotlib, no LaTeX.
 
 `build` turns scenarios' histories into a `document.Handout`: per scenario a
@@ -18,7 +18,7 @@ Every sentence is generated from the computed history; a question about
 another speed runs the engine again. `pdf` and `tex` set the same blocks on
 paper and in LaTeX.
 
-Conventions (README, "The model"): c = 1; x and t are quoted as multiples of L
+Conventions (docs/model.md, "The model"): c = 1; x and t are quoted as multiples of L
 (17/12 L), so they hold for any L; speeds as fractions of c; masses in M,
 energies in M c², momenta in M c. S′ moves at −v relative to S, so
 t′ = γ(t + v x) (derived in the answers from `Event.seen_from`, never copied from
@@ -335,7 +335,7 @@ def build(items: Sequence[Item | tuple], frames: Sequence[Frame] | None = None, 
     section each, in order. `frames` defaults to S and S′ of each scenario; a frame named `moving` is S′ of each
     scenario's own v. An item may also be (stem, history, frames), its own frames overriding `frames` (None: not),
     or (stem, history, frames, causal), the causal rod's history of the same scenario: the section then compares
-    the two rods (README, "Teaching handouts").
+    the two rods (docs/handout.md, "Teaching handouts").
     `equal_scales`: each diagram's panels drawn to one scale (`render.Options.equal_scales`)."""
     parts = frozenset(sections)
     unknown = parts - set(SECTIONS)

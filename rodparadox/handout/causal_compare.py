@@ -1,4 +1,4 @@
-"""A handout's comparison of the rigid rod with the causal rod (README, "The causal rod"): `comparison`. Pure.
+"""A handout's comparison of the rigid rod with the causal rod (docs/model.md, "The causal rod"): `comparison`. Pure.
 
 Per scenario, after the rigid rod's sections: where the rigid rod's far end moves before light from the impact
 could reach it and the causal rod's does not; how fast each particle leaves each rod, in every frame shown; where

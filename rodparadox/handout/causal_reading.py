@@ -1,4 +1,4 @@
-"""The causal rod read beside the rigid one, for a handout's comparison (README, "The causal rod"): `compare`. Pure.
+"""The causal rod read beside the rigid one, for a handout's comparison (docs/model.md, "The causal rod"): `compare`. Pure.
 
 A `Comparison` holds the numbers the comparison's sentences and questions quote, each read once from the two
 histories of one scenario (the rigid `engine.History` and the causal `causal.CausalHistory`): when each rod's far
@@ -236,7 +236,7 @@ def leaving(rigid, causal, frames) -> tuple[Leaving, ...]:
 
 
 def ringing(rigid, causal) -> Ringing:
-    """The ringing rod after the last separation, from its period's advance (README, "The causal rod")."""
+    """The ringing rod after the last separation, from its period's advance (docs/model.md, "The causal rod")."""
     L = causal.scenario.L
     dt, dx = causal.period_advance()
     E, p = dt / (2.0 * L), dx / (2.0 * L)  # (M/2L)(Δt, Δx), M = 1

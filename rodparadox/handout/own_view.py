@@ -1,5 +1,5 @@
 """The rod's own view in a handout (`handout --frame both,rod`): a figure after each section's diagram, and its
-caption, generated from the histories (README, "The rod's own view"). Pure: no matplotlib.
+caption, generated from the histories (docs/plot.md, "The rod's own view"). Pure: no matplotlib.
 """
 
 from __future__ import annotations

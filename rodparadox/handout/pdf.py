@@ -1,4 +1,4 @@
-"""A handout set on pages as a PDF: `to_pdf(handout, paper, style) -> bytes` (README, "Teaching handouts").
+"""A handout set on pages as a PDF: `to_pdf(handout, paper, style) -> bytes` (docs/handout.md, "Teaching handouts").
 
 The blocks of `document.Handout` are set top to bottom on pages of the paper's
 size, with matplotlib's own PDF backend (`PdfPages`, one `Figure` per page,

@@ -1,4 +1,4 @@
-"""A handout for authors (`handout --format tex`; README, "Teaching handouts"): a folder of LaTeX, figures and
+"""A handout for authors (`handout --format tex`; docs/handout.md, "Teaching handouts"): a folder of LaTeX, figures and
 pgfplots data.
 
 `tex_files` turns a `document.Handout` into files, relative name -> bytes, for

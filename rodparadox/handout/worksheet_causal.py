@@ -1,4 +1,4 @@
-"""A worksheet's questions on the causal rod beside the rigid one, with their worked answers (README, "The causal
+"""A worksheet's questions on the causal rod beside the rigid one, with their worked answers (the docs, "The causal
 rod"): when the far end moves, where the energy went (the ringing rod's rest mass), and the stress momentum on a
 slice. Pure; each returns an `Asked` (`worksheet_frames`) from a `causal_reading.Comparison`.
 """

@@ -1,4 +1,4 @@
-"""Machine-readable world-lines and events: the JSON contract and the CSV table (README, "The JSON contract"). Pure.
+"""Machine-readable world-lines and events: the JSON contract and the CSV table (docs/json.md, "The JSON contract"). Pure.
 
 Numbers are written with Python's shortest round-trip repr, so parsing them
 back gives the same floats (never -0: a zero is 0.0); keys come in a fixed

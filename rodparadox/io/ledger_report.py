@@ -1,4 +1,4 @@
-"""The ledger as text, JSON and CSV, for `sears-paradox ledger` (README, "Energy and momentum"). Pure.
+"""The ledger as text, JSON and CSV, for `sears-paradox ledger` (docs/ledger.md, "Energy and momentum"). Pure.
 
 JSON numbers are written with Python's shortest round-trip repr and keys in a
 fixed order, so the same command gives the same bytes; text tables print

@@ -1,4 +1,4 @@
-"""Deterministic, atomic writes (README, "Drawing the figures": reproducible, safe for make): a file is replaced whole
+"""Deterministic, atomic writes (docs/plot.md, "Drawing the figures": reproducible, safe for make): a file is replaced whole
 or not at all.
 
 A file whose bytes would not change is left untouched, so make and git see

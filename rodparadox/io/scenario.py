@@ -1,6 +1,6 @@
 """Scenarios: YAML -> the validated frozen dataclasses of `model`. The only module that knows YAML.
 
-The schema is documented in the README ("Scenario files"); every error names
+The schema is documented in docs/scenarios.md; every error names
 the file, the key path and the line.
 """
 
@@ -302,7 +302,7 @@ def stem_of(name_or_path: str) -> str:
 def _is_path(name_or_path: str) -> bool:
     """Whether SCENARIO names a file: it has a YAML extension or a folder part, or a file of that name exists.
 
-    A file in the current folder wins over a built-in scenario of the same name (README, "Commands"); a folder
+    A file in the current folder wins over a built-in scenario of the same name (docs/commands.md, "Commands"); a folder
     does not (`outputs/fig2/` beside the figures is common).
     """
     path = Path(name_or_path)

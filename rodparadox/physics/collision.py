@@ -1,4 +1,4 @@
-"""Elastic collisions of point masses and the whole rod (README, "The model", rules 2 and 5). Pure.
+"""Elastic collisions of point masses and the whole rod (docs/model.md, "The model", rules 2 and 5). Pure.
 
 Velocities are rapidities measured in the rod's rest frame at the impact,
 masses in units of the rod's mass M. Every collision uses one rule:

@@ -1,4 +1,4 @@
-"""Frames, boosts and exact world-line segments (README, "The model": frames and coordinates).
+"""Frames, boosts and exact world-line segments (docs/model.md, "The model": frames and coordinates).
 
 Pure: plain floats in, plain floats out; numpy only to return sampled points.
 Every velocity is also carried as a rapidity (velocity = tanh(rapidity)),
@@ -75,7 +75,7 @@ class Line:
 
 @dataclass(frozen=True)
 class HyperbolicArc:
-    """Part of the hyperbola (x - x_E)^2 - (t - t_E)^2 = d^2 centred on the event E (README, "The model", rule 3).
+    """Part of the hyperbola (x - x_E)^2 - (t - t_E)^2 = d^2 centred on the event E (docs/model.md, "The model", rule 3).
 
     Its points are E + side * d * (cosh phi, sinh phi); the world-line there has
     rapidity phi, and the straight line from E through it is the rod's line of
@@ -325,7 +325,7 @@ def _along(event: Event, rapidity_: float, dt: float) -> Event:
 
 
 class ChartCurve:
-    """The world-line of the causal rod's material point X between chart times T_start and T_end (README, "The
+    """The world-line of the causal rod's material point X between chart times T_start and T_end (the docs, "The
     causal rod"): t + x = e^-f a(T + X), t - x = e^f b(T - X), exact at any T; its rapidity there is
     (r+(T + X) - r-(T - X))/2 - f. A boost by rapidity f' only adds f' to f (`seen_from`). `chart` gives a, b,
     r_plus, r_minus and `breaks(X, T_lo, T_hi)` (the chart times where a front crosses the line, where it kinks).

@@ -1,4 +1,4 @@
-"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (README,
+"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (the docs,
 "Energy and momentum: the ledger").
 
 Pure. Units: energy in M c^2, momentum in M c (c = 1). A particle of mass m

@@ -25,7 +25,7 @@ MAX_SPAN = 1e6
 FRAME_NAMES = ("rest", "moving")
 #: the longest scenario name: it starts every figure title and file name
 MAX_NAME_LENGTH = 200
-#: the rod models: the paper's rigid rod, and the causal rod whose sound speed is c (README, "The causal rod")
+#: the rod models: the paper's rigid rod, and the causal rod whose sound speed is c (docs/model.md, "The causal rod")
 ROD_MODELS = ("rigid", "causal")
 
 

@@ -1,5 +1,5 @@
 """Inside the rod, for any rod model: the rod on a slice of any frame (where each material point is and how fast
-it moves), its material lines, and a clock's tick step (README, "Inside the rod"). Pure.
+it moves), its material lines, and a clock's tick step (docs/model.md, "Inside the rod"). Pure.
 
 Every model gives the exact world-line of each material point (`RodHistory.material_worldline`); this module only
 reads them.

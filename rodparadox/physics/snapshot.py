@@ -1,5 +1,5 @@
 """One frame's space at one instant: where the rod's material points are and how fast they move, where the
-particles are, and which impacts happen then (README, "The paradox in motion"). Pure.
+particles are, and which impacts happen then (docs/animate.md, "The paradox in motion"). Pure.
 
 What a strip draws (`render.strip`) and an animation's now mode sweeps (`animate.timeline`): `strip_at(history,
 frame, t, flash)` reads it off the exact world-lines, boosted into the frame; `material_points` builds those

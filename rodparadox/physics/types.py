@@ -88,5 +88,5 @@ class Slice:
     bodies: tuple[tuple[str, EnergyMomentum], ...]  # A, B (those present), rod
     kinetic: EnergyMomentum
     hidden: EnergyMomentum
-    #: the causal rod's (E, p) split into its matter part and its stress part (README, "The causal rod")
+    #: the causal rod's (E, p) split into its matter part and its stress part (docs/model.md, "The causal rod")
     rod_parts: tuple[tuple[str, EnergyMomentum], ...] = ()

@@ -1,4 +1,4 @@
-"""World-lines -> matplotlib Figures: the paper's Minkowski diagrams (README, "Drawing the figures").
+"""World-lines -> matplotlib Figures: the paper's Minkowski diagrams (docs/plot.md, "Drawing the figures").
 
 Never pyplot, never files: `draw` builds a `matplotlib.figure.Figure`
 directly and `figure_bytes` serialises it deterministically; `output` writes.

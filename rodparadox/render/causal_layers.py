@@ -1,4 +1,4 @@
-"""The causal rod's own layers (README, "The causal rod"): its world-sheet shaded by compression lam, the light
+"""The causal rod's own layers (docs/model.md, "The causal rod"): its world-sheet shaded by compression lam, the light
 fronts that carry each disturbance, and each contact drawn as the stretch where a particle rides with an end.
 
 Each applies (`CausalLayer.applies`) to a run with fronts (`RodHistory.fronts` not None) alone: the diagram draws

@@ -1,4 +1,4 @@
-"""The strip's colour scale (README, "The paradox in motion"): which velocity of the rod's material points each
+"""The strip's colour scale (docs/animate.md, "The paradox in motion"): which velocity of the rod's material points each
 colour means, in one frame, the same at every instant of the history. Pure: no matplotlib, so the animation's
 timeline reads it before anything is drawn; `render.strip` maps it to a colour map.
 """

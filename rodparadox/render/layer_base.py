@@ -1,5 +1,5 @@
 """What every layer shares: the options, the panel a layer draws into, what it gives back, the `Layer` base class,
-and how a style's ink becomes matplotlib keywords (README, "Drawing the figures"). `layers` holds the layers."""
+and how a style's ink becomes matplotlib keywords (docs/plot.md, "Drawing the figures"). `layers` holds the layers."""
 
 from __future__ import annotations
 

@@ -77,7 +77,7 @@ class WorldSheet(Layer):
 
 @dataclass(frozen=True)
 class MaterialLines(Layer):
-    """Options.rod_lines: world-lines of material points inside the rod (README, "Inside the rod")."""
+    """Options.rod_lines: world-lines of material points inside the rod (docs/model.md, "Inside the rod")."""
 
     name = "rod-lines"
 

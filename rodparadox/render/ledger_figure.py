@@ -1,4 +1,4 @@
-"""The ledger as a figure: momentum and energy against each frame's time (README, "Energy and
+"""The ledger as a figure: momentum and energy against each frame's time (the docs, "Energy and
 momentum"). Never pyplot, never files.
 
 One column per frame: momentum above, energy below, against that frame's
@@ -8,7 +8,7 @@ constant) and between the two the hidden part, shaded. Every impact is a
 thin vertical line labelled as in `plot` (B₁, A₁, ...). Same styles,
 determinism and gids as `render`.
 
-The causal rod (README, "The causal rod") has nothing hidden: its (E, p) is split into its matter part (a solid
+The causal rod (docs/model.md, "The causal rod") has nothing hidden: its (E, p) is split into its matter part (a solid
 line, as the rigid rod's kinetic part) and its stress part, shaded between the particles plus matter and the
 total: its pressure's share (von Laue's momentum of a stressed body), drawn where the rigid figure shades the hidden
 part, though the two are not the same quantity. Its events are contacts and separations (B₁, A′₁), labelled above the panel on two tiers where close.
@@ -354,7 +354,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
     return figure
 
 
-#: the legend's words for the causal rod's stress part (README, "The causal rod")
+#: the legend's words for the causal rod's stress part (docs/model.md, "The causal rod")
 STRESS_TEXT = "rod, stress (hatched): its pressure's share\nof the rod's energy and momentum"
 
 

@@ -1,4 +1,4 @@
-"""What keeps a panel legible when the rod is thin on the page (README, "Drawing the figures"): material lines thinned
+"""What keeps a panel legible when the rod is thin on the page (docs/plot.md, "Drawing the figures"): material lines thinned
 to what the world-sheet can hold, and a magnified inset of a world-sheet thinner than a few millimetres.
 
 Both measure the world-sheet as it is drawn: the least distance on the page between the world-lines of the rod's

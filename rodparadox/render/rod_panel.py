@@ -1,4 +1,4 @@
-"""The rod's own view as a panel (`--frame rod`, README "The rod's own view"): the rod a fixed vertical strip.
+"""The rod's own view as a panel (`--frame rod`, docs/plot.md, "The rod's own view"): the rod a fixed vertical strip.
 
 `draw_rod_panel(ax, history, style)` draws the chart of `physics.rod_view` into a caller's Axes from the layers of
 `rod_layers` (each draws itself where the run has what it draws, and gives its own lines of the key) and returns

@@ -1,4 +1,4 @@
-"""The strip: one frame's space at one instant (README, "The paradox in motion"), for animations and handouts.
+"""The strip: one frame's space at one instant (docs/animate.md, "The paradox in motion"), for animations and handouts.
 
 The rod is a bar from its left end to its right end, coloured along its length by the velocity of its
 material points (a diverging scale centred on the frame's rod velocity before any impact,

@@ -87,7 +87,7 @@ class Style(NamedTuple):
     boost_size: tuple[float, float]  # inches: a boost animation's width and its largest height
     handout_body_size: float  # points: a handout's body text
     rc: Mapping[str, Any]  # rcParams set while drawing and saving
-    #: the causal rod (README, "The causal rod"): its light fronts, thin light lines across the world-sheet, and
+    #: the causal rod (docs/model.md, "The causal rod"): its light fronts, thin light lines across the world-sheet, and
     #: the ends of its compression scale (most stretched, most compressed; the unstressed middle is `sheet`)
     front: Ink = Ink("#1a1a1a", 0.45, FRONT_DASH)
     compression_ends: tuple[str, str] = ("#fff4cf", "#08306b")

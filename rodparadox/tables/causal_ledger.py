@@ -1,4 +1,4 @@
-"""The causal rod's ledger (README, "The causal rod"): each body's (E, p) at every contact and separation and on
+"""The causal rod's ledger (docs/model.md, "The causal rod"): each body's (E, p) at every contact and separation and on
 chosen slices of a frame, the rod's split into its matter part and its stress part. Pure.
 
 The stress part, p (u u - eta) integrated across the slice, is von Laue's momentum of a stressed body. The rigid

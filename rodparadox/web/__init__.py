@@ -1,4 +1,4 @@
-"""One self-contained HTML page to explore a scenario: speed, frame and time (README, "One page to explore:
+"""One self-contained HTML page to explore a scenario: speed, frame and time (the docs, "One page to explore:
 `sears-paradox html`").
 
   inks   the styles' inks as the page draws them (from `render.styles`, no matplotlib)

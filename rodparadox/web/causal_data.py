@@ -1,4 +1,4 @@
-"""What the html page embeds for the causal rod (README, "One page to explore" and "The causal rod"). Pure.
+"""What the html page embeds for the causal rod (docs/html.md, "One page to explore" and "The causal rod"). Pure.
 
 The page needs thousands of points per speed: it reads the engine's invariants from their tables
 (`physics.causal.slices.ChartTables`, Chebyshev pieces to `slices.TABLE_TOLERANCE` L), evaluated for whole

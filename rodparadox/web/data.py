@@ -1,4 +1,4 @@
-"""What the html page embeds: every number it shows, computed here by the engine (README, "One page to explore:
+"""What the html page embeds: every number it shows, computed here by the engine (the docs, "One page to explore:
 `sears-paradox html`"). Pure: no matplotlib, no file.
 
 The page never solves the physics. Per scenario, per speed v of a grid (the scenario's own v included), per rod

@@ -1,4 +1,4 @@
-"""The styles' inks as the page draws them (README, "Drawing the figures": the elements and their inks): the same
+"""The styles' inks as the page draws them (docs/plot.md, "Drawing the figures": the elements and their inks): the same
 colours, widths (points) and dash patterns (in units of the line width) as the SVG figures, read from
 `render.styles`, which imports no matplotlib. Pure."""
 

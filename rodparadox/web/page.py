@@ -1,4 +1,4 @@
-"""The page: one self-contained HTML document (README, "One page to explore: `sears-paradox html`"). Pure.
+"""The page: one self-contained HTML document (docs/html.md, "One page to explore: `sears-paradox html`"). Pure.
 
 Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in four files
 by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from

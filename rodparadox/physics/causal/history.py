@@ -1,4 +1,4 @@
-"""A run of the causal rod: the stiffest rod relativity allows, sound at c (README, "The causal rod"). Pure.
+"""A run of the causal rod: the stiffest rod relativity allows, sound at c (docs/model.md, "The causal rod"). Pure.
 
 `run(scenario)` places the particles as the rigid engine does (a gap, or an impact timed against the other
 particle's first contact, here in the causal rod), solves the invariants (`causal_solve`) and returns a
@@ -52,7 +52,7 @@ def particle_starts(scenario: Scenario, budget: Budget | None = None) -> dict[st
 
 
 #: the run is refused where the total after the last separation misses the initial total by more than this,
-#: relative to the initial energy, in S or S' (README, "The causal rod": "to 1e-9"). Ordinary runs keep it to
+#: relative to the initial energy, in S or S' (docs/model.md, "The causal rod": "to 1e-9"). Ordinary runs keep it to
 #: 1e-12 or better; the rounding grows with the compressions (lam up to e^(2 th) at v = 0.9999999)
 CONSERVED = 1e-9
 
@@ -277,7 +277,7 @@ class CausalHistory:
 
     def _final_rapidity(self) -> float:
         """The rod's centre-of-momentum rapidity after the last separation: of its (E, p) over one period,
-        (M/2L)(Dt, Dx) of any material point (README, "The causal rod")."""
+        (M/2L)(Dt, Dx) of any material point (docs/model.md, "The causal rod")."""
         D_t, D_x = self.period_advance()
         return math.atanh(D_x / D_t)
 

@@ -1,5 +1,5 @@
 """The causal rod's contact equation d psi/dT = -c sinh(psi - in(T)) where `in` varies, solved by Chebyshev
-collocation (README, "The causal rod"). Pure; numpy only.
+collocation (docs/model.md, "The causal rod"). Pure; numpy only.
 
 Why not a general integrator (scipy's `solve_ivp`, which this replaced): importing `scipy.integrate` costs
 0.35-0.45 s a process (it pulls scipy.special and scipy.optimize), more than the whole rest of the causal rod's

@@ -1,4 +1,4 @@
-"""The causal rod's (E, p) on a slice split into its matter part and its stress part (README, "The causal rod").
+"""The causal rod's (E, p) on a slice split into its matter part and its stress part (docs/model.md, "The causal rod").
 
 T = (rho + p) u u - p eta splits into matter, rho u u (rho = (M/2L)(1 + lam^2), the rest-frame energy density,
 elastic energy included), and stress, p (u u - eta) (p = (M/2L)(lam^2 - 1)): densities on a slice of a frame

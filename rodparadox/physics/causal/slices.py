@@ -1,5 +1,5 @@
 """The causal rod's matter and stress on many slices at once, and the tables of its invariants they are read from
-(README, "The causal rod"). Pure: numpy, no matplotlib. The integral across many slices at once: the ledger
+(docs/model.md, "The causal rod"). Pure: numpy, no matplotlib. The integral across many slices at once: the ledger
 figure's curves (`CausalHistory.rod_parts_on_slices`) and the html page's ledger call `rod_parts_on_slices`; the
 ledger's own numbers, slice by slice, are `parts.rod_parts`' exact integral, which the tests compare this with.
 

@@ -1,4 +1,4 @@
-"""The causal rod's invariants on its light-line characteristics, and its contacts (README, "The causal rod"). Pure.
+"""The causal rod's invariants on its light-line characteristics, and its contacts (docs/model.md, "The causal rod"). Pure.
 
 The rod's material (sound speed c) obeys the wave equation in its material chart (T, X), X in [0, L] the label.
 Two invariants carry every disturbance: r+ = th - ln lam, a function of u = T + X (constant along left-going
@@ -8,7 +8,7 @@ b(w) = w + L/2 (the rod at rest, centre at x = 0).
 
 Each end takes one invariant in and sends the other out. Left end (X = 0, u = w = T): in r+(T), out r-(T).
 Right end (X = L): in r-(T - L), out r+(T + L). With psi the end's rapidity pointing into the rod (th at the
-left, -th at the right) and delta = ln lam at the end, both ends read alike (derivation in the README):
+left, -th at the right) and delta = ln lam at the end, both ends read alike (derivation in docs/model.md):
 
 * free (p = 0, lam = 1): out = -in;
 * a particle of mass m riding with the end, pushed by the end's pressure p = (M/2L)(lam^2 - 1) in its rest

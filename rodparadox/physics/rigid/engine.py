@@ -1,4 +1,4 @@
-"""Runs a scenario: impacts, the rod's rigid response, the order of impacts (README, "The model"). Pure.
+"""Runs a scenario: impacts, the rod's rigid response, the order of impacts (docs/model.md, "The model"). Pure.
 
 Everything is computed in S, the rod's rest frame before any impact, as exact
 segments; `History` is the result, and `kinematics` boosts it to any frame.

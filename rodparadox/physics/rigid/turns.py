@@ -1,4 +1,4 @@
-"""The rigid rod's turns (README, "Inside the rod"; the paper's rule 3): its lines of simultaneity turning about a
+"""The rigid rod's turns (docs/model.md, "Inside the rod"; the paper's rule 3): its lines of simultaneity turning about a
 pivot, the material points' world-lines through them, and the rod's own "now" (the fans and the lines between
 turns). Pure.
 
