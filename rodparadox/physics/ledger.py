@@ -1,19 +1,10 @@
-"""The energy-momentum ledger: each body's (E, p) on any slice of any frame, and the hidden part (the docs,
-"Energy and momentum: the ledger").
+"""The energy-momentum ledger of any rod model (the docs, "Energy and momentum: the ledger"): the system's total
+before the first impact, each particle's (E, p) on a slice of any frame, and every body just before and after each
+impact, the rod's own part read from the model (`RodHistory.energy_momentum`). Pure.
 
-Pure. Units: energy in M c^2, momentum in M c (c = 1). A particle of mass m
-and rapidity a has m (cosh a, sinh a). The rod's *kinetic* (E, p) on the slice
-t = tau of a frame is (M/L) times the integral over its material points sigma
-of (cosh psi, sinh psi), psi the point's rapidity where it crosses the slice
-(rest mass flows along material lines). The *hidden* part is the system's
-total before the first impact minus the kinetic total on the slice: what the
-rod's stress carries (Sears's "hidden momentum").
-
-The integral is exact, in closed form: the slice crosses the boundaries of
-the turns' fans at points found in closed form, which split [0, L] into
-pieces where every point is either straight (one rapidity) or on the
-hyperbolae of one turn, where sinh psi = a/d (d the distance from the pivot)
-and the integrals of cosh psi and sinh psi over d are elementary.
+Units: energy in M c^2, momentum in M c (c = 1); a particle of mass m and rapidity a has m (cosh a, sinh a). How
+the rod's part is found is the model's own: in closed form for the rigid rod (`rigid.ledger`, with the hidden
+part), from its stress-energy for the causal rod (`causal.history`, matter and stress).
 """
 
 from __future__ import annotations
