@@ -21,6 +21,28 @@ def causal_history(name: str, v: float | None = None, L: float | None = None):
     return run_rod(load(name).with_overrides(v=v, L=L, rod="causal"))
 
 
+# --- one command in this process: its result, or the one-sentence error it must give ---------------------------
+
+def run(*args, expect=0):
+    """Invoke the command line in this process; it must exit with `expect`."""
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    result = CliRunner().invoke(main, [str(a) for a in args])
+    assert result.exit_code == expect, (result.output, result.exception)
+    return result
+
+
+def error_of(*args) -> str:
+    """The one-sentence error a bad call prints; it must exit 2 and print no traceback."""
+    result = run(*args, expect=2)
+    assert isinstance(result.exception, SystemExit), result.exception
+    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
+    assert len(lines) == 1, result.output
+    return lines[0][len("Error: "):]
+
+
 # --- shared by test_cli.py, test_animate_cli.py, test_robust_cli.py  ---------------------------------
 
 #: runs several command lines one after another in one interpreter (argv[1]: JSON list of argvs, argv[2]: the

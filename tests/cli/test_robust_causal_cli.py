@@ -5,24 +5,10 @@ memory limit and a timeout."""
 from __future__ import annotations
 
 import pytest
-from click.testing import CliRunner
 
-from sears_paradox_cli.main import main
-
-
-def run(*args, expect=0):
-    result = CliRunner().invoke(main, [str(a) for a in args])
-    assert result.exit_code == expect, (result.output, result.exception)
-    return result
+from helpers import error_of, run
 
 
-def error_of(*args) -> str:
-    """The one-sentence error a bad call prints; it must exit 2 and print no traceback."""
-    result = run(*args, expect=2)
-    assert isinstance(result.exception, SystemExit), result.exception
-    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
-    assert len(lines) == 1, result.output
-    return lines[0][len("Error: "):]
 
 
 @pytest.mark.parametrize("args, panels", [

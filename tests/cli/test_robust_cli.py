@@ -14,22 +14,10 @@ import pytest
 from click.testing import CliRunner
 
 from helpers import commands_in_one_process
+from helpers import error_of, run
 from sears_paradox_cli.main import main
 
 
-def run(*args, expect=0):
-    result = CliRunner().invoke(main, [str(a) for a in args])
-    assert result.exit_code == expect, (result.output, result.exception)
-    return result
-
-
-def error_of(*args) -> str:
-    """The one-sentence error a bad call prints; it must exit 2 and print no traceback."""
-    result = run(*args, expect=2)
-    assert isinstance(result.exception, SystemExit), result.exception
-    lines = [line for line in result.output.splitlines() if line.startswith("Error: ")]
-    assert len(lines) == 1, result.output
-    return lines[0][len("Error: "):]
 
 
 def _cli() -> list[str]:
