@@ -76,6 +76,9 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     histories = [run_rods(job.scenario, job.name, lorentz_frames(job.frames[0])) for job in jobs]
     if proper_time and any(h.turning is None for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
+    if rod_now and all(h.turning is None for run in histories for h in run):
+        raise BadInput("--rod-now draws the rigid rod's own lines of simultaneity, and the causal rod has none (its "
+                       "parts share no rest frame): leave it out, or add the rigid rod with --rod both.")
     planned.prepare(jobs, described, output)
 
     before_matplotlib()
