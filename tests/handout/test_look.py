@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from helpers import history
@@ -72,3 +74,47 @@ def test_the_caption_names_each_particles_dashes_as_the_styles_draw_them(name):
             dashes = set(pattern[0::2])
             assert len(dashes) == (2 if p.name == "B" else 1), (style.name, p.name, pattern)
     assert "are dashed" not in caption
+
+
+# --- issue 24 item 8: every page of every preset's handout, worksheet and key at 0.3, 0.6, 0.95 in greyscale ------
+
+def test_a_colour_bar_whose_end_is_its_centre_reads_in_few_digits():
+    """single's causal rod from S′ at v = 0.3 moves from -0.3 to +0.3 c, and +0.3 is also the rod's velocity
+    before the impact (the scale's centre): the end came out as +0.30000000000000004, and the ticks were written
+    with 17 digits (−0.300000000000000032, 0.30000000000000004) to tell the end from the centre. A centre equal to an
+    end up to rounding is that end: the bar reads −0.3 and 0.3."""
+    from rodparadox.render.colour_scale import ColourScale
+    from rodparadox.render.strip import colour_bar_ticks
+
+    v = 0.3
+    end = math.tanh(2 * math.atanh(v) - math.atanh(v))  # the rapidity 2θ less S′'s: v up to an ulp
+    scale = ColourScale(v, 2 * math.atanh(v), (-end, end + 5.6e-17))
+    assert scale.ends[1] != v  # the rounding the engine leaves
+    assert colour_bar_ticks(scale, 150.0, 8.0)[1] == ["−0.3", "0.3"]
+    # a centre truly inside keeps its tick (fig2 from S′ at 0.6: 0, 0.6, 0.882)
+    inside = ColourScale(0.6, math.atanh(15 / 17) - math.atanh(0.6), (0.0, 15 / 17))
+    assert colour_bar_ticks(inside, 150.0, 8.0)[1] == ["0", "0.6", "0.882"]
+
+
+def test_the_causal_rods_stills_name_separations_and_contacts_not_impacts():
+    """The causal rod's stills (fig1 at 0.3, S) labelled the row where both particles leave the ends "impacts A′₁,
+    B′₁", though the diagram's key calls them separations (a hollow dot) and the contacts "contact (A₁)". Each row's
+    note names what happens: contacts, separations; the rigid rod's rows still say impacts."""
+    from matplotlib.figure import Figure
+
+    from helpers import causal_history
+    from rodparadox import render
+    from rodparadox.handout.causal_compare import causal_strip_times
+    from rodparadox.physics.frames import rest_frame
+
+    def notes(h, times):
+        figure = Figure(figsize=(6.5, 7.0), dpi=72)
+        with render.style_context("print"):
+            render.draw_strips_into(figure, h, rest_frame(), times, "print")
+        return [t.get_text() for t in figure.findobj(lambda a: str(a.get_gid()).startswith("strips-impacts-"))]
+
+    causal = causal_history("fig1", 0.3)
+    found = notes(causal, causal_strip_times(causal, rest_frame()))
+    assert found == ["contacts $A_{1}$, $B_{1}$", "separations $A'_{1}$, $B'_{1}$"]
+    rigid = history("fig1", 0.3)
+    assert notes(rigid, (5 / 3,)) == ["impacts $A_{1}$, $B_{1}$"]
