@@ -118,3 +118,19 @@ def test_the_causal_rods_stills_name_separations_and_contacts_not_impacts():
     assert found == ["contacts $A_{1}$, $B_{1}$", "separations $A'_{1}$, $B'_{1}$"]
     rigid = history("fig1", 0.3)
     assert notes(rigid, (5 / 3,)) == ["impacts $A_{1}$, $B_{1}$"]
+
+
+def test_the_stills_caption_claims_no_centre_the_printed_scale_lacks():
+    """The caption said "(the scale is centred on +0.6 c, the rod's velocity in S′ before it is struck)"; in print
+    the scale runs from the slowest velocity (light) to the fastest (dark), and single's rod in S′ only slows from
+    +0.6 c to rest: +0.6 c is the scale's dark end, not its centre. The caption names no centre."""
+    from rodparadox.handout.strips import strip_times, strips_caption
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.render.colour_scale import colour_scale
+    from rodparadox.render.strip import colour_norm
+
+    h = history("single", 0.6)
+    moving = paper_frames(0.6)[1]
+    assert float(colour_norm(colour_scale(h, moving), "print")(0.6)) == pytest.approx(1.0)  # the dark end
+    caption = strips_caption(h, moving, strip_times(h, moving))
+    assert "centred" not in caption and "shaded by the velocity in S′" in caption
