@@ -273,8 +273,9 @@ def question_together(r: Reading, b: Frame) -> Asked | None:
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
               f"{listed([answer_numeral(p) + ' M c' for p in momenta])}, which cancel)"
               if abs(sum(momenta)) <= PRINTED_ZERO * sum(abs(p) for p in momenta) else "")
-    text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
-            f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
+    # asked without telling the order in b, which the question on simultaneity asks
+    text = (f"What is the rod's velocity in {symbol} from before {impact_names(c)} until after both, and why do "
+            f"their impulses not change it?")
     answer = (f"{in_c(u_rod, ANSWER_DIGITS)}, as before and after: the rod takes {impact_names(c)} together, on one line "
               f"of its own simultaneity, and there the impulses cancel{cancel}.",
               f"Between the two impacts in {symbol} the momentum {first.particle} has given up is held by the stress "
