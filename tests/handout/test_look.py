@@ -134,3 +134,24 @@ def test_the_stills_caption_claims_no_centre_the_printed_scale_lacks():
     assert float(colour_norm(colour_scale(h, moving), "print")(0.6)) == pytest.approx(1.0)  # the dark end
     caption = strips_caption(h, moving, strip_times(h, moving))
     assert "centred" not in caption and "shaded by the velocity in S′" in caption
+
+
+@pytest.mark.parametrize("worksheet", [False, True])
+def test_no_paragraph_of_a_section_says_a_sentence_twice(worksheet):
+    """Every table's paragraph was said in full for S and again for S′ ("The ledger in S′: at each instant of S′ at
+    which the rod is struck (impacts at one instant taken together), the energy E and momentum p ...", and the
+    causal rod's two), so each page held the same sentences twice. fig1 at 0.6 with the causal rod, as a handout
+    and as a worksheet and its key: no sentence of the paragraphs (S′ read as S) comes twice in a section."""
+    import collections
+    import re
+
+    from helpers import causal_history
+    from rodparadox.handout.build import build
+    from rodparadox.handout.document import Paragraph
+
+    doc = build([("fig1", history("fig1", 0.6), None, causal_history("fig1", 0.6))], worksheet=worksheet)
+    for blocks in [s.blocks for s in doc.sections] + [doc.answer_key]:
+        sentences = collections.Counter(
+            s for b in blocks if isinstance(b, Paragraph)
+            for s in re.split(r"(?<=[.:;])\s+", re.sub(r"([Sxt])\N{PRIME}", r"\1", b.text)) if len(s) > 40)
+        assert not [s for s, k in sentences.items() if k > 1]
