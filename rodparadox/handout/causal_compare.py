@@ -249,7 +249,10 @@ def events_table(causal, frame: Frame, blank: bool = False) -> Table:
     """The causal rod's contacts and separations in the frame (`tables.build.events_table`, named apart from the
     rigid rod's)."""
     table = tables.events_table(causal, frame, blank)
-    return replace(table, name=f"causal_events_{frame_word(frame)}",
+    # its rows are contacts and separations, and a particle leaving an end is no impact: the first column is the
+    # event, as the causal rod's ledger names it
+    header = tuple("event" if column == "impact" else column for column in table.header)
+    return replace(table, name=f"causal_events_{frame_word(frame)}", header=header,
                    caption=f"The causal rod\u2019s contacts and separations in frame {frame_symbol(frame)}")
 
 

@@ -155,3 +155,16 @@ def test_no_paragraph_of_a_section_says_a_sentence_twice(worksheet):
             s for b in blocks if isinstance(b, Paragraph)
             for s in re.split(r"(?<=[.:;])\s+", re.sub(r"([Sxt])\N{PRIME}", r"\1", b.text)) if len(s) > 40)
         assert not [s for s, k in sentences.items() if k > 1]
+
+
+def test_the_causal_rods_table_heads_its_first_column_event():
+    """The causal rod's table of contacts and separations headed its first column "impact", over rows such as A′₁,
+    a particle leaving the end; its ledger says "event". Both say event; the rigid rod's table keeps "impact"."""
+    from helpers import causal_history
+    from rodparadox.handout.causal_compare import events_table
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.tables import build as tables
+
+    for frame in paper_frames(0.6):
+        assert events_table(causal_history("single", 0.6), frame).header[0] == "event"
+        assert tables.events_table(history("single", 0.6), frame).header[0] == "impact"
