@@ -501,7 +501,7 @@ def test_fig2_worked_answers_against_the_hand_derivation():
     assert addition.startswith("After A₁ the rod moves at +0.6 c in S.")
     assert "= 1.2/1.36 = +15/17 c ≈ +0.8823529 c" in addition
     # at rest in S' at the instant t' = 17/12, full length L, contracted to L/g = 0.8 L before
-    rest = answer_of(asked, "The whole rod comes to rest in S′")
+    rest = answer_of(asked, "Is the whole rod ever at rest in S′")
     assert "at the one instant t′ = 17/12 L" in rest and "= 0.8 L" in rest
     # v = 0.8: A1 - B1 = g v L = (5/3)(0.8) = 4/3 L in S, and 0 in S' (A is timed so); the rod ends at rest
     other = answer_of(asked, "Now take v = 0.8 instead of 0.6")
