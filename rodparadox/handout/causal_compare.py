@@ -290,7 +290,10 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     filled += [b for f in frames for b in (Paragraph(table_text(f, f == frames[0])), events_table(causal, f))]
     filled += [b for f in frames for b in (Paragraph(ledger_text(f, f == frames[0])), ledger_table(causal, f))]
     # the diagram, then what it shows (text that may fill a page the diagram misses), the strips, the numbers
-    shown = [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + starts_text(rigid, causal, frames) + " " + SHOWN),
+    # where each rod's first impacts fall is said once, by the note under the diagram (`tables.comparison`), which
+    # a teacher found said twice, here and there, a few lines apart
+    shown = [Heading(HEADING, 2),
+             Paragraph(INTRODUCTION + " " + starts_text(rigid, causal, frames, impacts=False) + " " + SHOWN),
              diagram, *told, *drawn, *filled]
     if not worksheet:
         return shown, []

@@ -168,3 +168,21 @@ def test_the_causal_rods_table_heads_its_first_column_event():
     for frame in paper_frames(0.6):
         assert events_table(causal_history("single", 0.6), frame).header[0] == "event"
         assert tables.events_table(history("single", 0.6), frame).header[0] == "impact"
+
+
+def test_the_comparison_says_where_the_first_impacts_fall_once():
+    """The comparison's paragraph said "Each particle's first impact: on the rigid rod A₁ and B₁ are simultaneous in
+    S and 0.3145 L apart in S′; ..." just above the diagram whose note says the same ("The rigid rod: A₁ and B₁ are
+    simultaneous in S (at 1.667 L), not in S′ (A₁ at 1.59 L, B₁ at 1.904 L)"). The note says it; the paragraph
+    says where the particles start."""
+    from helpers import causal_history
+    from rodparadox.handout.build import build
+    from rodparadox.handout.document import DiagramBlock, Paragraph
+    from rodparadox.tables.comparison import comparison_note
+
+    rigid, causal = history("fig1", 0.3), causal_history("fig1", 0.3)
+    blocks = build([("fig1", rigid, None, causal)]).sections[1].blocks
+    diagram = next(b for b in blocks if isinstance(b, DiagramBlock) and b.compared is not None)
+    assert "A₁ and B₁ are simultaneous in S" in comparison_note((rigid, causal), diagram.frames)
+    said = " ".join(b.text for b in blocks if isinstance(b, Paragraph))
+    assert "first impact:" not in said and "A at x = −1 L and B at x = 1 L" in said
