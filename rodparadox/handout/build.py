@@ -243,9 +243,8 @@ def _ledger(history: RodHistory, frame: Frame, blank: bool, earlier: tuple[Frame
         Paragraph(f"The ledger in {symbol}: at each instant of {symbol} at which the rod is struck (impacts at one "
                   f"instant taken together), the energy E and momentum p just before and just after of each "
                   f"particle, of the rod's motion (its kinetic part, the sum over its material points on the slice "
-                  f"{time} = constant) and the hidden part (what the rod's stress carries), which add up to the "
-                  f"total, the same as before the first impact. Below them, apart, the rod's dynamical E and p, "
-                  f"those of its momentum, which takes each impulse at once: not a summand." if not earlier else
+                  f"{time} = constant) and the hidden part (what the rod's stress carries); the note under the table "
+                  f"says how they add up, and what the rod's dynamical row, shown apart, is." if not earlier else
                   f"The ledger in {symbol}, read the same way, the rod's kinetic part summed on the slice "
                   f"{time} = constant."),
         tables.ledger_table(history, frame, blank),

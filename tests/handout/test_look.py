@@ -186,3 +186,30 @@ def test_the_comparison_says_where_the_first_impacts_fall_once():
     assert "A₁ and B₁ are simultaneous in S" in comparison_note((rigid, causal), diagram.frames)
     said = " ".join(b.text for b in blocks if isinstance(b, Paragraph))
     assert "first impact:" not in said and "A at x = −1 L and B at x = 1 L" in said
+
+
+def test_the_ledgers_paragraph_leaves_to_its_note_what_the_note_says():
+    """The paragraph above each ledger table ended "... which add up to the total, the same as before the first
+    impact. Below them, apart, the rod's dynamical E and p, those of its momentum, which takes each impulse at once:
+    not a summand.", and the note under the table says both again ("add up to the total, the total before the first
+    impact ...; Rod, dynamical (not a summand): ..."). The paragraph says what the rows are; the note, once, how they
+    add up and what the dynamical row is."""
+    from rodparadox.handout.build import build
+    from rodparadox.handout.document import Paragraph, Table
+
+    blocks = build([("fig1", history("fig1", 0.6))]).sections[1].blocks
+    for text, table in ((b.text, t) for b, t in zip(blocks, blocks[1:])
+                        if isinstance(b, Paragraph) and isinstance(t, Table) and t.name.startswith("ledger")):
+        note = " ".join(table.notes)
+        assert "add up to the total" in note and "not a summand" in note
+        assert "add up to the total" not in text and "not a summand" not in text
+
+
+def test_a_particle_strikes_it_is_not_struck():
+    """fig1's explanation said "Between them in S′, A has already been struck and B not yet": the particles strike
+    the rod's ends (every other sentence says so); A has already struck."""
+    from rodparadox.handout.narrative import explanation
+    from rodparadox.physics.frames import paper_frames
+
+    said = " ".join(p.text for p in explanation(history("fig1", 0.6), paper_frames(0.6)))
+    assert "A has already struck and B not yet" in said and "been struck" not in said
