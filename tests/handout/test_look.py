@@ -213,3 +213,18 @@ def test_a_particle_strikes_it_is_not_struck():
 
     said = " ".join(p.text for p in explanation(history("fig1", 0.6), paper_frames(0.6)))
     assert "A has already struck and B not yet" in said and "been struck" not in said
+
+
+def test_the_far_end_question_leaves_b1s_time_to_the_table():
+    """fig1's worksheet asked "A₁ strikes the left end ... at the time t your table of S gives for A₁. B₁ strikes the
+    right end at the same instant of S.", while the table of S leaves B₁'s t blank: the question filled it. It points
+    to the table for B₁ as for A₁, and still says its time in the key."""
+    from helpers import causal_history
+    from rodparadox.handout.causal_reading import compare
+    from rodparadox.handout.worksheet_causal import question_far_end
+    from rodparadox.physics.frames import paper_frames
+
+    rigid, causal = history("fig1", 0.6), causal_history("fig1", 0.6)
+    asked = question_far_end(compare(rigid, causal, paper_frames(0.6)))
+    assert "same instant" not in asked.text and "the time your table of S gives for B₁" in asked.text
+    assert "t = 5/6 L" in " ".join(asked.answer)
