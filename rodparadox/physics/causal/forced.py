@@ -1,0 +1,142 @@
+"""A run of the causal rod driven by forces at its ends (docs/model.md, "Forces at the ends"). Pure.
+
+`run_forces(scenario)` solves the driven ends (`causal.driven`) and returns a `DrivenHistory`: the rod interface
+(`history.RodHistory`) with the capability `fronts` (its chart, compression, matter and stress) and what the
+forces add, `driving` (what each agent delivered up to a slice's end events). No particles: `impacts` and
+`starts` are empty. Before the first force the rod rests in S (chart T = t, X = x + L/2); after the last it
+rings for ever, as after a last separation.
+
+Conservation with forces: on every slice of every frame the rod's (E, p) = its initial M (cosh, sinh)(-f) plus
+what both agents delivered up to the slice's end events; `energy_momentum(...).hidden` is what is missing from
+that sum (zero to rounding: nothing is hidden in the causal rod).
+"""
+
+from __future__ import annotations
+
+import math
+
+from rodparadox.errors import ScenarioError
+from rodparadox.physics.causal.driven import Drive, solve_forces
+from rodparadox.physics.causal.history import CONSERVED, CausalHistory
+from rodparadox.physics.causal.solve import Budget
+from rodparadox.physics.types import EnergyMomentum, Slice, ZERO
+
+#: a tension of rho0/2 = M c^2/(2L) stretches the end without bound (lam_end^2 = 1 + 2F/rho0 = 0)
+CAUSAL_PULL_LIMIT = 0.5
+#: the work a forced run may take (windows, stretches, steps) when no budget is asked for
+FORCED_BUDGET = 200000
+
+
+def _profiles(scenario) -> dict:
+    forces = scenario.forces
+    return {"left": forces.left, "right": forces.right}
+
+
+def run_forces(scenario, budget: int | None = None) -> "DrivenHistory":
+    """The causal rod's history under the scenario's forces; `budget`: a bound on its work (`solve.Budget`), by
+    default FORCED_BUDGET. Refused in one sentence: a pull at or beyond M c^2/(2L), a run past its budget, a run
+    double precision cannot keep to CONSERVED."""
+    L = scenario.L
+    drives = {}
+    for end, profile in _profiles(scenario).items():
+        if profile is None:
+            drives[end] = None
+            continue
+        if profile.least() <= -CAUSAL_PULL_LIMIT:
+            raise ScenarioError(f"forces.{end} pulls with {-profile.least():g} M c^2/L, but the causal rod can carry "
+                                f"a tension only below M c^2/(2L) (0.5 in these units: at that pull its end "
+                                f"stretches without bound); choose a smaller pull.", f"forces.{end}")
+        drives[end] = Drive(profile, math.atanh(profile.frame_velocity(scenario.v)), L)
+    spend = Budget(FORCED_BUDGET if budget is None else budget)
+    history = DrivenHistory(scenario, solve_forces(L, drives, spend))
+    _check_conserved(history)
+    return history
+
+
+def _check_conserved(history: "DrivenHistory") -> None:
+    """Refuse a run whose ledger double precision cannot keep to CONSERVED, after the last force, in S and S'."""
+    scenario = history.scenario
+    last = max(T for T in history.solution.last.values() if math.isfinite(T))
+    for f in (0.0, -math.atanh(scenario.v)):
+        t = max(history._end_event(e, last).seen_from(f).t for e in ("left", "right")) + scenario.L
+        missing = history.energy_momentum(f, t).hidden
+        initial = history.initial_total(f)
+        worst = max(abs(missing.T), abs(missing.p)) / (initial.rest + initial.T + history.driving.scale(f))
+        if not worst <= CONSERVED:
+            raise ScenarioError(f"the causal rod's run keeps energy and momentum only to {worst:.0e} of the total "
+                                f"in double precision (its compressions are too extreme with these forces); choose "
+                                f"smaller or shorter forces.", "forces")
+
+
+class Driving:
+    """What the forces add to a run (the capability `driving` of `history.RodHistory`): each agent's force
+    profile, and the energy-momentum it delivered up to the slice's end events."""
+
+    def __init__(self, history: "DrivenHistory"):
+        self.history = history
+        self.profiles = _profiles(history.scenario)
+
+    def delivered(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
+        """The (E, p), in the frame, the agent at `end` delivered up to the end's event on the slice t: +-F (dx, dt)
+        integrated along the end, from I_U = int F dU and I_V = int F dV."""
+        history = self.history
+        T = history.end_chart_time(end, frame_rapidity, t)
+        return self.delivered_at(end, frame_rapidity, T)
+
+    def delivered_at(self, end: str, frame_rapidity: float, T: float) -> EnergyMomentum:
+        """The same up to the end's chart time T."""
+        I_z, I_y = self.history.solution.delivered[end].at(T)
+        I_U, I_V = (I_z, I_y) if end == "left" else (I_y, I_z)
+        ef = math.exp(frame_rapidity)
+        sign = 1.0 if end == "left" else -1.0
+        E = 0.5 * sign * (I_U / ef - ef * I_V)
+        p = 0.5 * sign * (I_U / ef + ef * I_V)
+        return EnergyMomentum(0.0, E, p)
+
+    def delivered_total(self, frame_rapidity: float, t: float) -> EnergyMomentum:
+        return self.delivered("left", frame_rapidity, t) + self.delivered("right", frame_rapidity, t)
+
+    def scale(self, frame_rapidity: float) -> float:
+        """The size of everything delivered in the frame (the scale conservation is checked against)."""
+        total = 0.0
+        for end in ("left", "right"):
+            em = self.delivered_at(end, frame_rapidity, math.inf)
+            total += abs(em.E) + abs(em.p)
+        return total
+
+
+class DrivenHistory(CausalHistory):
+    """The rod interface for the causal rod driven by forces (`history.RodHistory`, capabilities `fronts` and
+    `driving`). Coordinates in S, units of L, M = 1."""
+
+    def __init__(self, scenario, solution):
+        self.scenario, self.solution = scenario, solution
+        self._end_times = {}
+        self.starts = ()
+        self.impacts = ()
+        self._first_left, self._first_right = solution.first["left"], solution.first["right"]
+        L = scenario.L
+        self._ends = {"left": self.material_worldline(0.0), "right": self.material_worldline(L)}
+        self.final_rapidity = self._final_rapidity()
+        self._particles = {}
+        self.driving = Driving(self)
+
+    @property
+    def last_separation(self) -> float:
+        """Chart time the last force ends: the rod rings freely from then on."""
+        return self.solution.plus.tail_start
+
+    def energy_momentum(self, frame_rapidity: float, t: float, split: bool = False) -> Slice:
+        """The rod's (E, p) on the slice t of the frame, and what is missing from the initial total plus what the
+        agents delivered up to the slice's end events (zero to rounding); with `split`, its matter and stress."""
+        rod = self.rod_energy_momentum(frame_rapidity, t)
+        expected = self.initial_total(frame_rapidity) + self.driving.delivered_total(frame_rapidity, t)
+        parts = ()
+        if split:
+            matter, stress = self.rod_parts(frame_rapidity, t)
+            parts = (("matter", matter), ("stress", stress))
+        return Slice(t, (("rod", rod),), rod, expected - rod, parts)
+
+    def initial_total(self, frame_rapidity: float) -> EnergyMomentum:
+        """The rod at rest in S before the first force: M (cosh, sinh)(-f)."""
+        return EnergyMomentum.of(1.0, -frame_rapidity)
