@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.model import FASTEST, FRAME_NAMES, MAX_SPAN, _check_number, described, frame_velocity
+from rodparadox.physics.model import FASTEST, FRAME_NAMES, MAX_SPAN, check_number, described, frame_velocity
 
 #: the ends a force may act on
 ENDS = ("left", "right")
@@ -78,13 +78,13 @@ class ForceProfile:
             if self.points:
                 raise ScenarioError(f"{key}.points is used only by shape points; remove it or give shape: points.",
                                     f"{key}.points")
-            peak = _check_number(self.peak, f"{key}.peak", low=-MAX_FORCE, high=MAX_FORCE, low_open=False,
+            peak = check_number(self.peak, f"{key}.peak", low=-MAX_FORCE, high=MAX_FORCE, low_open=False,
                                  high_open=False, allowed=_FORCE_ALLOWED)
             if peak == 0:
                 raise ScenarioError(f"{key}.peak must not be 0 (no force); leave the end out instead.", f"{key}.peak")
-            _check_number(self.start, f"{key}.start", low=-MAX_SPAN, high=MAX_SPAN, low_open=False,
+            check_number(self.start, f"{key}.start", low=-MAX_SPAN, high=MAX_SPAN, low_open=False,
                           high_open=False, allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
-            _check_number(self.duration, f"{key}.duration", low=0, high=MAX_SPAN, high_open=False,
+            check_number(self.duration, f"{key}.duration", low=0, high=MAX_SPAN, high_open=False,
                           allowed=f"a number with 0 < duration <= {MAX_SPAN:g} (units of L)")
             object.__setattr__(self, "peak", float(self.peak))
             object.__setattr__(self, "start", float(self.start))
@@ -99,7 +99,7 @@ class ForceProfile:
         if isinstance(self.frame, str):
             if self.frame not in FRAME_NAMES:
                 raise ScenarioError(f"{key} must be {allowed}, got {self.frame!r}.", key)
-        elif abs(_check_number(self.frame, key, allowed=allowed)) > FASTEST:
+        elif abs(check_number(self.frame, key, allowed=allowed)) > FASTEST:
             raise ScenarioError(f"{key} must be {allowed}, got {self.frame!r}.", key)
         else:
             object.__setattr__(self, "frame", float(self.frame) + 0.0)
@@ -120,10 +120,10 @@ class ForceProfile:
                                     f"{described(pair) if not isinstance(pair, (list, tuple)) else f'{len(pair)} values'}.",
                                     key)
             try:
-                t = _check_number(pair[0], f"{where} time", low=-MAX_SPAN, high=MAX_SPAN, low_open=False,
+                t = check_number(pair[0], f"{where} time", low=-MAX_SPAN, high=MAX_SPAN, low_open=False,
                                   high_open=False,
                                   allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
-                f = _check_number(pair[1], f"{where} force", low=-MAX_FORCE, high=MAX_FORCE, low_open=False,
+                f = check_number(pair[1], f"{where} force", low=-MAX_FORCE, high=MAX_FORCE, low_open=False,
                                   high_open=False, allowed=_FORCE_ALLOWED)
             except ScenarioError as e:  # the key of the list, whose line the file knows
                 raise ScenarioError(e.message, key) from None

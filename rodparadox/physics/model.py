@@ -58,6 +58,10 @@ def _check_number(value: Any, key: str, *, low: float | None = None, high: float
     return value
 
 
+#: `_check_number` for the other scenario modules (`forces`): a float, or one sentence naming the key
+check_number = _check_number
+
+
 @dataclass(frozen=True)
 class Timing:
     """Place a particle so that its first impact comes `delay` (units of L) after
