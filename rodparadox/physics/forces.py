@@ -118,18 +118,18 @@ class ForceProfile:
             if not isinstance(pair, (list, tuple)) or len(pair) != 2:
                 raise ScenarioError(f"{where} must be a pair [t, F] (time in units of L, force in M c^2/L), got "
                                     f"{described(pair) if not isinstance(pair, (list, tuple)) else f'{len(pair)} values'}.",
-                                    key)
+                                    where)
             try:
                 t = check_number(pair[0], f"{where} time", low=-MAX_SPAN, high=MAX_SPAN, low_open=False,
                                   high_open=False,
                                   allowed=f"a number between {-MAX_SPAN:g} and {MAX_SPAN:g} (units of L)")
                 f = check_number(pair[1], f"{where} force", low=-MAX_FORCE, high=MAX_FORCE, low_open=False,
                                   high_open=False, allowed=_FORCE_ALLOWED)
-            except ScenarioError as e:  # the key of the list, whose line the file knows
-                raise ScenarioError(e.message, key) from None
+            except ScenarioError as e:  # the key of the point, whose line the file knows
+                raise ScenarioError(e.message, where) from None
             if out and t <= out[-1][0]:
                 raise ScenarioError(f"{key} must have strictly increasing times, but point {i} (t = {t:g}) does not "
-                                    f"come after point {i - 1} (t = {out[-1][0]:g}).", key)
+                                    f"come after point {i - 1} (t = {out[-1][0]:g}).", where)
             out.append((t, f))
         if all(f == 0 for _, f in out):
             raise ScenarioError(f"{key} are all 0 (no force); leave the end out instead.", key)
@@ -143,7 +143,7 @@ class ForceProfile:
         if self.shape == "step":
             out = np.where((t >= self.start) & (t < self.start + self.duration), self.peak, 0.0)
         elif self.shape == "sine2":
-            inside = (t >= self.start) & (t <= self.start + self.duration)
+            inside = (t >= self.start) & (t < self.start + self.duration)  # sin^2 is 0 at the end: exactly 0
             out = np.where(inside, self.peak * np.sin(np.pi * (t - self.start) / self.duration) ** 2, 0.0)
         else:
             times = np.array([p[0] for p in self.points])
@@ -192,6 +192,38 @@ class ForceProfile:
         if self.shape != "points":
             return self.start, self.start + self.duration
         return tuple(t for t, _ in self.points)
+
+    def piece_index(self, t: float) -> int:
+        """Which piece holds time t: 0 before `pieces()[0]`, i on [pieces()[i-1], pieces()[i]), len(pieces()) after
+        the last (right-continuous: at a piece's start, that piece)."""
+        return sum(1 for b in self.pieces() if b <= t)
+
+    def piece_value(self, index: int, t):
+        """F on the piece `index` (`piece_index`) by that piece's own smooth formula, continued past its ends (an
+        ODE solver's step may look beyond the instant where the piece ends; units of L and M c^2/L)."""
+        t = np.asarray(t, dtype=float)
+        n = len(self.pieces())
+        if index <= 0 or index >= n:
+            out = np.zeros_like(t)
+        elif self.shape == "step":
+            out = np.full_like(t, self.peak)
+        elif self.shape == "sine2":
+            out = self.peak * np.sin(np.pi * (t - self.start) / self.duration) ** 2
+        else:
+            (t0, f0), (t1, f1) = self.points[index - 1], self.points[index]
+            out = f0 + (f1 - f0) * ((t - t0) / (t1 - t0))
+        return float(out) if out.ndim == 0 else out
+
+    def piece_constant(self, index: int) -> float | None:
+        """F on the piece `index` where it is constant there (a step, no force, a flat stretch of points), else None."""
+        n = len(self.pieces())
+        if index <= 0 or index >= n:
+            return 0.0
+        if self.shape == "step":
+            return self.peak
+        if self.shape == "points" and self.points[index - 1][1] == self.points[index][1]:
+            return self.points[index][1]
+        return None
 
     def jumps(self) -> tuple[float, ...]:
         """The instants where F itself jumps (not only its slope)."""
@@ -261,6 +293,16 @@ class ScaledProfile:
 
     def jumps(self) -> tuple[float, ...]:
         return tuple(t * self.L for t in self.profile.jumps())
+
+    def piece_index(self, t: float) -> int:
+        return sum(1 for b in self.pieces() if b <= t)
+
+    def piece_value(self, index: int, t):
+        return self.profile.piece_value(index, np.asarray(t, dtype=float) / self.L) / self.L
+
+    def piece_constant(self, index: int) -> float | None:
+        value = self.profile.piece_constant(index)
+        return None if value is None else value / self.L
 
     def peak_time(self) -> float:
         return self.profile.peak_time() * self.L
