@@ -31,9 +31,11 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal.ode import (DEGREE, EPS, MAX_HALVINGS, ODE_RTOL, Solved, Step, _S, _TO_COEF, _X,
-                                           _clenshaw, _roughness, _tail, falling_root)
-from rodparadox.physics.causal.solve import Budget, Invariant, Solution, _Const, _View, MAX_WINDOWS
+from rodparadox.physics.causal.ode import (DEGREE, EPS, INTEGRATE_FROM_START as _S, LOBATTO as _X, MAX_HALVINGS,
+                                           ODE_RTOL, TO_COEFFICIENTS as _TO_COEF, Solved, Step, clenshaw as _clenshaw,
+                                           falling_root, negligible_tail as _tail, roughness as _roughness)
+from rodparadox.physics.causal.solve import (Budget, Const as _Const, Invariant, Solution, View as _View,
+                                             constant_of)
 
 #: windows of chart time L a forced run may take before it is refused (a push lasting that many crossing times)
 MAX_FORCED_WINDOWS = 2000
@@ -42,8 +44,9 @@ MAX_ITERATIONS = 60
 
 
 class Drive:
-    """One end's force: its profile and the rapidity of the frame it is timed in; the profile's smooth segments
-    between its non-smooth instants (segment 0 before the force, the last after it: free)."""
+    """One end's force: its profile in the engine's units (`forces.ScaledProfile`: t and L alike, F in units of
+    M c^2 with M = 1, so 2F/rho0 = 2 F L) and the rapidity of the frame it is timed in; the profile's smooth
+    segments between its instants (segment 0 before the force, the last after it: free)."""
 
     def __init__(self, profile, frame_rapidity: float, L: float):
         self.profile, self.f, self.L = profile, frame_rapidity, L
@@ -55,9 +58,6 @@ class Drive:
         """t_F of the event (U, V) = (t + x, t - x) in S."""
         return 0.5 * (U / self.ef + self.ef * V)
 
-    def time_rate(self, dU: float, dV: float) -> float:
-        return 0.5 * (dU / self.ef + self.ef * dV)
-
     def free(self, k: int) -> bool:
         """Segment k has no force: before the first instant or after the last."""
         return k == 0 or k >= len(self.instants)
@@ -67,19 +67,48 @@ class Drive:
         hi = self.instants[k] if k < len(self.instants) else math.inf
         return lo, hi
 
-    def force(self, k: int):
-        """F(t) on segment k, its smooth piece held beyond the segment's ends (the step that overshoots an event
-        is solved again up to it)."""
+    def constant(self, k: int) -> float | None:
+        """F on segment k where it is constant there (a step, a flat stretch of points), else None."""
         lo, hi = self.bounds(k)
-        inner_lo, inner_hi = math.nextafter(lo, math.inf), math.nextafter(hi, -math.inf)
-        value = self.profile.value
+        return self.profile.piece_constant(self.profile.piece_index(0.5 * (lo + hi)))
 
-        def F(t: float) -> float:
-            return value(min(max(t, inner_lo), inner_hi))
-        return F
+    def force(self, k: int):
+        """F(t) on segment k by its piece's own smooth formula, continued past the segment's ends (the step that
+        overshoots an event is solved again up to it)."""
+        lo, hi = self.bounds(k)
+        index = self.profile.piece_index(0.5 * (lo + hi))
+        constant = self.profile.piece_constant(index)
+        if constant is not None:
+            return lambda t: constant
+        piece_value = self.profile.piece_value
+        return lambda t: piece_value(index, t)
 
-    def segment_of(self, t: float) -> int:
-        return bisect.bisect_right(self.instants, t)
+
+class ConstantPush(_Const):
+    """A constant force on an end whose input is the constant `in`: lam_end, out = -in - 2 ln lam_end, and the
+    agent's integrals in closed form, int F dz = F e^in (s - lo), int F dy = F e^-in / lam^2 (s - lo)."""
+
+    def __init__(self, lo: float, hi: float, r_in: float, force: float, lam2: float):
+        super().__init__(lo, hi, -r_in - math.log(lam2))
+        self.rates = (force * math.exp(r_in), force * math.exp(-r_in) / lam2)
+
+    def delivered(self, s: float) -> tuple[float, float]:
+        return self.rates[0] * (s - self.lo), self.rates[1] * (s - self.lo)
+
+
+def _constant_push(lo: float, hi: float, r_in: float, force: float, y: float, z: float, drive: "Drive",
+                   t_end: float, left: bool, L: float) -> tuple[ConstantPush, float, bool]:
+    """A constant force on a constant input over [lo, hi], stopped where t_F reaches t_end: y and z grow linearly
+    (dy/dT = e^-in/lam^2, dz/dT = e^in), and so does t_F: its event in closed form."""
+    lam2 = 1.0 + 2.0 * L * force
+    dy, dz = math.exp(-r_in) / lam2, math.exp(r_in)
+    t_lo = drive.time(z, y) if left else drive.time(y, z)
+    rate = drive.time(dz, dy) if left else drive.time(dy, dz)
+    ended = False
+    if math.isfinite(t_end) and t_lo + rate * (hi - lo) >= t_end - 4.0 * EPS * (abs(t_end) + L):
+        hi = min(hi, max(lo, lo + (t_end - t_lo) / rate))
+        ended = True
+    return ConstantPush(lo, hi, r_in, force, lam2), hi, ended
 
 
 class DrivenPiece(Solved):
@@ -338,7 +367,12 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
                         first[end] = min(first[end], T_on)
                         T = T_on
                         continue
-                    piece, T_next, ended = solve_driven(T, hi, inp, y, z, drive, k, left, L, budget)
+                    r_in, force = constant_of(inp), drive.constant(k)
+                    if r_in is not None and force is not None:
+                        piece, T_next, ended = _constant_push(T, hi, r_in, force, y, z, drive, drive.bounds(k)[1],
+                                                              left, L)
+                    else:
+                        piece, T_next, ended = solve_driven(T, hi, inp, y, z, drive, k, left, L, budget)
                     if piece.hi > piece.lo:
                         out_append(end, piece)
                         delivered[end].add(piece)
@@ -358,4 +392,4 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
     return DrivenSolution(L, plus, minus, first, last, delivered)
 
 
-__all__ = ["Drive", "DrivenSolution", "MAX_WINDOWS", "solve_forces"]
+__all__ = ["Drive", "DrivenSolution", "solve_forces"]

@@ -21,15 +21,13 @@ from rodparadox.physics.causal.history import CONSERVED, CausalHistory
 from rodparadox.physics.causal.solve import Budget
 from rodparadox.physics.types import EnergyMomentum, Slice, ZERO
 
-#: a tension of rho0/2 = M c^2/(2L) stretches the end without bound (lam_end^2 = 1 + 2F/rho0 = 0)
-CAUSAL_PULL_LIMIT = 0.5
 #: the work a forced run may take (windows, stretches, steps) when no budget is asked for
 FORCED_BUDGET = 200000
 
 
 def _profiles(scenario) -> dict:
-    forces = scenario.forces
-    return {"left": forces.left, "right": forces.right}
+    """Each end's profile (`forces.ForceProfile`), None where no force acts."""
+    return {end: scenario.forces.at(end) for end in ("left", "right")}
 
 
 def run_forces(scenario, budget: int | None = None) -> "DrivenHistory":
@@ -37,16 +35,10 @@ def run_forces(scenario, budget: int | None = None) -> "DrivenHistory":
     default FORCED_BUDGET. Refused in one sentence: a pull at or beyond M c^2/(2L), a run past its budget, a run
     double precision cannot keep to CONSERVED."""
     L = scenario.L
-    drives = {}
-    for end, profile in _profiles(scenario).items():
-        if profile is None:
-            drives[end] = None
-            continue
-        if profile.least() <= -CAUSAL_PULL_LIMIT:
-            raise ScenarioError(f"forces.{end} pulls with {-profile.least():g} M c^2/L, but the causal rod can carry "
-                                f"a tension only below M c^2/(2L) (0.5 in these units: at that pull its end "
-                                f"stretches without bound); choose a smaller pull.", f"forces.{end}")
-        drives[end] = Drive(profile, math.atanh(profile.frame_velocity(scenario.v)), L)
+    scenario.forces.check_pull("causal")
+    drives = {end: None if profile is None else
+              Drive(profile.scaled(L), math.atanh(profile.frame_velocity(scenario.v)), L)
+              for end, profile in _profiles(scenario).items()}
     spend = Budget(FORCED_BUDGET if budget is None else budget)
     history = DrivenHistory(scenario, solve_forces(L, drives, spend))
     _check_conserved(history)

@@ -237,3 +237,9 @@ def falling_root(g, lo: float, hi: float, xtol: float = 4 * EPS, rtol: float = 4
         x_cur += s_cur if abs(s_cur) > delta else (delta if s_bis > 0.0 else -delta)
         f_cur = g(x_cur)
     return x_cur
+
+
+# the collocation's pieces, public for the other boundary equation solved the same way (`causal.driven`, an end
+# driven by a force)
+LOBATTO, TO_COEFFICIENTS, INTEGRATE_FROM_START = _X, _TO_COEF, _S
+clenshaw, roughness, negligible_tail = _clenshaw, _roughness, _tail

@@ -149,10 +149,17 @@ class _View:
         return self.sign * self.base.c if isinstance(self.base, _Const) else None
 
 
+#: the pieces, public for the driven ends' run (`causal.driven`)
+Const, View = _Const, _View
+
+
 def _constant(piece) -> float | None:
     if isinstance(piece, _Const):
         return piece.c
     return piece.constant if isinstance(piece, _View) else None
+
+
+constant_of = _constant
 
 
 # --- an invariant: pieces, then a periodic tail ------------------------------------------------------------------

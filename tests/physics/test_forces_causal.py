@@ -1,0 +1,221 @@
+"""The causal rod driven by forces at its ends (docs/model.md, "Forces at the ends"), against hand derivations.
+
+The derivations the tests check (c = 1, M = 1, rho0 = M/L, F in units of M c^2/L so that 2F/rho0 = 2 * peak):
+
+* a driven end has pressure F, so lam_end^2 = 1 + 2F/rho0. A constant push F at the left end of a free rod at
+  rest, kappa = ln(1 + 2F/rho0) = 2 ln lam_end: the left end sends r- = -r+_in - kappa and moves at
+  th = r+_in + kappa/2; the free right end sends r+ = -r-_in and moves at -r-_in. Starting from r+ = r- = 0 at
+  T = 0 the invariants climb by kappa every crossing: the pushed end at (2n+1) kappa/2 for T in [2nL, 2nL + 2L),
+  the far end at n kappa for T in [(2n-1)L, (2n+1)L). The first step's speed, tanh(kappa/2) = (lam^2 - 1) /
+  (lam^2 + 1) = F/(rho0 + F).
+* the agent at the left end delivers F (sinh th, cosh th) per unit proper time, i.e. F (dx, dt): its momentum in
+  the frame its profile is timed in is int F dt_F, the profile's area; at the right end the opposite sign.
+* Sears's case in S (equal pulses at both ends timed in S): the rod's motion is mirror-symmetric about x = 0 at
+  every t of S, so its momentum on every slice of S is 0 and the ends are at x_L(t) = -x_R(t).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from rodparadox.errors import ScenarioError
+from rodparadox.physics.forces import ForceProfile, Forces
+from rodparadox.physics.model import Scenario
+from rodparadox.physics.models import run_rod
+
+V = 0.5  # S' moves at -V relative to S
+THIRD = math.atanh(0.3)  # a third frame
+PEAK = 0.2
+
+
+def scenario(left=None, right=None, v=V, L=1.0, name="forces"):
+    if right is not None:
+        right = ForceProfile(**{**right.__dict__, "key": "forces.right"})
+    return Scenario(name=name, v=v, L=L, particles=(), forces=Forces(left, right), rod="causal")
+
+
+def step(peak=PEAK, start=0.0, duration=1.0, frame="rest"):
+    return ForceProfile("step", peak, start, duration, frame=frame)
+
+
+def sine2(peak=PEAK, start=0.5, duration=1.0, frame="rest"):
+    return ForceProfile("sine2", peak, start, duration, frame=frame)
+
+
+def points(frame="rest"):
+    return ForceProfile("points", points=((0.2, 0.1), (0.7, 0.3), (1.5, -0.2), (2.0, -0.1)), frame=frame)
+
+
+_RUNS: dict = {}
+
+
+def run(name: str):
+    """Each named scenario run once for the whole file."""
+    if name not in _RUNS:
+        _RUNS[name] = run_rod(SCENARIOS[name]())
+    return _RUNS[name]
+
+
+SCENARIOS = {
+    "push": lambda: scenario(step(duration=7.0)),
+    "push_L2": lambda: scenario(step(duration=7.0), L=2.0),
+    "sears": lambda: scenario(sine2(), sine2()),
+    "sears_moving": lambda: scenario(sine2(frame="moving"), sine2(frame="moving")),
+    "step_S_points_u": lambda: scenario(step(0.3, 0.2, 0.8), points(frame=0.3)),
+    "points_S'_step_u": lambda: scenario(points(frame="moving"), step(-0.3, 1.0, 0.7, frame=-0.6)),
+    "sine2_u_step_S'": lambda: scenario(sine2(0.4, 0.0, 1.5, frame=0.7), step(0.25, 0.4, 0.6, frame="moving")),
+    "pull_right_sine2_S'": lambda: scenario(None, sine2(-0.45, 0.3, 2.0, frame="moving"), v=0.8),
+}
+
+
+def end_rapidity(history, end: str, T: float) -> float:
+    """The end's rapidity in S at chart time T: (r+(T + X) - r-(T - X))/2."""
+    sol, L = history.fronts.solution, history.scenario.L
+    X = 0.0 if end == "left" else L
+    return 0.5 * (sol.r_plus(T + X) - sol.r_minus(T - X))
+
+
+@pytest.mark.parametrize("name", ["push", "push_L2"])
+def test_a_constant_push_climbs_the_staircase(name):
+    history = run(name)
+    L = history.scenario.L
+    kappa = math.log(1.0 + 2.0 * PEAK)
+    for n in range(3):
+        for s in (0.0, 0.13, 0.5, 0.98, 1.5, 1.999):
+            T = (2 * n + s) * L
+            assert end_rapidity(history, "left", T) == pytest.approx((2 * n + 1) * kappa / 2, abs=1e-12)
+            T = (2 * n - 1 + s) * L
+            assert end_rapidity(history, "right", T) == pytest.approx(n * kappa, abs=1e-12)
+
+
+@pytest.mark.parametrize("name", ["push", "push_L2"])
+def test_the_first_step_moves_at_the_piston_speed(name):
+    history = run(name)
+    L = history.scenario.L
+    F, rho0 = PEAK / L, 1.0 / L
+    # the first step lasts chart time 2L: t = (a + b)/2 = (2L + 2L/lam^2)/2 = L (1 + 1/(1 + 2F/rho0)) of S
+    end = L * (1.0 + 1.0 / (1.0 + 2.0 * PEAK))
+    assert history.material_velocity(0.0, 0.0, end * 1.0001) > F / (rho0 + F) + 0.1
+    for t in (0.1 * L, 0.7 * L, end * 0.9999):
+        assert history.material_velocity(0.0, 0.0, t) == pytest.approx(F / (rho0 + F), abs=1e-13)
+    assert history.material_velocity(L, 0.0, 0.9 * L) == 0.0  # the far end waits for the front
+    assert history.worldline("rod_right").seen_from(0.0).rapidity_at_time(1.5 * L) == pytest.approx(
+        math.log(1.0 + 2.0 * PEAK), abs=1e-12)
+
+
+def slice_times(history, f: float, n: int = 24) -> list[float]:
+    """n times of the frame f from L before the first force to 2L after the last has ended at both ends."""
+    L, sol = history.scenario.L, history.fronts.solution
+    first = min(T for T in sol.first.values() if math.isfinite(T))
+    last = max(T for T in sol.last.values() if math.isfinite(T))
+    chart = history.own_chart()
+    ts = [chart.to_event(T, X).seen_from(f).t for T in (first - L, last + 2 * L) for X in (0.0, L)]
+    lo, hi = min(ts), max(ts)
+    return [lo + (hi - lo) * k / (n - 1) for k in range(n)]
+
+
+@pytest.mark.parametrize("name", [k for k in SCENARIOS if not k.startswith("push_L2")])
+@pytest.mark.parametrize("f", [0.0, -math.atanh(V), THIRD], ids=["S", "S'", "u=0.3"])
+def test_rod_equals_initial_plus_delivered_on_every_slice(name, f):
+    history = run(name)
+    for t in slice_times(history, f):
+        s = history.energy_momentum(f, t)
+        rod = dict(s.bodies)["rod"]
+        delivered = history.driving.delivered_total(f, t)
+        expected = history.initial_total(f) + delivered
+        assert rod.E == pytest.approx(expected.E, abs=1e-9)
+        assert rod.p == pytest.approx(expected.p, abs=1e-9)
+        assert abs(s.hidden.T) <= 1e-9 and abs(s.hidden.p) <= 1e-9
+
+
+@pytest.mark.parametrize("name", [k for k in SCENARIOS if not k.startswith("push_L2")] + ["push_L2"])
+def test_the_momentum_delivered_in_the_profiles_frame_is_its_area(name):
+    history = run(name)
+    forces = history.scenario.forces
+    for end, profile in forces.items():
+        f = math.atanh(profile.frame_velocity(history.scenario.v))
+        delivered = history.driving.delivered_at(end, f, math.inf)
+        sign = 1.0 if end == "left" else -1.0
+        assert delivered.p == pytest.approx(sign * profile.area(), abs=1e-12)
+
+
+def test_the_delivered_momentum_grows_as_the_profiles_primitive():
+    """Half way through the left pulse of Sears's case, timed in S: the primitive of F up to the end's time."""
+    history = run("sears")
+    profile = history.scenario.forces.left
+    for t in (0.6, 0.9, 1.0, 1.3):
+        delivered = history.driving.delivered("left", 0.0, t)
+        assert delivered.p == pytest.approx(profile.primitive(t), abs=1e-12)
+
+
+def test_sears_in_S_the_rod_keeps_zero_momentum_and_breathes_symmetrically():
+    history = run("sears")
+    for t in slice_times(history, 0.0, 16):
+        rod = dict(history.energy_momentum(0.0, t).bodies)["rod"]
+        assert abs(rod.p) <= 1e-12
+        left = history.worldline("rod_left").seen_from(0.0)
+        right = history.worldline("rod_right").seen_from(0.0)
+        assert left.event_at_time(t).x == pytest.approx(-right.event_at_time(t).x, abs=1e-12)
+        for sigma in (0.1, 0.3, 0.45):
+            assert history.material_velocity(sigma, 0.0, t) == pytest.approx(
+                -history.material_velocity(1.0 - sigma, 0.0, t), abs=1e-12)
+    lo, hi = history.fronts.compression_range()
+    assert hi > 0.05  # it does breathe: compressed by the pulses
+    assert history.final_rapidity == pytest.approx(0.0, abs=1e-14)
+
+
+def test_sears_seen_from_S_prime_the_delivered_momentum_rises_and_falls():
+    """Sears's question: the pulses timed in S act at different t' of S'. In S they deliver no momentum in all
+    and the energy E = 2 int F dx_L (the work that leaves the rod ringing, heavier); seen from S' (rapidity
+    f = -atanh v) that is p' = g (p + v E) = g v E in the end, but on slices of S' in between the delivered total
+    rises far above it and falls back: the rod carries the difference."""
+    history = run("sears")
+    f = -math.atanh(V)
+    totals = [history.driving.delivered_total(f, t).p for t in slice_times(history, f, 40)]
+    in_S = history.driving.delivered_total(0.0, slice_times(history, 0.0)[-1])
+    assert abs(in_S.p) <= 1e-15 and in_S.E > 0.01
+    g = 1.0 / math.sqrt(1.0 - V * V)
+    assert totals[0] == 0.0
+    assert totals[-1] == pytest.approx(g * V * in_S.E, abs=1e-12)
+    assert max(totals) > 5 * totals[-1]
+
+
+def test_pulses_timed_in_S_prime_deliver_nothing_on_slices_of_S_prime():
+    """Timed in S', the pulses are Sears's case mirrored in S': on every slice of S' each end has received the
+    primitive of F up to t', with opposite signs."""
+    history = run("sears_moving")
+    f = -math.atanh(V)
+    profile = history.scenario.forces.left
+    for t in slice_times(history, f, 16):
+        assert abs(history.driving.delivered_total(f, t).p) <= 1e-12
+        assert history.driving.delivered("left", f, t).p == pytest.approx(profile.primitive(t), abs=1e-12)
+
+
+def test_the_rod_rests_in_S_before_the_first_force():
+    history = run("sine2_u_step_S'")
+    sol = history.fronts.solution
+    first = min(T for T in sol.first.values() if math.isfinite(T))
+    for T in (first - 0.7, first - 0.01):
+        for X in (0.0, 0.4, 1.0):
+            event = history.own_chart().to_event(T, X)
+            assert event.t == pytest.approx(T, abs=1e-14) and event.x == pytest.approx(X - 0.5, abs=1e-14)
+
+
+def test_a_causal_pull_of_half_the_rods_energy_per_length_is_refused():
+    with pytest.raises(ScenarioError, match=r"M c\^2/\(2L\)"):
+        run_rod(scenario(step(-0.5)))
+    run_rod(scenario(step(-0.49, duration=0.3)))  # just below: carried
+
+
+def test_a_force_lasting_too_long_is_refused_in_one_sentence():
+    # balanced pushes hold the rod at rest, squeezed, for 5000 crossing times
+    with pytest.raises(ScenarioError) as caught:
+        run_rod(scenario(step(0.01, duration=5000.0), step(0.01, duration=5000.0)))
+    assert "crossing times" in str(caught.value) and str(caught.value).count(". ") == 0
+
+
+def test_a_run_past_its_budget_is_refused():
+    with pytest.raises(ScenarioError, match="bound"):
+        run_rod(scenario(sine2(), sine2()), budget=20)
