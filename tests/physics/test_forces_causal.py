@@ -219,3 +219,48 @@ def test_a_force_lasting_too_long_is_refused_in_one_sentence():
 def test_a_run_past_its_budget_is_refused():
     with pytest.raises(ScenarioError, match="bound"):
         run_rod(scenario(sine2(), sine2()), budget=20)
+
+
+def test_the_collocation_climbs_the_staircase_too():
+    """The closed form for a constant force on a constant input set aside: the general boundary equation, solved
+    by collocation with its events, gives the same staircase to 1e-12."""
+    from rodparadox.physics.causal.driven import Drive, solve_forces
+
+    class Varying(Drive):
+        def constant(self, k):
+            return None
+
+    L = 1.0
+    profile = step(duration=5.0)
+    solution = solve_forces(L, {"left": Varying(profile.scaled(L), 0.0, L), "right": None})
+    kappa = math.log(1.0 + 2.0 * PEAK)
+    for n in range(2):
+        for s in (0.0, 0.37, 1.2, 1.999):
+            T = 2 * n + s
+            assert 0.5 * (solution.r_plus(T) - solution.r_minus(T)) == pytest.approx((2 * n + 1) * kappa / 2, abs=1e-12)
+    closed = solve_forces(L, {"left": Drive(profile.scaled(L), 0.0, L), "right": None})
+    assert solution.last["left"] == pytest.approx(closed.last["left"], abs=1e-12)  # the switch-off, an event
+    for u in (0.5, 3.3, 6.1, 9.7, 15.2):
+        assert solution.a(u) == pytest.approx(closed.a(u), abs=1e-12)
+        assert solution.b(u) == pytest.approx(closed.b(u), abs=1e-12)
+    I_U, I_V = solution.delivered["left"].at(math.inf)
+    assert 0.5 * (I_U + I_V) == pytest.approx(profile.area(), abs=1e-12)
+
+
+def test_a_pulse_on_the_resting_rod_moves_its_end_as_the_quadrature_says():
+    """Before the reflection returns (chart time 2L) the pushed left end's input is r+ = 0, so a = T - L/2,
+    db/dT = 1/lam^2 and t = (a + b)/2: dT/dt = 2 lam^2/(1 + lam^2), lam^2 = 1 + 2F(t)/rho0, an ordinary integral
+    in t; the end is at x = a - t = T(t) - t - L/2 and moves at F/(rho0 + F), F read at its own time."""
+    import numpy as np
+
+    history = run("sears")
+    profile = history.scenario.forces.left
+    nodes, weights = np.polynomial.legendre.leggauss(200)
+    for t in (0.7, 1.0, 1.2, 1.35):  # the right pulse's front reaches the left end at T = 1.5
+        s = 0.5 + 0.5 * (t - 0.5) * (nodes + 1.0)
+        lam2 = 1.0 + 2.0 * profile.value(s)
+        T = 0.5 + 0.5 * (t - 0.5) * float(np.sum(weights * 2.0 * lam2 / (1.0 + lam2)))
+        x = history.worldline("rod_left").seen_from(0.0).event_at_time(t).x
+        assert x == pytest.approx(T - t - 0.5, abs=1e-12)
+        F = profile.value(t)
+        assert history.material_velocity(0.0, 0.0, t) == pytest.approx(F / (1.0 + F), abs=1e-12)
