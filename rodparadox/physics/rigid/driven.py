@@ -15,8 +15,8 @@ M = 1, lengths and times as the scenario's L, forces in M c^2 (a profile's value
 The profiles are smooth between their pieces (`ForceProfile.pieces`): the history is a chain of *stages*, each
 with one piece of each end's profile, that end where an end's time reaches its profile's next piece (an event
 found to rounding, never a step). A stage where both forces are constant has constant alpha: its motion is
-hyperbolic (or uniform) in closed form (`_Constant`; material world-lines are `HyperbolicArc`s and `Line`s). Any
-other stage is solved by Chebyshev collocation (`_Collocated`: on each step the state is the polynomial of degree
+hyperbolic (or uniform) in closed form (`ConstantStage`; material world-lines are `HyperbolicArc`s and `Line`s). Any
+other stage is solved by Chebyshev collocation (`CollocatedStage`: on each step the state is the polynomial of degree
 DEGREE through its values at the Chebyshev-Lobatto points, fixed by Picard iteration; a step is kept when its last
 coefficients are below ODE_RTOL relative, so its dense output is the solution to that everywhere on the step),
 with the momentum each agent delivered as exact integrals of the interpolants. A material world-line there is a
@@ -54,7 +54,7 @@ _X[0], _X[-1] = -1.0, 1.0
 _TO_COEF = np.linalg.inv(cheb.chebvander(_X, DEGREE))
 _INTEGRATE = np.column_stack([cheb.chebint(unit, lbnd=-1) for unit in np.eye(DEGREE + 1)])
 _S = cheb.chebvander(_X, DEGREE + 1) @ _INTEGRATE @ _TO_COEF  # values -> integral from -1 at each point
-_GL_X, _GL_W = np.polynomial.legendre.leggauss(GAUSS_NODES)
+GAUSS_X, GAUSS_W = np.polynomial.legendre.leggauss(GAUSS_NODES)
 
 #: the components of a stage's state: the left end's (t, x, phi) in S, and the (E, p) in S each agent delivered
 T_, X_, PHI, EL, PL, ER, PR = range(7)
@@ -139,7 +139,7 @@ class _Stage:
         return self.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
 
 
-class _Constant(_Stage):
+class ConstantStage(_Stage):
     """Both forces constant: alpha constant, the left end on a hyperbola (a line for alpha = 0), in closed form."""
 
     def __init__(self, tau0: float, tau1: float, y0: np.ndarray, rates: _Rates, FL: float, FR: float):
@@ -182,7 +182,7 @@ class _Step:
         self.a, self.b, self.coef = a, b, coef  # coef: (DEGREE + 1, 7)
 
 
-class _Collocated(_Stage):
+class CollocatedStage(_Stage):
     """A stage solved by Chebyshev collocation: the state on each step is a polynomial in tau."""
 
     def __init__(self, tau0: float, steps: list[_Step], rates: _Rates, tau1: float):
@@ -227,7 +227,7 @@ def _collocate(rates: _Rates, y_a: np.ndarray, a: float, b: float) -> np.ndarray
 
 
 @dataclass
-class _Solution:
+class Solution:
     stages: list
     L: float
     drives: dict
@@ -241,7 +241,7 @@ def _end_time(drive: Drive, y: np.ndarray, L: float) -> float:
     return float(drive.time(y[T_] + L * math.sinh(y[PHI]), y[X_] + L * math.cosh(y[PHI])))
 
 
-def solve(L: float, drives: dict) -> _Solution:
+def solve(L: float, drives: dict) -> Solution:
     """The history of a rod of proper length L at rest in S (left end at x = -L/2), driven by `drives` (end ->
     Drive): a chain of stages from the first force's start until both forces have ended."""
     starts = []
@@ -262,7 +262,7 @@ def solve(L: float, drives: dict) -> _Solution:
         constants = {end: d.profile.piece_constant(pieces[end]) for end, d in drives.items()}
         if all(c is not None for c in constants.values()):
             FL, FR = constants.get("left", 0.0) or 0.0, constants.get("right", 0.0) or 0.0
-            stage = _Constant(tau, math.inf, y, rates, FL, FR)
+            stage = ConstantStage(tau, math.inf, y, rates, FL, FR)
             if not pending:
                 stages.append(stage)
                 break
@@ -278,7 +278,7 @@ def solve(L: float, drives: dict) -> _Solution:
                                 f"give smoother or fewer pieces.")
         y = stage.state(stage.tau1)[0]
         tau = stage.tau1
-    return _Solution(stages, L, drives, t0)
+    return Solution(stages, L, drives, t0)
 
 
 def _advance(pieces: dict, drives: dict, y: np.ndarray, L: float) -> None:
@@ -290,13 +290,13 @@ def _advance(pieces: dict, drives: dict, y: np.ndarray, L: float) -> None:
             pieces[end] += 1
 
 
-def _constant_event(stage: _Constant, drive: Drive, target: float, L: float) -> float:
+def _constant_event(stage: ConstantStage, drive: Drive, target: float, L: float) -> float:
     """The tau at which the end reaches the time `target` of its profile's frame, in a constant stage."""
     return stage.crossing(0.0 if drive.end == "left" else L, drive.frame_rapidity, target)
 
 
 def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, pending: dict,
-                     L: float) -> _Collocated:
+                     L: float) -> CollocatedStage:
     steps: list[_Step] = []
     a, y_a = tau0, y0
     h = 0.25 * L
@@ -322,7 +322,7 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
         if len(steps) > MAX_STEPS:
             raise ScenarioError(f"the forces would need more than {MAX_STEPS:,} steps of the rigid rod's motion; "
                                 f"give smoother or fewer pieces.")
-        probe = _Collocated(tau0, steps, rates, b)
+        probe = CollocatedStage(tau0, steps, rates, b)
         hits = []
         for end, target in pending.items():
             d = drives[end]
@@ -458,7 +458,7 @@ def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
     k = scale
     e0 = Event(k * (y0[X_] + sigma * math.cosh(y0[PHI])), k * (y0[T_] + sigma * math.sinh(y0[PHI])))
     e1 = Event(k * (y1[X_] + sigma * math.cosh(y1[PHI])), k * (y1[T_] + sigma * math.sinh(y1[PHI])))
-    if isinstance(stage, _Constant):
+    if isinstance(stage, ConstantStage):
         a = stage.a
         if a == 0.0:
             return Line(e0, e1)

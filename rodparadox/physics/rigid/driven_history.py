@@ -22,8 +22,8 @@ from rodparadox.errors import ScenarioError
 from rodparadox.physics.forces import ENDS, ForceProfile, Forces
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
-from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, _Collocated, _Constant, _GL_W,
-                                             _GL_X, _Solution, solve, stage_piece)
+from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, CollocatedStage, ConstantStage, GAUSS_W,
+                                             GAUSS_X, Solution, solve, stage_piece)
 from rodparadox.physics.types import EnergyMomentum, Slice
 
 #: what a force event is: its profile's first instant with force, its largest, its last
@@ -63,7 +63,7 @@ class DrivenHistory:
         self.scenario = scenario
         self.L = scenario.L
         drives = {end: Drive(end, p, math.atanh(p.frame_velocity(scenario.v))) for end, p in scenario.forces.items()}
-        self.solution: _Solution = solve(1.0, drives)
+        self.solution: Solution = solve(1.0, drives)
         stages = self.solution.stages
         self.stages = stages
         self._tau0 = np.array([st.tau0 for st in stages])
@@ -99,7 +99,7 @@ class DrivenHistory:
         """The least and largest rapidity of the rod (all its points share it) over the history, 0 included."""
         values = [0.0, *self._y0[:, PHI]]
         for st in self.stages[:-1]:
-            if isinstance(st, _Collocated):
+            if isinstance(st, CollocatedStage):
                 taus = np.linspace(st.tau0, st.tau1, 8 * len(st.steps) + 1)
                 values.extend(st.state(taus)[:, PHI])
         return float(min(values)), float(max(values))
@@ -159,7 +159,7 @@ class DrivenHistory:
         for i in np.unique(k[~before]):
             sel = k == i
             st = self.stages[i]
-            if isinstance(st, _Constant):
+            if isinstance(st, ConstantStage):
                 out[sel] = st.crossing(sigma[sel], f, T)
             else:
                 out[sel] = _newton_crossing(st, sigma[sel], f, T)
@@ -171,7 +171,7 @@ class DrivenHistory:
         """Where the slice meets the normal lines at which a stage or a step begins (units of L), within (0, 1)."""
         taus = list(self._tau0)
         for st in self.stages:
-            if isinstance(st, _Collocated):
+            if isinstance(st, CollocatedStage):
                 taus.extend(st.step_bounds())
         if not taus:
             return []
@@ -189,8 +189,8 @@ class DrivenHistory:
         edges = sorted(set(np.concatenate([np.linspace(a, b, 3) for a, b in zip(cuts, cuts[1:])])))
         sig, w = [], []
         for a, b in zip(edges, edges[1:]):
-            sig.append(0.5 * (a + b) + 0.5 * (b - a) * _GL_X)
-            w.append(0.5 * (b - a) * _GL_W)
+            sig.append(0.5 * (a + b) + 0.5 * (b - a) * GAUSS_X)
+            w.append(0.5 * (b - a) * GAUSS_W)
         sig, w = np.concatenate(sig), np.concatenate(w)
         tau = self._crossings(sig, f, T)
         Y = self._states(tau)
@@ -202,7 +202,7 @@ class DrivenHistory:
         return kinetic, stress
 
 
-def _newton_crossing(stage: _Collocated, sigma: np.ndarray, f: float, T: float) -> np.ndarray:
+def _newton_crossing(stage: CollocatedStage, sigma: np.ndarray, f: float, T: float) -> np.ndarray:
     """tau in the collocated stage where the points sigma reach time T of the frame f: safeguarded Newton."""
     lo = np.full(len(sigma), stage.tau0)
     hi = np.full(len(sigma), stage.tau1)
