@@ -10,12 +10,9 @@ from __future__ import annotations
 import math
 import unicodedata
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from rodparadox.errors import ScenarioError
-
-if TYPE_CHECKING:  # the type only: forces.py imports this module's checks
-    from rodparadox.physics.forces import Forces
 
 PARTICLE_NAMES = ("A", "B")
 #: speeds the engine computes to about 1e-9 relative in double precision: slower, the impacts lie so far
@@ -148,8 +145,9 @@ class Scenario:
     #: the file's sound_speed (1, the causal rod's), or None: the rod being run must then be the causal one
     #: (`--rod causal` may choose it after the file is read, so it is checked where the rod is chosen)
     sound_speed: float | None = field(default=None, compare=False, repr=False)
-    #: the forces at the ends, or None (a rod struck by particles): a scenario has one or the other
-    forces: "Forces | None" = None
+    #: the forces at the ends (a `physics.forces.Forces`, which imports this module's checks), or None (a rod struck
+    #: by particles): a scenario has one or the other
+    forces: Any = None
 
     def __post_init__(self) -> None:
         _check_text(self.name, "name", newlines=False)

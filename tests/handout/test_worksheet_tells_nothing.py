@@ -21,7 +21,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox import render
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Cell, DiagramBlock, Fact, Heading, Paragraph, Question, Table
@@ -30,7 +30,6 @@ from rodparadox.handout.pdf import page_figures
 from rodparadox.handout.pdf_text import TextRuns
 from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
 from rodparadox.handout.words import told_number
-from rodparadox.io.scenario import builtin_names
 from rodparadox.physics.frames import paper_frames
 
 
@@ -137,7 +136,7 @@ def _worksheets_at(v: float):
     # with the causal rod's comparison and its questions at one speed (a causal run and its pages cost)
     doc = build([(name, history(name, v), None,
                   causal_alike(name, v) if v == CAUSAL_SPEED and name in CAUSAL_PRESETS else None)
-                 for name in builtin_names()], worksheet=True)
+                 for name in particle_presets()], worksheet=True)
     if v == CAUSAL_SPEED:  # and the rod's own view after their diagrams (handout --frame both,rod): its captions
         doc = with_rod_views(doc, {name: (history(name, v), causal_alike(name, v)) for name in CAUSAL_PRESETS})
     before_key = dataclasses.replace(doc, answer_key=())

@@ -25,13 +25,13 @@ import numpy as np
 import pytest
 from matplotlib.colors import to_rgb
 
-from helpers import history, measuring_renderer
+from helpers import history, measuring_renderer, particle_presets
 from rodparadox import render
 from rodparadox.physics.rigid import run
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.frames import Frame, paper_frames, sampling_tolerance, view
 from rodparadox.physics.kinematics import HyperbolicArc
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
 from rodparadox.numbers import impact_name
 from rodparadox.render.styles import FORMATS, STYLE_NAMES, STYLES
 
@@ -530,7 +530,7 @@ def any_number_of_panels_fits_the_styles_page_and_no_text_overlaps(fig, style, r
 @pytest.mark.slow
 @pytest.mark.parametrize("style", STYLE_NAMES)
 @pytest.mark.parametrize("v", sorted({*SPEEDS, *LABEL_SPEEDS}))
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits_the_page(name, v, style):
     """The three grids above, each figure drawn and rendered once for every check of every grid that draws it (the
     grids share S and S' at 0.6 and 0.95, and two and four panels): per preset, v and style,
@@ -715,7 +715,7 @@ SVG = "{http://www.w3.org/2000/svg}"
 @pytest.mark.parametrize("style", STYLE_NAMES)
 def test_every_preset_renders_to_svg_in_every_style_with_every_worldline_and_impact(style):
     """The SVG (what `plot` writes by default) holds, in both panels, every world-line, impact and label by its id."""
-    for name in builtin_names():
+    for name in particle_presets():
         h = history(name)
         svg = render.figure_bytes(render.draw(h, paper_frames(h.scenario.v), style).figure, "svg", style)
         ids = {g.get("id") for g in ET.fromstring(svg).iter(f"{SVG}g")}

@@ -129,6 +129,7 @@ class CausalHistory:
 
     model = "causal"
     turning = None  # no turns: its lines of simultaneity are not the rigid rod's (physics.history.Turning)
+    driving = None  # struck by particles, not driven by forces (physics.history.Driving)
 
     @property
     def fronts(self) -> "CausalHistory":
