@@ -52,7 +52,7 @@ def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None, budget: 
     A scenario with forces (`scenario.forces`) runs through the model package's `run_forces`, after the pull
     limit of that model (`Forces.check_pull`); a model without it refuses the scenario in one sentence."""
     if scenario.forces is not None:
-        return run_forces(scenario)
+        return run_forces(scenario, budget)
     if budget is not None and scenario.rod == "causal":
         return _module(scenario.rod).run(scenario, starts, budget)
     return _module(scenario.rod).run(scenario, starts)
@@ -69,9 +69,12 @@ def check_forces(scenario: Scenario) -> None:
     scenario.forces.check_pull(scenario.rod)
 
 
-def run_forces(scenario: Scenario) -> RodHistory:
-    """The scenario's rod driven by its forces (`check_forces` first)."""
+def run_forces(scenario: Scenario, budget: int | None = None) -> RodHistory:
+    """The scenario's rod driven by its forces (`check_forces` first); `budget` bounds the causal rod's work, as
+    for particles."""
     check_forces(scenario)
+    if budget is not None and scenario.rod == "causal":
+        return _module(scenario.rod).run_forces(scenario, budget)
     return _module(scenario.rod).run_forces(scenario)
 
 

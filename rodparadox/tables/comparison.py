@@ -69,7 +69,10 @@ def first_impacts_text(history, frames: Sequence[Frame]) -> str:
 
 
 def comparison_note(histories, frames: Sequence[Frame]) -> str:
-    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall."""
+    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall (nothing
+    for rods driven by forces: no particles strike them)."""
+    if not histories[0].scenario.particles:
+        return ""
     every = "Both rods are" if len(histories) == 2 else "Every rod is"
     lines = [f"{every} struck by the same particles: {particle_starts_text(histories[0])}, at t = 0 in S."]
     lines += [f"The {h.model} rod: {first_impacts_text(h, frames)}." for h in histories]

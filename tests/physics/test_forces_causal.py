@@ -70,6 +70,11 @@ SCENARIOS = {
 }
 
 
+def delivered(history, f: float, t: float):
+    """What both agents delivered up to the slice t of the frame f."""
+    return history.driving.delivered("left", f, t) + history.driving.delivered("right", f, t)
+
+
 def end_rapidity(history, end: str, T: float) -> float:
     """The end's rapidity in S at chart time T: (r+(T + X) - r-(T - X))/2."""
     sol, L = history.fronts.solution, history.scenario.L
@@ -123,8 +128,9 @@ def test_rod_equals_initial_plus_delivered_on_every_slice(name, f):
     for t in slice_times(history, f):
         s = history.energy_momentum(f, t)
         rod = dict(s.bodies)["rod"]
-        delivered = history.driving.delivered_total(f, t)
-        expected = history.initial_total(f) + delivered
+        expected = history.initial_total(f) + delivered(history, f, t)
+        held = history.driving.total(f, t)
+        assert held.E == pytest.approx(expected.E, abs=1e-15) and held.p == pytest.approx(expected.p, abs=1e-15)
         assert rod.E == pytest.approx(expected.E, abs=1e-9)
         assert rod.p == pytest.approx(expected.p, abs=1e-9)
         assert abs(s.hidden.T) <= 1e-9 and abs(s.hidden.p) <= 1e-9
@@ -173,8 +179,8 @@ def test_sears_seen_from_S_prime_the_delivered_momentum_rises_and_falls():
     rises far above it and falls back: the rod carries the difference."""
     history = run("sears")
     f = -math.atanh(V)
-    totals = [history.driving.delivered_total(f, t).p for t in slice_times(history, f, 40)]
-    in_S = history.driving.delivered_total(0.0, slice_times(history, 0.0)[-1])
+    totals = [delivered(history, f, t).p for t in slice_times(history, f, 40)]
+    in_S = delivered(history, 0.0, slice_times(history, 0.0)[-1])
     assert abs(in_S.p) <= 1e-15 and in_S.E > 0.01
     g = 1.0 / math.sqrt(1.0 - V * V)
     assert totals[0] == 0.0
@@ -189,7 +195,7 @@ def test_pulses_timed_in_S_prime_deliver_nothing_on_slices_of_S_prime():
     f = -math.atanh(V)
     profile = history.scenario.forces.left
     for t in slice_times(history, f, 16):
-        assert abs(history.driving.delivered_total(f, t).p) <= 1e-12
+        assert abs(delivered(history, f, t).p) <= 1e-12
         assert history.driving.delivered("left", f, t).p == pytest.approx(profile.primitive(t), abs=1e-12)
 
 
@@ -264,3 +270,29 @@ def test_a_pulse_on_the_resting_rod_moves_its_end_as_the_quadrature_says():
         assert x == pytest.approx(T - t - 0.5, abs=1e-12)
         F = profile.value(t)
         assert history.material_velocity(0.0, 0.0, t) == pytest.approx(F / (1.0 + F), abs=1e-12)
+
+
+def test_the_force_events_and_the_force_on_a_slice():
+    """Sears's case in S: the pulses start at t = 0.5, peak at 1.0 and end at 1.5 of S at both ends, mirror images
+    (x_L = -x_R, th_L = -th_R); the force on the slice t of S at either end is the profile's value at t, and the
+    stress at the end is that force (p = F: the boundary condition)."""
+    history = run("sears")
+    driving = history.driving
+    events = {(e.end, e.moment): e for e in driving.force_events()}
+    assert len(events) == 6
+    for moment, t in (("start", 0.5), ("peak", 1.0), ("end", 1.5)):
+        left, right = events["left", moment], events["right", moment]
+        assert left.event.t == pytest.approx(t, abs=1e-12) and right.event.t == pytest.approx(t, abs=1e-12)
+        assert left.event.x == pytest.approx(-right.event.x, abs=1e-12)
+        assert left.rapidity == pytest.approx(-right.rapidity, abs=1e-12)
+        assert left.profile_time == t
+    assert events["left", "peak"].force == PEAK and events["left", "start"].rapidity == pytest.approx(0.0, abs=1e-7)
+    # at the peak the left end has F = 0.2 on r+ = 0: th = ln lam = ln(1.4)/2
+    assert events["left", "peak"].rapidity == pytest.approx(0.5 * math.log(1.0 + 2.0 * PEAK), abs=1e-12)
+    profile = history.scenario.forces.left
+    for t in (0.7, 1.2):
+        assert driving.force_at("left", 0.0, t) == pytest.approx(profile.value(t), abs=1e-13)
+        assert driving.stress(0.0, t, [0.0])[0] == pytest.approx(profile.value(t), abs=1e-12)
+        assert driving.stress(0.0, t, [1.0])[0] == pytest.approx(profile.value(t), abs=1e-12)
+    assert driving.stress(0.0, 0.7, [0.5])[0] == 0.0  # the middle has not heard of the forces yet
+    assert driving.now_lines() == []

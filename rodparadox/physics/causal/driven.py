@@ -280,9 +280,9 @@ class DrivenSolution(Solution):
     """A `Solution` of a rod driven by forces: no contacts; each end's first and last forced chart time and what
     its agent delivered."""
 
-    def __init__(self, L, plus, minus, first: dict, last: dict, delivered: dict):
+    def __init__(self, L, plus, minus, first: dict, last: dict, delivered: dict, drives: dict):
         super().__init__(L, plus, minus, [], {})
-        self.first, self.last, self.delivered = first, last, delivered
+        self.first, self.last, self.delivered, self.drives = first, last, delivered, drives
 
 
 def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> DrivenSolution:
@@ -389,7 +389,7 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
             break
     plus.close(done_at, 2 * L)
     minus.close(done_at, 2 * L)
-    return DrivenSolution(L, plus, minus, first, last, delivered)
+    return DrivenSolution(L, plus, minus, first, last, delivered, drives)
 
 
 __all__ = ["Drive", "DrivenSolution", "solve_forces"]

@@ -15,11 +15,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal.driven import Drive, solve_forces
 from rodparadox.physics.causal.history import CONSERVED, CausalHistory
 from rodparadox.physics.causal.solve import Budget
-from rodparadox.physics.types import EnergyMomentum, Slice, ZERO
+from rodparadox.physics.kinematics import ChartCurve
+from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
 #: the work a forced run may take (windows, stretches, steps) when no budget is asked for
 FORCED_BUDGET = 200000
@@ -61,19 +64,30 @@ def _check_conserved(history: "DrivenHistory") -> None:
 
 
 class Driving:
-    """What the forces add to a run (the capability `driving` of `history.RodHistory`): each agent's force
-    profile, and the energy-momentum it delivered up to the slice's end events."""
+    """What the forces add to a run (the capability `driving`, `history.Driving`): the profiles, what each agent
+    delivered up to a slice's end events, the force and the stress on a slice, each force's start, peak and end.
+    The causal rod has no lines of simultaneity of its own: `now_lines` is empty."""
 
     def __init__(self, history: "DrivenHistory"):
         self.history = history
-        self.profiles = _profiles(history.scenario)
+        self._drives = history.solution.drives
+
+    @property
+    def forces(self):
+        return self.history.scenario.forces
+
+    def profiles(self) -> tuple:
+        """(end, `forces.ForceProfile`) for each end with a force, left first."""
+        return self.forces.items()
+
+    def frame_rapidity(self, end: str) -> float:
+        """The rapidity relative to S of the frame the end's profile is timed in."""
+        return math.atanh(self.forces.at(end).frame_velocity(self.history.scenario.v))
 
     def delivered(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The (E, p), in the frame, the agent at `end` delivered up to the end's event on the slice t: +-F (dx, dt)
-        integrated along the end, from I_U = int F dU and I_V = int F dV."""
-        history = self.history
-        T = history.end_chart_time(end, frame_rapidity, t)
-        return self.delivered_at(end, frame_rapidity, T)
+        integrated along the end, from I_U = int F dU and I_V = int F dV (zero for an end without force)."""
+        return self.delivered_at(end, frame_rapidity, self.history.end_chart_time(end, frame_rapidity, t))
 
     def delivered_at(self, end: str, frame_rapidity: float, T: float) -> EnergyMomentum:
         """The same up to the end's chart time T."""
@@ -81,20 +95,75 @@ class Driving:
         I_U, I_V = (I_z, I_y) if end == "left" else (I_y, I_z)
         ef = math.exp(frame_rapidity)
         sign = 1.0 if end == "left" else -1.0
-        E = 0.5 * sign * (I_U / ef - ef * I_V)
-        p = 0.5 * sign * (I_U / ef + ef * I_V)
-        return EnergyMomentum(0.0, E, p)
+        return EnergyMomentum(0.0, 0.5 * sign * (I_U / ef - ef * I_V), 0.5 * sign * (I_U / ef + ef * I_V))
 
-    def delivered_total(self, frame_rapidity: float, t: float) -> EnergyMomentum:
-        return self.delivered("left", frame_rapidity, t) + self.delivered("right", frame_rapidity, t)
+    def total(self, frame_rapidity: float, t: float) -> EnergyMomentum:
+        """The rod's (E, p) before the forces plus what both agents delivered up to the slice: what it holds."""
+        return (self.history.initial_total(frame_rapidity) + self.delivered("left", frame_rapidity, t)
+                + self.delivered("right", frame_rapidity, t))
 
     def scale(self, frame_rapidity: float) -> float:
         """The size of everything delivered in the frame (the scale conservation is checked against)."""
-        total = 0.0
-        for end in ("left", "right"):
-            em = self.delivered_at(end, frame_rapidity, math.inf)
-            total += abs(em.E) + abs(em.p)
-        return total
+        return sum(abs(em.E) + abs(em.p) for em in (self.delivered_at(end, frame_rapidity, math.inf)
+                                                    for end in ("left", "right")))
+
+    def _profile_time(self, end: str, T: float) -> float:
+        """The time, in the end's profile's frame, of the end's event at chart time T."""
+        event = self.history._end_event(end, T)
+        return self._drives[end].time(event.t + event.x, event.t - event.x)
+
+    def force_at(self, end: str, frame_rapidity: float, t: float) -> float:
+        """The force at the end's event on the slice t of the frame (units of M c^2/L)."""
+        profile = self.forces.at(end)
+        if profile is None:
+            return 0.0
+        T = self.history.end_chart_time(end, frame_rapidity, t)
+        return float(profile.value(self._profile_time(end, T) / self.history.scenario.L))
+
+    def stress(self, frame_rapidity: float, t: float, sigmas) -> np.ndarray:
+        """The pressure p = (rho0/2)(lam^2 - 1) (units of M c^2/L, > 0 compression) at each material point sigma
+        where it crosses the slice."""
+        sol, out = self.history.solution, []
+        for sigma in np.atleast_1d(np.asarray(sigmas, dtype=float)):
+            T = ChartCurve(sol, float(sigma), -math.inf, math.inf, frame_rapidity).chart_time(t)
+            out.append(0.5 * (math.exp(-(sol.r_plus(T + sigma) + sol.r_minus(T - sigma))) - 1.0))
+        return np.array(out)
+
+    def now_lines(self, count: int = 12) -> list:
+        """None: the causal rod's lines of simultaneity are not its own (its signals run at c)."""
+        return []
+
+    def _chart_time_at(self, end: str, instant: float) -> float:
+        """The chart time at which the end's profile time is `instant` (t_F rises along the end)."""
+        L = self.history.scenario.L
+        lo, hi = -L, L
+        while self._profile_time(end, lo) > instant:
+            lo, hi = lo - 2.0 * (hi - lo), lo
+        while self._profile_time(end, hi) < instant:
+            lo, hi = hi, hi + 2.0 * (hi - lo)
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mid in (lo, hi):
+                break
+            lo, hi = (mid, hi) if self._profile_time(end, mid) < instant else (lo, mid)
+        return hi
+
+    def force_events(self) -> tuple:
+        """Each force's start, peak and end at its end (`types.ForceEvent`, in S): the end's rapidity just after the
+        start and the peak, just before the end (a step's switch-on and -off are fronts: it jumps there)."""
+        history, out = self.history, []
+        L = history.scenario.L
+        for end, profile in self.profiles():
+            X = 0.0 if end == "left" else L
+            first, last = profile.support()
+            for moment, instant in zip(FORCE_MOMENTS, (first, profile.peak_time(), last)):
+                T = self._chart_time_at(end, instant * L)
+                side = math.nextafter(T, -math.inf if moment == "end" else math.inf)
+                rapidity = ChartCurve(history.solution, X, side, side).rapidity(side)
+                force = (profile.piece_value(profile.piece_index(instant) - 1, instant) if moment == "end"
+                         else profile.value(instant))
+                out.append(ForceEvent(end, moment, history._end_event(end, T), rapidity, float(force), instant))
+        return tuple(out)
 
 
 class DrivenHistory(CausalHistory):
@@ -122,7 +191,7 @@ class DrivenHistory(CausalHistory):
         """The rod's (E, p) on the slice t of the frame, and what is missing from the initial total plus what the
         agents delivered up to the slice's end events (zero to rounding); with `split`, its matter and stress."""
         rod = self.rod_energy_momentum(frame_rapidity, t)
-        expected = self.initial_total(frame_rapidity) + self.driving.delivered_total(frame_rapidity, t)
+        expected = self.driving.total(frame_rapidity, t)
         parts = ()
         if split:
             matter, stress = self.rod_parts(frame_rapidity, t)

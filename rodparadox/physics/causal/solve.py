@@ -149,17 +149,13 @@ class _View:
         return self.sign * self.base.c if isinstance(self.base, _Const) else None
 
 
-#: the pieces, public for the driven ends' run (`causal.driven`)
-Const, View = _Const, _View
-
-
 def _constant(piece) -> float | None:
     if isinstance(piece, _Const):
         return piece.c
     return piece.constant if isinstance(piece, _View) else None
 
 
-constant_of = _constant
+Const, View, constant_of = _Const, _View, _constant  # public for the driven ends' run (`causal.driven`)
 
 
 # --- an invariant: pieces, then a periodic tail ------------------------------------------------------------------
