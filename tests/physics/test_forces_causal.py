@@ -296,3 +296,34 @@ def test_the_force_events_and_the_force_on_a_slice():
         assert driving.stress(0.0, t, [1.0])[0] == pytest.approx(profile.value(t), abs=1e-12)
     assert driving.stress(0.0, 0.7, [0.5])[0] == 0.0  # the middle has not heard of the forces yet
     assert driving.now_lines() == []
+
+
+@pytest.mark.parametrize("L", [1e-100, 1e100])
+def test_the_rod_s_length_is_only_a_unit(L):
+    """Times in units of L, forces in M c^2/L: the same profiles on a rod of any length give the same motion in
+    units of L (a sine^2 pulse timed in S' on the left end)."""
+    profile = sine2(0.3, 0.0, 1.0, frame="moving")
+    unit = run_rod(scenario(profile))
+    other = run_rod(scenario(profile, L=L))
+    assert other.final_rapidity == pytest.approx(unit.final_rapidity, abs=1e-13)
+    f = -math.atanh(V)
+    for t in (0.5, 1.3, 4.0):
+        assert other.driving.delivered("left", f, t * L).p == pytest.approx(
+            unit.driving.delivered("left", f, t).p, abs=1e-13)
+
+
+def test_a_force_far_in_the_future_moves_the_rod_as_one_at_once():
+    """A pulse starting at t = 1e4 L: t has four fewer digits there, and the rod ends as with the pulse at t = 0."""
+    late = run_rod(scenario(sine2(0.3, 1e4, 1.0)))
+    soon = run_rod(scenario(sine2(0.3, 0.0, 1.0)))
+    assert late.final_rapidity == pytest.approx(soon.final_rapidity, abs=1e-11)
+
+
+def test_a_pull_near_the_limit_for_long_is_refused_within_the_bound(monkeypatch):
+    """A pull of 0.4999 M c^2/L (lam_end^2 = 2e-4) for 50 L: refused in one sentence, not a hang (with a tenth of
+    the bound on the driven ends' steps, to keep this file fast: the whole bound takes seconds)."""
+    from rodparadox.physics.causal import driven
+
+    monkeypatch.setattr(driven, "MAX_STEPS", driven.MAX_STEPS // 10)
+    with pytest.raises(ScenarioError, match="gentler or shorter forces"):
+        run_rod(scenario(sine2(-0.4999, 0.0, 50.0)))

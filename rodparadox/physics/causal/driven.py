@@ -28,19 +28,43 @@ import bisect
 import math
 
 import numpy as np
-from numpy.polynomial import chebyshev as cheb
 
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal.ode import (DEGREE, EPS, INTEGRATE_FROM_START as _S, LOBATTO as _X, MAX_HALVINGS,
-                                           ODE_RTOL, TO_COEFFICIENTS as _TO_COEF, Solved, Step, clenshaw as _clenshaw,
+                                           ODE_RTOL, PRIMITIVE as _PRIMITIVE, TO_COEFFICIENTS as _TO_COEF, Solved, Step, clenshaw as _clenshaw,
                                            falling_root, negligible_tail as _tail, roughness as _roughness)
 from rodparadox.physics.causal.solve import (Budget, Const as _Const, Invariant, Solution, View as _View,
                                              constant_of)
 
 #: windows of chart time L a forced run may take before it is refused (a push lasting that many crossing times)
 MAX_FORCED_WINDOWS = 2000
-#: fixed-point iterations of one step's collocation equations before the step is halved
-MAX_ITERATIONS = 60
+#: steps of the driven ends' equation (each tried step) a run may take before it is refused: each costs a few
+#: milliseconds, so a run is refused within seconds (every preset takes under a hundred)
+MAX_STEPS = 2000
+#: the largest |r+-| a driven run may reach: e^36 L of t per L of chart time leaves no digit of L in t (a pull
+#: near rho0/2 makes each crossing multiply the rapidity's e-fold, far beyond any force's own size)
+MAX_INVARIANT = 36.0
+#: Newton iterations of one step's collocation equations before the step is halved
+MAX_ITERATIONS = 40
+_EYE = np.eye(DEGREE + 1)
+
+
+class Work(Budget):
+    """The bound MAX_STEPS on the driven ends' steps, refused in one sentence past it."""
+
+    def spend(self) -> None:
+        self.spent += 1
+        if self.spent > self.limit:
+            raise ScenarioError(f"the forces on the causal rod need more than {self.limit} steps of its driven ends "
+                                f"to be followed to 1e-12; give gentler or shorter forces.", "forces")
+
+
+def check_invariant(value: float) -> None:
+    """Refuse a run whose invariants leave double precision behind (MAX_INVARIANT)."""
+    if not abs(value) <= MAX_INVARIANT:
+        raise ScenarioError(f"the forces drive the causal rod's ends to rapidities beyond {MAX_INVARIANT / 2:g} (a "
+                            f"pull near M c^2/(2L) stretches it without bound), where double precision keeps no "
+                            f"digit of its length; give gentler or shorter forces.", "forces")
 
 
 class Drive:
@@ -79,9 +103,9 @@ class Drive:
         index = self.profile.piece_index(0.5 * (lo + hi))
         constant = self.profile.piece_constant(index)
         if constant is not None:
-            return lambda t: constant
+            return lambda t: np.full(np.shape(t), constant)
         piece_value = self.profile.piece_value
-        return lambda t: piece_value(index, t)
+        return lambda t: np.asarray(piece_value(index, t), dtype=float)
 
 
 class ConstantPush(_Const):
@@ -101,6 +125,7 @@ def _constant_push(lo: float, hi: float, r_in: float, force: float, y: float, z:
     """A constant force on a constant input over [lo, hi], stopped where t_F reaches t_end: y and z grow linearly
     (dy/dT = e^-in/lam^2, dz/dT = e^in), and so does t_F: its event in closed form."""
     lam2 = 1.0 + 2.0 * L * force
+    check_invariant(r_in + math.log(lam2))
     dy, dz = math.exp(-r_in) / lam2, math.exp(r_in)
     t_lo = drive.time(z, y) if left else drive.time(y, z)
     rate = drive.time(dz, dy) if left else drive.time(dy, dz)
@@ -131,32 +156,50 @@ class DrivenPiece(Solved):
 
 def _collocate(y_a: float, z: np.ndarray, r_in: np.ndarray, half: float, drive: Drive, F, left: bool,
                scale: float):
-    """y at the step's points (and the force and lam^2 there), by fixed-point iteration on the collocation
-    equations, or None where it does not converge (the step is then halved)."""
+    """y at the step's points (and the force and lam^2 there), by Newton's method on the collocation equations
+    Y = y_a + half S g(Y) (the Jacobian's dF/dt by a central difference: it steers, the residual decides), or None
+    where it does not converge (the step is then halved)."""
     e_in = np.exp(-r_in)
+    ef = drive.ef
+    # t_F = (U/ef + ef V)/2: the end's own coordinate is V at the left end, U at the right
+    zt, dt_dy = (0.5 * z / ef, 0.5 * ef) if left else (0.5 * ef * z, 0.5 / ef)
+    two_L = 2.0 * drive.L  # 2F/rho0 = 2 F L (rho0 = M/L, M = 1)
     Y = np.full(DEGREE + 1, y_a)
-    for _ in range(MAX_ITERATIONS):
-        if left:
-            t = [drive.time(float(u), float(v)) for u, v in zip(z, Y)]
-        else:
-            t = [drive.time(float(u), float(v)) for u, v in zip(Y, z)]
-        force = np.array([F(s) for s in t])
-        lam2 = 1.0 + 2.0 * drive.L * force  # 2F/rho0, rho0 = M/L with M = 1
-        if not np.all(lam2 > 0.0):
-            return None
-        g = e_in / lam2
-        new = y_a + half * (_S @ g)
-        change = float(np.max(np.abs(new - Y)))
-        Y = new
-        if not np.all(np.isfinite(Y)):
-            return None
-        if change <= 4.0 * EPS * scale:
-            return Y, force, lam2, g
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        for _ in range(MAX_ITERATIONS):
+            t = zt + dt_dy * Y
+            force = F(t)
+            lam2 = 1.0 + two_L * force
+            if not np.all(lam2 > 0.0):
+                return None
+            g = e_in / lam2
+            residual = Y - y_a - half * (_S @ g)
+            if not np.all(np.isfinite(residual)):
+                return None
+            delta = 1e-7 * (np.abs(t) + drive.L)
+            slope = (F(t + delta) - F(t - delta)) / (2.0 * delta)
+            g_y = -g / lam2 * two_L * slope * dt_dy
+            try:
+                change = np.linalg.solve(_EYE - half * _S * g_y[None, :], residual)
+            except np.linalg.LinAlgError:
+                return None
+            Y = Y - change
+            if not np.all(np.isfinite(Y)):
+                return None
+            if float(np.max(np.abs(change))) <= 4.0 * EPS * scale:
+                t = zt + dt_dy * Y
+                force = F(t)
+                lam2 = 1.0 + two_L * force
+                if not np.all(lam2 > 0.0):
+                    return None
+                # the rounding of t_F (|t| eps) read through F's slope: no step makes psi smoother than that
+                blur = 8.0 * EPS * float(np.max(np.abs(t) * np.abs(slope) / lam2)) * two_L
+                return Y, force, lam2, e_in / lam2, blur
     return None
 
 
 def solve_driven(lo: float, hi: float, inp, y_lo: float, z_lo: float, drive: Drive, k: int, left: bool,
-                 L: float, budget: Budget | None = None) -> tuple[DrivenPiece, float, bool]:
+                 L: float, budget: Budget | None, work: Work) -> tuple[DrivenPiece, float, bool]:
     """Integrate the driven end over end time [lo, hi] on the profile's segment k, from y = y_lo, z = z_lo;
     stop early where t_F reaches the segment's end (an event). Returns the piece, the chart time it ends at, and
     whether the segment ended there."""
@@ -177,6 +220,7 @@ def solve_driven(lo: float, hi: float, inp, y_lo: float, z_lo: float, drive: Dri
     while a < hi and not ended:
         if budget is not None:
             budget.spend()
+        work.spend()
         b = target_b if target_b is not None else (hi if a + h >= hi else a + h)
         s = a + 0.5 * (b - a) * (_X + 1.0)
         s[0], s[-1] = a, b
@@ -186,25 +230,26 @@ def solve_driven(lo: float, hi: float, inp, y_lo: float, z_lo: float, drive: Dri
         solved = _collocate(y_a, z, r_in, 0.5 * (b - a), drive, F, left, scale)
         good = False
         if solved is not None:
-            Y, force, lam2, g = solved
+            Y, force, lam2, g, blur = solved
+            blurred = max(noise, blur)
             psi = r_in + 0.5 * np.log(lam2)
             em = np.exp(r_in) * lam2
             f_in, f_out = force * np.exp(r_in), force * g
             cp, cep, cem = _TO_COEF @ psi, _TO_COEF @ g, _TO_COEF @ em
             cfi, cfo = _TO_COEF @ f_in, _TO_COEF @ f_out
-            # the agent's integrands to 1e-12 of the rod's own scale (F in units of rho0: near a switch-on F is
-            # tiny and known only to the rounding of t_F, not to 1e-12 of itself)
-            fscale = max(float(np.max(np.exp(r_in))), float(np.max(np.exp(-r_in))),
-                         float(np.max(np.abs(f_in))), float(np.max(np.abs(f_out))))
-            good = (_tail(cp, max(1.0, float(np.max(np.abs(psi)))), noise) and _tail(cep, float(np.max(g)), noise)
-                    and _tail(cem, float(np.max(em)), noise) and _tail(cfi, fscale, noise)
-                    and _tail(cfo, fscale, noise))
+            # the agent's integrands to 1e-12 of the rod's own scale (F in units of rho0: near a switch-on or -off
+            # F is tiny and known only to the rounding of t_F, not to 1e-12 of itself)
+            fscale = max(float(np.max(np.exp(r_in))) / L, float(np.max(np.exp(-r_in))) / L,
+                         float(np.max(np.abs(f_in))), float(np.max(np.abs(f_out))))  # F in units of rho0 = 1/L
+            good = (_tail(cp, max(1.0, float(np.max(np.abs(psi)))), blurred)
+                    and _tail(cep, float(np.max(g)), blurred) and _tail(cem, float(np.max(em)), blurred)
+                    and _tail(cfi, fscale, blurred) and _tail(cfo, fscale, blurred))
         if solved is not None:
             t_b = drive.time(z[-1], Y[-1]) if left else drive.time(Y[-1], z[-1])
             tol = 4.0 * EPS * (abs(t_end) + L) if math.isfinite(t_end) else 0.0
             if math.isfinite(t_end) and t_b > t_end + tol:
                 # the event t_F = t_end lies inside the step: find it on the dense solution, solve up to it again
-                step = Step(a, b, cp.tolist(), cheb.chebint(cep, lbnd=-1).tolist(), [], 0.0, 0.0)
+                step = Step(a, b, cp.tolist(), (_PRIMITIVE @ cep).tolist(), [], 0.0, 0.0)
 
                 def time_gap(T: float, step=step, a=a, b=b, s=s) -> float:
                     y = y_a + 0.5 * (b - a) * _clenshaw(step.plus, step.x(T))
@@ -228,10 +273,12 @@ def solve_driven(lo: float, hi: float, inp, y_lo: float, z_lo: float, drive: Dri
         near = 1e-12 * (abs(t_end) + L) if target_b is not None else tol
         if math.isfinite(t_end) and t_b >= t_end - near:
             ended = True
-        step = Step(a, b, cp.tolist(), cheb.chebint(cep, lbnd=-1).tolist(), cheb.chebint(cem, lbnd=-1).tolist(),
-                    plus0, minus0, (_TO_COEF @ (r_in - 2.0 * psi)).tolist())
+        out = r_in - 2.0 * psi
+        check_invariant(float(np.max(np.abs(out))))
+        step = Step(a, b, cp.tolist(), (_PRIMITIVE @ cep).tolist(), (_PRIMITIVE @ cem).tolist(),
+                    plus0, minus0, (_TO_COEF @ out).tolist())
         steps.append(step)
-        ci, co = cheb.chebint(cfi, lbnd=-1).tolist(), cheb.chebint(cfo, lbnd=-1).tolist()
+        ci, co = (_PRIMITIVE @ cfi).tolist(), (_PRIMITIVE @ cfo).tolist()
         fin.append((ci, in0))
         fout.append((co, out0))
         half = 0.5 * (b - a)
@@ -326,6 +373,7 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
 
     T0 = T_first - L
     windows = 0
+    work = Work(MAX_STEPS)
     done_at = None
     while True:
         windows += 1
@@ -372,7 +420,7 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
                         piece, T_next, ended = _constant_push(T, hi, r_in, force, y, z, drive, drive.bounds(k)[1],
                                                               left, L)
                     else:
-                        piece, T_next, ended = solve_driven(T, hi, inp, y, z, drive, k, left, L, budget)
+                        piece, T_next, ended = solve_driven(T, hi, inp, y, z, drive, k, left, L, budget, work)
                     if piece.hi > piece.lo:
                         out_append(end, piece)
                         delivered[end].add(piece)

@@ -25,7 +25,7 @@ from rodparadox.physics.kinematics import ChartCurve
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
 #: the work a forced run may take (windows, stretches, steps) when no budget is asked for
-FORCED_BUDGET = 200000
+FORCED_BUDGET = 20000
 
 
 def _profiles(scenario) -> dict:

@@ -241,5 +241,5 @@ def falling_root(g, lo: float, hi: float, xtol: float = 4 * EPS, rtol: float = 4
 
 # the collocation's pieces, public for the other boundary equation solved the same way (`causal.driven`, an end
 # driven by a force)
-LOBATTO, TO_COEFFICIENTS, INTEGRATE_FROM_START = _X, _TO_COEF, _S
+LOBATTO, TO_COEFFICIENTS, INTEGRATE_FROM_START, PRIMITIVE = _X, _TO_COEF, _S, _INTEGRATE
 clenshaw, roughness, negligible_tail = _clenshaw, _roughness, _tail
