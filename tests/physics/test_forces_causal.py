@@ -327,3 +327,12 @@ def test_a_pull_near_the_limit_for_long_is_refused_within_the_bound(monkeypatch)
     monkeypatch.setattr(driven, "MAX_STEPS", driven.MAX_STEPS // 10)
     with pytest.raises(ScenarioError, match="gentler or shorter forces"):
         run_rod(scenario(sine2(-0.4999, 0.0, 50.0)))
+
+
+@pytest.mark.parametrize("name", ["push", "sears_moving", "step_S_points_u", "sine2_u_step_S'"])
+def test_the_ringing_rod_moves_at_what_it_was_given(name):
+    """After the last force the rod rings freely; its centre-of-momentum rapidity (from the period's advance,
+    (M/2L)(Dt, Dx)) is that of initial + delivered in S: tanh th = p/E."""
+    history = run(name)
+    held = history.driving.total(0.0, 1e9)
+    assert history.final_rapidity == pytest.approx(math.atanh(held.p / held.E), abs=1e-12)
