@@ -371,8 +371,8 @@ class DrivenArc:
     def point(self, tau: float) -> Event:
         y = self.stage.state(tau)[0]
         k = self.scale
-        return Event(k * (y[X_] + self.sigma * math.cosh(y[PHI])),
-                     k * (y[T_] + self.sigma * math.sinh(y[PHI]))).seen_from(self.f)
+        return Event(float(k * (y[X_] + self.sigma * math.cosh(y[PHI]))),
+                     float(k * (y[T_] + self.sigma * math.sinh(y[PHI])))).seen_from(self.f)
 
     def points(self, tau) -> np.ndarray:
         """(n, 2) array of [x, t] at many tau."""
@@ -456,14 +456,14 @@ def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
     a HyperbolicArc or a DrivenArc."""
     y0, y1 = stage.state([stage.tau0, stage.tau1])
     k = scale
-    e0 = Event(k * (y0[X_] + sigma * math.cosh(y0[PHI])), k * (y0[T_] + sigma * math.sinh(y0[PHI])))
-    e1 = Event(k * (y1[X_] + sigma * math.cosh(y1[PHI])), k * (y1[T_] + sigma * math.sinh(y1[PHI])))
+    e0 = Event(float(k * (y0[X_] + sigma * math.cosh(y0[PHI]))), float(k * (y0[T_] + sigma * math.sinh(y0[PHI]))))
+    e1 = Event(float(k * (y1[X_] + sigma * math.cosh(y1[PHI]))), float(k * (y1[T_] + sigma * math.sinh(y1[PHI]))))
     if isinstance(stage, ConstantStage):
         a = stage.a
         if a == 0.0:
             return Line(e0, e1)
         if abs(a) >= CLOSED_FORM_ALPHA:
-            centre = Event(k * (y0[X_] - math.cosh(y0[PHI]) / a), k * (y0[T_] - math.sinh(y0[PHI]) / a))
+            centre = Event(float(k * (y0[X_] - math.cosh(y0[PHI]) / a)), float(k * (y0[T_] - math.sinh(y0[PHI]) / a)))
             radius = k * abs(1.0 / a + sigma)
             return HyperbolicArc(centre, radius, 1 if a > 0 else -1, float(y0[PHI]), float(y1[PHI]))
     return DrivenArc(stage, sigma, stage.tau0, stage.tau1, 0.0, scale)

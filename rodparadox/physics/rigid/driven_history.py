@@ -88,7 +88,7 @@ class DrivenHistory:
         s = sigma / self.L
         pieces = tuple(stage_piece(st, s, self.L) for st in self.stages[:-1] if st.tau1 > st.tau0)
         y0 = self._y0[0]
-        origin = Event(self.L * (y0[X_] + s), self.L * y0[T_])
+        origin = Event(float(self.L * (y0[X_] + s)), float(self.L * y0[T_]))
         return WorldLine(origin, 0.0, pieces, self.final_rapidity)
 
     def material_velocity(self, sigma: float, frame_rapidity: float, t: float) -> float:
@@ -307,7 +307,8 @@ class Driving:
                 tau = self.end_tau(end, f, instant * h.L)
                 y = h._states(np.array([tau]))[0]
                 sigma = 0.0 if end == "left" else 1.0
-                event = Event(h.L * (y[X_] + sigma * math.cosh(y[PHI])), h.L * (y[T_] + sigma * math.sinh(y[PHI])))
+                event = Event(float(h.L * (y[X_] + sigma * math.cosh(y[PHI]))),
+                              float(h.L * (y[T_] + sigma * math.sinh(y[PHI]))))
                 force = (profile.piece_value(profile.piece_index(instant) - 1, instant) if moment == "end"
                          else profile.value(instant))
                 out.append(ForceEvent(end, moment, event, float(y[PHI]), float(force), instant))
