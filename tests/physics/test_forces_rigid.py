@@ -245,3 +245,34 @@ def test_centre_of_energy_against_p_over_E_for_the_rod_held_in_balance(name):
     # while the left force acts alone (t' = 0.56), p/E and v_E differ: von Laue's point
     kinetic, stress = h.rod_parts(f, 0.5625)
     assert name != "sears" or abs(h.driving.centre_velocity(f, 0.5625) - (kinetic + stress).p / (kinetic + stress).E) > 0.01
+
+
+def test_driven_world_lines_sample_within_tolerance_and_keep_proper_time():
+    """A collocated piece (sine2 forces timed in S') sampled to 1e-4 L: the world-line at the middle time of each
+    chord is within the tolerance of it; proper time along the left end is int d tau, along material point sigma
+    (tau + sigma phi) between two events (Born rigidity: d tau_sigma = (1 + alpha sigma) d tau)."""
+    from rodparadox.physics.kinematics import proper_time_events
+
+    h = run_rods(load("sears_moving"))[0]
+    for f in FRAMES:
+        w = h.worldline("rod_right").seen_from(f)
+        pts = w.sample(-1.0, 4.0, 1e-4)
+        for (x0, t0), (x1, t1) in zip(pts, pts[1:]):
+            tm = 0.5 * (t0 + t1)
+            e = w.event_at_time(tm)
+            chord_x = x0 + (x1 - x0) * (tm - t0) / (t1 - t0)
+            assert abs(e.x - chord_x) <= 1.5e-4
+    ticks = proper_time_events(h.worldline("rod_left"), 0.25, -1.0, 4.0)
+    gaps = np.diff([tau for tau, _ in ticks])
+    assert np.allclose(gaps, 0.25, atol=1e-12)
+    for (_, a), (_, b) in zip(ticks, ticks[1:]):  # the straight chord between two ticks has at least their proper time
+        assert (b.t - a.t) ** 2 - (b.x - a.x) ** 2 >= 0.25 ** 2 - 1e-12
+    # proper time of material point sigma from the switch-on to the end of the forces: (tau + sigma phi) over it
+    sigma = 0.6
+    w = h.material_worldline(sigma)
+    [piece] = [p for p in w.segments if hasattr(p, "proper_duration")][:1] or [None]
+    if piece is not None:
+        phi0, phi1 = piece.rapidity_at_start, piece.rapidity_at_end
+        assert close(piece.proper_duration(), (piece.tau1 - piece.tau0) + sigma * (phi1 - phi0))
+        chord = math.sqrt((piece.end.t - piece.start.t) ** 2 - (piece.end.x - piece.start.x) ** 2)
+        assert chord >= piece.proper_duration() - 1e-12
