@@ -233,6 +233,8 @@ def time_window(history: RodHistory, frame: Frame) -> tuple[float, float]:
     at_start = [e.seen_from(eta).t for _, e in history.starts]
     at_start += [Event(sign * L / 2, 0.0).seen_from(eta).t for sign in (-1, 1)]
     lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)
+    if history.driving is not None:  # forces: at least L before the first force and after the last has ended
+        lead = max(lead, L)
     return first - lead, last + lead
 
 

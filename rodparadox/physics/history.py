@@ -152,6 +152,12 @@ class Driving(Protocol):
     def now_lines(self, count: int = 12) -> list[tuple["Event", "Event"]]:
         """The rod's own lines of simultaneity as (left end, right end) event pairs in S."""
 
+    def centre_of_energy(self, frame_rapidity: float, t: float) -> tuple[float, float]:
+        """The rod's centre of energy x_E on the slice t of the frame, and its energy there."""
+
+    def centre_velocity(self, frame_rapidity: float, t: float) -> float:
+        """d x_E / dt: beside p / E, von Laue's point (equal for a closed system, not with forces)."""
+
 
 @runtime_checkable
 class RodHistory(Protocol):

@@ -190,8 +190,18 @@ class CollocatedStage(_Stage):
         self._starts = np.array([st.a for st in steps])
         self._coef = np.stack([st.coef for st in steps])  # (steps, DEGREE + 1, 7)
         self._ab = np.array([(st.a, st.b) for st in steps])
+        self._starts_list = [st.a for st in steps]
+        self._ab_list = [(st.a, st.b) for st in steps]
 
     def state(self, tau) -> np.ndarray:
+        if np.ndim(tau) == 0:  # one instant: the Chebyshev polynomials by their recurrence, then one product
+            i = min(max(bisect.bisect_right(self._starts_list, float(tau)) - 1, 0), len(self.steps) - 1)
+            a, b = self._ab_list[i]
+            u = min(1.0, max(-1.0, (2.0 * float(tau) - a - b) / (b - a)))
+            T = [1.0, u]
+            for _ in range(DEGREE - 1):
+                T.append(2.0 * u * T[-1] - T[-2])
+            return (np.array(T) @ self._coef[i])[None, :]
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
         i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
         a, b = self._ab[i, 0], self._ab[i, 1]
@@ -371,8 +381,8 @@ class DrivenArc:
     def point(self, tau: float) -> Event:
         y = self.stage.state(tau)[0]
         k = self.scale
-        return Event(k * (y[X_] + self.sigma * math.cosh(y[PHI])),
-                     k * (y[T_] + self.sigma * math.sinh(y[PHI]))).seen_from(self.f)
+        return Event(float(k * (y[X_] + self.sigma * math.cosh(y[PHI]))),
+                     float(k * (y[T_] + self.sigma * math.sinh(y[PHI])))).seen_from(self.f)
 
     def points(self, tau) -> np.ndarray:
         """(n, 2) array of [x, t] at many tau."""
@@ -433,22 +443,24 @@ class DrivenArc:
         return self.point(_root(lambda tau: self.proper_duration_to_tau(tau) - s, self.tau0, self.tau1))
 
     def sample(self, tolerance: float) -> np.ndarray:
-        """Points whose polyline lies within `tolerance` of the arc: bisected in tau until the chord's distance
-        from the middle point is within tolerance (at least four pieces)."""
-        out = [self.point(self.tau0)]
-        stack = [(self.tau0, self.tau1, 0)]
-        while stack:
-            a, b, depth = stack.pop()
-            pa, pb, pm = self.point(a), self.point(b), self.point(0.5 * (a + b))
-            dx, dt = pb.x - pa.x, pb.t - pa.t
-            chord = math.hypot(dx, dt)
-            error = abs(dx * (pm.t - pa.t) - dt * (pm.x - pa.x)) / chord if chord > 0 else 0.0
-            if (error > tolerance or depth < 2) and depth < 40:
-                stack.append((0.5 * (a + b), b, depth + 1))
-                stack.append((a, 0.5 * (a + b), depth + 1))
-            else:
-                out.append(pb)
-        return np.array([[p.x, p.t] for p in out])
+        """Points whose polyline lies within `tolerance` of the arc: every piece of tau whose chord is farther than
+        `tolerance` from the point at its middle is halved (all pieces at once), from 4 pieces on."""
+        taus = np.linspace(self.tau0, self.tau1, 5)
+        pts = self.points(taus)
+        for _ in range(40):
+            mids = 0.5 * (taus[:-1] + taus[1:])
+            pm = self.points(mids)
+            d = pts[1:] - pts[:-1]
+            chord = np.hypot(d[:, 0], d[:, 1])
+            cross = np.abs(d[:, 0] * (pm[:, 1] - pts[:-1, 1]) - d[:, 1] * (pm[:, 0] - pts[:-1, 0]))
+            with np.errstate(invalid="ignore", divide="ignore"):
+                error = np.where(chord > 0, cross / chord, 0.0)
+            split = error > tolerance
+            if not np.any(split):
+                break
+            taus = np.insert(taus, np.nonzero(split)[0] + 1, mids[split])
+            pts = np.insert(pts, np.nonzero(split)[0] + 1, pm[split], axis=0)
+        return pts
 
 
 def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
@@ -456,14 +468,14 @@ def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
     a HyperbolicArc or a DrivenArc."""
     y0, y1 = stage.state([stage.tau0, stage.tau1])
     k = scale
-    e0 = Event(k * (y0[X_] + sigma * math.cosh(y0[PHI])), k * (y0[T_] + sigma * math.sinh(y0[PHI])))
-    e1 = Event(k * (y1[X_] + sigma * math.cosh(y1[PHI])), k * (y1[T_] + sigma * math.sinh(y1[PHI])))
+    e0 = Event(float(k * (y0[X_] + sigma * math.cosh(y0[PHI]))), float(k * (y0[T_] + sigma * math.sinh(y0[PHI]))))
+    e1 = Event(float(k * (y1[X_] + sigma * math.cosh(y1[PHI]))), float(k * (y1[T_] + sigma * math.sinh(y1[PHI]))))
     if isinstance(stage, ConstantStage):
         a = stage.a
         if a == 0.0:
             return Line(e0, e1)
         if abs(a) >= CLOSED_FORM_ALPHA:
-            centre = Event(k * (y0[X_] - math.cosh(y0[PHI]) / a), k * (y0[T_] - math.sinh(y0[PHI]) / a))
+            centre = Event(float(k * (y0[X_] - math.cosh(y0[PHI]) / a)), float(k * (y0[T_] - math.sinh(y0[PHI]) / a)))
             radius = k * abs(1.0 / a + sigma)
             return HyperbolicArc(centre, radius, 1 if a > 0 else -1, float(y0[PHI]), float(y1[PHI]))
     return DrivenArc(stage, sigma, stage.tau0, stage.tau1, 0.0, scale)
