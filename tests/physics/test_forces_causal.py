@@ -336,3 +336,54 @@ def test_the_ringing_rod_moves_at_what_it_was_given(name):
     history = run(name)
     held = history.driving.total(0.0, 1e9)
     assert history.final_rapidity == pytest.approx(math.atanh(held.p / held.E), abs=1e-12)
+
+
+@pytest.mark.parametrize("name", ["sears", "step_S_points_u", "push"])
+@pytest.mark.parametrize("f", [0.0, -math.atanh(V)], ids=["S", "S'"])
+def test_the_centre_of_energy_moves_at_p_over_E_once_the_forces_have_stopped(name, f):
+    """von Laue: for a closed system the centre of energy moves at p/E. After the last force (the rod ringing)
+    they agree; the energy integral is the rod's energy."""
+    history = run(name)
+    late = slice_times(history, f)[-1]
+    for t in (late, late + 0.37):
+        rod = dict(history.energy_momentum(f, t).bodies)["rod"]
+        x_E, E = history.driving.centre_of_energy(f, t)
+        assert E == pytest.approx(rod.E, rel=1e-12)
+        assert history.driving.centre_velocity(f, t) == pytest.approx(rod.p / rod.E, abs=1e-9)
+
+
+def test_sears_in_S_keeps_its_centre_of_energy_at_rest_in_the_middle():
+    history = run("sears")
+    for t in (0.3, 0.8, 1.2, 1.7, 3.1):
+        x_E, _ = history.driving.centre_of_energy(0.0, t)
+        assert abs(x_E) <= 1e-12
+        assert abs(history.driving.centre_velocity(0.0, t)) <= 1e-9
+
+
+def test_while_a_force_acts_the_centre_of_energy_moves_as_the_piston_says():
+    """The constant push, first crossing (0 < t < L in S): the rod is at rest beyond the front x_f = -L/2 + t,
+    compressed between the end x_L = -L/2 + v t (v = F/(rho0 + F)) and the front, with th = kappa/2,
+    lam^2 = 1 + 2F/rho0, e_c = rho cosh^2 th + p sinh^2 th, P_c = (rho + p) cosh th sinh th (rho = (rho0/2)(1 +
+    lam^2), p = F). So E = e_c (x_f - x_L) + rho0 (L/2 - x_f), x_E E = e_c (x_f^2 - x_L^2)/2 + rho0 (L^2/4 -
+    x_f^2)/2, and v_E by differentiating: it is not p/E (the system is not closed)."""
+    history = run("push")
+    F, rho0, L = PEAK, 1.0, 1.0
+    lam2 = 1.0 + 2.0 * F / rho0
+    th = 0.5 * math.log(lam2)
+    rho = 0.5 * rho0 * (1.0 + lam2)
+    e_c = rho * math.cosh(th) ** 2 + F * math.sinh(th) ** 2
+    P_c = (rho + F) * math.cosh(th) * math.sinh(th)
+    v = F / (rho0 + F)
+    for t in (0.3, 0.6):
+        x_L, x_f = -0.5 * L + v * t, -0.5 * L + t
+        E = e_c * (x_f - x_L) + rho0 * (0.5 * L - x_f)
+        moment = 0.5 * e_c * (x_f ** 2 - x_L ** 2) + 0.5 * rho0 * (0.25 * L * L - x_f ** 2)
+        dE = e_c * (1.0 - v) - rho0
+        dmoment = e_c * (x_f - x_L * v) - rho0 * x_f
+        x_E, E_got = history.driving.centre_of_energy(0.0, t)
+        assert E_got == pytest.approx(E, abs=1e-13) and x_E == pytest.approx(moment / E, abs=1e-13)
+        v_E = (dmoment * E - moment * dE) / E ** 2
+        assert history.driving.centre_velocity(0.0, t) == pytest.approx(v_E, abs=1e-10)
+        p = P_c * (x_f - x_L)
+        assert dict(history.energy_momentum(0.0, t).bodies)["rod"].p == pytest.approx(p, abs=1e-13)
+        assert abs(v_E - p / E) > 0.01
