@@ -132,9 +132,12 @@ def _write_rows(writer, history: RodHistory, frames: tuple[Frame, ...], *first: 
 
 
 def rods_to_json(histories, frames: tuple[Frame, ...]) -> str:
-    """Several rods struck by the same particles: one object, each rod's document (`document`) under "rods"."""
-    return json.dumps({"format": FORMAT, "rods": {h.model: _without_negative_zeros(document(h, frames))
-                                                  for h in histories}}, indent=1, allow_nan=False) + "\n"
+    """Several rods struck by the same particles (or driven by the same forces): one object, each rod's document
+    (`document`, `export_forces.document`) under "rods"."""
+    return json.dumps({"format": FORMAT, "rods": {
+        h.model: _without_negative_zeros(document(h, frames) if h.driving is None
+                                         else export_forces.document(h, frames, FORMAT))
+        for h in histories}}, indent=1, allow_nan=False) + "\n"
 
 
 def rods_to_csv(histories, frames: tuple[Frame, ...]) -> str:

@@ -20,12 +20,30 @@ def test_commands_that_cannot_show_forces_yet_refuse_them_in_one_sentence(comman
 
 
 @pytest.mark.parametrize("args, words", [
-    (("events", "sears", "--rod", "causal"), "the causal rod cannot be driven by forces yet"),
-    (("events", "sears", "--rod", "both"), "the causal rod cannot be driven by forces yet"),
     (("events", "sears", "--format", "latex"), "printed as text only for now"),
 ])
 def test_what_events_cannot_do_with_forces_is_refused_in_one_sentence(args, words):
     assert words in error_of(*args)
+
+
+def test_events_and_export_show_both_rods_driven_by_forces(tmp_path):
+    """The causal rod is driven too: Sears's pulses peak at t = 1 of S at both ends, where its pushed end moves at
+    tanh(ln(1 + 2F/rho0)/2) = F/(rho0 + F) = 0.2/1.2 (r+ = 0 still: nothing has crossed the rod yet)."""
+    text = run("events", "sears", "--rod", "both").stdout
+    assert "Both rods are driven by the same forces at their ends." in text and "The causal rod" in text
+    assert f"{0.2 / 1.2:+.6f}" in text and f"{-0.2 / 1.2:+.6f}" in text
+    path = tmp_path / "both.json"
+    run("export", "sears", "--rod", "both", "-o", path)
+    rods = json.loads(path.read_text())["rods"]
+    assert set(rods) == {"rigid", "causal"} and rods["causal"]["drive"] == "forces"
+    assert rods["causal"]["frames"]["rest"]["t_range"] == [-0.5, 2.5]  # L before the first force, L after the last
+
+
+def test_a_pull_past_the_causal_limit_is_refused_naming_the_limit(tmp_path):
+    path = tmp_path / "pull.yaml"
+    path.write_text("v: 0.6\nforces:\n  right: {shape: step, peak: -0.5, start: 0, duration: 1}\n")
+    message = error_of("events", path, "--rod", "causal")
+    assert "forces.right pulls with 0.5 M c^2/L, but the causal rod carries a pull only below M c^2/(2L)" in message
 
 
 def test_a_pull_past_the_rigid_limit_is_refused_naming_the_limit(tmp_path):
