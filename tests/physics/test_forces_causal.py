@@ -387,3 +387,26 @@ def test_while_a_force_acts_the_centre_of_energy_moves_as_the_piston_says():
         p = P_c * (x_f - x_L)
         assert dict(history.energy_momentum(0.0, t).bodies)["rod"].p == pytest.approx(p, abs=1e-13)
         assert abs(v_E - p / E) > 0.01
+
+
+def test_the_fronts_capability_reads_a_driven_run_as_a_struck_one():
+    """What the drawings read (matter and stress on many slices from tables, the extremes, the chart) works on a
+    driven run: the tables' parts agree with the exact ones; Sears's pulses meet in the middle, where the two
+    compressions add (the invariants are linear): the largest ln lam is ln(1 + 2F/rho0) = 2 ln lam_end; the free
+    ends reflect them as tensions, which meet again: the least is its opposite."""
+    import numpy as np
+
+    history = run("sears")
+    f = -math.atanh(V)
+    times = np.array(slice_times(history, f, 7))
+    matter, stress = history.fronts.rod_parts_on_slices(f, times)
+    for k, t in enumerate(times):
+        exact_matter, exact_stress = history.fronts.rod_parts(f, float(t))
+        assert matter[k, 0] == pytest.approx(exact_matter.E, abs=1e-9)
+        assert stress[k, 1] == pytest.approx(exact_stress.p, abs=1e-9)
+    lo, hi = history.fronts.compression_range()
+    kappa = math.log(1.0 + 2.0 * PEAK)
+    assert hi == pytest.approx(kappa, rel=1e-3) and lo == pytest.approx(-kappa, rel=1e-3)  # read on a grid
+    chart = history.own_chart()
+    event = chart.to_event(1.7, 0.3)
+    assert chart.to_chart(event) == pytest.approx((1.7, 0.3), abs=1e-12)
