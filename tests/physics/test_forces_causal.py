@@ -406,7 +406,8 @@ def test_the_fronts_capability_reads_a_driven_run_as_a_struck_one():
         assert stress[k, 1] == pytest.approx(exact_stress.p, abs=1e-9)
     lo, hi = history.fronts.compression_range()
     kappa = math.log(1.0 + 2.0 * PEAK)
-    assert hi == pytest.approx(kappa, rel=1e-3) and lo == pytest.approx(-kappa, rel=1e-3)  # read on a grid
+    # the extremes are read on a grid of each piece (`causal.extremes`, for colour scales): to 1%
+    assert hi == pytest.approx(kappa, rel=1e-2) and lo == pytest.approx(-kappa, rel=1e-2)
     chart = history.own_chart()
     event = chart.to_event(1.7, 0.3)
     assert chart.to_chart(event) == pytest.approx((1.7, 0.3), abs=1e-12)
