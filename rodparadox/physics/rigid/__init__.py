@@ -9,7 +9,14 @@
   driven_history  that run as the rod interface, with the capability `driving`
 """
 
-from rodparadox.physics.rigid.driven_history import DrivenHistory, run_forces
 from rodparadox.physics.rigid.engine import History, particle_starts, run
 
-__all__ = ["DrivenHistory", "History", "particle_starts", "run", "run_forces"]
+__all__ = ["History", "particle_starts", "run", "run_forces"]
+
+
+def run_forces(scenario):
+    """The rod driven by the scenario's forces (`driven_history.DrivenHistory`), its solver imported only when a
+    scenario with forces asks for it (a rigid plot of particles never loads numpy.polynomial)."""
+    from rodparadox.physics.rigid.driven_history import run_forces as run_driven
+
+    return run_driven(scenario)

@@ -168,11 +168,21 @@ class ConstantStage(_Stage):
         closed form (it may lie outside the stage)."""
         f, y0, a = frame_rapidity, self.y0, self.a
         sigma = np.asarray(sigma, dtype=float)
-        s0 = math.sinh(y0[PHI] - f)
+        y = y0[PHI] - f
+        s0 = math.sinh(y)
         rest = target - (math.cosh(f) * y0[T_] - math.sinh(f) * y0[X_] + sigma * s0)
         if a == 0.0:
-            return self.tau0 + rest / math.cosh(y0[PHI] - f)
-        return self.tau0 + (np.arcsinh(s0 + a * rest / (1.0 + a * sigma)) + f - y0[PHI]) / a
+            return self.tau0 + rest / math.cosh(y)
+        k = 1.0 + a * sigma
+        # the point's time runs k (sinh(y + a s) - sinh y)/a = k s cosh(y + a s/2) sinhc(a s/2) after the stage's
+        # start: solved in closed form where a is not small, from the uniform motion's answer where it is (the closed
+        # form's asinh(...)/a would lose every digit), then polished by Newton's method (derivative k cosh(y + a s))
+        with np.errstate(invalid="ignore", over="ignore"):
+            s = np.where(abs(a) >= 1e-6, (np.arcsinh(s0 + a * rest / k) - y) / a, rest / (k * math.cosh(y)))
+            for _ in range(3):
+                g = k * s * np.cosh(y + 0.5 * a * s) * _sinhc(0.5 * a * s) - rest
+                s = s - g / (k * np.cosh(y + a * s))
+        return self.tau0 + s
 
 
 class _Step:
