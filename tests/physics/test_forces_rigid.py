@@ -375,3 +375,26 @@ def test_the_history_seen_from_the_profiles_frame_is_the_one_solved_there(frame)
     worst = max(abs(w.event_at_time(t).x - x) for t, x, _ in path[::50])
     assert worst < 1e-9  # measured 1.2e-10 and 7e-11 (RK4 at h = 2e-3; 1.7e-9 at 4e-3: it converges to the history)
     assert abs(path[-1, 2] - (h.final_rapidity - g)) < 1e-9
+
+
+def test_the_driven_rod_implements_the_interface_and_the_driving_capability():
+    from rodparadox.physics.history import Driving, RodHistory
+
+    h = run_rods(load("sears_moving"))[0]
+    assert isinstance(h, RodHistory) and isinstance(h.driving, Driving)
+    assert h.turning is None and h.fronts is None and h.impacts == () and h.starts == ()
+    assert h.worldline("A") is None and h.worldline("B") is None
+    lo, hi = h.rapidity_range()
+    assert lo <= 0.0 <= hi and lo < -0.05  # the rod moves left in S while the right force leads
+    moving = -math.atanh(V)
+    for sigma in (0.0, 0.4, 1.0):  # the material velocity is the slope of the material world-line
+        line = h.material_worldline(sigma).seen_from(moving)
+        for t in (0.2, 0.9, 1.4, 2.2):
+            d = 1e-6
+            slope = (line.event_at_time(t + d).x - line.event_at_time(t - d).x) / (2 * d)
+            assert abs(h.material_velocity(sigma, moving, t) - slope) <= 1e-6
+    # the force at an end on a slice is the profile at that end's time in the profile's frame
+    for end, profile in h.driving.profiles():
+        g = h.driving.frame_rapidity(end)
+        for t in (0.6, 1.0, 1.3):
+            assert close(h.driving.force_at(end, g, t), profile.value(t), scale=1.0)
