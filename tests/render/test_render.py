@@ -246,7 +246,8 @@ def test_panels_have_equal_scales_units_of_L_titles_and_a_title_naming_scenario_
     assert title_of(a) == "(a) frame S: rod at rest before and after"
     assert title_of(b) == "(b) frame S\N{PRIME}: rod at +0.6 before and after"
     title = artist(fig, "title").get_text()
-    assert title.startswith("fig2, $v = 0.6$")
+    # the scenario's title in words (not its file name), typeset with a curly apostrophe, then v
+    assert title == "Impacts simultaneous in the moving frame (the paper\N{RIGHT SINGLE QUOTATION MARK}s Fig. 2), $v = 0.6$"
 
 
 def test_a_frame_of_any_velocity_gets_its_own_panel():
@@ -269,7 +270,7 @@ def test_a_frame_of_speed_close_to_1_and_v_close_to_1_are_never_rounded_to_1_and
     v = 0.9999999  # the fastest v a scenario takes
     h = history("fig2", v)
     fig = render.draw(h, (Frame("rest", 0.0), Frame("u=-0", -0.0), Frame("u=-0.9999999", -0.9999999))).figure
-    assert artist(fig, "title").get_text().startswith("fig2, $v = 0.9999999$")
+    assert artist(fig, "title").get_text().endswith(", $v = 0.9999999$")
     assert title_of(panels(fig)["b"]) == "(b) frame u = 0: rod at rest before and after"
     assert title_of(panels(fig)["c"]) == "(c) frame u = \N{MINUS SIGN}0.9999999: rod at +0.9999999 before and after"
     texts = [t.get_text() for t in fig.findobj(matplotlib.text.Text)]
