@@ -535,7 +535,7 @@ def _label_cases() -> list[tuple[str, float, str]]:
     instead of the 72 of the full product, every check kept (issue 23: the suite within 90 s on 2 cores)."""
     speeds = sorted({*SPEEDS, *LABEL_SPEEDS})
     cases = {(name, v, STYLE_NAMES[(i + j) % len(STYLE_NAMES)])
-             for i, name in enumerate(builtin_names()) for j, v in enumerate(speeds)}
+             for i, name in enumerate(particle_presets()) for j, v in enumerate(speeds)}
     cases |= {(name, v, style) for name, v in PANEL_CASES for style in STYLE_NAMES}
     return sorted(cases)
 
