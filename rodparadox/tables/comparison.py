@@ -69,7 +69,11 @@ def first_impacts_text(history, frames: Sequence[Frame]) -> str:
 
 
 def comparison_note(histories, frames: Sequence[Frame]) -> str:
-    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall."""
+    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall (for rods
+    driven by forces, that the same forces drive them: no particles strike them)."""
+    if not histories[0].scenario.particles:
+        return ("Both rods are driven by the same forces at their ends." if len(histories) == 2
+                else "Every rod is driven by the same forces at its ends.")
     starts = [particle_starts_text(h) for h in histories]
     if len(set(starts)) == 1:
         every = "Both rods are" if len(histories) == 2 else "Every rod is"

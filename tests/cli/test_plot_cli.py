@@ -120,7 +120,14 @@ def test_quiet_prints_nothing_and_still_writes(in_tmp, flag):
     (["--style", "slides", "--grid", "--other-axes"], "fig2_slides_axes_grid"),
     (["--light-cones", "--hyperbolae"], "fig2_cones_hyperbolae"),
 ])
-def test_every_non_default_option_is_in_the_file_name(options, name):
+def test_every_non_default_option_is_in_the_file_name(options, name, monkeypatch):
+    """The name is the planning's: the figure itself (drawn and checked everywhere else) is stood in for here,
+    so that these 27 cases cost what naming costs, not 27 drawings."""
+    from rodparadox import render
+    from sears_paradox_cli import plot
+
+    monkeypatch.setattr(plot, "_figure", lambda run, frames, style, options: (run, frames, style, options))
+    monkeypatch.setattr(render, "figure_bytes", lambda figure, fmt, style="default": repr(figure[1:3]).encode())
     assert run("fig2", *options).output == f"outputs/{name}.svg\n"
 
 
@@ -315,7 +322,8 @@ def test_make_figures_has_a_rule_for_every_config_builds_in_parallel_and_then_on
             f"SEARS_PARADOX={tool}"]
     # every config has its rule (a dry run: what make would run), and two of them are built for real, in parallel
     planned = subprocess.run(args + ["-n", "figures"], check=True, capture_output=True, text=True).stdout
-    names = sorted(p.stem for p in (ROOT / "configs").glob("*.yaml"))
+    names = sorted(p.stem for p in (ROOT / "configs").glob("*.yaml")
+                   if "\nforces:" not in "\n" + p.read_text())  # a rod driven by forces is not drawn yet
     assert sorted(re.findall(r"plot configs/(\w+)\.yaml --format svg -o " + re.escape(str(out)), planned)) == names
     args.append("CONFIGS=configs/fig1.yaml configs/single.yaml")
     first = subprocess.run(args + ["-j2", "figures"], check=True, capture_output=True, text=True).stdout

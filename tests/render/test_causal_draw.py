@@ -18,9 +18,9 @@ import pytest
 from click.testing import CliRunner
 from matplotlib.colors import to_rgb
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox import render
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.physics.kinematics import ChartCurve
 from rodparadox.physics.models import run_rod
@@ -217,7 +217,7 @@ def test_labels_of_both_rods_sit_on_no_front():
 @pytest.mark.slow
 @pytest.mark.parametrize("style", STYLE_NAMES)
 def test_every_preset_draws_with_both_rods_rigid_row_above_causal_on_the_same_scales(style):
-    for name in builtin_names():
+    for name in particle_presets():
         diagram = both(name, None, style, ("rest",))
         a, b = diagram.panels
         assert a.letter == "a" and b.letter == "b"
