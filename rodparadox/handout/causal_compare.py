@@ -308,4 +308,4 @@ def ledger_text(frame: Frame, first: bool = True) -> str:
         return f"The causal rod\u2019s ledger in {symbol}, read the same way, on the slice {time} = constant."
     return (f"The causal rod\u2019s ledger in {symbol}: at each contact and separation, on the slice {time} = "
             f"constant through it, the energy E and momentum p of each particle and of the rod\u2019s matter and "
-            f"stress, which add up to the total before the first contact.")
+            f"stress; the note under the table says what each part is and how they add up.")

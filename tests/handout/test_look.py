@@ -193,15 +193,18 @@ def test_the_ledgers_paragraph_leaves_to_its_note_what_the_note_says():
     not a summand.", and the note under the table says both again ("add up to the total, the total before the first
     impact ...; Rod, dynamical (not a summand): ..."). The paragraph says what the rows are; the note, once, how they
     add up and what the dynamical row is."""
+    from helpers import causal_history
     from rodparadox.handout.build import build
     from rodparadox.handout.document import Paragraph, Table
 
-    blocks = build([("fig1", history("fig1", 0.6))]).sections[1].blocks
-    for text, table in ((b.text, t) for b, t in zip(blocks, blocks[1:])
-                        if isinstance(b, Paragraph) and isinstance(t, Table) and t.name.startswith("ledger")):
+    blocks = build([("fig1", history("fig1", 0.6), None, causal_history("fig1", 0.6))]).sections[1].blocks
+    ledgers = [(b.text, t) for b, t in zip(blocks, blocks[1:])
+               if isinstance(b, Paragraph) and isinstance(t, Table) and t.name.startswith("ledger")]
+    assert len(ledgers) == 4  # the rigid rod's in S and S′, the causal rod's (its note says the same of its parts)
+    for text, table in ledgers:
         note = " ".join(table.notes)
-        assert "add up to the total" in note and "not a summand" in note
-        assert "add up to the total" not in text and "not a summand" not in text
+        assert "add up to the total" in note and "add up to the total" not in text
+        assert "not a summand" not in text and ("not a summand" in note or "causal" in table.name)
 
 
 def test_a_particle_strikes_it_is_not_struck():
