@@ -76,6 +76,10 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     frames = planned.lorentz_frames(job.frames[0]) if mode == "now" else job.frames[0]
     rod_view = None if frames == job.frames[0] else ("first" if job.frames[0][0] not in frames else "last")
     history = run_scenario(job.scenario, job.name, frames)
+    if rod_view is not None:
+        from rodparadox.physics.rod_view import refuse_thin_view
+
+        refuse_thin_view(history)
     planned.prepare([job], described, output)
     if job.fmt == "png":
         check_stills(job.path, job.stem, count)  # a clash with any still is said before the first is drawn

@@ -111,6 +111,10 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
         # compared
         if "rod" in sections and (frames != shown_frames or parts is not None):
             views[stem] = (items[-1].history,) + ((causal,) if causal is not None else ())
+    from rodparadox.physics.rod_view import refuse_thin_view
+
+    for history in (h for histories in views.values() for h in histories):
+        refuse_thin_view(history)
     planned.prepare([job], described, output)
 
     before_matplotlib()

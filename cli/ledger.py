@@ -21,7 +21,7 @@ from rodparadox.errors import OptionError
 from rodparadox.numbers import decimal
 
 from . import words
-from .edge import before_matplotlib, emit, report, reports_errors
+from .edge import BadInput, before_matplotlib, emit, report, reports_errors
 from .options import (format_option, frame_option, load_scenario, output_option, quiet_option, rod_asked, run_rods,
                       scenario_options, style_option)
 
@@ -143,6 +143,9 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
                 raise words.output_disagrees(output, fmt)
             check_target(output)
         s = load_scenario(scenario, v, L)
+        if s.forces is not None and fmt not in ("text", "json", "csv"):
+            raise BadInput(f"{s.name} drives the rod by forces at its ends, whose ledger is written as text, json or "
+                           f"csv only for now; give one of these.")
         frames = planned.frames_of(frame, s.v)
 
         histories = run_rods(s, scenario, frames)
@@ -165,6 +168,10 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if rod == "both" and any(len(job.frames[0]) > 4 for job in jobs):
         raise OptionError("frame", frame, template="{what}: the ledger figure of both rods takes at most 4 frames "
                                                    "(a row of each rod per frame); give fewer.")
+    driven = next((job.scenario for job in jobs if job.scenario.forces is not None), None)
+    if driven is not None:
+        raise BadInput(f"{driven.name} drives the rod by forces at its ends, whose ledger figure is not drawn yet; "
+                       f"give --format text, json or csv.")
     histories = [run_rods(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
@@ -186,6 +193,11 @@ def _writers(history) -> dict:
     from rodparadox.tables import build as tables
     from rodparadox.tables import causal_ledger
 
+    if history.driving is not None:
+        from rodparadox.tables import forces_ledger
+
+        return {"text": forces_ledger.to_text, "json": forces_ledger.to_json, "csv": forces_ledger.to_csv,
+                "document": forces_ledger.document, "rows": forces_ledger.csv_rows}
     if history.fronts is not None:
         return {"text": causal_ledger.to_text, "json": causal_ledger.to_json, "csv": causal_ledger.to_csv,
                 "markdown": causal_ledger.to_markdown, "latex": causal_ledger.to_latex,

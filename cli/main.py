@@ -16,7 +16,7 @@ import click
 from rodparadox import __version__
 
 from . import edge, words
-from .edge import emit, report, reports_errors
+from .edge import BadInput, emit, report, reports_errors
 from .options import (checked_frame_velocity, checked_output, format_option, frame_velocity_option, load_scenario,
                       output_option, quiet_option, ROD_WORDS, run_rods, scenario_options)
 from .animate import animate  # imports matplotlib only when it runs
@@ -109,6 +109,9 @@ def events(scenario: str, v: float | None, L: float | None, frame_velocity: floa
     from rodparadox.physics.frames import paper_frames
 
     s = load_scenario(scenario, v, L)
+    if s.forces is not None and fmt != "text":
+        raise BadInput(f"{s.name} drives the rod by forces at its ends, whose events are printed as text only for "
+                       f"now; leave out --format {fmt}.")
     frames = paper_frames(s.v, checked_frame_velocity(frame_velocity))
     histories = run_rods(s, scenario, frames)
     from rodparadox.tables.comparison import comparison_note

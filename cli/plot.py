@@ -68,14 +68,21 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
     named = [short for key, short in _EXTRAS if extras[key]] + ([f"lines{rod_lines}"] if rod_lines else [])
     named = ([rod] if rod in ("causal", "both") else []) + named  # fig1_causal.svg beside fig1.svg
     jobs = planned.plan(scenarios, described, v=v, L=L, frame=frame, fmt=fmt, output=output, style=style, extras=named)
-    from rodparadox.physics.rod_view import refuse_frame_extras
+    from rodparadox.physics.rod_view import refuse_frame_extras, refuse_thin_view
     for job in jobs:  # every panel the rod's own view: the extras have nothing to draw on
         refuse_frame_extras(job.frames[0], **extras, rod_lines=rod_lines)
         lorentz = lorentz_frames(job.frames[0])
         planned.check_panels(len(lorentz), len(lorentz) < len(job.frames[0]), rod == "both")
     histories = [run_rods(job.scenario, job.name, lorentz_frames(job.frames[0])) for job in jobs]
+    for run, job in zip(histories, jobs):
+        if len(lorentz_frames(job.frames[0])) < len(job.frames[0]):  # the rod's own view is among the panels
+            for h in run:
+                refuse_thin_view(h)
     if proper_time and any(h.turning is None for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
+    if rod_now and all(h.turning is None for run in histories for h in run):
+        raise BadInput("--rod-now draws the rigid rod's own lines of simultaneity, and the causal rod has none (its "
+                       "parts share no rest frame): leave it out, or add the rigid rod with --rod both.")
     planned.prepare(jobs, described, output)
 
     before_matplotlib()

@@ -28,7 +28,12 @@ WIDTH_PIXELS = 800
 
 
 def scenarios() -> list[str]:
-    return sorted(p.stem for p in CONFIGS.glob("*.yaml"))
+    """Every scenario struck by particles (one driven by forces, `forces:`, is not drawn yet)."""
+    return sorted(p.stem for p in CONFIGS.glob("*.yaml") if not drives_by_forces(p))
+
+
+def drives_by_forces(path: Path) -> bool:
+    return any(line.startswith("forces:") for line in path.read_text(encoding="utf-8").splitlines())
 
 
 def picture_name(name: str, style: str) -> str:

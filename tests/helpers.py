@@ -4,9 +4,16 @@ per process, several command lines run in one interpreter, and a renderer that m
 
 import functools
 
-from rodparadox.io.scenario import load
+from rodparadox.io.scenario import builtin_names, load
 from rodparadox.physics.models import run_rod
 from rodparadox.physics.rigid import History
+
+
+@functools.lru_cache(maxsize=None)
+def particle_presets() -> tuple[str, ...]:
+    """The built-in scenarios whose rod is struck by particles (the presets with forces, `sears`, `sears_moving`,
+    `push`, are tested by tests/physics/test_forces*.py and the commands that show them)."""
+    return tuple(n for n in builtin_names() if load(n).forces is None)
 
 
 @functools.lru_cache(maxsize=None)

@@ -13,6 +13,7 @@ import json
 import textwrap
 from typing import Any
 
+from rodparadox.io import export_forces
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import (check_below_c, Frame, frame_heading, FrameView, sampling_tolerance, time_order,
                                       view)
@@ -85,6 +86,9 @@ def document(history: RodHistory, frames: tuple[Frame, ...]) -> dict[str, Any]:
 
 
 def to_json(history: RodHistory, frames: tuple[Frame, ...]) -> str:
+    if history.driving is not None:  # a rod driven by forces (`export_forces`)
+        return json.dumps(_without_negative_zeros(export_forces.document(history, frames, FORMAT)), indent=1,
+                          allow_nan=False) + "\n"
     return json.dumps(_without_negative_zeros(document(history, frames)), indent=1, allow_nan=False) + "\n"
 
 
@@ -113,6 +117,9 @@ def to_csv(history: RodHistory, frames: tuple[Frame, ...]) -> str:
 
 def _write_rows(writer, history: RodHistory, frames: tuple[Frame, ...], *first: str) -> None:
     """`to_csv`'s rows, each after the cells `first` (the rod's name, where several rods share a table)."""
+    if history.driving is not None:  # a rod driven by forces (`export_forces`)
+        export_forces.write_rows(writer, history, frames, *first)
+        return
     tolerance = sampling_tolerance(history)
     for f in frames:
         fv = view(history, f)
@@ -125,9 +132,12 @@ def _write_rows(writer, history: RodHistory, frames: tuple[Frame, ...], *first: 
 
 
 def rods_to_json(histories, frames: tuple[Frame, ...]) -> str:
-    """Several rods struck by the same particles: one object, each rod's document (`document`) under "rods"."""
-    return json.dumps({"format": FORMAT, "rods": {h.model: _without_negative_zeros(document(h, frames))
-                                                  for h in histories}}, indent=1, allow_nan=False) + "\n"
+    """Several rods struck by the same particles (or driven by the same forces): one object, each rod's document
+    (`document`, `export_forces.document`) under "rods"."""
+    return json.dumps({"format": FORMAT, "rods": {
+        h.model: _without_negative_zeros(document(h, frames) if h.driving is None
+                                         else export_forces.document(h, frames, FORMAT))
+        for h in histories}}, indent=1, allow_nan=False) + "\n"
 
 
 def rods_to_csv(histories, frames: tuple[Frame, ...]) -> str:
@@ -153,8 +163,11 @@ def to_table(history: RodHistory, frames: tuple[Frame, ...]) -> str:
     """A readable table of the impacts in each frame, for `sears-paradox events`.
 
     x and t are in the unit L is given in (with L = 2 the right end is at x = 1), with the digits their
-    magnitude needs; columns are as wide as their widest number.
+    magnitude needs; columns are as wide as their widest number. A rod driven by forces: its force events
+    (`export_forces.table`).
     """
+    if history.driving is not None:
+        return export_forces.table(history, frames)
     s = history.scenario
     views = [view(history, f) for f in frames]
     for fv in views:

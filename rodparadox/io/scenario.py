@@ -15,11 +15,13 @@ from typing import Any
 import yaml
 
 from rodparadox.errors import ScenarioError
+from rodparadox.physics.forces import ENDS, Forces, profile_from
 from rodparadox.physics.model import described, Particle, PARTICLE_NAMES, Scenario, Timing
 
 #: the largest scenario file read: a scenario is a few hundred bytes, and PyYAML reads about 100 kB a second
 MAX_FILE_BYTES = 100_000
-#: the deepest nesting of lists and mappings read; a scenario needs 4 (particles.A.timed_with.frame)
+#: the deepest nesting of lists and mappings read; a scenario needs 4 (particles.A.timed_with.frame,
+#: forces.left.points[i][j])
 MAX_DEPTH = 16
 #: the most YAML nodes (keys and values) a document may stand for once every alias and merge key (<<) is
 #: expanded: the whole schema is about 40, so this leaves room for anchors and stays milliseconds of work
@@ -31,6 +33,17 @@ __all__ = ["Particle", "Scenario", "Timing", "builtin_names", "configs_folder", 
            "stem_of"]
 
 # --- YAML --------------------------------------------------------------------------------
+
+class _ListOf:
+    """A list in the schema (the points of a force profile): each item read by `item`'s schema."""
+
+    def __init__(self, item: Any):
+        self.item = item
+
+
+#: a force profile (physics/forces.py): its points are a list of [t, F] pairs
+_PROFILE = {"shape": None, "peak": None, "start": None, "duration": None, "points": _ListOf(_ListOf(None)),
+            "frame": None}
 
 _SCHEMA = {
     "name": None,
@@ -44,6 +57,7 @@ _SCHEMA = {
         "A": {"mass": None, "speed": None, "gap": None, "timed_with": {"particle": None, "frame": None, "delay": None}},
         "B": {"mass": None, "speed": None, "gap": None, "timed_with": {"particle": None, "frame": None, "delay": None}},
     },
+    "forces": {"left": _PROFILE, "right": _PROFILE},
 }
 
 
@@ -120,6 +134,8 @@ class _Document:
                 self.lines[where] = line
                 out[key] = self._value(loader, value_node, where, schema[key])
             return out
+        if isinstance(schema, _ListOf) and isinstance(node, yaml.SequenceNode):
+            return [self._value(loader, item, f"{path}[{i}]", schema.item) for i, item in enumerate(node.value)]
         if isinstance(schema, dict):
             got = _shape(node) if not isinstance(node, yaml.ScalarNode) else repr(loader.construct_object(node))
             raise ScenarioError(f"{path or 'the scenario'} must be a mapping of keys ({', '.join(schema)}), "
@@ -231,10 +247,16 @@ def parse(text: str, source: str, default_name: str) -> Scenario:
 
 
 def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
-    for required in ("v", "particles"):
-        if required not in data:
-            raise ScenarioError(f"the scenario needs the key {required}.", required)
-    particles_data = data["particles"]
+    if "v" not in data:
+        raise ScenarioError("the scenario needs the key v.", "v")
+    if "particles" in data and "forces" in data:
+        raise ScenarioError("the scenario gives both particles and forces; give one of them (a rod struck by "
+                            "particles, or a rod driven by forces at its ends).", "forces")
+    if "particles" not in data and "forces" not in data:
+        raise ScenarioError("the scenario needs the key particles (a rod struck by particles) or forces (a rod "
+                            "driven by forces at its ends).", "particles")
+    forces = _forces(data["forces"]) if "forces" in data else None
+    particles_data = data.get("particles", {})
     particles = []
     for name in PARTICLE_NAMES:
         if name not in particles_data:
@@ -255,7 +277,13 @@ def _scenario(data: dict[str, Any], default_name: str) -> Scenario:
         _check_sound_speed(data["sound_speed"])
     return Scenario(name=data.get("name", default_name), description=data.get("description", ""),
                     v=data["v"], L=data.get("L", 1.0), particles=tuple(particles), title=data.get("title", ""),
-                    rod=data.get("rod", "rigid"), sound_speed=data.get("sound_speed"))
+                    rod=data.get("rod", "rigid"), sound_speed=data.get("sound_speed"), forces=forces)
+
+
+def _forces(data: dict[str, Any]) -> Forces:
+    """The forces at the ends: a profile for left, right or both (physics/forces.py checks each)."""
+    profiles = {end: profile_from(data[end], f"forces.{end}") for end in ENDS if end in data}
+    return Forces(**profiles)
 
 
 def check_sound_speed_rod(scenario: Scenario) -> None:

@@ -229,10 +229,14 @@ def time_window(history: RodHistory, frame: Frame) -> tuple[float, float]:
         if worldline is not None:
             # a causal rod's ends ring for ever: their endless last segment has no end to show
             changes += [t for s in worldline.seen_from(eta).segments for t in (s.start.t, s.end.t) if math.isfinite(t)]
+    if history.driving is not None:  # each force's start, peak and end (a causal rod's ends ring for ever)
+        changes += [e.event.seen_from(eta).t for e in history.driving.force_events()]
     first, last = min(changes), max(changes)
     at_start = [e.seen_from(eta).t for _, e in history.starts]
     at_start += [Event(sign * L / 2, 0.0).seen_from(eta).t for sign in (-1, 1)]
     lead = min(max(first - min(at_start), 0.5 * L), 2.0 * L)
+    if history.driving is not None:  # forces: at least L before the first force and after the last has ended
+        lead = max(lead, L)
     return first - lead, last + lead
 
 

@@ -20,10 +20,18 @@ capability, never for the model's name:
   rule 3), its own "now" (the fans and the lines between turns), and when each turn starts and ends in a frame;
 * `fronts` (`Fronts`): the causal rod's signals at c: its solution in characteristic coordinates (the chart
   map, the fronts, the compression), the matter and stress parts of its energy-momentum, its ringing after the
-  last separation.
+  last separation;
+* `driving` (`Driving`): a rod driven by forces at its ends (`scenario.forces`, docs "Forces at the ends")
+  rather than struck by particles: the profiles, the (E, p) each agent delivered up to a slice's end events (the
+  rod holds initial + delivered on every slice), the force at an end on a slice, the stress along a slice, each
+  force's start, peak and end events, and the rod's own lines of simultaneity. A driven run has no impacts and
+  no particle starts; its `energy_momentum` gives the rod's kinetic part and, as `hidden`, its stress part
+  (their sum is `Driving.total`), and `initial_total` is the rod's before any force (not conserved: see
+  `Driving.total`).
 
 `model` names the model for people (headings, file names: "rigid", "causal"), not for branching.
-The implementations are `physics.rigid.History` and `physics.causal.CausalHistory`; `physics.models` runs them.
+The implementations are `physics.rigid.History`, `physics.rigid.DrivenHistory` (forces) and
+`physics.causal.CausalHistory`; `physics.models` runs them.
 """
 
 from __future__ import annotations
@@ -116,6 +124,45 @@ class Fronts(Protocol):
 
 
 @runtime_checkable
+class Driving(Protocol):
+    """The part of a run only a rod driven by forces has (docs, "Forces at the ends"). Frames by rapidity relative
+    to S, times in the frame's coordinates (units of L, as every coordinate), (E, p) in M c^2 and M c, forces in
+    M c^2/L."""
+
+    def profiles(self) -> tuple:
+        """(end, `forces.ForceProfile`) for each end with a force, left first."""
+
+    def frame_rapidity(self, end: str) -> float:
+        """The rapidity relative to S of the frame the end's profile is timed in."""
+
+    def delivered(self, end: str, frame_rapidity: float, t: float) -> "EnergyMomentum":
+        """The (E, p), in the frame, the agent at `end` ("left", "right") delivered up to that end's event on the
+        slice t of the frame (zero for an end without force)."""
+
+    def total(self, frame_rapidity: float, t: float) -> "EnergyMomentum":
+        """The rod's (E, p) before any force plus what both agents delivered up to the slice: what it holds."""
+
+    def force_at(self, end: str, frame_rapidity: float, t: float) -> float:
+        """The force at the end's event on the slice t of the frame."""
+
+    def stress(self, frame_rapidity: float, t: float, sigmas) -> object:
+        """The stress p (> 0 compression) where each material point sigma crosses the slice (an array)."""
+
+    def force_events(self) -> tuple:
+        """Each force's start, peak and end (`ForceEvent`: end, moment, event in S, the end's rapidity in S, the
+        force, the instant in the profile's frame), ends in order, moments in order."""
+
+    def now_lines(self, count: int = 12) -> list[tuple["Event", "Event"]]:
+        """The rod's own lines of simultaneity as (left end, right end) event pairs in S."""
+
+    def centre_of_energy(self, frame_rapidity: float, t: float) -> tuple[float, float]:
+        """The rod's centre of energy x_E on the slice t of the frame, and its energy there."""
+
+    def centre_velocity(self, frame_rapidity: float, t: float) -> float:
+        """d x_E / dt: beside p / E, von Laue's point (equal for a closed system, not with forces)."""
+
+
+@runtime_checkable
 class RodHistory(Protocol):
     """A run of a rod model, as every command reads it. Coordinates in S, units of L, c = 1; a frame is given
     by its rapidity relative to S (`Frame.rapidity`)."""
@@ -133,6 +180,10 @@ class RodHistory(Protocol):
     @property
     def fronts(self) -> Fronts | None:
         """The causal rod's fronts, chart and stress, or None for a model without them."""
+
+    @property
+    def driving(self) -> Driving | None:
+        """The forces at the ends and what they delivered, or None for a rod struck by particles."""
 
     def own_chart(self):
         """The rod's own chart (T, X), in which the rod is the fixed strip 0 <= X <= L (`physics.rod_view`)."""

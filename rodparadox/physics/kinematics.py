@@ -299,6 +299,8 @@ def proper_time_events(worldline: WorldLine, step: float, t_lo: float, t_hi: flo
 
 
 def _proper_duration(piece: Segment) -> float:
+    if not isinstance(piece, (Line, HyperbolicArc)):  # a piece that knows its own proper time (a driven rod's)
+        return piece.proper_duration()
     if isinstance(piece, Line):
         return (piece.end.t - piece.start.t) / math.cosh(piece.rapidity_at_start)
     return abs(piece.phi_end - piece.phi_start) * piece.radius
@@ -306,6 +308,8 @@ def _proper_duration(piece: Segment) -> float:
 
 def _proper_duration_to(piece: Segment, t: float) -> float:
     """Proper time from the piece's start to its event at time t."""
+    if not isinstance(piece, (Line, HyperbolicArc)):
+        return piece.proper_duration_to(t)
     if isinstance(piece, Line):
         return (t - piece.start.t) / math.cosh(piece.rapidity_at_start)
     return abs(piece.phi_at_time(t) - piece.phi_start) * piece.radius
@@ -313,6 +317,8 @@ def _proper_duration_to(piece: Segment, t: float) -> float:
 
 def _at_proper_time(piece: Segment, tau: float) -> Event:
     """The event a proper time tau after the piece's start."""
+    if not isinstance(piece, (Line, HyperbolicArc)):
+        return piece.at_proper_time(tau)
     if isinstance(piece, Line):
         r = piece.rapidity_at_start
         return _along(piece.start, r, tau * math.cosh(r))

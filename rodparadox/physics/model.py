@@ -58,6 +58,10 @@ def _check_number(value: Any, key: str, *, low: float | None = None, high: float
     return value
 
 
+#: `_check_number` for the other scenario modules (`forces`): a float, or one sentence naming the key
+check_number = _check_number
+
+
 @dataclass(frozen=True)
 class Timing:
     """Place a particle so that its first impact comes `delay` (units of L) after
@@ -122,10 +126,11 @@ class Particle:
 
 @dataclass(frozen=True)
 class Scenario:
-    """A rod of proper length L at rest in S, centre at x = 0, and one or two particles.
+    """A rod of proper length L at rest in S, centre at x = 0, and one or two particles, or forces at its ends.
 
     `v` is the speed of the paper's frame S' (the rod moves at +v there) and
-    the particles' speed wherever a particle does not give its own.
+    the particles' speed wherever a particle does not give its own. A scenario has `particles` or `forces`
+    (`physics.forces.Forces`), never both.
     """
 
     name: str
@@ -140,6 +145,9 @@ class Scenario:
     #: the file's sound_speed (1, the causal rod's), or None: the rod being run must then be the causal one
     #: (`--rod causal` may choose it after the file is read, so it is checked where the rod is chosen)
     sound_speed: float | None = field(default=None, compare=False, repr=False)
+    #: the forces at the ends (a `physics.forces.Forces`, which imports this module's checks), or None (a rod struck
+    #: by particles): a scenario has one or the other
+    forces: Any = None
 
     def __post_init__(self) -> None:
         _check_text(self.name, "name", newlines=False)
@@ -156,7 +164,10 @@ class Scenario:
         if self.rod not in ROD_MODELS:
             raise ScenarioError(f"rod must be rigid or causal, got {described(self.rod)}.", "rod")
         names = [p.name for p in self.particles]
-        if not names:
+        if names and self.forces is not None:
+            raise ScenarioError("the scenario gives both particles and forces; give one of them (a rod struck by "
+                                "particles, or a rod driven by forces at its ends).", "forces")
+        if not names and self.forces is None:
             raise ScenarioError("particles must name at least one of A and B.", "particles")
         if len(set(names)) != len(names):
             raise ScenarioError("particles names a particle twice.", "particles")
@@ -170,6 +181,11 @@ class Scenario:
                 if other.gap is None:
                     raise ScenarioError(f"{key}: {p.name} and {other.name} cannot both be timed against each "
                                         f"other; give {other.name} a gap.", key)
+
+    @property
+    def drive(self) -> str:
+        """What moves the rod: "particles" or "forces"."""
+        return "particles" if self.forces is None else "forces"
 
     def particle(self, name: str) -> Particle | None:
         return next((p for p in self.particles if p.name == name), None)

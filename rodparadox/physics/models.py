@@ -10,6 +10,7 @@ the very same particles: their first impacts fall where that rod's response puts
 
 from __future__ import annotations
 
+from rodparadox.errors import ScenarioError
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.kinematics import Event
 from rodparadox.physics.model import ROD_MODELS, Scenario
@@ -46,16 +47,43 @@ def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None, budget: 
     """The history of the scenario in its own rod model (`scenario.rod`), the particles starting at `starts`
     (default: placed by that model's rules). `budget`: a bound on the causal rod's work (windows of chart time L,
     stretches and steps of its contacts), refused past it; None: the solver's own bounds. The rigid rod's run is a
-    short list of impacts, unbounded by it."""
+    short list of impacts, unbounded by it.
+
+    A scenario with forces (`scenario.forces`) runs through the model package's `run_forces`, after the pull
+    limit of that model (`Forces.check_pull`); a model without it refuses the scenario in one sentence."""
+    if scenario.forces is not None:
+        return run_forces(scenario, budget)
     if budget is not None and scenario.rod == "causal":
         return _module(scenario.rod).run(scenario, starts, budget)
     return _module(scenario.rod).run(scenario, starts)
+
+
+def check_forces(scenario: Scenario) -> None:
+    """Refuse, in one sentence, forces the scenario's own rod cannot carry (the pull limits, `Forces.check_pull`)
+    or cannot yet be driven by: where the rod is chosen, before any run."""
+    if scenario.forces is None:
+        return
+    if not hasattr(_module(scenario.rod), "run_forces"):
+        raise ScenarioError(f"the {scenario.rod} rod cannot be driven by forces yet; choose the rigid rod.",
+                            "forces")
+    scenario.forces.check_pull(scenario.rod)
+
+
+def run_forces(scenario: Scenario, budget: int | None = None) -> RodHistory:
+    """The scenario's rod driven by its forces (`check_forces` first); `budget` bounds the causal rod's work, as
+    for particles."""
+    check_forces(scenario)
+    if budget is not None and scenario.rod == "causal":
+        return _module(scenario.rod).run_forces(scenario, budget)
+    return _module(scenario.rod).run_forces(scenario)
 
 
 def run_rods(scenario: Scenario, rods: str | None = None) -> tuple[RodHistory, ...]:
     """The scenario run in each model `rods` names ("rigid", "causal", "both"; None: the scenario's own), every
     particle starting where the scenario's own rod places it, so that the rods are compared like for like."""
     models = models_of(rods, scenario)
+    if scenario.forces is not None:  # no particles to place: each rod driven by the same forces
+        return tuple(run_forces(scenario.with_overrides(rod=model)) for model in models)
     if len(models) == 1:  # one model: the timing rule resolved in that model
         return (run_rod(scenario.with_overrides(rod=models[0])),)
     starts = particle_starts(scenario)

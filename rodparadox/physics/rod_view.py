@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rodparadox.errors import OptionError
+from rodparadox.errors import OptionError, ScenarioError
 from rodparadox.physics.kinematics import Event
 #: the rod's own view, as a frame word (`--frame rod`); not a Lorentz frame, so not a `frames.Frame`
 ROD_WORD = "rod"
@@ -54,6 +54,31 @@ def _gauss_legendre() -> tuple[np.ndarray, np.ndarray]:
 def chart_of(history):
     """The rod's own chart for a history of any model (`RodHistory.own_chart`)."""
     return history.own_chart()
+
+
+#: the longest span of the rod's own time its view shows, in units of L (the presets, at any speed: 2 to 36; a
+#: particle 1e6 L away: 1.3e6, a sliver with every label on the next, issue 27)
+MAX_VIEW_SPAN = 1000.0
+
+
+def thin_view(span: float) -> ScenarioError:
+    """The refusal of a rod's own view `span` L of chart time tall: too thin to read."""
+    from rodparadox.numbers import shown
+
+    return ScenarioError(f"the rod's own view would be {shown(span, 2)} L of the rod's time tall and 1 L wide, too "
+                         f"thin to read (its events lie that far apart: a particle far from the rod, or a very small "
+                         f"v); leave the rod's own view out, or bring the impacts within {MAX_VIEW_SPAN:g} L of each "
+                         f"other.", "particles")
+
+
+def refuse_thin_view(history) -> None:
+    """Refuse (`thin_view`) the rod's own view of a history whose impacts alone span more than MAX_VIEW_SPAN of its
+    chart time: said before anything is drawn or written (the view's box, `render.rod_panel.rod_box`, checks the
+    same with everything it shows)."""
+    L, chart = history.scenario.L, chart_of(history)
+    times = [chart.to_chart(i.event)[0] / L for i in history.impacts]
+    if times and max(times) - min(times) > MAX_VIEW_SPAN:
+        raise thin_view(max(times) - min(times))
 
 
 #: a clock whose first tick shown comes this many L after chart time 0, with the rod at rest until then, starts

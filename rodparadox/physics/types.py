@@ -90,3 +90,22 @@ class Slice:
     hidden: EnergyMomentum
     #: the causal rod's (E, p) split into its matter part and its stress part (docs/model.md, "The causal rod")
     rod_parts: tuple[tuple[str, EnergyMomentum], ...] = ()
+
+
+#: what a force event is (a rod driven by forces, `history.Driving.force_events`): its profile's first instant with
+#: force, its largest, its last
+FORCE_MOMENTS = ("start", "peak", "end")
+
+
+@dataclass(frozen=True)
+class ForceEvent:
+    """A force's start, peak or end at one end: the event in S, the end's rapidity in S there, the force there
+    (units of M c^2/L; at the end, the force just before it stops) and the instant in the profile's frame (units of
+    L)."""
+
+    end: str
+    moment: str
+    event: Event
+    rapidity: float
+    force: float
+    profile_time: float

@@ -245,13 +245,19 @@ class _Builder:
         self.histories = history
         self.legend = legend_entries(style, history, options, self.clock_step)
         self.rod_lines = {p.letter: options.rod_lines for p in self.panels}  # material lines drawn in each panel
+        # a comparison says first what every rod is struck by, and where each rod's first impacts fall
+        self.note = ""
+        if len(histories) > 1:  # imported only here: a figure of one rod loads no comparison
+            from rodparadox.tables.comparison import comparison_note
+
+            self.note = comparison_note(histories, frames)
 
     def lay_out(self, page: Page) -> Layout:
         """The layout; with material lines, laid out again while the legend's count of them changes: the count
         follows each panel's width, and only falls, so this ends."""
         while True:
             layout = lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled,
-                             self.per_row)
+                             self.per_row, self.note)
             if not self.options.rod_lines:
                 return layout
             fits = {p.letter: min(self.rod_lines[p.letter], material_lines_that_fit(
@@ -289,8 +295,11 @@ class _Builder:
         target.text(0.5, 1 - (top_spare + 7) / height, layout.suptitle, ha="center", va="top", fontsize=fs["suptitle"],
                     gid="title")
         handles, labels = self.legend
+        if layout.note_lines:  # below the legend, as wide as the figure, from its left margin
+            target.text((ox + m.right) / width, (oy + layout.note_height - 4) / height, "\n".join(layout.note_lines),
+                        ha="left", va="top", fontsize=fs["legend"], linespacing=1.2, gid="comparison-note")
         legend = target.legend(handles, labels, loc="upper center",
-                               bbox_to_anchor=(0.5, (oy + layout.legend_height - 2) / height),
+                               bbox_to_anchor=(0.5, (oy + layout.note_height + layout.legend_height - 2) / height),
                                ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
                                handler_map={tuple: HandlerTuple(ndivide=1), **_causal_handlers(self.histories)})

@@ -510,8 +510,8 @@ def legend_entries(style: Style, history: RodHistory, options: Options, clock_st
     # --rod both: each layer's entry for the first rod giving one, a rod whose contacts last first (they're contacts)
     histories = sorted(history, key=lambda h: not contacts_last(h)) if isinstance(history, tuple) else (history,)
     enabled = [layer for layer in drawing_order(history, legend=True) if layer.enabled(options)]
-    entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories)
-                     if e is not None), None) for layer in enabled]
+    entries = [next((e for e in (layer.legend_entry(style, h, options, clock_step) for h in histories
+                                 if layer.applies(h)) if e is not None), None) for layer in enabled]  # drawn only
     if rod_lines and options.rod_lines:
         thinned = material_lines_text(options.rod_lines, rod_lines)
         entries = [(entry[0], thinned) if layer is _ROD_LINES and entry is not None else entry

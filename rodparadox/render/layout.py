@@ -13,7 +13,7 @@ from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, FrameView, sampling_tolerance, view
 from rodparadox.numbers import nice_number
 from rodparadox.render.styles import Style
-from rodparadox.render.text import approximate_size, panel_title, suptitle, tick_text, ticks_at
+from rodparadox.render.text import approximate_size, note_lines, panel_title, suptitle, tick_text, ticks_at
 
 #: smallest and largest width/height of a panel's data box; a box outside is padded with empty space
 ASPECT_RANGE = (0.62, 1.6)
@@ -144,6 +144,14 @@ class Metrics:
     def legend_height(self, rows: int) -> float:
         return rows * self.fs["legend"] * 1.75 + 6
 
+    def note_lines(self, note: str, width: float) -> list[str]:
+        """A note below the legend (what a comparison of rods states first) in lines no wider than `width` less
+        the margins, at the legend's type size."""
+        return note_lines(note, width - 2 * self.right, self.fs["legend"])
+
+    def note_height(self, lines: list[str]) -> float:
+        return len(lines) * 1.2 * self.fs["legend"] + 10 if lines else 0.0
+
     def one_line(self, title: str) -> float:
         """The width a panel needs for its title on one line."""
         if title not in self._one_line:
@@ -247,10 +255,12 @@ class Layout(NamedTuple):
     legend_height: float
     legend_columns: int
     metrics: Metrics
+    note_lines: list[str]  # the note below the legend, wrapped (a comparison of rods: what every rod is struck by)
+    note_height: float
 
 
 def lay_out(history: RodHistory, panels: list[Panel], style: Style, fs: dict[str, float], legend_labels: list[str],
-            page: Page, titled: bool = True, per_row: int | None = None) -> Layout:
+            page: Page, titled: bool = True, per_row: int | None = None, note: str = "") -> Layout:
     """Lay the figure out in points: suptitle; rows of panels, each with its title, axes and tick labels; legend.
 
     The panels share one height (equal scales within a panel; one size for
@@ -260,13 +270,13 @@ def lay_out(history: RodHistory, panels: list[Panel], style: Style, fs: dict[str
     arrangement allows: two panels side by side, eight in three rows. Tick
     steps are then widened until no two tick labels touch, and the layout
     redone with them. Every panel's width, box and title lines are set. `per_row`, if given, fixes the panels
-    to a row (two rod models: one row each).
+    to a row (two rod models: one row each); `note`, a paragraph below the legend.
     """
     m = Metrics(style, fs)
     steps = [(tick_step(p.data_box),) * 2 for p in panels]  # (x step, t step) of each panel
     for _ in range(6):  # steps only grow, and each growth is a nice step: this settles in two or three rounds
         rows, height, width, (legend_rows, legend_cols) = _arrange(history, panels, m, steps, fs, legend_labels, page,
-                                                                    titled, per_row)
+                                                                    titled, per_row, note)
         readable = [readable_steps(p, step, m) for p, step in zip(panels, steps)]
         if readable == steps:
             break
@@ -276,14 +286,16 @@ def lay_out(history: RodHistory, panels: list[Panel], style: Style, fs: dict[str
     title = suptitle(history.scenario, width, fs["suptitle"]) if titled else ""
     top = m.top(title) if titled else 0.0
     blocks = [m.title_band(row) + height + m.bottom_axis for row in rows]
-    fig_h = top + sum(blocks) + m.row_gap * (len(rows) - 1) + legend_h
+    note_lines = m.note_lines(note, width)
+    note_h = m.note_height(note_lines)
+    fig_h = top + sum(blocks) + m.row_gap * (len(rows) - 1) + legend_h + note_h
     return Layout(width, fig_h, rows, {p.letter: step for p, step in zip(panels, steps)}, title, top, blocks,
-                  legend_h, legend_cols, m)
+                  legend_h, legend_cols, m, note_lines, note_h)
 
 
 def _arrange(history: RodHistory, panels: list[Panel], m: Metrics, steps: list, fs: dict[str, float],
              labels: list[str], page: Page, titled: bool = True,
-             per_row: int | None = None) -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
+             per_row: int | None = None, note: str = "") -> tuple[list[list[Panel]], float, float, tuple[int, int]]:
     """(rows of panels, the panels' height, the figure's width, the legend's rows and columns).
 
     Every panel's width, box and title lines are set.
@@ -322,7 +334,8 @@ def _arrange(history: RodHistory, panels: list[Panel], m: Metrics, steps: list, 
         width = figure_width(rows, wide, h)
         bands = sum(max(len(m.wrap(p.title, w)) for p, w in zip(row, widths(row, h))) for row in rows)
         if width not in tops:
-            tops[width] = m.top(suptitle(history.scenario, width, fs["suptitle"])) if titled else 0.0
+            tops[width] = ((m.top(suptitle(history.scenario, width, fs["suptitle"])) if titled else 0.0)
+                           + m.note_height(m.note_lines(note, width)))
         top = tops[width]
         return (top + bands * m.title_line
                 + len(rows) * (m.title_pad + h + m.bottom_axis)

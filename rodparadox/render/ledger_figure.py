@@ -35,6 +35,8 @@ from rodparadox.tables.causal_ledger import event_name, instants
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render import axis_label, coordinate_names, frame_symbol, style_context
 from rodparadox.render.styles import Style
+from rodparadox.render.text import note_lines, suptitle
+from rodparadox.tables.comparison import comparison_note
 from rodparadox.tolerances import SAME_INSTANT
 
 
@@ -134,7 +136,7 @@ def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
     height = suptitle_h + rows * row_h + legend_h
     figure = Figure(figsize=(width / 72, height / 72), dpi=72)
     s = history.scenario
-    figure.text(0.5, 1 - 4 / height, f"{s.name}: energy and momentum, v = {shown(s.v)}", ha="center", va="top",
+    figure.text(0.5, 1 - 4 / height, suptitle(s, width, fs * 1.25, ": energy and momentum"), ha="center", va="top",
                 fontsize=fs * 1.25, gid="title")
     L = s.L
     names = sorted(p.name for p in s.particles)
@@ -303,11 +305,16 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
     column_w = (width - 10 - per_row * gutter - (per_row - 1) * 14) / per_row
     panel_h = st.panel_height * 72 * 0.6
     row_h = title_h + 2 * panel_h + pair_gap + x_axis_h
-    height = suptitle_h + len(histories) * rows * row_h + legend_h
+    # a comparison says first what both rods are struck by, and where their first impacts fall
+    note = note_lines(comparison_note(histories, frames), width - 20, fs) if both else []
+    note_h = len(note) * 1.2 * fs + 10 if note else 0.0
+    height = suptitle_h + len(histories) * rows * row_h + legend_h + note_h
     figure = Figure(figsize=(width / 72, height / 72), dpi=72)
+    if note:
+        figure.text(10 / width, (note_h - 4) / height, "\n".join(note), ha="left", va="top", fontsize=fs,
+                    linespacing=1.2, gid="comparison-note")
     s = histories[-1].scenario
-    rods = "the rigid and the causal rod" if both else "the causal rod"
-    figure.text(0.5, 1 - 4 / height, f"{s.name}, {rods}: energy and momentum, v = {shown(s.v)}", ha="center",
+    figure.text(0.5, 1 - 4 / height, suptitle(s, width, fs * 1.25, ": energy and momentum"), ha="center",
                 va="top", fontsize=fs * 1.25, gid="title")
     L = s.L
     windows = [(min(time_window(h, f)[0] for h in histories), max(time_window(h, f)[1] for h in histories))
@@ -339,7 +346,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                 shared.setdefault((k, q), []).append(ax)
                 _axis_words(ax, q, frame, fs)
                 if q == "p":
-                    model = ("causal rod, " if causal else "rigid rod, ") if both else ""
+                    model = f"{history.model} rod, " if both else ""
                     ax.set_title(f"({letter}) {model}frame {frame_symbol(frame)}", fontsize=fs * 1.1,
                                  pad=fs * 2.8 + 4)
                     ax.tick_params(labelbottom=False)
@@ -348,7 +355,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
         lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
         for ax in axes:
             ax.set_ylim(lo, hi)
-    legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, 4 / height), ncol=columns,
+    legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, (note_h + 4) / height), ncol=columns,
                            fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
     legend.set_gid("legend")
     return figure

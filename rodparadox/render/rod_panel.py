@@ -20,7 +20,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
-from rodparadox.physics.rod_view import chart_of
+from rodparadox.physics.rod_view import MAX_VIEW_SPAN, chart_of, thin_view
 from rodparadox.physics.rod import clock_step as nice_clock_step
 from rodparadox.render.causal_layers import HANDLER_MAP
 from rodparadox.render.labels import Area, Label, place
@@ -62,7 +62,10 @@ def rod_box(history, chart=None) -> tuple[float, float, float, float]:
     times = [chart.to_chart(i.event)[0] / L for i in history.impacts]
     times += [T for layer in DRAW if layer.applies(history) for T in layer.chart_times(history, chart)]
     first = min(times)
-    return -X_MARGIN, 1 + X_MARGIN, first - min(2.0, max(0.5, first)), max(times) + 1.5
+    T0, T1 = first - min(2.0, max(0.5, first)), max(times) + 1.5
+    if T1 - T0 > MAX_VIEW_SPAN:
+        raise thin_view(T1 - T0)
+    return -X_MARGIN, 1 + X_MARGIN, T0, T1
 
 
 def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r", title: str | None = None,

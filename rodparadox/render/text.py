@@ -68,22 +68,40 @@ def mathtext_safe(text: str) -> str:
     return text.replace("$", r"\$")
 
 
-def suptitle(scenario: Scenario, width: float, size: float) -> str:
-    """The scenario's name and v, with its description's first clause if that fits; a long name is cut with an ellipsis."""
+def heading(scenario: Scenario) -> str:
+    """What a figure's title calls the scenario: its title, in words ("Impacts simultaneous in the moving frame"),
+    or its name where it has none (a file name says nothing to a reader of the figure when a title is given)."""
+    text = scenario.title or scenario.name
+    if not scenario.title:
+        return text
+    text = re.sub(r"\b([SxXtT])'", "\\1\N{PRIME}", text)  # S' as in the panels: S′
+    return re.sub(r"(?<=\w)'(?=\w)", "\N{RIGHT SINGLE QUOTATION MARK}", text)  # the paper’s, as set in print
+
+
+def suptitle(scenario: Scenario, width: float, size: float, after: str = "") -> str:
+    """The scenario's heading (`heading`), `after` (what the figure shows: ": energy and momentum") and v; without
+    a title, the name followed by its description's first clause if that fits; a title's closing parenthesis is
+    dropped if that fits, else a long heading is cut with an ellipsis."""
     s = scenario
     room = width - 10
+    label = heading(s)
 
     def fits(text: str) -> bool:
         return approximate_size(text, size)[0] <= room
 
-    tail = f", $v = {shown(s.v, math_text=True)}$"
-    head = f"{mathtext_safe(s.name)}{tail}"
-    if not fits(head):  # the longest start of the name that fits, then an ellipsis: visibly cut, never off the page
-        lo, hi = 0, len(s.name)
+    tail = f"{mathtext_safe(after)}, $v = {shown(s.v, math_text=True)}$"
+    head = f"{mathtext_safe(label)}{tail}"
+    short = re.sub(r"\s*\([^()]*\)$", "", label)  # a title's closing parenthesis ("(the paper's Fig. 2)") may go
+    if not fits(head) and short != label and fits(f"{mathtext_safe(short)}{tail}"):
+        return f"{mathtext_safe(short)}{tail}"
+    if not fits(head):  # the longest start of the heading that fits, then an ellipsis: visibly cut, never off the page
+        lo, hi = 0, len(label)
         while lo < hi:
             mid = (lo + hi + 1) // 2
-            lo, hi = (mid, hi) if fits(f"{mathtext_safe(s.name[:mid].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}") else (lo, mid - 1)
-        return f"{mathtext_safe(s.name[:lo].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}"
+            lo, hi = (mid, hi) if fits(f"{mathtext_safe(label[:mid].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}") else (lo, mid - 1)
+        return f"{mathtext_safe(label[:lo].rstrip())}\N{HORIZONTAL ELLIPSIS}{tail}"
+    if s.title:
+        return head
     # the description's first clause: up to a semicolon or the end of its first sentence
     clause = re.split(r";|\.(?=\s+[A-Z]|\s*$)", " ".join(s.description.split()))[0].strip()
     if clause:
@@ -92,6 +110,17 @@ def suptitle(scenario: Scenario, width: float, size: float) -> str:
         if fits(full):
             return full
     return head
+
+
+def note_lines(note: str, width: float, size: float) -> list[str]:
+    """A paragraph of plain text (a figure's note) broken into lines no wider than `width` points at `size`."""
+    room, lines = width / 1.08, []  # long runs of text draw up to 6 % wider than measured
+    for word in note.split(" ") if note else ():
+        if lines and approximate_size(f"{lines[-1]} {word}", size)[0] <= room:
+            lines[-1] += f" {word}"
+        else:
+            lines.append(word)
+    return lines
 
 
 # --- ticks ------------------------------------------------------------------------------------------

@@ -69,8 +69,17 @@ def first_impacts_text(history, frames: Sequence[Frame]) -> str:
 
 
 def comparison_note(histories, frames: Sequence[Frame]) -> str:
-    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall."""
-    every = "Both rods are" if len(histories) == 2 else "Every rod is"
-    lines = [f"{every} struck by the same particles: {particle_starts_text(histories[0])}, at t = 0 in S."]
+    """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall (for rods
+    driven by forces, that the same forces drive them: no particles strike them)."""
+    if not histories[0].scenario.particles:
+        return ("Both rods are driven by the same forces at their ends." if len(histories) == 2
+                else "Every rod is driven by the same forces at its ends.")
+    starts = [particle_starts_text(h) for h in histories]
+    if len(set(starts)) == 1:
+        every = "Both rods are" if len(histories) == 2 else "Every rod is"
+        lines = [f"{every} struck by the same particles: {starts[0]}, at t = 0 in S."]
+    else:  # histories run apart (a library caller's): say so, never "the same particles"
+        lines = ["The rods are struck by particles that start apart: "
+                 + "; ".join(f"the {h.model} rod's {text}" for h, text in zip(histories, starts)) + ", at t = 0 in S."]
     lines += [f"The {h.model} rod: {first_impacts_text(h, frames)}." for h in histories]
     return " ".join(lines)

@@ -24,7 +24,9 @@ from rodparadox.handout.document import DiagramBlock, Handout, Heading, Paragrap
 from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import frame_of_velocity, moving_frame, paper_frames, rest_frame, time_window
 from rodparadox.physics.rod import rod_slice
-from rodparadox.io.scenario import builtin_names, load, parse
+from rodparadox.io.scenario import load, parse
+
+from helpers import particle_presets
 
 
 def history(name: str, v: float | None = None):
@@ -144,7 +146,7 @@ def changes_direction_more_than_once(velocities: list[float]) -> bool:
 
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_a_zig_zag_is_mentioned_only_where_the_rods_velocity_in_s_goes_back_and_forth(name, v):
     h = history(name, v)
     text = explanation_text(name, v)
@@ -153,11 +155,11 @@ def test_a_zig_zag_is_mentioned_only_where_the_rods_velocity_in_s_goes_back_and_
 
 def test_the_built_in_scenarios_zig_zag_as_the_readme_says():
     # fig2, off_timing and while_turning: 0 -> -v -> +v -> 0 in S; fig1, single, unequal_masses do not
-    assert {n for n in builtin_names() if "zig-zag" in explanation_text(n, 0.6)} == {"fig2", "off_timing",
+    assert {n for n in particle_presets() if "zig-zag" in explanation_text(n, 0.6)} == {"fig2", "off_timing",
                                                                                   "while_turning"}
 
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_the_setup_paragraph_names_each_particles_mass_speed_end_and_start(name):
     h = history(name)
     text = setup_text(h)
@@ -186,7 +188,7 @@ def test_the_setup_paragraph_of_fig2_places_a_as_the_paper_does():
 # --- strips ---------------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_strips_show_six_to_eight_instants_in_the_window_earliest_first(name, v):
     h = history(name, v)
     for f in paper_frames(v):
@@ -269,7 +271,7 @@ def numeric(cell_text: str) -> bool:
     return bool(re.search(r"\d", cell_text)) and not re.fullmatch(r"[A-Z][₀-₉]+", cell_text)
 
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_a_worksheet_leaves_every_number_blank_and_its_answer_key_fills_them(name):
     h = history(name, 0.6)
     doc = build([(name, h)], worksheet=True)
@@ -462,7 +464,7 @@ class Independent:
 
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_every_number_in_a_worked_answer_is_an_independent_computation(name, v):
     h = history(name, v)
     asked = questions(h, paper_frames(v))
@@ -584,7 +586,7 @@ def test_a_third_frame_is_named_the_frame_u_in_running_text():
 
 # --- issue 14, item 6: textbook form -------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_headings_are_the_scenarios_titles_without_internal_names(name):
     doc = build([(name, history(name, 0.6))])
     headings = [b.text for b in doc.blocks() if isinstance(b, Heading)]

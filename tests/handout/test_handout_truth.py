@@ -15,7 +15,9 @@ from hypothesis import strategies as st
 from generated import history_of, timed, two_gaps, while_turning
 
 from rodparadox.handout.narrative import explanation
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 from rodparadox.numbers import MINUS, impact_name
 from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
@@ -76,7 +78,7 @@ def test_while_turning_081_never_stops_in_s_prime_and_is_never_driven_at_081_in_
 # --- every preset, every speed: each kind of claim against the grid ------------------------------------------------
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_claims_about_the_material_hold(name, v):
     h = run(load(name).with_overrides(v=v))
     text = _text(name, v)
@@ -111,7 +113,7 @@ def test_claims_about_the_material_hold(name, v):
 # --- the rigid rod as an idealisation: its far end moves before light from the impact could reach it --------------
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_the_far_end_moves_before_light_from_the_impact_reaches_it(name, v):
     from rodparadox.handout.build import introduction
     from rodparadox.numbers import impact_name
@@ -238,7 +240,7 @@ def check_velocity_claims(h, v: float, text: str) -> int:
 
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_claims_about_the_rods_velocity_rests_and_turns_hold(name, v):
     h = run(load(name).with_overrides(v=v))
     assert check_velocity_claims(h, v, _text(name, v)) >= 2  # it read the claims it was meant to read

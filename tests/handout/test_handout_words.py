@@ -10,11 +10,13 @@ import re
 
 import pytest
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Heading, Paragraph, Question, Table
 from rodparadox.handout.own_view import with_rod_views
-from rodparadox.io.scenario import builtin_names
+
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("handout_words")
 
 
 @functools.lru_cache(maxsize=None)
@@ -59,7 +61,7 @@ def software_words(doc) -> list[tuple[str, str]]:
 def documents():
     """Every preset's handout and worksheet with both rods compared and the rod's own view, at v = 0.6 (and fig2
     with L = 2, whose tables are in the unit of L's own length)."""
-    names = builtin_names()
+    names = particle_presets()
     items = [(n, history(n, 0.6), None, causal_alike(n, 0.6)) for n in names]
     views = {n: (history(n, 0.6), causal_alike(n, 0.6)) for n in names}
     long_rod = [("fig2", history("fig2", 0.6, 2.0), None, causal_alike("fig2", 0.6, 2.0))]

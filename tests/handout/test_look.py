@@ -4,12 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox.handout.narrative import setup_text
-from rodparadox.io.scenario import builtin_names
 
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_the_setup_counts_its_particles(name):
     """`single` has one particle: its set-up said "the particles are where this paragraph puts them"."""
     h = history(name, 0.6)
@@ -53,7 +52,7 @@ def test_the_last_question_before_the_key_takes_its_page_s_rest_to_write_on(name
     assert len({p for p, _, _ in last.pieces}) == 1  # the question and all its lines on one page
 
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_the_caption_names_each_particles_dashes_as_the_styles_draw_them(name):
     """The caption said "the particles A and B are dashed" after B became long-and-short dashed (told from S′'s
     dash-dotted lines in grey). Each particle's word is checked against its dash pattern in every style: A's an

@@ -11,10 +11,9 @@ import functools
 
 import pytest
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox.handout.build import build
 from rodparadox.handout.pdf import page_plan
-from rodparadox.io.scenario import builtin_names
 
 #: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
 pytestmark = pytest.mark.xdist_group("page_rules")
@@ -38,7 +37,7 @@ def _all_plans() -> dict[str, list]:
     `render.strip.strips_at` keeps in a small cache that the other documents' strips would push out in between."""
     out: dict[str, list] = {paper: [] for paper in PAPERS}
     for v in SPEEDS:
-        for name in builtin_names():
+        for name in particle_presets():
             for worksheet in (False, True):
                 doc = build([(name, history(name, v))], worksheet=worksheet)
                 for paper in PAPERS:

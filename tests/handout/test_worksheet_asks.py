@@ -13,7 +13,9 @@ from click.testing import CliRunner
 from rodparadox.handout.build import build
 from rodparadox.handout.document import DiagramBlock, Heading, Paragraph, Question, Strips, Table
 from rodparadox.handout.words import in_c
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 
@@ -36,7 +38,7 @@ def _pre_key_text(doc) -> str:
 
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_nothing_before_the_key_tells_what_the_questions_ask(name, v):
     h = run(load(name).with_overrides(v=v))
     doc = build([(name, h)], worksheet=True)

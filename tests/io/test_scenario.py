@@ -93,7 +93,7 @@ def test_bad_overrides_name_their_key(option, value, message):
     ("v: 0.6\nparticles:\n  A: {gap: 0.5, spead: 0.3}\n",
      "s.yaml, line 3: unknown key 'spead' in particles.A (allowed: mass, speed, gap, timed_with); did you mean speed?"),
     ("v: 0.6\nparticle:\n  A: {gap: 0.5}\n",
-     "s.yaml, line 2: unknown key 'particle' in the top level (allowed: name, description, title, v, L, rod, sound_speed, particles); "
+     "s.yaml, line 2: unknown key 'particle' in the top level (allowed: name, description, title, v, L, rod, sound_speed, particles, forces); "
      "did you mean particles?"),
     ("v: 0.6\nparticles:\n  C: {gap: 0.5}\n",
      "s.yaml, line 3: unknown key 'C' in particles (allowed: A, B)."),
@@ -145,10 +145,10 @@ def test_bad_overrides_name_their_key(option, value, message):
     ("v: 0.5\nparticles:\n  A: {timed_with: {frame: rest}}\n  B: {gap: 1}\n",
      "s.yaml, line 3: particles.A.timed_with needs the key particle (the other particle, A or B)."),
     ("v: 0.5\nparticles: {}\n", "s.yaml, line 2: particles must name at least one of A and B."),
-    ("v: 0.5\n", "s.yaml: the scenario needs the key particles."),
+    ("v: 0.5\n", "s.yaml: the scenario needs the key particles (a rod struck by particles) or forces (a rod driven by forces at its ends)."),
     ("v: 0.5\nparticles: [A, B]\n",
      "s.yaml, line 2: particles must be a mapping of keys (A, B), got a list."),
-    ("- 1\n- 2\n", "s.yaml: the scenario must be a mapping of keys (name, description, title, v, L, rod, sound_speed, particles), got a list."),
+    ("- 1\n- 2\n", "s.yaml: the scenario must be a mapping of keys (name, description, title, v, L, rod, sound_speed, particles, forces), got a list."),
     ("", "s.yaml: the file is empty; a scenario needs at least v and particles."),
     ("v: 0.5\nparticles:\n  A: {gap: 0.5\n  B: x\n", "s.yaml, line 4: YAML syntax error: expected ',' or '}', but got ':'."),
     ("v: 0.5\nname: 12\nparticles:\n  A: {gap: 0.5}\n", "s.yaml, line 2: name must be text, got 12."),

@@ -22,7 +22,9 @@ import math
 import numpy as np
 import pytest
 
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 from rodparadox.physics.causal import run
 from rodparadox.physics.rigid import run as run_rigid
 from rodparadox.physics.model import Particle, Scenario, Timing
@@ -37,7 +39,7 @@ def _single(v: float, mass: float = 1.0, name: str = "A", gap: float = 0.5) -> S
 
 @pytest.fixture(scope="module")
 def presets():
-    return {name: run(load(name)) for name in builtin_names()}
+    return {name: run(load(name)) for name in particle_presets()}
 
 
 GENERATED = {

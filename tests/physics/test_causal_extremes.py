@@ -178,3 +178,20 @@ def test_long_contact_is_bounded(monkeypatch):
     with pytest.raises(ScenarioError, match="choose masses nearer the rod's") as caught:
         run(heavy)
     assert caught.value.key == "particles" and "\n" not in str(caught.value)
+
+
+def test_a_run_without_a_bound_of_its_own_is_bounded_in_steps(monkeypatch):
+    """Issue 27: masses 1e9 and 1e-9 at v = 0.9999999 ran `events --rod causal` for minutes (each contact step
+    smaller than the last; the presets spend 25 to 140 steps, masses 1e-6 to 1e4 at most 200). Every run, the
+    particles' placing included, now spends from the solver's own MAX_STEPS (lowered here to keep the test short)
+    and is refused in one sentence naming what to change; a bound the caller asks for keeps its own sentence."""
+    from rodparadox.errors import ScenarioError
+    from rodparadox.physics.causal import solve
+
+    monkeypatch.setattr(solve, "MAX_STEPS", 150)
+    extreme = Scenario("extreme", 0.9999999, (Particle("A", 1e9, gap=0.5), Particle("B", 1e-9, gap=0.5)), 1.0)
+    with pytest.raises(ScenarioError, match="needs more than 150 steps") as caught:
+        run(extreme)
+    assert "choose masses nearer the rod's, or a lower speed" in str(caught.value) and "\n" not in str(caught.value)
+    with pytest.raises(ScenarioError, match="within the bound asked for"):
+        run(extreme, budget=100)

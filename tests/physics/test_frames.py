@@ -19,7 +19,9 @@ from rodparadox.errors import FrameError, ScenarioError
 from rodparadox.physics.frames import check_velocity, FASTEST_FRAME, Frame, frame_heading, MAX_PANELS, moving_frame, named_frame, parse_frames, rest_frame, view
 from rodparadox.physics.model import FASTEST, frame_velocity, Timing
 from rodparadox.physics.kinematics import Line
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 
 SPEEDS = (0.3, 0.6, 0.9, 0.95, 0.99)
 #: the frames of the checks: S, S', and frames on either side of both, up to u = 0.9
@@ -52,7 +54,7 @@ def changes(h, u: float) -> list[float]:
 
 @pytest.mark.parametrize("spec", FRAME_VELOCITIES)
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_the_time_window_holds_every_change_of_every_worldline_with_a_lead(name, v, spec):
     """Issue 6.1: `single` at v = 0.95 stopped in the middle of the far end's turn (t = 1.05 of 3.57)."""
     try:
@@ -70,7 +72,7 @@ def test_the_time_window_holds_every_change_of_every_worldline_with_a_lead(name,
 
 @pytest.mark.parametrize("spec", FRAME_VELOCITIES)
 @pytest.mark.parametrize("v", (0.6, 0.95, 0.99))
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_every_worldline_is_shown_from_its_first_state_to_its_last(name, v, spec):
     """Each world-line's view starts and ends with a straight piece at its velocity before anything and after everything.
 

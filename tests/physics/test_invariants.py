@@ -32,9 +32,11 @@ from rodparadox.physics.rigid import run
 from rodparadox.errors import ScenarioError
 from rodparadox.physics.frames import Frame, view
 from rodparadox.physics.kinematics import Event, HyperbolicArc, Line, WorldLine
-from rodparadox.io.scenario import Particle, Scenario, Timing, builtin_names, load
+from rodparadox.io.scenario import Particle, Scenario, Timing, load
 
-PRESETS = builtin_names()
+from helpers import particle_presets
+
+PRESETS = particle_presets()
 ROD_ENDS = ("rod_left", "rod_right")
 
 

@@ -39,11 +39,13 @@ from rodparadox.physics.ledger import impact_entries, initial_total
 from rodparadox.physics.rigid.ledger import ledger_slice, rod_kinetic
 from rodparadox.physics.rigid.turns import material_worldline, now_lines, turn_interval
 from rodparadox.physics.rod import rod_slice
-from rodparadox.io.scenario import Particle, Scenario, builtin_names, load
+from rodparadox.io.scenario import Particle, Scenario, load
+
+from helpers import particle_presets
 
 from generated import RUNS, SETTINGS, WHILE_TURNING, ZIGZAG, history_of, runs_enough, scenarios
 
-PRESETS = builtin_names()
+PRESETS = particle_presets()
 
 
 def g_of(v: float) -> float:

@@ -10,7 +10,9 @@ import re
 import pytest
 
 from rodparadox.io.ledger_report import to_text
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
 from rodparadox.tables import build as tables
@@ -33,7 +35,7 @@ def _groups(rows):
 
 
 @pytest.mark.parametrize("v", SPEEDS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_every_ledger_table_adds_up_to_the_total_before_the_first_impact(name, v):
     h = run(load(name).with_overrides(v=v))
     for frame in paper_frames(v):
@@ -53,7 +55,7 @@ def test_every_ledger_table_adds_up_to_the_total_before_the_first_impact(name, v
             assert all(re.fullmatch(r"−?\d+\.\d{4}", x) for r in group for x in r[3:])
 
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_ledger_text_adds_up(name):
     h = run(load(name).with_overrides(v=0.6))
     text = to_text(h, paper_frames(0.6))

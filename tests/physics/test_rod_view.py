@@ -189,6 +189,25 @@ def test_what_cannot_show_the_rod_view_refuses_it_in_one_sentence(args, message,
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("command", [["plot", "--frame", "rest,rod"], ["animate", "--frame", "rod"],
+                                     ["handout", "--frame", "both,rod"]])
+def test_a_rod_view_too_thin_to_read_is_refused_in_one_sentence(command, tmp_path, monkeypatch):
+    """Issue 27, item 9: with a particle 1e6 L from the rod the rod's own view was a sliver 1.3e6 L tall and 1 L
+    wide, every label on the next. Its span of chart time (hand: B1 at t = 1/(2 v) - ... ~ 0, A's impact at its
+    gap / v = 1e6 / 0.6 ~ 1.67e6 L later in S, the rod at rest between) is over MAX_VIEW_SPAN: refused, no file."""
+    from click.testing import CliRunner
+
+    from sears_paradox_cli.main import main
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "far.yaml").write_text("name: far\nv: 0.6\nparticles:\n  A: {gap: 1.0e6}\n  B: {gap: 0.5}\n")
+    result = CliRunner().invoke(main, [command[0], "far.yaml", *command[1:]])
+    said = " ".join(result.output.split())
+    assert result.exit_code == 2 and "the rod's own view would be 1.3\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT SIX} L" in said
+    assert "too thin to read" in said and len(result.output.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["far.yaml"]
+
+
 def test_a_handout_shows_the_rod_view_after_the_diagram_with_its_turns_in_the_caption():
     from rodparadox.handout.document import DiagramBlock, Handout, Paragraph, RodViewBlock, Section
     from rodparadox.handout.own_view import with_rod_views

@@ -18,9 +18,9 @@ import pytest
 from click.testing import CliRunner
 from matplotlib.colors import to_rgb
 
-from helpers import history
+from helpers import history, particle_presets
 from rodparadox import render
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
 from rodparadox.physics.frames import Frame, paper_frames, time_window
 from rodparadox.physics.kinematics import ChartCurve
 from rodparadox.physics.models import run_rod
@@ -217,7 +217,7 @@ def test_labels_of_both_rods_sit_on_no_front():
 @pytest.mark.slow
 @pytest.mark.parametrize("style", STYLE_NAMES)
 def test_every_preset_draws_with_both_rods_rigid_row_above_causal_on_the_same_scales(style):
-    for name in builtin_names():
+    for name in particle_presets():
         diagram = both(name, None, style, ("rest",))
         a, b = diagram.panels
         assert a.letter == "a" and b.letter == "b"
@@ -372,3 +372,47 @@ def test_animate_draws_the_causal_rod_in_both_modes(mode, tmp_path):
     assert result.exit_code == 0, result.output
     assert sorted(p.name for p in tmp_path.iterdir()) == [f"single_{mode}_causal_fps1_seconds2_000{k}.png"
                                                            for k in (0, 1)]
+
+
+# --- the comparison's note ------------------------------------------------------------------------------------
+
+def test_a_comparison_figure_says_what_particles_strike_both_rods_and_where_their_first_impacts_fall():
+    """Issue 23, item 3: `plot --rod both` states where each particle started and, for each rod, whether its first
+    impacts are simultaneous in the figure's frames. fig2 at v = 0.6 (like for like, `run_rods`): A is placed by
+    the rigid rod's timing rule so that A1 and B1 share t' = 17/12 L (hand: B1 at t = L/2v = 5/6, x = L/2, so
+    t' = g (t + v x) = 5/4 (5/6 + 0.3) = 17/12); B starts at its gap, x = L/2 + 0.5 = 1; the causal rod's A1 is
+    later than its B1 in S' (its far end moves before light from B1 could tell a rigid rod's would)."""
+    from rodparadox.physics.models import run_rods
+
+    rigid, causal_rod = run_rods(load("fig2").with_overrides(v=0.6), "both")
+    fig = render.draw_both(rigid, causal_rod, paper_frames(0.6)).figure
+    note = " ".join(artist(fig, "comparison-note").get_text().split("\n"))
+    assert note.startswith("Both rods are struck by the same particles: A from x = ")
+    assert "B from x = 1 L at speed 0.6 c" in note
+    assert "The rigid rod: A\N{SUBSCRIPT ONE} and B\N{SUBSCRIPT ONE} are simultaneous in S\N{PRIME} (at 1.417 L)" in note
+    assert "The causal rod: A\N{SUBSCRIPT ONE} and B\N{SUBSCRIPT ONE} are not simultaneous in S (" in note
+    a_start = rigid.starts[0][1] if rigid.starts[0][0] == "A" else rigid.starts[1][1]
+    assert f"A from x = \N{MINUS SIGN}{abs(a_start.x):.4g} L" in note.replace("\N{MINUS SIGN}", "\N{MINUS SIGN}")
+    # inside the figure, clear of the legend and of every other text
+    assert _collisions(fig, "default") == []
+    # a library caller's histories run apart are never called "the same particles"
+    apart = render.draw_both(history("fig2", 0.6), causal("fig2", 0.6), paper_frames(0.6)).figure
+    assert "start apart" in artist(apart, "comparison-note").get_text()
+
+
+def test_the_rods_own_now_is_in_the_legend_only_where_a_rod_draws_it(tmp_path):
+    """Issue 24: `plot fig2 --rod causal --rod-now` showed "the rod's own lines of simultaneity" in the legend
+    and drew none (the causal rod has no rod-wide now). Alone it is refused; beside the rigid rod the legend
+    keeps the entry for the lines the rigid row draws, and the causal row draws none."""
+    from rodparadox.physics.models import run_rods
+
+    rigid, causal_rod = run_rods(load("fig2").with_overrides(v=0.6), "both")
+    options = render.Options(rod_now=True)
+    fig = render.draw_both(rigid, causal_rod, paper_frames(0.6), options=options).figure
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "the rod's own lines of simultaneity" in labels
+    assert gids(fig, r"a-rod-now-\d+") and gids(fig, r"[cd]-rod-now-\d+") == []
+    alone = render.draw(causal_rod, paper_frames(0.6), options=options).figure
+    assert "the rod's own lines of simultaneity" not in [t.get_text() for t in alone.legends[0].get_texts()]
+    result = CliRunner().invoke(main, ["plot", "fig2", "--rod", "causal", "--rod-now", "-o", str(tmp_path)])
+    assert result.exit_code == 2 and "the causal rod has none" in result.output and not list(tmp_path.iterdir())

@@ -20,7 +20,9 @@ from click.testing import CliRunner
 from rodparadox.handout.document import Cell, Table
 from rodparadox.physics.rigid import run as simulate
 from rodparadox.physics.frames import paper_frames
-from rodparadox.io.scenario import builtin_names, load
+from rodparadox.io.scenario import load
+
+from helpers import particle_presets
 from rodparadox.tables.build import (events_table, hidden_table, latex_text, ledger_table, slices_table, to_latex,
                                to_markdown)
 from rodparadox.tables.formats import BLANK_TEXT, table_format
@@ -100,7 +102,7 @@ def events_markdown_rows(text: str) -> list[dict[str, tuple[str, ...]]]:
 
 # --- Markdown ---------------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 def test_markdown_events_has_a_row_per_impact_and_the_header_columns_in_every_row(name):
     text = cli("events", name, "--v", "0.6", "--frame-velocity", "0.3", "--format", "markdown")
     printed = events_text_rows(cli("events", name, "--v", "0.6", "--frame-velocity", "0.3"))
@@ -133,7 +135,7 @@ def test_markdown_escapes_pipes_and_emphasis():
 
 # --- the numbers: as `events` prints them, and by hand ----------------------------------------------------
 
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", particle_presets())
 @pytest.mark.parametrize("v", ["0.1", "0.6", "0.95"])
 def test_events_tables_print_the_numbers_events_prints(name, v):
     for extra in ([], ["--frame-velocity", "0.3"]):
@@ -262,7 +264,7 @@ def test_latex_fragment_structure():
 
 def all_tables(v: float) -> list[Table]:
     out = []
-    for name in builtin_names():
+    for name in particle_presets():
         history = history_of(name, v)
         for frame in paper_frames(v):
             for blank in (False, True):

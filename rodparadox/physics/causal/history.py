@@ -17,6 +17,7 @@ r+ by -f and r- by +f: I+ -> e^f I+, I- -> e^-f I-. Fronts (jumps of lam) sit in
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -35,7 +36,7 @@ from rodparadox.physics.types import EnergyMomentum, Impact, Slice, ZERO
 def run(scenario: Scenario, starts: dict[str, Event] | None = None, budget: int | None = None) -> "CausalHistory":
     """The causal rod's history of a scenario (the same scenarios the rigid engine runs), the particles starting
     at `starts` (default: `particle_starts`); `budget`: a bound on its work, in windows of chart time L, stretches
-    of an end's window and steps of its contacts (`solve.Budget`), or None for the solver's own bounds."""
+    of an end's window and steps of its contacts (`budget.Budget`), or None for the solver's own bounds."""
     spend = None if budget is None else Budget(budget)
     history = _run(scenario, particle_starts(scenario, spend) if starts is None else starts, spend)
     _check_conserved(history)
@@ -130,6 +131,7 @@ class CausalHistory:
 
     model = "causal"
     turning = None  # no turns: its lines of simultaneity are not the rigid rod's (physics.history.Turning)
+    driving = None  # struck by particles, not driven by forces (physics.history.Driving)
 
     @property
     def fronts(self) -> "CausalHistory":
@@ -143,6 +145,11 @@ class CausalHistory:
     def rapidity_range(self) -> tuple[float, float]:
         """The least and largest rapidity in S of any material point over the whole history, 0 included."""
         return causal_rapidity_range(self)
+
+    @functools.cached_property
+    def arrays(self) -> Arrays:
+        """The solution for whole arrays of chart times (`causal.arrays`), made once."""
+        return Arrays(self.solution)
 
     def rod_parts_on_slices(self, frame_rapidity, times) -> tuple:
         """The matter and stress parts on many slices at once, as arrays (`causal.parts`)."""
@@ -173,7 +180,6 @@ class CausalHistory:
 
     def __init__(self, scenario: Scenario, solution: Solution, starts: dict[str, Event]):
         self.scenario, self.solution = scenario, solution
-        self.arrays = Arrays(solution)  # the solution for whole arrays of chart times (`causal.arrays`)
         self._end_times: dict[tuple[str, float, float], float] = {}
         self.starts = tuple(sorted(starts.items()))
         L = scenario.L

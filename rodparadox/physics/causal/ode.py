@@ -152,7 +152,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, L: float = 1
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
     Returns the dense solution and the chart time of the separation (None when the contact lasts to hi), found to
     rounding relative to the rod's length L (chart times scale with it, from 1e-100 to 1e100). `budget`: a
-    `solve.Budget` each step tried is spent from, or None."""
+    `budget.Budget` each step tried is spent from, or None."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
@@ -239,3 +239,9 @@ def falling_root(g, lo: float, hi: float, xtol: float = 4 * EPS, rtol: float = 4
         x_cur += s_cur if abs(s_cur) > delta else (delta if s_bis > 0.0 else -delta)
         f_cur = g(x_cur)
     return x_cur
+
+
+# the collocation's pieces, public for the other boundary equation solved the same way (`causal.driven`, an end
+# driven by a force)
+LOBATTO, TO_COEFFICIENTS, INTEGRATE_FROM_START, PRIMITIVE = _X, _TO_COEF, _S, _INTEGRATE
+clenshaw, roughness, negligible_tail = _clenshaw, _roughness, _tail

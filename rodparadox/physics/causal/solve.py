@@ -35,27 +35,13 @@ import math
 from dataclasses import dataclass, field
 
 from rodparadox.errors import ScenarioError
+from rodparadox.physics.causal.budget import MAX_STEPS, Budget
 from rodparadox.physics.causal.ode import falling_root, solve_contact
 #: windows of chart time L processed before a scenario is refused as never settling
 MAX_WINDOWS = 5000
 #: windows with a particle in contact before a scenario is refused: a contact costs far more than a free window,
 #: and particles far heavier than the rod squeeze it slowly, like a spring, for thousands of crossings
 MAX_CONTACT_WINDOWS = 300
-
-
-class Budget:
-    """A bound on a run's work that a caller may set (the page's offered speeds): each window, each stretch of an
-    end's window (free, in contact, a separation) and each step of a contact's integration spends one; past `limit`
-    the run is refused."""
-
-    def __init__(self, limit: int):
-        self.limit, self.spent = limit, 0
-
-    def spend(self) -> None:
-        self.spent += 1
-        if self.spent > self.limit:
-            raise ScenarioError(f"the causal rod's run takes more than {self.limit} steps here; this scenario does "
-                                f"not settle within the bound asked for.")
 
 
 # --- pieces of an invariant ------------------------------------------------------------------------------------
@@ -159,6 +145,9 @@ def _constant(piece) -> float | None:
     if isinstance(piece, _Const):
         return piece.c
     return piece.constant if isinstance(piece, _View) else None
+
+
+Const, View, constant_of = _Const, _View, _constant  # public for the driven ends' run (`causal.driven`)
 
 
 # --- an invariant: pieces, then a periodic tail ------------------------------------------------------------------
@@ -341,7 +330,9 @@ def _end_coordinates(sol_a, sol_b, end: str, T: float, L: float) -> tuple[float,
 def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_first: float,
           budget: Budget | None = None) -> Solution:
     """Run the rod from chart time T_first (the first contact; before it the rod rests unstressed); `budget`: a bound
-    on its work besides MAX_WINDOWS, or None."""
+    on its work besides MAX_WINDOWS, or None for MAX_STEPS."""
+    if budget is None:
+        budget = Budget(MAX_STEPS, asked=False)
     plus, minus = Invariant(), Invariant()
     # undisturbed before the first contact; the windows start one crossing time early
     plus.append(_Const(T_first - 2 * L, T_first, 0.0))

@@ -55,6 +55,7 @@ class History:
 
     model = "rigid"
     fronts = None  # its signals are instantaneous: no fronts (physics.history.Fronts)
+    driving = None  # struck by particles, not driven by forces (physics.history.Driving)
 
     def worldline(self, name: str) -> WorldLine | None:
         """The world-line of A, B, rod_left or rod_right (None for a particle the scenario lacks)."""
