@@ -40,9 +40,9 @@ from rodparadox.physics.types import EnergyMomentum
 #: the longest stretch of a slice (units of L); each is summed by Gauss-Kronrod's 15 nodes, the 7 of Gauss-Legendre
 #: among them telling its error
 STRETCH = 0.25
-#: each stretch is halved until its halves agree with it to this (M c^2; the ledger prints 4 to 6 digits, the tests
-#: ask 1e-10 of every slice), or to NOISE times the sum of its densities' magnitudes (their rounding: in a frame far
-#: from the rod's, densities are e^(2|th|) times its rest energy)
+#: each stretch is halved until its Gauss-Legendre and Gauss-Kronrod sums agree to this (M c^2; the ledger prints 4
+#: to 6 digits, the tests ask 1e-10 of every slice), or to NOISE times the sum of its densities' magnitudes (their
+#: rounding: in a frame far from the rod's, densities are e^(2|th|) times its rest energy)
 TOLERANCE = 1e-12
 NOISE = 256.0 * np.finfo(float).eps
 #: where halving a stretch no longer shrinks its miss fourfold (a smooth stretch's shrinks 2^14-fold), what is
