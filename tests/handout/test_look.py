@@ -2,12 +2,23 @@
 
 from __future__ import annotations
 
+import functools
 import math
 
 import pytest
 
 from helpers import history, particle_presets
 from rodparadox.handout.narrative import setup_text
+
+
+@functools.lru_cache(maxsize=None)
+def fig1_compared(worksheet: bool = False):
+    """fig1 at 0.6 with the causal rod beside the rigid one, as a handout or a worksheet: built once for the tests
+    that read it."""
+    from helpers import causal_history
+    from rodparadox.handout.build import build
+
+    return build([("fig1", history("fig1", 0.6), None, causal_history("fig1", 0.6))], worksheet=worksheet)
 
 
 @pytest.mark.parametrize("name", particle_presets())
@@ -144,11 +155,9 @@ def test_no_paragraph_of_a_section_says_a_sentence_twice(worksheet):
     import collections
     import re
 
-    from helpers import causal_history
-    from rodparadox.handout.build import build
     from rodparadox.handout.document import Paragraph
 
-    doc = build([("fig1", history("fig1", 0.6), None, causal_history("fig1", 0.6))], worksheet=worksheet)
+    doc = fig1_compared(worksheet)
     for blocks in [s.blocks for s in doc.sections] + [doc.answer_key]:
         sentences = collections.Counter(
             s for b in blocks if isinstance(b, Paragraph)
@@ -193,11 +202,9 @@ def test_the_ledgers_paragraph_leaves_to_its_note_what_the_note_says():
     not a summand.", and the note under the table says both again ("add up to the total, the total before the first
     impact ...; Rod, dynamical (not a summand): ..."). The paragraph says what the rows are; the note, once, how they
     add up and what the dynamical row is."""
-    from helpers import causal_history
-    from rodparadox.handout.build import build
     from rodparadox.handout.document import Paragraph, Table
 
-    blocks = build([("fig1", history("fig1", 0.6), None, causal_history("fig1", 0.6))]).sections[1].blocks
+    blocks = fig1_compared().sections[1].blocks
     ledgers = [(b.text, t) for b, t in zip(blocks, blocks[1:])
                if isinstance(b, Paragraph) and isinstance(t, Table) and t.name.startswith("ledger")]
     assert len(ledgers) == 4  # the rigid rod's in S and S′, the causal rod's (its note says the same of its parts)
