@@ -273,7 +273,7 @@ class Contacts(CausalLayer):
         return LayerArtists(artists=tuple(drawn))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not self.applies(history):
+        if not self.applies(history) or not history.impacts:  # no contacts: a rod driven by forces
             return None
         return (Line2D([], [], color="#777777", alpha=0.35, linewidth=style.rod.width * 3.2, solid_capstyle="butt"),
                 "contact: particle rides with end")

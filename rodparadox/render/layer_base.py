@@ -93,6 +93,7 @@ class PanelContext:
     steps: tuple[float, float]  # the x and t tick steps, units of L
     clock_step: float  # proper time between two clock ticks, same units as L
     rod_lines: int | None = None  # material lines drawn here (fewer than asked where they would crowd); None: asked
+    scale: float | None = None  # points per L on the page (a force's band is as wide in points in every panel)
 
     @property
     def L(self) -> float:
@@ -105,6 +106,16 @@ class PanelContext:
     def events(self) -> list[tuple[str, str, float, float]]:
         """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
         return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
+
+    def force_events(self) -> list[tuple[str, str, float, float]]:
+        """Each force's start and end in this frame, for a rod driven by forces (`RodHistory.driving`; none
+        otherwise): (label `left-start`, ..., end of the rod, x/L, t/L), ends in order, moments in order."""
+        driving = self.history.driving
+        if driving is None:
+            return []
+        eta = self.view.frame.rapidity
+        return [(f"{e.end}-{e.moment}", e.end, e.event.seen_from(eta).x / self.L, e.event.seen_from(eta).t / self.L)
+                for e in driving.force_events() if e.moment in ("start", "end")]
 
     @property
     def contact_labels(self) -> frozenset[str]:
