@@ -60,6 +60,11 @@ def clock_marker(style: Style, ink: Ink) -> dict[str, Any]:
     return marker_kwargs(style.clock_size, "white", ink.colour, 0.8)
 
 
+def separation_marker(style: Style) -> dict:
+    """A separation: a hollow marker, told from a contact (filled) in any ink."""
+    return marker_kwargs(style.impact_size, "white", style.impact_colour, 1.0)
+
+
 def line_handle(ink: Ink) -> Line2D:
     return Line2D([], [], **line_kwargs(ink))
 
@@ -68,6 +73,14 @@ def widest_line(style: Style) -> float:
     """The widest line a label must keep clear of."""
     return max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
                                      style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
+
+
+def own_now_lines(history) -> list:
+    """The rod's own lines of simultaneity, (left end, right end) event pairs in S: a rigid rod's turns and the
+    lines between them (`turning`), or a rigid rod driven by forces (`driving`); none for a rod without them."""
+    if history.turning is not None:
+        return history.turning.now_lines()
+    return history.driving.now_lines() if history.driving is not None else []
 
 
 def contacts_last(history) -> bool:

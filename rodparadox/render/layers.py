@@ -33,7 +33,7 @@ from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           contacts_last, impact_marker, has_fronts, line_handle, line_kwargs,
-                                          marker_kwargs, widest_line)
+                                          marker_kwargs, own_now_lines, separation_marker, widest_line)
 from rodparadox.render.force_layers import ForceBands, ForceMoments
 from rodparadox.render.labels import Label
 from rodparadox.render.legibility import material_lines_text
@@ -127,14 +127,6 @@ class RodNow(Layer):
 
     def legend_entry(self, style, history, options, clock_step=None):
         return line_handle(style.rod_now), "the rod's own lines of simultaneity"
-
-
-def own_now_lines(history) -> list:
-    """The rod's own lines of simultaneity, (left end, right end) event pairs in S: a rigid rod's turns and the
-    lines between them (`turning`), or a rigid rod driven by forces (`driving`); none for a rod without them."""
-    if history.turning is not None:
-        return history.turning.now_lines()
-    return history.driving.now_lines() if history.driving is not None else []
 
 
 @dataclass(frozen=True)
@@ -458,11 +450,6 @@ class Separations(Layer):
             return None
         name = impact_name(first.label[:-1])
         return Line2D([], [], **separation_marker(style)), f"separation ({name[0]}\N{PRIME}{name[1:]})"
-
-
-def separation_marker(style: Style) -> dict:
-    """A separation: a hollow marker, told from a contact (filled) in any ink."""
-    return marker_kwargs(style.impact_size, "white", style.impact_colour, 1.0)
 
 
 def separation_text(label: str, size: float) -> tuple[str, tuple[float, float]]:
