@@ -242,6 +242,8 @@ class Fronts(CausalLayer):
     def legend_entry(self, style, history, options, clock_step=None):
         if not self.applies(history):
             return None
+        if history.driving is not None and not any(p.jumps() for _, p in history.driving.profiles()):
+            return None  # forces without a jump: the compression changes smoothly, no front is drawn
         return line_handle(style.front), "light front (a jump in \N{GREEK SMALL LETTER LAMDA})"
 
 

@@ -82,18 +82,20 @@ def force_text(profile) -> str:
     the frame its profile is timed in."""
     lo, hi = profile.support()
     t = "t\N{PRIME}" if profile.frame == "moving" else "t"
-    when = f"from {t} = {shown(lo, 4)} L to {shown(hi, 4)} L {_timed_in(profile.frame)}"
-    units = "M c²/L"
+    # no-break spaces: a figure's note never tears a number from its unit
+    nb = "\N{NO-BREAK SPACE}"
+    when = f"from {t} = {shown(lo, 4)}{nb}L to {shown(hi, 4)}{nb}L {_timed_in(profile.frame)}"
+    units = "\N{NO-BREAK SPACE}M\N{NO-BREAK SPACE}c\N{SUPERSCRIPT TWO}/L"
     if profile.shape == "points":
         least, greatest = profile.least(), profile.greatest()
-        size = (f"between {shown(least, 4)} and {shown(greatest, 4)} {units}" if least < 0 < greatest
-                else f"up to {shown(greatest if greatest > 0 else least, 4)} {units}")
+        size = (f"between {shown(least, 4)} and {shown(greatest, 4)}{units}" if least < 0 < greatest
+                else f"up to {shown(greatest if greatest > 0 else least, 4)}{units}")
         kind = "push" if least == 0 else "pull" if greatest == 0 else "force"
         return f"a {kind} through {len(profile.points)} points, {size}, {when}"
     kind = "push" if profile.peak > 0 else "pull"
     if profile.shape == "step":
-        return f"a constant {kind} of {shown(abs(profile.peak), 4)} {units} {when}"
-    return f"a sine² {kind} peaking at {shown(abs(profile.peak), 4)} {units} {when}"
+        return f"a constant {kind} of {shown(abs(profile.peak), 4)}{units} {when}"
+    return f"a sine² {kind} peaking at {shown(abs(profile.peak), 4)}{units} {when}"
 
 
 def forces_text(history) -> str:
