@@ -111,8 +111,8 @@ class RodNow(Layer):
     def enabled(self, options):
         return options.rod_now
 
-    def applies(self, history):
-        return bool(own_now_lines(history))
+    def applies(self, history):  # a rigid rod: its turns' lines; a driven one: its lines of each stage
+        return history.turning is not None or bool(own_now_lines(history))
 
     def draw(self, ax, panel):
         eta = panel.view.frame.rapidity
