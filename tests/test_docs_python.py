@@ -14,6 +14,9 @@ import matplotlib
 import numpy as np
 import pytest
 
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("docs_python")
+
 PAGE = (Path(__file__).resolve().parent.parent / "docs" / "python.md").read_text()
 
 

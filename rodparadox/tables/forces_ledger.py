@@ -27,6 +27,18 @@ NOTE = ("The rod's (E, p) on a slice is its kinetic part, (M/L) int (cosh psi, s
         "rod's own lines of simultaneity). Their sum equals the rod's (E, p) before the forces plus what the two "
         "agents delivered up to the slice's end events. x_E is the centre of energy, v_E its velocity; for a closed "
         "system v_E = p/E, with forces they differ.")
+#: the same for a rod whose signals run at c (the capability `fronts`: the causal rod), split as its own ledger is
+FRONTS_PARTS = ("delivered left", "delivered right", "rod matter", "rod stress", "rod", "initial + delivered")
+FRONTS_NOTE = ("The rod's (E, p) on a slice is its matter part, rho u u (rho its rest-frame energy density, elastic "
+               "energy included), plus its stress part, p (u u - eta) (von Laue's momentum of a stressed body). Their "
+               "sum equals the rod's (E, p) before the forces plus what the two agents delivered up to the slice's end "
+               "events. x_E is the centre of energy, v_E its velocity; for a closed system v_E = p/E, with forces they "
+               "differ.")
+
+
+def parts_of(history) -> tuple[tuple[str, ...], str]:
+    """The names of the parts and the note for the history's rod: matter and stress where it has fronts."""
+    return (PARTS, NOTE) if history.fronts is None else (FRONTS_PARTS, FRONTS_NOTE)
 
 
 def slice_times(history, frame: Frame, at: Sequence[float] | None = None) -> tuple[float, ...]:
@@ -46,7 +58,7 @@ def slice_row(history, frame: Frame, t: float) -> dict[str, Any]:
     left, right = d.delivered("left", f, t), d.delivered("right", f, t)
     rod = kinetic + stress
     x_E, _ = d.centre_of_energy(f, t)
-    parts = dict(zip(PARTS, (left, right, kinetic, stress, rod, d.total(f, t))))
+    parts = dict(zip(parts_of(history)[0], (left, right, kinetic, stress, rod, d.total(f, t))))
     return {"t": t, "parts": parts, "x_E": x_E, "v_E": d.centre_velocity(f, t), "p_over_E": rod.p / rod.E}
 
 
@@ -115,7 +127,8 @@ def to_text(history, frames: Sequence[Frame], at: Sequence[float] | None = None)
     s = history.scenario
     lines = [f"{s.name}: v = {exact(s.v)}, L = {exact(s.L)}, the {history.model} rod driven by forces", f"({UNITS})",
              ""]
-    width = max(len(name) for name in PARTS)
+    names, note = parts_of(history)
+    width = max(len(name) for name in names)
     for frame in frames:
         lines.append(frame_heading(frame) + f": velocity {exact(frame.velocity)} relative to S")
         for t in slice_times(history, frame, at):
@@ -125,4 +138,4 @@ def to_text(history, frames: Sequence[Frame], at: Sequence[float] | None = None)
             lines.append(f"    {'centre of energy':<{width}}  x_E {_number(r['x_E'])}  v_E {_number(r['v_E'])}  "
                          f"p/E {_number(r['p_over_E'])}")
         lines.append("")
-    return "\n".join(lines + [NOTE, ""])
+    return "\n".join(lines + [note, ""])

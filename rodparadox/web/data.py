@@ -57,7 +57,7 @@ CAUSAL_DIGITS = 6
 #: the rod models every page embeds, in the switch's order
 MODELS = ("rigid", "causal")
 #: the causal rod's runs the page only offers (other speeds, a rod it does not open on) are bounded: windows of
-#: chart time L and steps of its contacts (`causal.solve.Budget`; every preset takes at most 150 at every speed of
+#: chart time L and steps of its contacts (`causal.budget.Budget`; every preset takes at most 150 at every speed of
 #: the grid, about a millisecond each), or the speed is left out: a page never waits on a run it was not asked for
 OFFERED_WORK = 1000
 #: the ledger's frames (velocities relative to S) besides S', and its instants per frame's time window

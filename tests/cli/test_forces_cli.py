@@ -108,3 +108,12 @@ def test_ledger_writes_delivered_rod_parts_and_the_check_per_slice():
 ])
 def test_what_ledger_cannot_do_with_forces_is_refused_in_one_sentence(args, words, tmp_path):
     assert words in error_of(*args, "-o", tmp_path / ("x." + args[-1]))
+
+
+def test_the_ledger_names_each_rods_own_parts():
+    """The rigid rod's (E, p) splits into kinetic and stress parts, the causal rod's into matter (elastic energy
+    included) and stress, as its ledger with particles does; both add up to initial + delivered."""
+    text = run("ledger", "sears", "--rod", "both").stdout
+    rigid, causal = text.split("the causal rod driven by forces")
+    assert "rod kinetic" in rigid and "rod matter" not in rigid
+    assert "rod matter" in causal and "rod kinetic" not in causal and "elastic energy included" in causal

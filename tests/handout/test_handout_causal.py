@@ -21,6 +21,9 @@ from rodparadox.physics.frames import paper_frames
 from rodparadox.physics.types import EnergyMomentum
 from sears_paradox_cli.main import main
 
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("handout_causal")
+
 V = 0.6
 
 

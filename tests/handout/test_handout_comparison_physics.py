@@ -21,6 +21,9 @@ from rodparadox.io.scenario import load
 from rodparadox.physics.models import run_rods
 from rodparadox.physics.frames import paper_frames
 
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("handout_comparison_physics")
+
 SPEEDS = (0.3, 0.45, 0.7)
 #: scenarios no preset has: unequal masses, a late particle
 GENERATED = {"gen_a": "v: 0.55\nparticles:\n  A: {mass: 1.5, gap: 0.35}\n  B: {mass: 0.7, gap: 0.8}\n",

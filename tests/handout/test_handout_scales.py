@@ -15,6 +15,9 @@ from rodparadox.handout import pdf, tex
 from rodparadox.handout.document import DiagramBlock, Handout, Section
 from sears_paradox_cli.main import main
 
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("handout_scales")
+
 #: at this speed S′ spans about four times the length S does: panels that each fill their box differ in scale
 V = 0.97
 

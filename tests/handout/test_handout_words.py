@@ -15,6 +15,9 @@ from rodparadox.handout.build import build
 from rodparadox.handout.document import Heading, Paragraph, Question, Table
 from rodparadox.handout.own_view import with_rod_views
 
+#: one worker runs this file: its module fixture is built once, not once per worker
+pytestmark = pytest.mark.xdist_group("handout_words")
+
 
 @functools.lru_cache(maxsize=None)
 def causal_alike(name: str, v: float, L: float | None = None):

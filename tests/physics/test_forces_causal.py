@@ -411,3 +411,15 @@ def test_the_fronts_capability_reads_a_driven_run_as_a_struck_one():
     chart = history.own_chart()
     event = chart.to_event(1.7, 0.3)
     assert chart.to_chart(event) == pytest.approx((1.7, 0.3), abs=1e-12)
+
+
+def test_a_driven_causal_run_implements_the_rod_interface_with_fronts_and_driving():
+    from rodparadox.physics.history import Driving, Fronts, RodHistory
+
+    history = run("sears")
+    assert isinstance(history, RodHistory) and history.model == "causal"
+    assert isinstance(history.fronts, Fronts) and isinstance(history.driving, Driving)
+    assert history.turning is None and history.impacts == () and history.starts == ()
+    assert history.worldline("A") is None and history.worldline("rod_left") is not None
+    assert [end for end, _ in history.driving.profiles()] == ["left", "right"]
+    assert history.driving.frame_rapidity("left") == 0.0

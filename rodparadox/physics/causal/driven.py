@@ -33,8 +33,8 @@ from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal.ode import (DEGREE, EPS, INTEGRATE_FROM_START as _S, LOBATTO as _X, MAX_HALVINGS,
                                            ODE_RTOL, PRIMITIVE as _PRIMITIVE, TO_COEFFICIENTS as _TO_COEF, Solved, Step, clenshaw as _clenshaw,
                                            falling_root, negligible_tail as _tail, roughness as _roughness)
-from rodparadox.physics.causal.solve import (Budget, Const as _Const, Invariant, Solution, View as _View,
-                                             constant_of)
+from rodparadox.physics.causal.budget import Budget
+from rodparadox.physics.causal.solve import Const as _Const, Invariant, Solution, View as _View, constant_of
 
 #: windows of chart time L a forced run may take before it is refused (a push lasting that many crossing times)
 MAX_FORCED_WINDOWS = 2000

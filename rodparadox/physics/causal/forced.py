@@ -18,9 +18,9 @@ import math
 import numpy as np
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.causal.driven import Drive, solve_forces
+from rodparadox.physics.causal.budget import Budget
+from rodparadox.physics.causal.driven import Drive, Work, solve_forces
 from rodparadox.physics.causal.history import CONSERVED, CausalHistory
-from rodparadox.physics.causal.solve import Budget
 from rodparadox.physics.kinematics import ChartCurve
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
@@ -34,7 +34,7 @@ def _profiles(scenario) -> dict:
 
 
 def run_forces(scenario, budget: int | None = None) -> "DrivenHistory":
-    """The causal rod's history under the scenario's forces; `budget`: a bound on its work (`solve.Budget`), by
+    """The causal rod's history under the scenario's forces; `budget`: a bound on its work (`budget.Budget`), by
     default FORCED_BUDGET. Refused in one sentence: a pull at or beyond M c^2/(2L), a run past its budget, a run
     double precision cannot keep to CONSERVED."""
     L = scenario.L
@@ -42,7 +42,7 @@ def run_forces(scenario, budget: int | None = None) -> "DrivenHistory":
     drives = {end: None if profile is None else
               Drive(profile.scaled(L), math.atanh(profile.frame_velocity(scenario.v)), L)
               for end, profile in _profiles(scenario).items()}
-    spend = Budget(FORCED_BUDGET if budget is None else budget)
+    spend = Work(FORCED_BUDGET) if budget is None else Budget(budget)
     history = DrivenHistory(scenario, solve_forces(L, drives, spend))
     _check_conserved(history)
     return history

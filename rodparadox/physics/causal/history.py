@@ -34,7 +34,7 @@ from rodparadox.physics.types import EnergyMomentum, Impact, Slice, ZERO
 def run(scenario: Scenario, starts: dict[str, Event] | None = None, budget: int | None = None) -> "CausalHistory":
     """The causal rod's history of a scenario (the same scenarios the rigid engine runs), the particles starting
     at `starts` (default: `particle_starts`); `budget`: a bound on its work, in windows of chart time L, stretches
-    of an end's window and steps of its contacts (`solve.Budget`), or None for the solver's own bounds."""
+    of an end's window and steps of its contacts (`budget.Budget`), or None for the solver's own bounds."""
     spend = None if budget is None else Budget(budget)
     history = _run(scenario, particle_starts(scenario, spend) if starts is None else starts, spend)
     _check_conserved(history)

@@ -150,7 +150,7 @@ def solve_contact(lo: float, hi: float, inp, psi0: float, c: float, L: float = 1
     delta = psi - in falls to 0 (the end unstressed: the particle leaves). `inp.r` is in(T), smooth on [lo, hi].
     Returns the dense solution and the chart time of the separation (None when the contact lasts to hi), found to
     rounding relative to the rod's length L (chart times scale with it, from 1e-100 to 1e100). `budget`: a
-    `solve.Budget` each step tried is spent from, or None."""
+    `budget.Budget` each step tried is spent from, or None."""
     steps: list[Step] = []
     a, psi_a, plus0, minus0 = lo, psi0, 0.0, 0.0
     h = hi - lo
