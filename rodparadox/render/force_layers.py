@@ -5,7 +5,7 @@ force's start and end marked and labelled.
 Each applies (`ForceLayer.applies`) to a run with the `driving` capability alone (`RodHistory.driving` not None).
 
 A force F is the push of its agent in the end's momentary rest frame, the same in every frame: so a band is drawn
-the same number of points wide for the same F in every panel (`BAND_POINTS` for the legend's force `force_scale`),
+the same number of points wide for the same F in every panel (`band_points` for the legend's force `force_scale`),
 on the outside of its end, horizontally (in x, at the event of the end where the profile reads F). The force at a
 point of the drawn end is read from the profile at that event's time in the profile's own frame, so the band
 follows the world-line the panel draws, kinks and jumps included.
@@ -26,13 +26,14 @@ from rodparadox.render.labels import Label
 from rodparadox.render.layer_base import Layer, LayerArtists, impact_marker, line_kwargs
 from rodparadox.render.styles import Style
 
-#: the width of a band, in points, for the legend's force (`force_scale`): no band is wider
-BAND_POINTS = 9.0
+#: the width of a band, in the style's type size (9 points in the default style), for the legend's force
+#: (`force_scale`): no band is wider
+BAND_EMS = 1.0
 #: samples of a profile along its support (its corners and jumps besides): a sine^2 band smooth on any page
 BAND_SAMPLES = 160
 #: arrows along a force's support, at the middles of this many equal parts of it in the profile's time
 ARROWS = 6
-#: no arrow where the band is narrower than this fraction of BAND_POINTS (its head would be larger than it)
+#: no arrow where the band is narrower than this fraction of `band_points` (its head would be larger than it)
 ARROW_LEAST = 0.3
 #: a pull's band is hatched as well, so that it is told from a push without colour
 PULL_HATCH = "////"
@@ -40,8 +41,13 @@ PULL_HATCH = "////"
 MOMENT_WORDS = {"start": "on", "end": "off"}
 
 
+def band_points(style: Style) -> float:
+    """The width in points of a band at the legend's force: BAND_EMS of the style's type size."""
+    return BAND_EMS * style.font_size
+
+
 def force_scale(history) -> float:
-    """The force (units of M c^2/L) a band BAND_POINTS wide shows: the least nice number not below the largest
+    """The force (units of M c^2/L) a band `band_points` wide shows: the least nice number not below the largest
     |F| of any profile, so no band is wider."""
     greatest = max(max(abs(p.least()), abs(p.greatest())) for _, p in history.driving.profiles())
     return nice_number(greatest, "at_least")
@@ -91,14 +97,14 @@ class ForceLayer(Layer):
 
 @dataclass(frozen=True)
 class ForceBands(ForceLayer):
-    """Each force as a band along its end's world-line, on the outside, as wide as F (BAND_POINTS for
+    """Each force as a band along its end's world-line, on the outside, as wide as F (`band_points` for
     `force_scale`), with arrows into the rod where it presses and out of it where it pulls (a pull's band hatched)."""
 
     name = "forces"
 
     def draw(self, ax, panel):
         driving, st, eta = panel.history.driving, panel.style, panel.view.frame.rapidity
-        per_force = BAND_POINTS / force_scale(panel.history) / panel.scale  # units of L per unit of force
+        per_force = band_points(st) / force_scale(panel.history) / panel.scale  # units of L per unit of force
         artists, edges = [], []
         for end, profile in driving.profiles():
             points, forces = band(panel.worldlines[f"rod_{end}"], profile, eta, driving.frame_rapidity(end))
@@ -140,7 +146,7 @@ class ForceBands(ForceLayer):
             x, t = float(np.interp(instant, times, points[:, 0])), float(np.interp(instant, times, points[:, 1]))
             tip_out = x + outside(end) * per_force * abs(force)
             tail, head = ((tip_out, t), (x, t)) if force > 0 else ((x, t), (tip_out, t))
-            arrow = FancyArrowPatch(tail, head, arrowstyle="-|>", mutation_scale=0.55 * BAND_POINTS,
+            arrow = FancyArrowPatch(tail, head, arrowstyle="-|>", mutation_scale=0.55 * band_points(st),
                                     color=st.force.colour, linewidth=st.force.width, shrinkA=0.0, shrinkB=0.0,
                                     zorder=3.75, gid=f"{panel.letter}-force-arrow-{end}-{k}")
             out.append(ax.add_artist(arrow))
@@ -183,29 +189,29 @@ class ForceMoments(ForceLayer):
 
 @dataclass(frozen=True)
 class ForceKey:
-    """The legend's handle of the force bands: a band BAND_POINTS wide against an end, with an arrow."""
+    """The legend's handle of the force bands: a band `band_points` wide against an end, with an arrow."""
 
     style: Style
     pulls: bool
 
 
 class ForceKeyHandler(HandlerBase):
-    """Draws a `ForceKey`: the rod's end on the right of the handle box, a band BAND_POINTS wide left of it with
+    """Draws a `ForceKey`: the rod's end on the right of the handle box, a band `band_points` wide left of it with
     an arrow pressing in (and, where a profile pulls, a hatched one beside it)."""
 
     def create_artists(self, legend, orig_handle, xdescent, ydescent, width, height, fontsize, trans):
         st = orig_handle.style
+        wide = band_points(st)
         x1, y0, h = width - xdescent, -ydescent - 0.25 * height, 1.5 * height
         artists = []
-        bands = ((x1 - BAND_POINTS, False),) if not orig_handle.pulls else ((x1 - BAND_POINTS, False),
-                                                                              (x1 - 2.5 * BAND_POINTS, True))
+        bands = ((x1 - wide, False),) if not orig_handle.pulls else ((x1 - wide, False), (x1 - 2.5 * wide, True))
         for left, pull in bands:
-            artists.append(Rectangle((left, y0), BAND_POINTS, h, facecolor=st.force_fill, edgecolor=st.force.colour,
+            artists.append(Rectangle((left, y0), wide, h, facecolor=st.force_fill, edgecolor=st.force.colour,
                                      linewidth=st.force.width, hatch=PULL_HATCH if pull else None, transform=trans))
-            end = left + BAND_POINTS
+            end = left + wide
             artists.append(Line2D([end, end], [y0, y0 + h], **line_kwargs(st.rod), transform=trans))
             tail, head = ((left, y0 + h / 2), (end, y0 + h / 2)) if not pull else ((end, y0 + h / 2), (left, y0 + h / 2))
-            artists.append(FancyArrowPatch(tail, head, arrowstyle="-|>", mutation_scale=0.55 * BAND_POINTS,
+            artists.append(FancyArrowPatch(tail, head, arrowstyle="-|>", mutation_scale=0.55 * wide,
                                            color=st.force.colour, linewidth=st.force.width, shrinkA=0.0, shrinkB=0.0,
                                            transform=trans))
         return artists

@@ -20,8 +20,9 @@ from rodparadox.io.scenario import load
 from rodparadox.physics.frames import paper_frames
 from rodparadox.physics.models import run_rods
 
-#: a band is this many points wide at the legend's force; Sears's presets peak at 0.2 M c^2/L, the push at 0.25,
-#: so the legend's force (the least nice number not below the peak) is the peak itself
+#: a band is this many points wide at the legend's force in the default style (its type size); Sears's presets
+#: peak at 0.2 M c^2/L, the push at 0.25, so the legend's force (the least nice number not below the peak) is the
+#: peak itself
 BAND_POINTS = 9.0
 
 
