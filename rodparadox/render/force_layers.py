@@ -157,9 +157,8 @@ class ForceBands(ForceLayer):
             return None
         scale = shown(force_scale(history), 4)
         pulls = any(p.least() < 0 for _, p in history.driving.profiles())
-        return (ForceKey(style, pulls),
-                f"force on an end: band {'this wide' if not pulls else 'as wide'} at {scale} $Mc^2/L$, arrows "
-                + ("pressing in (unhatched) or pulling out (hatched)" if pulls else "pressing into the rod"))
+        return ForceKey(style, pulls), (f"force on an end: this wide at {scale} $Mc^2/L$"
+                                        + ("; hatched: a pull" if pulls else ""))
 
 
 @dataclass(frozen=True)

@@ -151,7 +151,7 @@ def test_a_pull_is_told_from_a_push_hatched_and_arrows_pointing_out(tmp_path):
     arrows = [a for a in diagram.artists["forces"]["a"] if "arrow" in (a.get_gid() or "")]
     assert arrows and all(a._posA_posB[1][0] > a._posA_posB[0][0] for a in arrows)
     _, labels = diagram.figure.legends[0].legend_handles, [t.get_text() for t in diagram.figure.legends[0].texts]
-    assert any("pulling out (hatched)" in text for text in labels)
+    assert any(text.endswith("; hatched: a pull") for text in labels)
 
 
 # --- the force events and the lines of simultaneity ------------------------------------------------------------
@@ -189,7 +189,7 @@ def test_lines_of_simultaneity_run_through_each_forces_start_and_end_at_the_fram
 def test_the_legend_and_the_note_say_forces_not_particles():
     diagram = drawn("sears_moving", 0.6, "both")
     texts = [t.get_text() for t in diagram.figure.legends[0].texts]
-    assert any(text.startswith("force on an end: band this wide at 0.2 $Mc^2/L$") for text in texts)
+    assert any(text == "force on an end: this wide at 0.2 $Mc^2/L$" for text in texts)
     assert "a force starts (on) or ends (off)" in texts
     assert not any(text in ("impact", "contact: particle rides with end") or "particle" in text for text in texts)
     assert "light front (a jump in λ)" not in texts  # smooth forces: no front
