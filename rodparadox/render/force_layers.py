@@ -186,6 +186,13 @@ class ForceMoments(ForceLayer):
         return Line2D([], [], **impact_marker(style)), "a force starts (on) or ends (off)"
 
 
+def strip_arrow(ax, style: Style, end: str, animated: bool) -> FancyArrowPatch:
+    """The arrow of a strip's driven end (`strip.draw_strip`), placed and sized by `strip.update_strip`."""
+    return ax.add_patch(FancyArrowPatch((0.0, 0.0), (0.0, 0.0), arrowstyle="-|>", mutation_scale=0.8 * band_points(style),
+                                        color=style.force.colour, linewidth=1.5 * style.force.width, shrinkA=0.0,
+                                        shrinkB=0.0, zorder=4, animated=animated))
+
+
 @dataclass(frozen=True)
 class ForceKey:
     """The legend's handle of the force bands: a band `band_points` wide against an end, with an arrow."""
