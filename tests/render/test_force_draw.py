@@ -227,3 +227,31 @@ def test_the_same_figure_gives_the_same_bytes():
 def test_what_plot_cannot_draw_for_forces_is_refused_in_one_sentence(args, words, tmp_path):
     message = error_of("plot", *args, "-o", tmp_path)
     assert words in message and message.count("\n") <= 1 and not list(tmp_path.iterdir())
+
+
+# --- the animations' strips ----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("t, expected", [(1.0, 0.2), (0.75, 0.1), (1.6, 0.0)])
+def test_a_strip_carries_the_force_at_each_end_and_draws_it_as_an_arrow(t, expected):
+    """Sears in S: F = 0.2 sin^2(pi (t - 0.5)) at both ends on [0.5, 1.5]: 0.2 at t = 1, 0.1 at t = 0.75, nothing
+    at t = 1.6. The strip's arrows are as long as plot's bands (BAND_POINTS at 0.2), pressing into the rod."""
+    from matplotlib.figure import Figure
+
+    from rodparadox.physics.frames import rest_frame
+    from rodparadox.physics.snapshot import strip_at
+    from rodparadox.render.colour_scale import colour_scale
+    from rodparadox.render.strip import draw_strip
+
+    h = runs("sears")[0]
+    strip = strip_at(h, rest_frame(), t, 0.0)
+    assert dict(strip.forces) == pytest.approx({"left": expected, "right": expected}, abs=1e-12)
+    figure = Figure(figsize=(4, 1), dpi=72)
+    ax = figure.add_axes((0, 0, 1, 1))
+    ax.set_xlim(-2, 2)  # 72 points per L
+    drawn = draw_strip(ax, strip, "default", colour_scale(h, rest_frame()), rest_frame(), force_scale=0.2)
+    for arrow, end in zip(drawn.arrows, ("left", "right")):
+        assert arrow.get_visible() == (expected > 0)
+        if expected > 0:
+            (x0, _), (x1, _) = arrow._posA_posB
+            assert x1 == pytest.approx(-0.5 if end == "left" else 0.5, abs=1e-12)  # the head on the end
+            assert (x1 - x0) * 72 == pytest.approx(BAND_POINTS * expected / 0.2 * (1 if end == "left" else -1))
