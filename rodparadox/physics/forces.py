@@ -20,6 +20,8 @@ as every frame a user gives (`model.FASTEST`).
 
 from __future__ import annotations
 
+import bisect
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -189,6 +191,10 @@ class ForceProfile:
     def pieces(self) -> tuple[float, ...]:
         """The instants where the profile is not smooth (switch on and off, jumps, the corners of `points`), in
         order: an ODE solver restarts there."""
+        return self._pieces
+
+    @functools.cached_property
+    def _pieces(self) -> tuple[float, ...]:  # made once: the solvers ask for it at every step
         if self.shape != "points":
             return self.start, self.start + self.duration
         return tuple(t for t, _ in self.points)
@@ -196,7 +202,7 @@ class ForceProfile:
     def piece_index(self, t: float) -> int:
         """Which piece holds time t: 0 before `pieces()[0]`, i on [pieces()[i-1], pieces()[i]), len(pieces()) after
         the last (right-continuous: at a piece's start, that piece)."""
-        return sum(1 for b in self.pieces() if b <= t)
+        return bisect.bisect_right(self._pieces, t)
 
     def piece_value(self, index: int, t):
         """F on the piece `index` (`piece_index`) by that piece's own smooth formula, continued past its ends (an
@@ -289,13 +295,17 @@ class ScaledProfile:
         return a * self.L, b * self.L
 
     def pieces(self) -> tuple[float, ...]:
+        return self._pieces
+
+    @functools.cached_property
+    def _pieces(self) -> tuple[float, ...]:
         return tuple(t * self.L for t in self.profile.pieces())
 
     def jumps(self) -> tuple[float, ...]:
         return tuple(t * self.L for t in self.profile.jumps())
 
     def piece_index(self, t: float) -> int:
-        return sum(1 for b in self.pieces() if b <= t)
+        return bisect.bisect_right(self._pieces, t)
 
     def piece_value(self, index: int, t):
         return self.profile.piece_value(index, np.asarray(t, dtype=float) / self.L) / self.L
