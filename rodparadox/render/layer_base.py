@@ -75,12 +75,17 @@ def widest_line(style: Style) -> float:
                                      style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
 
 
+#: a rod driven by forces: its own lines of simultaneity at each stage's start and this many more while driven
+#: (12 hatched Sears's one-L pulse into a solid block)
+NOW_LINES_DRIVEN = 6
+
+
 def own_now_lines(history) -> list:
     """The rod's own lines of simultaneity, (left end, right end) event pairs in S: a rigid rod's turns and the
     lines between them (`turning`), or a rigid rod driven by forces (`driving`); none for a rod without them."""
     if history.turning is not None:
         return history.turning.now_lines()
-    return history.driving.now_lines() if history.driving is not None else []
+    return history.driving.now_lines(NOW_LINES_DRIVEN) if history.driving is not None else []
 
 
 def contacts_last(history) -> bool:
