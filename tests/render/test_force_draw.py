@@ -199,6 +199,20 @@ def test_the_legend_and_the_note_say_forces_not_particles():
     assert all("\xa0" not in line[:1] + line[-1:] for line in note.split("\n"))  # no unit torn from its number
 
 
+@pytest.mark.parametrize("name, v, style", [("sears_moving", 0.6, "default"), ("push", 0.95, "print")])
+def test_no_label_touches_a_line_a_marker_or_another_label(name, v, style):
+    """on and off beside their markers, clear of the bands' edges, the ends, the lines of simultaneity and each
+    other; titles, ticks, legend and note clear of each other (the checks of every particle figure)."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from test_render import _collisions, _layout_problems
+
+    figure = drawn(name, v, "both", style).figure
+    assert not _collisions(figure, style) and not _layout_problems(figure, style)
+
+
 def test_titles_say_the_driven_rods_final_velocity():
     """push: F = 0.25 for 4 L of S on a rod of mass M: the rigid rod's momentum is 0.25 x 4 = 1 M c, so sinh phi = 1
     and v = 1/sqrt(2) in S; in S' (moving at -0.6 relative to S) (0.7071 + 0.6)/(1 + 0.6 x 0.7071) = 0.9177."""
