@@ -36,7 +36,7 @@ def main() -> int:
     from rodparadox.web import data
     from rodparadox.web.page import page
 
-    import rodparadox.physics.causal  # noqa: F401  (scipy's import, once, outside the timings)
+    import rodparadox.physics.causal  # noqa: F401  (the causal rod's imports, once, outside the timings)
 
     scenario = [(options.scenario, load(options.scenario))]
     start = time.perf_counter()

@@ -196,49 +196,57 @@ def _in_rods_order(history: RodHistory, table: Table, frame: Frame) -> Table:
     return replace(table, caption=f"{table.caption}, in the rod's own order", notes=(), rows=tuple(rows))
 
 
-def _worksheet_tables(history: RodHistory, frame: Frame, parts: frozenset[str] = frozenset()
-                      ) -> tuple[list[Block], list[Block]]:
+def _worksheet_tables(history: RodHistory, frame: Frame, parts: frozenset[str] = frozenset(),
+                      earlier: tuple[Frame, ...] = ()) -> tuple[list[Block], list[Block]]:
     """A worksheet's blank events table of the frame, and the filled tables its answer key prints (`_tables`): the
     ledger and hidden tables wait for the key, since a ledger's row of one instant ("B₁ and A₁") tells which impacts
-    are simultaneous in the frame, and its slices' times tell when the impacts come."""
+    are simultaneous in the frame, and its slices' times tell when the impacts come. `earlier`: the section's frames
+    before this one (`_tables`)."""
     symbol, time = frame_name(frame), time_name(frame)
     x = coordinates(frame)[0]
+    unit = _table_unit(history.scenario.L)
     asked: list[Block] = [
         Paragraph(f"The impacts in {symbol}, in the rod's own order: fill in where and when each strikes ({x} and "
-                  f"{time} {_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and "
-                  f"of the rod just before and just after it; those the set-up gives are filled in."),
+                  f"{time} {unit}), and the velocities (in units of c) of the particle and of the rod just before and "
+                  f"just after it; those the set-up gives are filled in." if not earlier else
+                  f"Fill in the impacts in {symbol} the same way, in the rod's own order ({x} and {time} {unit})."),
         _in_rods_order(history, tables.events_table(history, frame, blank=True), frame)]
-    return asked, _tables(history, frame, blank=False, parts=parts or frozenset(SECTIONS))
+    return asked, _tables(history, frame, blank=False, parts=parts or frozenset(SECTIONS), earlier=earlier)
 
 
-def _tables(history: RodHistory, frame: Frame, blank: bool, parts: frozenset[str] = frozenset(SECTIONS)
-            ) -> list[Block]:
+def _tables(history: RodHistory, frame: Frame, blank: bool, parts: frozenset[str] = frozenset(SECTIONS),
+            earlier: tuple[Frame, ...] = ()) -> list[Block]:
     """The frame's events, ledger and hidden tables (`tables.build`), each after the sentence that says how to read it;
     `blank`: a worksheet's copies, their numbers left to fill in; `parts`: the events tables with `tables`, the
-    ledger and hidden ones with `ledger`."""
-    return ((_events(history, frame, blank) if "tables" in parts else [])
-            + (_ledger(history, frame, blank) if "ledger" in parts else []))
+    ledger and hidden ones with `ledger`; `earlier`: the section's frames before this one. A sentence says in full how
+    to read a kind of table the first time the section prints one, and in short after (a teacher found the same
+    paragraph twice on a page, for S and S′)."""
+    return ((_events(history, frame, blank, earlier) if "tables" in parts else [])
+            + (_ledger(history, frame, blank, earlier) if "ledger" in parts else []))
 
 
-def _events(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
+def _events(history: RodHistory, frame: Frame, blank: bool, earlier: tuple[Frame, ...] = ()) -> list[Block]:
     symbol, time = frame_name(frame), time_name(frame)
     x = coordinates(frame)[0]
+    unit = _table_unit(history.scenario.L)
     return [
         Paragraph(f"The impacts in {symbol}, in the order of its time: where and when each strikes ({x} and {time} "
-                  f"{_table_unit(history.scenario.L)}), and the velocities (in units of c) of the particle and of the "
-                  f"rod just before and just after it."),
+                  f"{unit}), and the velocities (in units of c) of the particle and of the rod just before and just "
+                  f"after it." if not earlier else
+                  f"The impacts in {symbol}, in the order of its time, in the same columns ({x} and {time} {unit})."),
         tables.events_table(history, frame, blank)]
 
 
-def _ledger(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
+def _ledger(history: RodHistory, frame: Frame, blank: bool, earlier: tuple[Frame, ...] = ()) -> list[Block]:
     symbol, time = frame_name(frame), time_name(frame)
     blocks: list[Block] = [
         Paragraph(f"The ledger in {symbol}: at each instant of {symbol} at which the rod is struck (impacts at one "
                   f"instant taken together), the energy E and momentum p just before and just after of each "
                   f"particle, of the rod's motion (its kinetic part, the sum over its material points on the slice "
-                  f"{time} = constant) and the hidden part (what the rod's stress carries), which add up to the "
-                  f"total, the same as before the first impact. Below them, apart, the rod's dynamical E and p, "
-                  f"those of its momentum, which takes each impulse at once: not a summand."),
+                  f"{time} = constant) and the hidden part (what the rod's stress carries); the note under the table "
+                  f"says how they add up, and what the rod's dynamical row, shown apart, is." if not earlier else
+                  f"The ledger in {symbol}, read the same way, the rod's kinetic part summed on the slice "
+                  f"{time} = constant."),
         tables.ledger_table(history, frame, blank),
     ]
     hidden = tables.hidden_table(history, frame, blank)
@@ -248,7 +256,10 @@ def _ledger(history: RodHistory, frame: Frame, blank: bool) -> list[Block]:
     else:
         blocks += [Paragraph(f"The hidden part in {symbol} on a slice halfway between each two consecutive changes "
                              f"(impacts, the start or end of a turn), where it is not zero: energy and momentum that "
-                             f"no body's motion shows, held by the stress in the rod."), hidden]
+                             f"no body's motion shows, held by the stress in the rod."
+                             if all(tables.hidden_table(history, f, blank) is None for f in earlier) else
+                             f"The hidden part in {symbol}, where it is not zero, on a slice halfway between each two "
+                             f"consecutive changes."), hidden]
     return blocks
 
 
@@ -284,12 +295,12 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
     filled: list[Block] = []
     for f in frames:
         if worksheet:
-            asked_tables, key_tables = _worksheet_tables(history, f, parts)
+            asked_tables, key_tables = _worksheet_tables(history, f, parts, earlier=frames[:frames.index(f)])
             blocks += asked_tables
             # the key's tables named after the section (their LaTeX files fig2_ledger_rest_key.tex, one per scenario)
             filled += [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b for b in key_tables]
         else:
-            blocks += _tables(history, f, blank=False, parts=parts)
+            blocks += _tables(history, f, blank=False, parts=parts, earlier=frames[:frames.index(f)])
     section_title = title(history, with_speed=True)
     key: list[Block] = []
     compared: tuple[list[Block], list[Block]] = ([], [])

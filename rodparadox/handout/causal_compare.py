@@ -249,11 +249,18 @@ def events_table(causal, frame: Frame, blank: bool = False) -> Table:
     """The causal rod's contacts and separations in the frame (`tables.build.events_table`, named apart from the
     rigid rod's)."""
     table = tables.events_table(causal, frame, blank)
-    return replace(table, name=f"causal_events_{frame_word(frame)}",
+    # its rows are contacts and separations, and a particle leaving an end is no impact: the first column is the
+    # event, as the causal rod's ledger names it
+    header = tuple("event" if column == "impact" else column for column in table.header)
+    return replace(table, name=f"causal_events_{frame_word(frame)}", header=header,
                    caption=f"The causal rod\u2019s contacts and separations in frame {frame_symbol(frame)}")
 
 
-def table_text(frame: Frame) -> str:
+def table_text(frame: Frame, first: bool = True) -> str:
+    """How to read the causal rod's table of contacts and separations in the frame: in full for the `first` frame,
+    in short for the next (the same paragraph twice on a page, for S and S′, said nothing new)."""
+    if not first:
+        return f"The causal rod\u2019s contacts and separations in {frame_name(frame)}, in the same columns."
     return (f"The causal rod\u2019s contacts (A₁, B₁ \u2026) and separations (A′₁, B′₁ \u2026, where the particle "
             f"leaves the end) in {frame_name(frame)}: where and when, the particle\u2019s velocity (it changes during a "
             f"contact, not at its ends) and the struck end\u2019s, just before and just after.")
@@ -280,10 +287,13 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
                          Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)), Paragraph(energy_text(c)),
                          Paragraph(stress_text(c))]
     filled: list[Block] = [Heading("The causal rod\u2019s numbers", 2)]
-    filled += [b for f in frames for b in (Paragraph(table_text(f)), events_table(causal, f))]
-    filled += [b for f in frames for b in (Paragraph(ledger_text(f)), ledger_table(causal, f))]
+    filled += [b for f in frames for b in (Paragraph(table_text(f, f == frames[0])), events_table(causal, f))]
+    filled += [b for f in frames for b in (Paragraph(ledger_text(f, f == frames[0])), ledger_table(causal, f))]
     # the diagram, then what it shows (text that may fill a page the diagram misses), the strips, the numbers
-    shown = [Heading(HEADING, 2), Paragraph(INTRODUCTION + " " + starts_text(rigid, causal, frames) + " " + SHOWN),
+    # where each rod's first impacts fall is said once, by the note under the diagram (`tables.comparison`), which
+    # a teacher found said twice, here and there, a few lines apart
+    shown = [Heading(HEADING, 2),
+             Paragraph(INTRODUCTION + " " + starts_text(rigid, causal, frames, impacts=False) + " " + SHOWN),
              diagram, *told, *drawn, *filled]
     if not worksheet:
         return shown, []
@@ -291,8 +301,11 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
     return [Heading(HEADING, 2), Paragraph(asked)], shown
 
 
-def ledger_text(frame: Frame) -> str:
+def ledger_text(frame: Frame, first: bool = True) -> str:
+    """How to read the causal rod's ledger in the frame: in full for the `first` frame, in short for the next."""
     symbol, time = frame_name(frame), time_name(frame)
+    if not first:
+        return f"The causal rod\u2019s ledger in {symbol}, read the same way, on the slice {time} = constant."
     return (f"The causal rod\u2019s ledger in {symbol}: at each contact and separation, on the slice {time} = "
             f"constant through it, the energy E and momentum p of each particle and of the rod\u2019s matter and "
-            f"stress, which add up to the total before the first contact.")
+            f"stress; the note under the table says what each part is and how they add up.")

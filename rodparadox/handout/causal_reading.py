@@ -12,8 +12,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
 from rodparadox.physics.types import Impact
 from rodparadox.physics.frames import Frame, rest_frame
 from rodparadox.physics.types import EnergyMomentum
@@ -101,49 +99,6 @@ class StressSlice:
         """What the causal rod carries beyond its material points' motion: its total less (M/L)∫(cosh ψ, sinh ψ)dσ,
         the counterpart of the rigid rod's hidden part (elastic energy and the momentum its stress carries)."""
         return self.rod[0] - self.motion[0], self.rod[1] - self.motion[1]
-
-
-#: Gauss-Legendre nodes on each smooth piece of a slice across the causal rod, and the longest piece (in L)
-MOTION_NODES, MOTION_PIECE = 10, 0.125
-
-
-def rest_mass_motion(causal, frame_rapidity: float, t: float) -> tuple[float, float]:
-    """(E, p) of the causal rod's material points' rest mass moving at their own velocities on the slice t of the
-    frame, (M/L)∫₀ᴸ(cosh ψ, sinh ψ)dσ (M = 1), ψ the rapidity of the material point σ where it crosses the slice.
-
-    In the material chart the slice is a curve T(σ) with |dT/dσ| < 1 (it is space-like and light runs at 45°), on
-    which ψ = (r+(T + σ) − r−(T − σ))/2 − f is smooth between the fronts: where T + σ meets a break of r+ or T − σ
-    one of r− (each found by bisection, T ± σ being monotonic). Gauss-Legendre on each piece then."""
-    from scipy.optimize import brentq
-
-    from rodparadox.physics.kinematics import ChartCurve
-
-    fronts = causal.fronts  # the causal rod's capability: its solution in the material chart
-    sol, L, f = fronts.solution, causal.scenario.L, frame_rapidity
-
-    def T_of(sigma: float) -> float:
-        return ChartCurve(sol, sigma, -math.inf, math.inf, f).chart_time(t)
-
-    T_L, T_R = fronts.end_chart_time("left", f, t), fronts.end_chart_time("right", f, t)
-    cuts = {0.0, L}
-    for u in sol.plus.breaks(T_L, T_R + L):
-        cuts.add(brentq(lambda s: T_of(s) + s - u, 0.0, L, xtol=1e-14 * L))
-    for w in sol.minus.breaks(T_R - L, T_L):
-        cuts.add(brentq(lambda s: T_of(s) - s - w, 0.0, L, xtol=1e-14 * L))
-    cuts = sorted(cuts)
-    z, wz = np.polynomial.legendre.leggauss(MOTION_NODES)
-    E = p = 0.0
-    for a, b in zip(cuts, cuts[1:]):
-        n = max(1, math.ceil((b - a) / (MOTION_PIECE * L)))
-        for k in range(n):
-            lo, hi = a + (b - a) * k / n, a + (b - a) * (k + 1) / n
-            for zi, wi in zip(z, wz):
-                sigma = 0.5 * (lo + hi) + 0.5 * (hi - lo) * zi
-                T = T_of(sigma)
-                psi = 0.5 * (sol.r_plus(T + sigma) - sol.r_minus(T - sigma)) - f
-                E += 0.5 * (hi - lo) * wi * math.cosh(psi) / L
-                p += 0.5 * (hi - lo) * wi * math.sinh(psi) / L
-    return E, p
 
 
 @dataclass(frozen=True)
@@ -281,7 +236,7 @@ def stress_slice(rigid, causal, frames) -> StressSlice:
     rod = dict(s.bodies)["rod"]
     return StressSlice(frame, t, rigid.energy_momentum(f, t).hidden, parts["matter"], parts["stress"],
                        tuple((n, em) for n, em in s.bodies if n != "rod"), causal.initial_total(f),
-                       (rod.E, rod.p), rest_mass_motion(causal, f, t))
+                       (rod.E, rod.p), tuple(float(x) for x in causal.fronts.rest_mass_motion(f, [t])[0]))
 
 
 def compare(rigid, causal, frames) -> Comparison:

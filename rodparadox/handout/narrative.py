@@ -281,7 +281,7 @@ def _why(r: Reading) -> str:
                     f"rod moves on at {in_c(r.rod_velocities(f)[0])} between them: it takes both impulses together, on "
                     f"its own "
                     f"line of simultaneity, where they cancel. Between them in {frame_name(f)}, {first.particle} "
-                    f"has already been struck and {last.particle} not yet, so the momentum {first.particle} gave up, "
+                    f"has already struck and {last.particle} not yet, so the momentum {first.particle} gave up, "
                     f"{numeral(hidden.p)} M c, is carried by the stress in the rod: the hidden part of the ledger.")
         if not still:
             masses = listed([f"{i.particle} (mass {numeral(h.scenario.particle(i.particle).mass)} M)" for i in c])

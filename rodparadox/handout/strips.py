@@ -167,8 +167,9 @@ def strips_caption(history: RodHistory, frame: Frame, times: Sequence[float]) ->
         bar = (f"The bar runs from the rod's left end to its right end; its material points keep the rod's first "
                f"velocity in {symbol}, {in_c(frame.rod_velocity())}, throughout, so it has one shade")
     else:
+        # the scale is centred on the rod's first velocity only on screen: in print the bar runs from the slowest
+        # velocity (light) to the fastest (dark), and a rod that only slows has its first velocity at an end
         bar = (f"The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of each of "
-               f"its material points (the scale is centred on {in_c(frame.rod_velocity())}, the rod's velocity in "
-               f"{symbol} before it is struck)")
+               f"its material points, which the scale under the rows gives")
     return (f"The rod and the particles in {symbol} at {time_name(frame)} = {instants} (in units of L), earliest "
             f"first. {bar}; the dots are the particles. " + _which_end_first(r, frame))

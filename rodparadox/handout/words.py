@@ -128,9 +128,10 @@ def told_claim(what: str, *phrases: str) -> Fact:
 
 
 def simultaneity_facts(first: str, second: str, frame: str, same: bool, gap: float = 0.0) -> tuple[Fact, ...]:
-    """Whether two impacts (named B₁, A₁) are simultaneous in a frame (named S′), and if not how far apart: the
-    phrases that state it (a ledger's row label "B₁ and A₁" for one instant, "same instant of S′", the preset's
-    title "simultaneous in the moving frame") and the interval."""
+    """Whether two impacts (named B₁, A₁, the earlier first) are simultaneous in a frame (named S′), and if not how
+    far apart: the phrases that state it (a ledger's row label "B₁ and A₁" for one instant, "same instant of S′",
+    the preset's title "simultaneous in the moving frame"; if not, that one comes before the other: "In S′, A₁
+    comes before B₁" answers whether they are simultaneous) and the interval."""
     described = {"S": "the rod's rest frame", "S′": "the moving frame"}.get(frame, frame)
     if same:
         return (told_claim(f"{first} and {second} simultaneous in {frame}", f"{first} and {second}",
@@ -138,6 +139,7 @@ def simultaneity_facts(first: str, second: str, frame: str, same: bool, gap: flo
                            f"same instant of {frame}", f"one instant of {frame}", "share one"),)
     return (told_claim(f"{first} and {second} not simultaneous in {frame}", "not simultaneous",
                        f"different instants of {frame}", f"different instants of {described}"),
+            *order_facts(first, second, frame),
             told_number(f"the time between {first} and {second} in {frame}", gap))
 
 

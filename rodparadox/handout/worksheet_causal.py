@@ -53,7 +53,10 @@ def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
         return Asked(text, answer, tuple(asks))
     D = impact_name(f.own.label)
     same = abs(f.own.event.t / c.L - f.t_contact) <= 1e-12 * (1.0 + abs(f.t_contact))
-    at = "at the same instant of S" if same else f"at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}"
+    # at C's instant the far end has not moved in either model: D is the rigid rod's impact too, whose time the
+    # table of S asks (that it is C's instant fills that blank cell), so the question points to the table
+    at = (f"at the time your table of S gives for {D}" if same and tabled else "at the same instant of S" if same
+          else f"at t = {in_l(f.own.event.t / c.L, ANSWER_DIGITS)}")
     text = (f"{start} {D} strikes the {f.far} end {at}. When "
             f"does light from {C} reach the {f.far} end? What sets the causal rod\u2019s {f.far} end moving, and when "
             f"does the rigid rod\u2019s {f.far} end start to move?")

@@ -173,14 +173,17 @@ def question_at_rest(r: Reading) -> Asked | None:
             when = f"at the one instant {time} = {in_l_approx(r.length(end))}"
         else:
             when = f"from {time} = {in_l_approx(r.length(end))} to {in_l_approx(r.length(next_start))}"
-        text = (f"The whole rod comes to rest in {symbol}. When, and how long is it then, measured in {symbol}? How "
-                f"long is it in {symbol} before it is first struck?")
+        # asked, not told: that the rod stops in S′ is a blank cell of its table (the rod's velocity after B₁)
+        text = (f"Is the whole rod ever at rest in {symbol}, every point of it at once? If so, when, and how long is "
+                f"it then, measured in {symbol}? How long is it in {symbol} before it is first struck?")
         answer = (f"It is at rest {when}: the turn that {impact_names(r.turn_cause(turn))} started ends on a line of "
                   f"constant {time}, so every point of the rod reaches velocity 0 in {symbol} at once.",
                   f"At rest in {symbol}, it has its full proper length L there. Before it is struck it moves at "
                   f"{in_c(u0, ANSWER_DIGITS)} in {symbol}, contracted to L √(1 − u²) = L √(1 − {bracketed(u0)}²) "
                   f"= {in_l_approx(1.0 / gamma(u0))}.")
-        asks = (told_number(f"when the rod comes to rest in {symbol}", r.length(end)),
+        asks = (told_claim(f"the whole rod at rest in {symbol}", f"comes to rest in {symbol}",
+                           f"at rest in {symbol}", f"stops in {symbol}"),
+                told_number(f"when the rod comes to rest in {symbol}", r.length(end)),
                 told_claim(f"the rod at rest in {symbol} has its full length", "full length", "proper length L there"),
                 told_number(f"the rod's length in {symbol} before it is struck", 1.0 / gamma(u0)))
         return Asked(text, answer, asks)
@@ -273,8 +276,9 @@ def question_together(r: Reading, b: Frame) -> Asked | None:
     cancel = (f" (in S, where that line is one of constant t, the particles arrive with momenta "
               f"{listed([answer_numeral(p) + ' M c' for p in momenta])}, which cancel)"
               if abs(sum(momenta)) <= PRINTED_ZERO * sum(abs(p) for p in momenta) else "")
-    text = (f"In {symbol}, {impact_name(first.label)} comes before {impact_name(last.label)}. What is the rod's "
-            f"velocity in {symbol} between them, and why does {first.particle}'s impulse not change it?")
+    # asked without telling the order in b, which the question on simultaneity asks
+    text = (f"What is the rod's velocity in {symbol} from before {impact_names(c)} until after both, and why do "
+            f"their impulses not change it?")
     answer = (f"{in_c(u_rod, ANSWER_DIGITS)}, as before and after: the rod takes {impact_names(c)} together, on one line "
               f"of its own simultaneity, and there the impulses cancel{cancel}.",
               f"Between the two impacts in {symbol} the momentum {first.particle} has given up is held by the stress "

@@ -101,10 +101,13 @@ class Fronts(Protocol):
     def rod_parts(self, frame_rapidity: float, t: float) -> tuple["EnergyMomentum", "EnergyMomentum"]:
         """The rod's (E, p) on the slice split into its matter part and its stress part."""
 
-    def rod_parts_on_slices(self, frame_rapidity, times, tables=None, tolerance: float | None = None,
-                            ends=None) -> tuple:
+    def rod_parts_on_slices(self, frame_rapidity, times) -> tuple:
         """The matter and stress parts on many slices at once (one frame, or a frame per slice): two (n, 2) arrays
-        of (E, p); read from `tables` (`chart_tables`) to `tolerance` where given."""
+        of (E, p), the same integral as `rod_parts`."""
+
+    def rest_mass_motion(self, frame_rapidity, times):
+        """(n, 2): (E, p) of the rod's material points' rest mass moving at their own velocities on each slice,
+        (M/L) int_0^L (cosh psi, sinh psi) d sigma, psi the rapidity of material point sigma where it crosses it."""
 
     def chart_tables(self, lo: float, hi: float, tolerance: float | None = None):
         """Tables of the invariants and the chart map over chart times [lo, hi], evaluated for whole arrays at once

@@ -142,7 +142,11 @@ def colour_bar_ticks(scale: ColourScale, width: float, size: float) -> tuple[lis
     from rodparadox.render.text import approximate_size
 
     lo, hi = scale.ends
-    wanted = [lo, hi] + ([scale.centre] if lo < scale.centre < hi else [])  # ends first: they are kept first
+    # the centre only strictly inside: one that is an end up to rounding (single's causal rod from S′ at v = 0.3
+    # reaches +0.30000000000000004 against the centre 0.3) would be told apart from it with 17 digits
+    inside = all(abs(math.atanh(scale.centre) - math.atanh(end)) > STEP_ROUNDING * max(1.0, abs(math.atanh(end)))
+                 for end in (lo, hi))
+    wanted = [lo, hi] + ([scale.centre] if lo < scale.centre < hi and inside else [])  # ends first: kept first
     # centre - bound is often zero up to rounding (S' of fig2: 0.6 - 0.6 = 1.1e-16): it is written 0
     for digits in range(3, 18):  # more digits until no two ticks read alike (0.9999999 and 0.99999994 near c)
         label = {x: shown(0.0 if abs(x) <= STEP_ROUNDING * max(abs(lo), abs(hi)) else x, digits) for x in wanted}
@@ -313,13 +317,14 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         scale = colour_scale(history, frame)
         strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
-        labels, notes = _stills_labels(strips, frame, L)
+        contacts = _contacts_last(history)
+        labels, notes = _stills_labels(strips, frame, L, contacts)
         spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
         # the room for the whole block's labels: the parts of a block split between pages keep one axes width, and
         # so one tick step
         # a colour bar only where the rod's velocity varies (fig1's rod never changes: no bar of ±0.0997)
         bar = scale.shown is not None
-        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L)), fs, bar)
+        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts)), fs, bar)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -400,14 +405,41 @@ class _StillsRoom(NamedTuple):
                 self.top + self.below + rows * row_scale * self.least_row + self.row_gap * (rows - 1))
 
 
-def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float) -> tuple[list[str], list[str]]:
-    """Each row's time (t′ = 1.25 L) and the impacts at that instant (mathtext), or an empty note."""
+def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bool = False
+                   ) -> tuple[list[str], list[str]]:
+    """Each row's time (t′ = 1.25 L) and the events at that instant (mathtext), or an empty note: impacts of a rod
+    whose impacts are instantaneous; of a rod whose `contacts` last (the causal rod's), contacts and separations,
+    each named as what it is (a particle leaving an end is no impact)."""
     from rodparadox.numbers import impact_name
 
+    def named(word: str, events: Sequence[str]) -> str:
+        return (f"{word} " if len(events) == 1 else f"{word}s ") + ", ".join(impact_name(f, math_text=True)
+                                                                            for f in events)
+
+    def note(flashing: Sequence[str]) -> str:
+        if not contacts:
+            return named("impact", flashing) if flashing else ""
+        touching = [f for f in flashing if not _is_separation(f)]
+        leaving = [f for f in flashing if _is_separation(f)]
+        return ", ".join(([named("contact", touching)] if touching else []) +
+                         ([named("separation", leaving)] if leaving else []))
+
     labels = [clock_reading(frame, s.t / L) for s in strips]
-    notes = [("impact " if len(s.flashing) == 1 else "impacts ") + ", ".join(impact_name(f, math_text=True) for f in s.flashing)
-             if s.flashing else "" for s in strips]
-    return labels, notes
+    return labels, [note(s.flashing) for s in strips]
+
+
+def _contacts_last(history: RodHistory) -> bool:
+    """Whether the rod's contacts last, each ended by a separation (the causal rod's): its stills name contacts and
+    separations, not impacts."""
+    return any(i.is_separation for i in history.impacts)
+
+
+def _is_separation(label: str) -> bool:
+    """A separation's label (A1s: the particle leaving the end its contact A1 struck), as `numbers.impact_name`
+    reads it."""
+    from rodparadox.numbers import impact_parts
+
+    return label.endswith("s") and impact_parts(label[:-1])[1] != ""
 
 
 def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float], bar: bool = True) -> _StillsRoom:
@@ -451,7 +483,8 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
     with style_context(style) as st:
         strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
         bar = colour_scale(history, frame).shown is not None
-        return _stills_room(*_stills_labels(strips, frame, L), font_sizes(st), bar).size(len(strips), row_scale)
+        return _stills_room(*_stills_labels(strips, frame, L, _contacts_last(history)), font_sizes(st),
+                            bar).size(len(strips), row_scale)
 
 
 class _Ticks:

@@ -5,8 +5,8 @@ The stress part, p (u u - eta) integrated across the slice, is von Laue's moment
 ledger's "hidden" row is a total less the bodies (no field carries it); here every part is the rod's own, so the
 rows add up to the total before the first contact with nothing hidden. (What corresponds to the rigid hidden part is
 the total less the rest mass moving with the rod, not the stress part alone: their near match in fig2 is chance.) The split costs
-an integral along the slice (`physics.causal_parts`), so it is taken at the events and at the times asked for;
-a dense sampling (JSON, CSV without times) gives the rod's total only, which is exact and cheap.
+an integral along the slice (`Fronts.rod_parts`, `physics.causal.parts`), so it is taken at the events and at the
+times asked for; a dense sampling (JSON, CSV without times) gives the rod's total only, which is exact and cheap.
 
 One table per frame (`ledger_table`), written as Markdown or LaTeX (`tables.formats`) or as aligned text
 (`to_text`); `document` and `to_csv` give the same numbers at full precision.
@@ -98,7 +98,8 @@ def rows_at(history, frame: Frame, t: float, event=None) -> list[tuple[str, Ener
 
 @functools.lru_cache(maxsize=512)
 def _split_slice(history, frame_rapidity: float, t: float):
-    """The slice with the rod's parts (0.3 s each): once per history, frame and time, whatever the formats."""
+    """The slice with the rod's parts (an integral across the rod): once per history, frame and time, whatever the
+    formats."""
     return history.energy_momentum(frame_rapidity, t, split=True)
 
 

@@ -3,7 +3,7 @@
 
   inks   the styles' inks as the page draws them (from `render.styles`, no matplotlib)
   data   what the page embeds, computed by the engine: world-lines, impacts, tables, the ledger, per speed and model
-  causal_data  the causal rod's part of it, from its invariants' tables (`physics.causal.slices`, through the
+  causal_data  the causal rod's part of it, from its invariants' tables (`physics.causal.tables`, through the
                rod interface): its lines, cells of compression, fronts and ledger (matter and stress), for whole
                arrays at once, within the page's bounds (a speed beyond them is left out)
   page   the page itself: inline CSS, the data as inline JSON, the script in four parts by job (`page.js`: data,

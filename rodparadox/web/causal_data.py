@@ -1,7 +1,7 @@
 """What the html page embeds for the causal rod (docs/html.md, "One page to explore" and "The causal rod"). Pure.
 
 The page needs thousands of points per speed: it reads the engine's invariants from their tables
-(`physics.causal.slices.ChartTables`, Chebyshev pieces to `slices.TABLE_TOLERANCE` L), evaluated for whole
+(`physics.causal.tables.ChartTables`, Chebyshev pieces to `tables.TABLE_TOLERANCE` L), evaluated for whole
 arrays at once.
 
 From the tables, in S (units of L): the world-lines of the ends, the particles and the material points, sampled
@@ -10,8 +10,8 @@ points (a front is a light line: boosting its ends is exact); the world-sheet's 
 light lines u, w = const (`render.shading`, as the figures'), given by their edges' chart coordinates and a(u),
 b(w) there (a boost of rapidity f scales t + x by e^-f and t - x by e^f: the page scales the edges, exact) with r+
 and r- at each cell's centre (lam = exp(-(r+ + r-)/2)); and the ledger on a grid of frames and instants: each
-particle's (E, p), the rod's matter and stress parts (`slices.rod_parts_on_slices`, the ledger's and the
-ledger figure's integral, to the page's SLICE_TOLERANCE), every slice of a speed at once.
+particle's (E, p), the rod's matter and stress parts (`Fronts.rod_parts_on_slices`, the ledger's and the ledger
+figure's integral), every slice of a speed at once.
 """
 
 from __future__ import annotations
@@ -24,17 +24,14 @@ import numpy as np
 from rodparadox.errors import BeyondBounds, ScenarioError
 from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
 
-#: the page's ledger: each stretch of a slice to this (M c^2; the page prints 4 decimals), on tables to
-#: `slices.TABLE_TOLERANCE` (units of L: far below a pixel)
-SLICE_TOLERANCE = 1e-6
 #: the page's bound on the cells of compression of one family (every preset needs a tenth); the tables', lines'
-#: and sums' bounds are `causal.slices`'. A speed that would need more is left out of the page (`TooCostly`), so
-#: that a page's cost is bounded whatever v, L and the masses
+#: and sums' bounds are `causal.tables`' and `causal.parts`'. A speed that would need more is left out of the page
+#: (`TooCostly`), so that a page's cost is bounded whatever v, L and the masses
 MAX_EDGES = 6000
 
 
 class TooCostly(BeyondBounds):
-    """The causal rod at one speed would need more than the page's bounds (`slices.MAX_PIECES`, ...,
+    """The causal rod at one speed would need more than the page's bounds (`tables.MAX_PIECES`, ...,
     `MAX_EDGES`) to draw."""
 
     def __init__(self, what: str, v: float | None = None):
@@ -136,10 +133,10 @@ def cells(history, tables, lo: float, hi: float, compression: tuple[float, float
 
 def ledger_sums(history, tables, f: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
     """On each slice (f[k], t[k]): each particle's (E, p), the rod's matter and stress (E, p) (arrays, M = 1):
-    `slices.rod_parts_on_slices` to the page's SLICE_TOLERANCE."""
+    `Fronts.rod_parts_on_slices`."""
     L = history.scenario.L
     T_L, T_R = tables.end_chart_times(0.0, f, t), tables.end_chart_times(L, f, t)
-    matter, stress = history.fronts.rod_parts_on_slices(f, t, tables, SLICE_TOLERANCE, (T_L, T_R))
+    matter, stress = history.fronts.rod_parts_on_slices(f, t)
     sums = {"matter_E": matter[:, 0], "matter_p": matter[:, 1], "stress_E": stress[:, 0], "stress_p": stress[:, 1]}
     sums.update(particles(history, tables, f, t, T_L, T_R))
     return sums

@@ -376,43 +376,56 @@ def test_animate_draws_the_causal_rod_in_both_modes(mode, tmp_path):
 
 # --- the comparison's note ------------------------------------------------------------------------------------
 
+@lru_cache(maxsize=None)
+def like_for_like(name: str, v: float):
+    """Both rods struck by the same particles, as `plot --rod both` runs them (`physics.models.run_rods`)."""
+    from rodparadox.physics.models import run_rods
+
+    return run_rods(load(name).with_overrides(v=v), "both")
+
+
+@lru_cache(maxsize=None)
+def compared(name: str, v: float):
+    """`plot NAME --v V --rod both --rod-now`, drawn once for the note's test and the rod's-now test."""
+    return render.draw_both(*like_for_like(name, v), paper_frames(v), options=render.Options(rod_now=True)).figure
+
+
 def test_a_comparison_figure_says_what_particles_strike_both_rods_and_where_their_first_impacts_fall():
     """Issue 23, item 3: `plot --rod both` states where each particle started and, for each rod, whether its first
     impacts are simultaneous in the figure's frames. fig2 at v = 0.6 (like for like, `run_rods`): A is placed by
     the rigid rod's timing rule so that A1 and B1 share t' = 17/12 L (hand: B1 at t = L/2v = 5/6, x = L/2, so
     t' = g (t + v x) = 5/4 (5/6 + 0.3) = 17/12); B starts at its gap, x = L/2 + 0.5 = 1; the causal rod's A1 is
     later than its B1 in S' (its far end moves before light from B1 could tell a rigid rod's would)."""
-    from rodparadox.physics.models import run_rods
+    from rodparadox.tables.comparison import comparison_note
 
-    rigid, causal_rod = run_rods(load("fig2").with_overrides(v=0.6), "both")
-    fig = render.draw_both(rigid, causal_rod, paper_frames(0.6)).figure
+    rigid, causal_rod = like_for_like("fig2", 0.6)
+    fig = compared("fig2", 0.6)
     note = " ".join(artist(fig, "comparison-note").get_text().split("\n"))
     assert note.startswith("Both rods are struck by the same particles: A from x = ")
     assert "B from x = 1 L at speed 0.6 c" in note
     assert "The rigid rod: A\N{SUBSCRIPT ONE} and B\N{SUBSCRIPT ONE} are simultaneous in S\N{PRIME} (at 1.417 L)" in note
     assert "The causal rod: A\N{SUBSCRIPT ONE} and B\N{SUBSCRIPT ONE} are not simultaneous in S (" in note
-    a_start = rigid.starts[0][1] if rigid.starts[0][0] == "A" else rigid.starts[1][1]
-    assert f"A from x = \N{MINUS SIGN}{abs(a_start.x):.4g} L" in note.replace("\N{MINUS SIGN}", "\N{MINUS SIGN}")
+    a_start = dict(rigid.starts)["A"]
+    assert f"A from x = \N{MINUS SIGN}{abs(a_start.x):.4g} L" in note
     # inside the figure, clear of the legend and of every other text
     assert _collisions(fig, "default") == []
-    # a library caller's histories run apart are never called "the same particles"
-    apart = render.draw_both(history("fig2", 0.6), causal("fig2", 0.6), paper_frames(0.6)).figure
-    assert "start apart" in artist(apart, "comparison-note").get_text()
+    # a library caller's histories run apart are never said to share their particles
+    apart = comparison_note((history("fig2", 0.6), causal("fig2", 0.6)), paper_frames(0.6))
+    assert "start apart" in apart and "the same particles" not in apart
 
 
 def test_the_rods_own_now_is_in_the_legend_only_where_a_rod_draws_it(tmp_path):
     """Issue 24: `plot fig2 --rod causal --rod-now` showed "the rod's own lines of simultaneity" in the legend
     and drew none (the causal rod has no rod-wide now). Alone it is refused; beside the rigid rod the legend
     keeps the entry for the lines the rigid row draws, and the causal row draws none."""
-    from rodparadox.physics.models import run_rods
+    from rodparadox.render.layers import legend_entries
 
-    rigid, causal_rod = run_rods(load("fig2").with_overrides(v=0.6), "both")
-    options = render.Options(rod_now=True)
-    fig = render.draw_both(rigid, causal_rod, paper_frames(0.6), options=options).figure
+    fig = compared("fig2", 0.6)
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "the rod's own lines of simultaneity" in labels
     assert gids(fig, r"a-rod-now-\d+") and gids(fig, r"[cd]-rod-now-\d+") == []
-    alone = render.draw(causal_rod, paper_frames(0.6), options=options).figure
-    assert "the rod's own lines of simultaneity" not in [t.get_text() for t in alone.legends[0].get_texts()]
+    causal_rod = like_for_like("fig2", 0.6)[1]
+    _, alone = legend_entries(STYLES["default"], causal_rod, render.Options(rod_now=True), 1.0)
+    assert "the rod's own lines of simultaneity" not in alone
     result = CliRunner().invoke(main, ["plot", "fig2", "--rod", "causal", "--rod-now", "-o", str(tmp_path)])
     assert result.exit_code == 2 and "the causal rod has none" in result.output and not list(tmp_path.iterdir())

@@ -2,10 +2,10 @@
 stress part named as its pressure's share of the rod's energy and momentum, and with both rods the rigid rows
 above the causal ones on one scale.
 
-The figure's values are checked against `tables.causal_ledger` (the split integrated slice by slice by
-`physics.causal_parts.rod_parts`, adaptively) and against the total before the first contact (closed form): the
-figure computes its curves another way (`rod_parts_on_slices`, tabulated invariants), so neither is its own
-reference. One figure per rod model, built once and checked many ways.
+The figure's values are checked against `tables.causal_ledger` (the split on each slice asked for, one slice at a
+time) and against the total before the first contact (closed form): the figure reads its curves from many slices
+at once (`Fronts.rod_parts_on_slices`, the same integral, `physics.causal.parts`; tests/physics/test_causal_parts.py
+checks that against an independent quadrature). One figure per rod model, built once and checked many ways.
 """
 
 from __future__ import annotations

@@ -433,9 +433,9 @@ def test_near_c_the_page_refuses_in_one_sentence_in_seconds(own_speed_only, tmp_
     to change (double precision keeps its energy only to 2e-8 there), nothing written, in seconds."""
     import time
 
-    from rodparadox.physics.causal import slices as causal_slices
+    from rodparadox.physics.causal import tables as causal_tables
 
-    monkeypatch.setattr(causal_slices, "MAX_PIECES", causal_slices.MAX_PIECES // 10)
+    monkeypatch.setattr(causal_tables, "MAX_PIECES", causal_tables.MAX_PIECES // 10)
     monkeypatch.chdir(tmp_path)
     start = time.monotonic()
     result = run("html", "fig2", "--v", "0.9999999", "--rod", "both", expect=2)

@@ -5,8 +5,10 @@
   ode       the contact equation by Chebyshev collocation, to 1e-12
   driven    an end driven by a force (docs, "Forces at the ends"): its boundary equation, the same way
   forced    runs a scenario with forces -> `DrivenHistory` (capabilities `fronts` and `driving`)
-  parts     the rod's (E, p) on a slice split into matter and stress, exactly, slice by slice (the ledger's)
-  slices    the same on many slices at once, from tables of the invariants (the ledger figure's, the page's)
+  arrays    the invariants and the chart map for whole arrays at once, exactly (the engine's pieces, vectorised)
+  parts     the rod's (E, p) on slices split into matter and stress, and its rest mass in motion: the one integral
+            across the rod (the ledger's, the ledger figure's, the page's, the handout's)
+  tables    tables of the invariants, read for whole arrays (the page's world-lines, fronts and cells)
   extremes  its fields' extremes over the whole history (colour scales)
   chart     its material chart (the rod's own view)
 """

@@ -17,13 +17,15 @@ r+ by -f and r- by +f: I+ -> e^f I+, I- -> e^-f I-. Fronts (jumps of lam) sit in
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 from rodparadox.errors import ScenarioError
+from rodparadox.physics.causal.arrays import Arrays
 from rodparadox.physics.causal.chart import CausalChart, points_on_slice
 from rodparadox.physics.causal.extremes import causal_rapidity_range, compression_range
-from rodparadox.physics.causal.parts import rod_parts
+from rodparadox.physics.causal.parts import rest_mass_motion, rod_parts, rod_parts_on_slices
 from rodparadox.physics.causal.solve import Budget, Rider, Solution, solve
 from rodparadox.physics.kinematics import ChartCurve, Event, Line, WorldLine
 from rodparadox.physics.ledger import initial_total
@@ -144,17 +146,23 @@ class CausalHistory:
         """The least and largest rapidity in S of any material point over the whole history, 0 included."""
         return causal_rapidity_range(self)
 
-    def rod_parts_on_slices(self, frame_rapidity, times, tables=None, tolerance: float | None = None,
-                            ends=None) -> tuple:
-        """The matter and stress parts on many slices at once, as arrays (`causal.slices`)."""
-        from rodparadox.physics.causal.slices import PARTS_TOLERANCE, rod_parts_on_slices
+    @functools.cached_property
+    def arrays(self) -> Arrays:
+        """The solution for whole arrays of chart times (`causal.arrays`), made once."""
+        return Arrays(self.solution)
 
-        return rod_parts_on_slices(self, frame_rapidity, times, tables,
-                                   PARTS_TOLERANCE if tolerance is None else tolerance, ends)
+    def rod_parts_on_slices(self, frame_rapidity, times) -> tuple:
+        """The matter and stress parts on many slices at once, as arrays (`causal.parts`)."""
+        return rod_parts_on_slices(self, frame_rapidity, times)
+
+    def rest_mass_motion(self, frame_rapidity, times):
+        """(n, 2): (E, p) of the material points' rest mass moving at their own velocities on each slice
+        (`causal.parts`)."""
+        return rest_mass_motion(self, frame_rapidity, times)
 
     def chart_tables(self, lo: float, hi: float, tolerance: float | None = None):
-        """Tables of r+, a and r-, b over chart times [lo, hi] (`causal.slices.ChartTables`)."""
-        from rodparadox.physics.causal.slices import TABLE_TOLERANCE, ChartTables
+        """Tables of r+, a and r-, b over chart times [lo, hi] (`causal.tables.ChartTables`)."""
+        from rodparadox.physics.causal.tables import TABLE_TOLERANCE, ChartTables
 
         return ChartTables(self, lo, hi, TABLE_TOLERANCE if tolerance is None else tolerance)
 

@@ -75,6 +75,8 @@ class Solved:
     """An end in contact while its input varies: psi, out = in - 2 psi and the integrals of exp(+-out) from lo,
     on [lo, hi], as polynomials on steps (the dense solution)."""
 
+    form = "solved"
+
     def __init__(self, lo: float, hi: float, r_in, steps: list[Step], depth: int = 1):
         self.lo, self.hi, self.r_in, self.steps, self.depth = lo, hi, r_in, steps, depth
         self._starts = [st.a for st in steps]

@@ -1,21 +1,30 @@
-"""The causal rod's (E, p) on a slice split into its matter part and its stress part (docs/model.md, "The causal rod").
+"""The causal rod's (E, p) on slices split into its matter part and its stress part, and its material points' rest
+mass in motion (docs/model.md, "The causal rod"). Pure: numpy. The one integral across the rod of every consumer:
+the ledger (one slice at a time), the ledger figure's curves and the html page (hundreds of slices at once).
 
 T = (rho + p) u u - p eta splits into matter, rho u u (rho = (M/2L)(1 + lam^2), the rest-frame energy density,
-elastic energy included), and stress, p (u u - eta) (p = (M/2L)(lam^2 - 1)): densities on a slice of a frame
-where the element moves at rapidity th,
+elastic energy included), and stress, p (u u - eta) (p = (M/2L)(lam^2 - 1)): densities on a slice of a frame where
+the element moves at rapidity th,
   matter (rho cosh^2 th, rho cosh th sinh th),  stress (p sinh^2 th, p cosh th sinh th).
 Together they are the rod's whole stress-energy tensor: nothing is hidden.
 
-This is the ledger's exact integral, slice by slice (a second a slice near c): only the stress part is integrated; the matter part is the rod's exact total (`causal.CausalHistory.
-rod_energy_momentum`, one-variable integrals) less it, so the two add up to the total to rounding. With
-A = exp(r+ - f), B = exp(r- + f) (lam^2 = 1/AB, e^(2 th) = A/B) and dx = A du along the slice t = const, the
-stress densities per du are (M/8L)(lam^2 - 1)(A/B - 2 + B/A) A and (M/8L)(lam^2 - 1)(A/B - B/A) A: exactly zero
-where the rod is unstressed. They mix r+ and r- (the point w of the slice on the light line u), so they are
-integrated along the slice: parametrised by u, cut at every front crossing it (lam and th jump there), Gauss-
-Legendre on each smooth piece, all its nodes at once, halved until the halves agree with the whole. The w of
-each node is found by Newton's method on t' = (e^-f a(u) + e^f b(w))/2 (b' = exp(r-)), kept in its piece. Many
-slices at once (the ledger figure's curves, the html page) read tables of the invariants instead
-(`slices.rod_parts_on_slices`), checked against this one (tests/physics/test_causal_slices.py).
+Each slice is integrated over the rod's material labels X, 0 to L: with A = exp(r+ - f), B = exp(r- + f) (so
+lam^2 = 1/AB, e^(2 th) = A/B) the slice's length element is dx = 2AB/(A + B) dX = dX/(lam cosh th), and per dX
+  stress (p (A - B)^2 / 2(A + B), p (A - B)/2),  matter (rho (A + B)/2, rho (A - B)/2),
+  rest mass in motion (M/L)(cosh th, sinh th),
+bounded wherever lam and th are, however fast the element moves in the frame. (Along x or along one light line a
+contact's steep start is squeezed into a sliver that a quadrature may step over; over X neither family is squeezed:
+|du/dX| and |dw/dX| are below 2.) Where X meets the slice, its chart time T solves
+  t = (e^-f a(T + X) + e^f b(T - X))/2,  dt/dT = (A + B)/2 > 0,
+with |dT/dX| < 1 (the slice is space-like), which brackets T from the ends of each smooth piece: Newton's method
+inside that bracket (`arrays.solve_increasing`). The slice is cut where a front crosses it (lam and th jump there)
+and into stretches at most STRETCH L long; Gauss-Kronrod's 15 nodes on each stretch of every slice at once, each
+stretch halved until Gauss-Legendre's 7 among them agree with the 15 to TOLERANCE (or to a few hundred roundings of
+its densities' size, or, where halving gains nothing, to the engine's own rounding: ROUNDING).
+The invariants and the chart map are the engine's own, for whole arrays (`arrays.Arrays`): nothing tabulated.
+
+Only the stress is integrated so: the matter part is the rod's exact total less it (one-variable integrals,
+`CausalHistory.rod_energy_momentum`, here for arrays), so the two add up to the total to rounding.
 """
 
 from __future__ import annotations
@@ -24,123 +33,235 @@ import math
 
 import numpy as np
 
-from rodparadox.errors import ScenarioError
+from rodparadox.errors import BeyondBounds
+from rodparadox.physics.causal.arrays import solve_increasing
 from rodparadox.physics.types import EnergyMomentum
 
-#: Gauss-Legendre nodes on each smooth piece of the slice
-NODES = 16
-#: each smooth piece is halved until its halves agree with it to this, relative to the rod's (E, p) (1e-10: a
-#: ledger prints 4 to 6 digits)
-TOLERANCE = 1e-10
-#: or until they agree to this many times the rounding of the sum of the densities' magnitudes (at extreme speeds
-#: the densities in a frame far from the rod's are e^(2|th|) times its rest energy, and their rounding exceeds
-#: TOLERANCE: halving further would only chase that noise)
+#: the longest stretch of a slice (units of L); each is summed by Gauss-Kronrod's 15 nodes, the 7 of Gauss-Legendre
+#: among them telling its error
+STRETCH = 0.25
+#: each stretch is halved until its Gauss-Legendre and Gauss-Kronrod sums agree to this (M c^2; the ledger prints 4
+#: to 6 digits, the tests ask 1e-10 of every slice), or to NOISE times the sum of its densities' magnitudes (their
+#: rounding: in a frame far from the rod's, densities are e^(2|th|) times its rest energy)
+TOLERANCE = 1e-12
 NOISE = 256.0 * np.finfo(float).eps
-#: the most Gauss-Legendre pieces one slice's stress may take; more, and the slice is refused in one sentence
-MAX_PIECES = 600
+#: where halving a stretch no longer shrinks its miss fourfold (a smooth stretch's shrinks 2^14-fold), what is
+#: left is the engine's own rounding (a contact's closed form near extreme compression, v near c, keeps r to fewer
+#: digits): the stretch is kept once its miss is below this times its densities' size
+ROUNDING = 1e-9
+#: halvings of one stretch at most, and the most stretches the slices of one call may take: past it, `BeyondBounds`
+MAX_DEPTH = 40
+MAX_STRETCHES = 20000
 
-_Z, _W = np.polynomial.legendre.leggauss(NODES)
-_SPAN = 0.5 * (1.0 + _Z)  # each node's place in its piece, 0 to 1: the first guess of its w
-
-
-def _invert(F, dF, target: float, lo: float, hi: float, guess: float) -> float:
-    """The s in [lo, hi] with F(s) = target, F increasing and smooth there (F' = dF): Newton's method kept inside
-    a shrinking bracket (a bisection where a step would leave it), to the last bits."""
-    s = min(max(guess, lo), hi)
-    for _ in range(100):
-        value = F(s) - target
-        if value == 0.0:
-            return s
-        if value < 0.0:
-            lo = s
-        else:
-            hi = s
-        step = value / dF(s)
-        new = s - step
-        if not lo <= new <= hi:
-            new = 0.5 * (lo + hi)
-        if abs(new - s) <= 2.0 * math.ulp(s) or hi - lo <= 2.0 * math.ulp(s):
-            return new
-        s = new
-    return s
+#: Gauss-Kronrod's 15 nodes on [-1, 1] and their weights, with Gauss-Legendre's 7 weights (on every other node)
+_K = (0.991455371120812639206854697526329, 0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
+      0.741531185599394439863864773280788, 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+      0.207784955007898467600689403773245)
+_KW = (0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
+       0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+       0.204432940075298892414161999234649)
+_GW = (0.129484966168869693270611432679082, 0.279705391489276667901467771423780, 0.381830050505118944950369775488975)
+_Z = np.array([-z for z in _K] + [0.0] + list(reversed(_K)))
+_W = np.array(list(_KW) + [0.209482141084727828012999174891714] + list(reversed(_KW)))
+_G = np.array([0.0, _GW[0], 0.0, _GW[1], 0.0, _GW[2], 0.0, 0.417959183673469387755102040816327,
+               0.0, _GW[2], 0.0, _GW[1], 0.0, _GW[0], 0.0])
+NODES = len(_Z)
+#: the polynomial through values at a stretch's nodes, read at its halves' nodes (each row a node of the half)
+_TO_LEFT, _TO_RIGHT = (np.polynomial.legendre.legvander(0.5 * (_Z + side), NODES - 1)
+                       @ np.linalg.inv(np.polynomial.legendre.legvander(_Z, NODES - 1)) for side in (-1.0, 1.0))
 
 
-def _stress(history, f: float, t: float) -> tuple[float, float]:
-    """(E, p) of the stress part on the slice t of the frame of rapidity f, by quadrature."""
-    sol, L = history.solution, history.scenario.L
-    T_L, T_R = history.end_chart_time("left", f, t), history.end_chart_time("right", f, t)
-    u_L, u_R, w_L, w_R = T_L, T_R + L, T_L, T_R - L
-    ef = math.exp(f)
+class _Slices:
+    """Slices (f[k], t[k]) across one run's causal rod: where its ends are on each, and its smooth pieces."""
 
-    def a_prime(u: float) -> float:
-        return math.exp(sol.r_plus(u))
+    def __init__(self, history, f, t):
+        self.t = np.atleast_1d(np.asarray(t, dtype=float))
+        self.f = np.broadcast_to(np.asarray(f, dtype=float), self.t.shape).copy()
+        self.arrays, self.L = history.arrays, history.scenario.L
+        self.sol = history.solution
+        n = len(self.t)
+        ends = self.chart_time(np.concatenate([np.zeros(n), np.full(n, self.L)]), np.concatenate([self.t, self.t]),
+                               np.concatenate([self.f, self.f]))
+        self.T_L, self.T_R = ends[:n], ends[n:]
 
-    def b_prime(w: float) -> float:
-        return math.exp(sol.r_minus(w))
+    def chart_time(self, X: np.ndarray, t: np.ndarray, f: np.ndarray) -> np.ndarray:
+        """The chart time where material line X[j] crosses the slice t[j] of the frame f[j]: from where it would be in
+        the rod at rest (T cosh f - (X - L/2) sinh f = t), bracketed by doubling, then Newton."""
+        k = np.arange(len(t))
+        equation = _slice_equation(self.arrays, t, f, X)
+        guess = (t + (X - 0.5 * self.L) * np.sinh(f)) / np.cosh(f)
+        lo, hi = guess - self.L, guess + self.L
+        for _ in range(200):
+            below, above = equation(lo, k)[0] > 0.0, equation(hi, k)[0] < 0.0
+            if not (below.any() or above.any()):
+                break
+            lo, hi = np.where(below, 2 * lo - hi, lo), np.where(above, 2 * hi - lo, hi)
+        return solve_increasing(equation, lo, hi, np.clip(guess, lo, hi), self.L)
 
-    def w_of(u: float, lo: float, hi: float, guess: float) -> float:  # the slice meets the light line u
-        return _invert(sol.b, b_prime, (2.0 * t - sol.a(u) / ef) / ef, lo, hi, guess)
+    def pieces(self) -> tuple[np.ndarray, ...]:
+        """The smooth pieces of every slice between the fronts crossing it: (slice, X, T at its start, X, T at its
+        end), arrays in slice order then X."""
+        ef = np.exp(self.f)
+        u_L, u_R, w_L, w_R = self.T_L, self.T_R + self.L, self.T_L, self.T_R - self.L
+        cut_k, cut_u, cut_w, which = [], [], [], []
+        for k in range(len(self.t)):
+            for u in _breaks(self.sol.plus, u_L[k], u_R[k]):
+                cut_k.append(k), cut_u.append(u), cut_w.append(math.nan), which.append(0)
+            for w in _breaks(self.sol.minus, w_R[k], w_L[k]):
+                cut_k.append(k), cut_u.append(math.nan), cut_w.append(w), which.append(1)
+        cut_k, cut_u, cut_w, which = np.array(cut_k, dtype=int), np.array(cut_u), np.array(cut_w), np.array(which)
+        if len(cut_k):
+            on_u, on_w = which == 0, which == 1
+            k, e = cut_k[on_u], ef[cut_k[on_u]]  # a front of r+: the slice's w there, b(w) = e^-f (2t - e^-f a(u))
+            cut_w[on_u] = self.arrays.inverse("minus", (2 * self.t[k] - self.arrays.plus(cut_u[on_u])[1] / e) / e,
+                                              w_R[k], w_L[k])
+            k, e = cut_k[on_w], ef[cut_k[on_w]]  # a front of r-: a(u) = e^f (2t - e^f b(w))
+            cut_u[on_w] = self.arrays.inverse("plus", e * (2 * self.t[k] - e * self.arrays.minus(cut_w[on_w])[1]),
+                                              u_L[k], u_R[k])
+        n = len(self.t)
+        ks = np.concatenate([np.arange(n), cut_k, np.arange(n)])
+        Xs = np.concatenate([np.zeros(n), np.clip(0.5 * (cut_u - cut_w), 0.0, self.L), np.full(n, self.L)])
+        Ts = np.concatenate([self.T_L, 0.5 * (cut_u + cut_w), self.T_R])
+        order = np.lexsort((Xs, ks))
+        ks, Xs, Ts = ks[order], Xs[order], Ts[order]
+        keep = (ks[1:] == ks[:-1]) & (Xs[1:] > Xs[:-1])
+        return ks[:-1][keep], Xs[:-1][keep], Ts[:-1][keep], Xs[1:][keep], Ts[1:][keep]
 
-    # the cuts: every front of either family crossing the slice, as (u, w) pairs from the left end to the right
-    cuts = {u_L: w_L, u_R: w_R}
-    for u in sol.plus.breaks(u_L, u_R):
-        cuts[u] = None
-    for w in sol.minus.breaks(w_R, w_L):
-        target = ef * (2.0 * t - ef * sol.b(w))
-        u = _invert(sol.a, a_prime, target, u_L, u_R, u_L + (u_R - u_L) * (w_L - w) / (w_L - w_R))
-        cuts[u] = w
-    us = sorted(cuts)
-    ws = [cuts[u] for u in us]
-    for k in range(1, len(us) - 1):  # a front of r+ only: where the slice is on its other light line there
-        if ws[k] is None:
-            ws[k] = w_of(us[k], w_R, w_L, w_L + (w_R - w_L) * (us[k] - u_L) / (u_R - u_L))
-    rho0 = 1.0 / L
+    def integrate(self, densities, columns: int) -> np.ndarray:
+        """(slices, columns): each slice's integral over X of `densities(A, B, th, lam2, L)` (an (nodes, columns)
+        array per dX), stretch by stretch, each halved until its halves agree with it."""
+        k, Xa, Ta, Xb, Tb = self.pieces()
+        n = np.maximum(1, np.ceil((Xb - Xa) / (STRETCH * self.L))).astype(int)
+        if n.sum() > MAX_STRETCHES:
+            raise BeyondBounds(f"{MAX_STRETCHES} stretches of slices to add up the rod's stress")
+        piece = np.repeat(np.arange(len(k)), n)
+        j = np.arange(len(piece)) - np.repeat(np.cumsum(n) - n, n)
+        lo = Xa[piece] + (Xb - Xa)[piece] * j / n[piece]
+        hi = np.where(j + 1 == n[piece], Xb[piece], Xa[piece] + (Xb - Xa)[piece] * (j + 1) / n[piece])
+        anchors = (k, Xa, Ta, Xb, Tb)
+        total = np.zeros((len(self.t), columns))
+        spent = len(piece)
+        guess, before = None, np.full(len(piece), np.inf)  # each stretch's parent's miss
+        for depth in range(MAX_DEPTH + 1):
+            kronrod, gauss, size, T = self._gauss(anchors, piece, lo, hi, densities, guess)
+            miss = np.max(np.abs(kronrod - gauss), axis=1)
+            # to the tolerance, or to the densities' rounding; or, where halving gains nothing, the engine's
+            stalled = (miss >= 0.25 * before) & (miss <= ROUNDING * size)
+            good = (miss <= np.maximum(TOLERANCE, NOISE * size)) | stalled | (depth == MAX_DEPTH)
+            np.add.at(total, k[piece[good]], kronrod[good])
+            bad = np.flatnonzero(~good)
+            if not bad.size:
+                break
+            spent += 2 * bad.size
+            if spent > MAX_STRETCHES:
+                raise BeyondBounds(f"{MAX_STRETCHES} stretches of slices to add up the rod's stress")
+            mid = 0.5 * (lo[bad] + hi[bad])
+            piece = np.concatenate([piece[bad]] * 2)
+            lo, hi = np.concatenate([lo[bad], mid]), np.concatenate([mid, hi[bad]])
+            # the halves' nodes' chart times first guessed from the whole's: T(X) is smooth on a stretch
+            guess = np.concatenate([T[bad] @ _TO_LEFT.T, T[bad] @ _TO_RIGHT.T])
+            before = np.concatenate([miss[bad], miss[bad]])
+        return total
 
-    pieces = [0, 0.0]  # Gauss-Legendre pieces taken, and the sum of the magnitudes of the densities' terms
+    def _gauss(self, anchors, piece, lo, hi, densities, guess=None) -> tuple[np.ndarray, ...]:
+        """Gauss-Kronrod's and Gauss-Legendre's sums of the densities on each stretch [lo, hi] of X of its piece, the
+        sums of their magnitudes, and the nodes' chart times (stretches, NODES) (`guess`: a first guess of them)."""
+        k, Xa, Ta, Xb, Tb = (a[piece] for a in anchors)
+        X = (0.5 * (lo + hi))[:, None] + (0.5 * (hi - lo))[:, None] * _Z[None, :]
+        half = 0.5 * (hi - lo)
+        kk = np.repeat(k, NODES)
+        X = X.ravel()
+        Xa, Ta, Xb, Tb = (np.repeat(a, NODES) for a in (Xa, Ta, Xb, Tb))
+        # |dT/dX| < 1 along the slice: T lies within X's distance of each end's T
+        T_lo = np.maximum(Ta - (X - Xa), Tb - (Xb - X))
+        T_hi = np.minimum(Ta + (X - Xa), Tb + (Xb - X))
+        if guess is None:
+            guess = Ta + (Tb - Ta) * (X - Xa) / np.where(Xb > Xa, Xb - Xa, 1.0)
+        keep = (np.empty_like(X), np.empty_like(X))  # r+ and r- where each root was found
+        equation = _slice_equation(self.arrays, self.t[kk], self.f[kk], X, keep)
+        T = solve_increasing(equation, np.minimum(T_lo, T_hi), np.maximum(T_lo, T_hi), np.ravel(guess), self.L)
+        fk = self.f[kk]
+        r_plus, r_minus = keep[0] - fk, keep[1] + fk
+        A, B = np.exp(r_plus), np.exp(r_minus)
+        values = densities(A, B, 0.5 * (r_plus - r_minus), np.exp(-(r_plus + r_minus)), self.L)
+        values = values.reshape(len(piece), NODES, values.shape[1]) * half[:, None, None]
+        kronrod = np.einsum("snc,n->sc", values, _W)
+        gauss = np.einsum("snc,n->sc", values, _G)
+        size = np.einsum("snc,n->s", np.abs(values), _W)
+        return kronrod, gauss, size, T.reshape(len(piece), NODES)
 
-    def gauss(lo: float, hi: float, w_hi: float, w_lo: float) -> np.ndarray:
-        """Both densities integrated over u in [lo, hi], where w runs from w_hi down to w_lo."""
-        if not hi > lo:
-            return np.zeros(2)
-        pieces[0] += 1
-        if pieces[0] > MAX_PIECES:
-            raise ScenarioError(f"the causal rod's stress on the slice t = {t:.6g} of a frame of velocity "
-                                f"{math.tanh(f):.7g} cannot be integrated to {TOLERANCE:g} of its energy in double "
-                                f"precision: its compression and this frame's speed are too extreme together; choose "
-                                f"a lower v or particles nearer the rod's mass.", "v")
-        u = 0.5 * (lo + hi) + 0.5 * (hi - lo) * _Z
-        w = np.array([w_of(float(x), w_lo, w_hi, w_hi + (w_lo - w_hi) * s) for x, s in zip(u, _SPAN)])
-        r_plus = np.array([sol.r_plus(float(x)) for x in u])
-        r_minus = np.array([sol.r_minus(float(x)) for x in w])
-        A, B = np.exp(r_plus - f), np.exp(r_minus + f)
-        lam2 = np.exp(-(r_plus + r_minus))  # of the frame-free sum: exactly 1 where unstressed, in every frame
-        weight = 0.125 * rho0 * (lam2 - 1.0) * A * 0.5 * (hi - lo) * _W
-        pieces[1] += float(np.sum(np.abs(weight) * (A / B + 2.0 + B / A)))
-        return np.array([np.sum(weight * (A / B - 2.0 + B / A)), np.sum(weight * (A / B - B / A))])
+    def totals(self) -> tuple[np.ndarray, np.ndarray]:
+        """The rod's exact (E - M, p) on each slice (as `CausalHistory.rod_energy_momentum`, for arrays)."""
+        L, f, arrays, sol = self.L, self.f, self.arrays, self.sol
+        I_plus = arrays.minus_integral(sol.plus, self.T_R + L) - arrays.minus_integral(sol.plus, self.T_L)
+        I_minus = arrays.minus_integral(sol.minus, self.T_L) - arrays.minus_integral(sol.minus, self.T_R - L)
+        ef = np.exp(f)
+        x_L = 0.5 * (arrays.plus(self.T_L)[1] / ef - ef * arrays.minus(self.T_L)[1])
+        x_R = 0.5 * (arrays.plus(self.T_R + L)[1] / ef - ef * arrays.minus(self.T_R - L)[1])
+        rho0 = 1.0 / L
+        E = 0.5 * rho0 * (x_R - x_L) + 0.25 * rho0 * (ef * I_plus + I_minus / ef)
+        return E - 1.0, 0.25 * rho0 * (I_minus / ef - ef * I_plus)
 
-    def adaptive(lo, hi, w_hi, w_lo, whole, depth, scale) -> np.ndarray:
-        # a contact's decay can be steep inside a smooth piece: halve until the halves agree with the whole
-        mid = 0.5 * (lo + hi)
-        w_mid = w_of(mid, w_lo, w_hi, 0.5 * (w_lo + w_hi))
-        left, right = gauss(lo, mid, w_hi, w_mid), gauss(mid, hi, w_mid, w_lo)
-        if depth >= 30 or np.max(np.abs(left + right - whole)) <= max(TOLERANCE * scale, NOISE * pieces[1]):
-            return left + right
-        return (adaptive(lo, mid, w_hi, w_mid, left, depth + 1, scale)
-                + adaptive(mid, hi, w_mid, w_lo, right, depth + 1, scale))
 
-    total = history.rod_energy_momentum(f, t)
-    scale = max(1.0, abs(total.E), abs(total.p))
-    sums = np.zeros(2)
-    for k in range(len(us) - 1):
-        if us[k + 1] > us[k]:
-            sums += adaptive(us[k], us[k + 1], ws[k], ws[k + 1], gauss(us[k], us[k + 1], ws[k], ws[k + 1]), 0,
-                             scale)
-    return float(sums[0]), float(sums[1])
+def _slice_equation(arrays, t: np.ndarray, f: np.ndarray, X: np.ndarray, keep=None):
+    """The slices' equation t = (e^-f a(T + X) + e^f b(T - X))/2 for material lines X on slices (t, f) (arrays, one
+    entry a root): values, slopes (A + B)/2 and sizes at chart times T of the entries `index`, as
+    `arrays.solve_increasing` asks; r+ and r- there are written into `keep` (two arrays), where given."""
+    ef = np.exp(f)
+
+    def value_and_slope(T, index):
+        XX, e = X[index], ef[index]
+        r_plus, a = arrays.plus(T + XX)
+        r_minus, b = arrays.minus(T - XX)
+        if keep is not None:
+            keep[0][index], keep[1][index] = r_plus, r_minus
+        U, V, ti = 0.5 * a / e, 0.5 * e * b, t[index]
+        return U + V - ti, 0.5 * (np.exp(r_plus) / e + e * np.exp(r_minus)), np.abs(U) + np.abs(V) + np.abs(ti)
+    return value_and_slope
+
+
+def _breaks(invariant, lo: float, hi: float) -> list[float]:
+    """Where the invariant may jump or kink in (lo, hi): its breaks, and the seams of its periodic tail (each period
+    read from the first, which need not join smoothly onto what precedes it)."""
+    out = invariant.breaks(lo, hi)
+    if invariant.period is not None:
+        n = max(1, math.ceil((lo - invariant.tail_start) / invariant.period))
+        while (seam := invariant.tail_start + n * invariant.period) < hi:
+            if seam > lo:
+                out.append(seam)
+            n += 1
+    return out
+
+
+def _stress_densities(A, B, th, lam2, L) -> np.ndarray:
+    p = 0.5 / L * (lam2 - 1.0)
+    return np.stack([p * (A - B) ** 2 / (2.0 * (A + B)), 0.5 * p * (A - B)], axis=1)
+
+
+def _motion_densities(A, B, th, lam2, L) -> np.ndarray:
+    return np.stack([np.cosh(th) / L, np.sinh(th) / L], axis=1)
+
+
+def rod_parts_on_slices(history, frame_rapidity, times) -> tuple[np.ndarray, np.ndarray]:
+    """(matter, stress): arrays (n, 2) of (E, p) of the causal rod on each slice (frame_rapidity[k], times[k]) (either
+    may be one number for every slice); matter's E includes the rod's rest energy M (M = 1)."""
+    slices = _Slices(history, frame_rapidity, times)
+    stress = slices.integrate(_stress_densities, 2)
+    kinetic, p = slices.totals()
+    matter = np.column_stack([1.0 + (kinetic - stress[:, 0]), p - stress[:, 1]])
+    return matter, stress
 
 
 def rod_parts(history, frame_rapidity: float, t: float) -> tuple[EnergyMomentum, EnergyMomentum]:
     """(matter, stress) of the causal rod on the slice t of the frame of rapidity `frame_rapidity`."""
-    stress_E, stress_p = _stress(history, frame_rapidity, t)
-    total = history.rod_energy_momentum(frame_rapidity, t)
-    return (EnergyMomentum(total.rest, total.T - stress_E, total.p - stress_p),
-            EnergyMomentum(0.0, stress_E, stress_p))
+    slices = _Slices(history, frame_rapidity, t)
+    stress_E, stress_p = slices.integrate(_stress_densities, 2)[0]
+    kinetic, p = (float(v[0]) for v in slices.totals())
+    return (EnergyMomentum(1.0, kinetic - float(stress_E), p - float(stress_p)),
+            EnergyMomentum(0.0, float(stress_E), float(stress_p)))
+
+
+def rest_mass_motion(history, frame_rapidity, times) -> np.ndarray:
+    """(n, 2): (E, p) of the rod's material points' rest mass moving at their own velocities on each slice,
+    (M/L) int_0^L (cosh th, sinh th) dX (M = 1), th the rapidity of material point X where it crosses the slice."""
+    return _Slices(history, frame_rapidity, times).integrate(_motion_densities, 2)

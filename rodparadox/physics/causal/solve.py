@@ -49,6 +49,8 @@ MAX_CONTACT_WINDOWS = 300
 class _Const:
     """r = c on [lo, hi]."""
 
+    form = "const"  # each kind of piece names itself (`causal.arrays` evaluates them for whole arrays)
+
     def __init__(self, lo: float, hi: float, c: float):
         self.lo, self.hi, self.c = lo, hi, c
 
@@ -67,6 +69,8 @@ class _Contact:
     out = -r_in - 2 delta. Integrals in closed form: with q = k exp(-c (s - lo)), q0 = k,
     int exp(out) = exp(-r_in) [(s - lo) - (4/c)(q0 - q)/((1 + q)(1 + q0))],
     int exp(-out) = exp(r_in) [(s - lo) + (4/c)(q0 - q)/((1 - q)(1 - q0))]."""
+
+    form = "contact"
 
     def __init__(self, lo: float, hi: float, r_in: float, delta0: float, c: float, log_k: float | None = None):
         self.lo, self.hi, self.r_in, self.c = lo, hi, r_in, c
@@ -109,6 +113,8 @@ class _Contact:
 
 class _View:
     """sign * base.r(s - shift) on [lo, hi] (a free end's output, or an input read at another end)."""
+
+    form = "view"
 
     def __init__(self, base, shift: float, sign: int, lo: float, hi: float):
         while isinstance(base, _View):  # flattened: a view of a view is a view of the base
@@ -225,13 +231,11 @@ class Invariant:
 
     def breaks(self, lo: float, hi: float) -> list[float]:
         """Every piece boundary (a front, or where a contact starts or ends) in (lo, hi)."""
-        out = []
         if self.period is None:
             return [s for s in self.starts if lo < s < hi]
         base = [s for s in self.starts if self.tail_start <= s < self.tail_start + self.period]
         out = [s for s in self.starts if lo < s < min(hi, self.tail_start + self.period)]
-        n0 = max(1, math.floor((lo - self.tail_start) / self.period))
-        n = n0
+        n = n0 = max(1, math.floor((lo - self.tail_start) / self.period))
         while True:
             shifted = [s + n * self.period for s in base]
             if shifted and shifted[0] >= hi:

@@ -1,24 +1,13 @@
-"""The causal rod's matter and stress on many slices at once, and the tables of its invariants they are read from
-(docs/model.md, "The causal rod"). Pure: numpy, no matplotlib. The integral across many slices at once: the ledger
-figure's curves (`CausalHistory.rod_parts_on_slices`) and the html page's ledger call `rod_parts_on_slices`; the
-ledger's own numbers, slice by slice, are `parts.rod_parts`' exact integral, which the tests compare this with.
+"""Tables of the causal rod's invariants and chart map, read for whole arrays at once: the html page's world-lines,
+fronts and cells of compression (docs/model.md, "The causal rod"). Pure: numpy, no matplotlib.
 
 The engine's solution (`solve`) gives the invariants r+(u), r-(w) and the chart map a(u), b(w) exactly, one
 scalar call at a time (tens of microseconds each). `ChartTables` reads the solution once: on every smooth piece
 between two breaks of an invariant (a front, a contact's start or end) r and a (or b) are interpolated by a
 Chebyshev polynomial through the engine's values, each piece halved until the polynomial agrees with the engine at
 test points to a tolerance (in units of L), or until halving gains nothing (the engine's own rounding noise, near
-c): numpy then evaluates them for whole arrays at once.
-
-On the slice t of the frame of rapidity f an element of the rod moves at rapidity th = (r+ - r-)/2 - f, with
-lam = exp(-(r+ + r-)/2); T = (rho + p) u u - p eta splits into matter, rho u u (rho = (M/2L)(1 + lam^2), the
-rest-frame energy density, elastic energy included), and stress, p (u u - eta) (p = (M/2L)(lam^2 - 1)):
-densities on the slice
-  matter (rho cosh^2 th, rho cosh th sinh th),  stress (p sinh^2 th, p cosh th sinh th),
-with dx = e^(r+ - f) du along the slice. Each slice is parametrised by u, cut at every front crossing it (lam and th
-jump there) and into stretches at most STRETCH L long, Gauss-Legendre on each, every stretch of every slice at once,
-each halved until its halves agree with it; the w of each node is found by Newton's method on
-t = (e^-f a(u) + e^f b(w))/2 kept in its bracket.
+c): numpy then evaluates them for whole arrays at once. (The rod's energy and momentum on slices are read from the
+engine's own pieces instead, `parts`.)
 """
 
 from __future__ import annotations
@@ -35,20 +24,10 @@ TABLE_TOLERANCE = 1e-9
 NOISE_TOLERANCE = 1000.0
 #: Chebyshev nodes per piece of a table; pieces are halved until within the tolerance
 NODES = 12
-#: Gauss-Legendre nodes per stretch of a slice, and the longest stretch (units of L)
-GAUSS = 8
-STRETCH = 0.25
-#: the integral's tolerance by default: each stretch halved until its halves agree with it to this, relative to
-#: the rod's energy M c^2 (or to a few thousand roundings of the stretch's own sum, where that is larger: v near c);
-#: with tables to PRECISE_TABLES, within 1e-10 of the exact integral at ordinary speeds
-#: (tests/physics/test_causal_slices.py; a known gap near c there)
-PARTS_TOLERANCE = 1e-9
-PRECISE_TABLES = 1e-12
-#: bounds on the work (every preset needs a tenth of each): pieces of one table, points of one sampled line, stretches
-#: of the slices' sums; past one, `BeyondBounds`
+#: bounds on the work (every preset needs a tenth of each): pieces of one table, points of one sampled line; past
+#: one, `BeyondBounds`
 MAX_PIECES = 1000
 MAX_POINTS = 20000
-MAX_STRETCHES = 15000
 
 
 class _Table:
@@ -207,122 +186,3 @@ class ChartTables:
                 break
             T = np.where(done, T, np.where((step > lo) & (step < hi), step, 0.5 * (lo + hi)))
         return T
-
-
-# --- the rod's parts on slices ----------------------------------------------------------------------------------
-
-def rod_parts_on_slices(history, f, t, tables: ChartTables | None = None, tolerance: float = PARTS_TOLERANCE,
-                        ends: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """(matter, stress): arrays (n, 2) of (E, p) of the causal rod on each slice (f[k], t[k]) (frame rapidity and
-    time; either may be one number for every slice); matter's E includes the rod's rest energy M (M = 1).
-
-    `tables`: the invariants' tables to read (by default built to PRECISE_TABLES over the slices' chart times);
-    `tolerance`: each stretch's (the module's docstring), in M c^2; `ends`: the chart times of the left and right
-    ends on the slices, where the caller has them. Within 1e-10 of the exact integral with the defaults."""
-    t = np.atleast_1d(np.asarray(t, dtype=float))
-    f = np.broadcast_to(np.asarray(f, dtype=float), t.shape).copy()
-    L = history.scenario.L
-    if tables is None:
-        T = [history.end_chart_time(end, float(fk), float(tk)) for fk, tk in zip(f, t) for end in ("left", "right")]
-        tables = ChartTables(history, min(T) - L, max(T) + L, PRECISE_TABLES)
-    ef = np.exp(f)
-    T_L, T_R = ends if ends is not None else (tables.end_chart_times(0.0, f, t), tables.end_chart_times(L, f, t))
-    u_L, u_R, w_L, w_R = T_L, T_R + L, T_L, T_R - L
-    # the stretches of each slice: between u-breaks, the u where the slice meets a w-break, at most STRETCH L long
-    plus_breaks, minus_breaks = np.array(tables.plus.breaks), np.array(tables.minus.breaks)
-    crossings_slice, crossings_target = [], []
-    for k in range(len(t)):
-        inside = minus_breaks[(minus_breaks > w_R[k]) & (minus_breaks < w_L[k])]
-        crossings_slice += [k] * len(inside)
-        crossings_target += list(ef[k] * (2 * t[k] - ef[k] * tables.minus.m(inside)) if len(inside) else [])
-    crossing_u = _invert(tables.plus, np.array(crossings_target), np.array(crossings_slice, dtype=int),
-                         u_L, u_R)
-    slice_of, lo_of, hi_of = [], [], []
-    for k in range(len(t)):
-        cuts = sorted({u_L[k], u_R[k], *plus_breaks[(plus_breaks > u_L[k]) & (plus_breaks < u_R[k])],
-                       *crossing_u[np.array(crossings_slice, dtype=int) == k]})
-        for a, b in zip(cuts, cuts[1:]):
-            n = max(1, math.ceil((b - a) / (STRETCH * L)))
-            if len(slice_of) + n > MAX_STRETCHES:
-                raise BeyondBounds(f"{MAX_STRETCHES} stretches of slices to add up the ledger")
-            edges = np.linspace(a, b, n + 1)
-            slice_of += [k] * n
-            lo_of, hi_of = lo_of + list(edges[:-1]), hi_of + list(edges[1:])
-    total = _adaptive(tables, f, t, np.array(slice_of, dtype=int), np.array(lo_of), np.array(hi_of), w_R, w_L,
-                      tolerance)
-    return total[:, :2], total[:, 2:]
-
-
-def _gauss(tables: ChartTables, f, t, k, lo, hi, w_R, w_L) -> np.ndarray:
-    """(stretches, 4): Gauss-Legendre sums of the densities on each stretch [lo, hi] of u of slice k."""
-    L = tables.L
-    nodes, weights = np.polynomial.legendre.leggauss(GAUSS)
-    u = (0.5 * (lo + hi))[:, None] + (0.5 * (hi - lo))[:, None] * nodes[None, :]
-    weight = (0.5 * (hi - lo))[:, None] * weights[None, :]
-    kk = np.repeat(k, GAUSS)
-    u, weight, fk = u.ravel(), weight.ravel(), f[kk]
-    target = np.exp(-fk) * (2 * t[kk] - np.exp(-fk) * tables.plus.m(u))
-    w = _invert(tables.minus, target, kk, w_R, w_L)
-    rp, rm = tables.plus.r(u) - fk, tables.minus.r(w) + fk
-    th, lam2 = 0.5 * (rp - rm), np.exp(-(rp + rm))
-    rho, p = 0.5 / L * (1.0 + lam2), 0.5 / L * (lam2 - 1.0)
-    c, s = np.cosh(th), np.sinh(th)
-    scale = np.exp(rp) * weight  # dx = e^(r+ - f) du along the slice
-    densities = np.stack([rho * c * c, rho * c * s, p * s * s, p * c * s], axis=1) * scale[:, None]
-    return densities.reshape(len(k), GAUSS, 4).sum(axis=1)
-
-
-def _adaptive(tables: ChartTables, f, t, k, lo, hi, w_R, w_L, tolerance: float) -> np.ndarray:
-    """The densities integrated over every slice's stretches, each halved until its halves agree with it."""
-    total = np.zeros((len(t), 4))
-    whole = _gauss(tables, f, t, k, lo, hi, w_R, w_L)
-    spent = 3 * len(k)  # stretches summed, a whole and its halves each
-    before = np.full(len(k), np.inf)  # each stretch's parent's miss
-    for depth in range(40):
-        mid = 0.5 * (lo + hi)
-        # both halves in one call: each stretch's sums depend on that stretch alone (and the slices' brackets, the
-        # same for both halves), so they are the values two calls would give, at half the calls' cost
-        n = len(k)
-        both = _gauss(tables, f, t, np.concatenate([k, k]), np.concatenate([lo, mid]), np.concatenate([mid, hi]),
-                      w_R, w_L)
-        left, right = both[:n], both[n:]
-        halves = left + right
-        # to the tolerance, or a few thousand roundings where a body's energy is thousands of M c^2 (v near c), or,
-        # where halving gains nothing (the tables' own noise near c), below NOISE_TOLERANCE tolerances
-        miss = np.max(np.abs(halves - whole), axis=1)
-        good = (miss <= np.maximum(tolerance, 1e-12 * np.max(np.abs(halves), axis=1))) | (
-            (miss <= NOISE_TOLERANCE * tolerance) & (miss >= 0.25 * before))
-        if depth == 39:
-            good[:] = True
-        np.add.at(total, k[good], halves[good])
-        bad = ~good
-        if not bad.any():
-            break
-        spent += 2 * int(bad.sum())
-        if spent > MAX_STRETCHES:
-            raise BeyondBounds(f"{MAX_STRETCHES} stretches of slices to add up the ledger")
-        k, lo, hi = np.concatenate([k[bad], k[bad]]), np.concatenate([lo[bad], mid[bad]]), \
-            np.concatenate([mid[bad], hi[bad]])
-        before = np.concatenate([miss[bad], miss[bad]])
-        whole = np.concatenate([left[bad], right[bad]])
-    return total
-
-
-def _invert(table: _Table, target: np.ndarray, k: np.ndarray, lo_k: np.ndarray, hi_k: np.ndarray) -> np.ndarray:
-    """s with table.m(s) = target (m increasing, m' = e^r), within [lo_k[k], hi_k[k]]: from a guess read off m on
-    a grid, Newton's method kept inside the bracket."""
-    if len(target) == 0:
-        return np.zeros(0)
-    lo, hi = lo_k[k].copy(), hi_k[k].copy()
-    grid = np.linspace(lo.min(), hi.max(), 257)
-    s = np.clip(np.interp(target, table.m(grid), grid), lo, hi)
-    for _ in range(100):
-        r, m = table.both(s)
-        value = m - target
-        lo, hi = np.where(value < 0, s, lo), np.where(value >= 0, s, hi)
-        step = s - value / np.exp(r)
-        done = (np.abs(value) <= 1e-13 * (1 + np.abs(target))) | (hi - lo <= 1e-15 * (1 + np.abs(s)))
-        if done.all():
-            break
-        s = np.where(done, s, np.where((step > lo) & (step < hi), step, 0.5 * (lo + hi)))
-    return s
