@@ -78,9 +78,10 @@ def plot(scenarios: tuple[str, ...], v: float | None, L: float | None, frame: st
         if len(lorentz_frames(job.frames[0])) < len(job.frames[0]):  # the rod's own view is among the panels
             for h in run:
                 refuse_thin_view(h)
-    if proper_time and any(h.turning is None for run in histories for h in run):
+    if proper_time and any(h.fronts is not None for run in histories for h in run):
         raise BadInput("--proper-time draws the rigid rod's clocks only for now; leave it out for the causal rod.")
-    if rod_now and all(h.turning is None for run in histories for h in run):
+    if rod_now and not any(h.turning is not None or (h.driving is not None and h.driving.now_lines())
+                           for run in histories for h in run):  # the rod's own lines: a rigid rod's, or none
         raise BadInput("--rod-now draws the rigid rod's own lines of simultaneity, and the causal rod has none (its "
                        "parts share no rest frame): leave it out, or add the rigid rod with --rod both.")
     planned.prepare(jobs, described, output)

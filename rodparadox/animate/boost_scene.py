@@ -28,6 +28,7 @@ from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame, sampling_tolerance, view
 from rodparadox.physics.model import frame_velocity
 from rodparadox.render.causal_layers import HANDLER_MAP, Compression, Fronts
+from rodparadox.render.force_layers import HANDLER_MAP as FORCE_HANDLERS, ForceBands, ForceMoments
 from rodparadox.render.layers import (Impacts, Options, PanelContext, Particle, RodEnds, Separations, WorldSheet,
                                       line_kwargs, separation_text)
 from rodparadox.render.layer_base import line_in_box
@@ -39,6 +40,8 @@ from rodparadox.render.text import text_size, tick_text
 #: particles under the rod's ends), then the impacts' markers (over the bodies)
 #: the sheet: plain for the rigid rod; the causal rod's shaded by compression, crossed by its fronts (`causal_layers`)
 SHEET, BODIES, IMPACTS = (WorldSheet(), Compression(), Fronts()), (Particle("A"), Particle("B"), RodEnds()), Impacts()
+#: a rod driven by forces: each force's band along its end, and its start and end marked (`force_layers`)
+FORCES = (ForceBands(), ForceMoments())
 SEPARATIONS = Separations()
 #: the layers' options: none of plot's extras
 OPTIONS = Options()
@@ -72,9 +75,10 @@ class BoostScene:
         axis_inks = {"rest": st.rest_simultaneity, "moving": st.moving_simultaneity}
         axis_inks = {frame: ink._replace(width=1.3 * ink.width) for frame, ink in axis_inks.items()}
         key = [(Line2D([], [], **line_kwargs(st.rod)), "rod")]
+        key += [entry for entry in (layer.legend_entry(st, history, OPTIONS) for layer in FORCES) if entry]
         key += [entry for entry in (layer.legend_entry(st, history, OPTIONS) for layer in BODIES[:2]) if entry]
-        key += [IMPACTS.legend_entry(st, history, OPTIONS),
-                *(e for e in (layer.legend_entry(st, history, OPTIONS) for layer in (SEPARATIONS, *SHEET[1:])) if e),
+        key += [*(e for e in (layer.legend_entry(st, history, OPTIONS) for layer in (IMPACTS, SEPARATIONS, *SHEET[1:]))
+                  if e),
                 (Line2D([], [], **line_kwargs(axis_inks["rest"])), "axes of S"),
                 (Line2D([], [], **line_kwargs(axis_inks["moving"])), "axes of S\N{PRIME}")]
         key_width = (3.4 * fs + max(render.text_size(text, fs)[0] for _, text in key)) / 72  # inches
@@ -90,6 +94,7 @@ class BoostScene:
         span = 1.04 * max(x1 - x0, t1 - t0)  # a square panel with equal scales: the shorter side widened
         (x0, x1), (t0, t1) = [(0.5 * (a + b) - span / 2, 0.5 * (a + b) + span / 2) for a, b in ((x0, x1), (t0, t1))]
         self.box = (x0, x1, t0, t1)
+        self.scale = side * 72 / (x1 - x0)  # points per L: a force's band is as wide on the page as in plot
         ax.set_xlim(x0, x1)
         ax.set_ylim(t0, t1)
         # real times and places on the ticks, never an offset (+5e4 over the title) or a shared power of ten: a
@@ -123,7 +128,8 @@ class BoostScene:
                                bbox=ground, animated=True) for i in history.impacts]
         figure.legend([h for h, _ in key], [text for _, text in key], loc="upper left",
                       bbox_to_anchor=((left + side + 0.3) / width, 1 - top / height), fontsize=fs,
-                      handlelength=2.6, labelspacing=0.7, borderaxespad=0.0, handler_map=HANDLER_MAP)
+                      handlelength=2.6, labelspacing=0.7, borderaxespad=0.0,
+                      handler_map={**HANDLER_MAP, **FORCE_HANDLERS})
         self.reach = 2.0 * max(abs(x0), abs(x1), abs(t0), abs(t1))  # the axes run past the panel's every side
         self.font_sizes = font_sizes(st)
         self.layered: tuple = ()  # what the layers drew at the last instant, taken away at the next
@@ -138,7 +144,7 @@ class BoostScene:
                   for name, w in named if w is not None}
         # no layer drawn here has ticks or clocks: their steps are not needed
         return PanelContext(history, self.style, OPTIONS, self.font_sizes, "boost", view(history, frame), points,
-                            self.box, (math.nan, math.nan), math.nan)
+                            self.box, (math.nan, math.nan), math.nan, scale=self.scale)
 
     def update(self, k: int) -> tuple:
         from rodparadox import render
@@ -152,9 +158,10 @@ class BoostScene:
         panel = self.panel(frame)
         # each layer where the run has what it draws (the compression and fronts: a run with fronts)
         sheet = tuple(artist for layer in SHEET if layer.applies(history) for artist in layer.draw(ax, panel).artists)
+        forces = tuple(artist for layer in FORCES if layer.applies(history) for artist in layer.draw(ax, panel).artists)
         bodies = tuple(artist for layer in BODIES if layer.applies(history) for artist in layer.draw(ax, panel).artists)
         impacts = IMPACTS.draw(ax, panel).artists
-        self.layered = (*sheet, *bodies, *impacts)
+        self.layered = (*sheet, *forces, *bodies, *impacts)
         for (other, axis), line in self.axes_of.items():
             u = render.relative_velocity(frame_velocity(other, v), frame.velocity)  # that frame, seen here
             dx, dt = (u, 1.0) if axis == "t" else (1.0, u)
@@ -174,7 +181,7 @@ class BoostScene:
             text.set_visible(_near(place, box))
             text.set_position(place)
         self.title.set_text(_boost_title(frame))
-        return (*sheet, *self.axes_of.values(), *bodies, *impacts, *self.labels, *self.names.values(),
+        return (*sheet, *self.axes_of.values(), *forces, *bodies, *impacts, *self.labels, *self.names.values(),
                 *self.particles.values(), self.title)
 
 

@@ -97,6 +97,11 @@ class NowScene:
         self._lengths = [self._lengths_in(p) for p in range(len(panels))]
         self._span = [ax.get_xlim()[1] - ax.get_xlim()[0] for ax in panels]
         b = _Band(st, any(m > 1 for m in magnifications))
+        forces = None  # a rod driven by forces: an arrow on each driven end of a strip, to plot's scale
+        if history.driving is not None:
+            from rodparadox.render.force_layers import force_scale
+
+            forces = force_scale(history)
         band = b.height / 72  # inches, per row of panels
         total = height + band * len(rows)
         _make_room_below(figure, height, total, band * len(rows))
@@ -123,7 +128,7 @@ class NowScene:
             colour_ax = figure.add_axes(at(b.colour_y, b.colour_h, pos.x0 + 0.15 * pos.width, 0.7 * pos.width))
             first = timeline.strip(history, 0, p)
             strip = draw_strip(strip_ax, first, st, scale, frame, L=L, colour_ax=colour_ax,
-                               bar_width=0.5 * b.strip_h, animated=True)
+                               bar_width=0.5 * b.strip_h, animated=True, force_scale=forces)
             strip.readout.set_y(1.0 + b.readout_pad / b.strip_h)
             strip.readout.set_fontsize(self._readout_size(p, frame, pos.width * 72 * width, st.font_size))
             strip_ax.tick_params(length=b.tick_len, pad=b.tick_pad)
@@ -137,7 +142,7 @@ class NowScene:
                 lens_ax.set_xticks(ticks)
                 lens_ax.xaxis.set_major_formatter(_signed_labels(step))
                 lens = draw_strip(lens_ax, first, st, scale, frame, L=L, bar_width=0.5 * b.lens_h, animated=True,
-                                  readout=False)
+                                  readout=False, force_scale=forces)
                 lens_ax.tick_params(length=b.tick_len, pad=b.tick_pad)
                 title = lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint", loc="left",
                                           fontsize=b.small, pad=b.lens_pad)

@@ -29,7 +29,8 @@ class Strip:
     `sigma` are the material points (proper distance from the left end, 0 to L), `x` where each is at t
     (x[0] the left end, x[-1] the right end), `velocity` its velocity there; `particles` is (name, x) for
     each particle; `flashing` the labels (B1, A1, ...) of the impacts within the flash time of t, and
-    `flash_x` where each of them is (the impact's x in the frame, not the rod's now).
+    `flash_x` where each of them is (the impact's x in the frame, not the rod's now); `forces` is (end, F) for each
+    end a force drives (`RodHistory.driving`: F at that end's event on the slice, units of M c^2/L).
     """
 
     t: float
@@ -39,6 +40,7 @@ class Strip:
     particles: tuple[tuple[str, float], ...]
     flashing: tuple[str, ...]
     flash_x: tuple[float, ...] = ()
+    forces: tuple[tuple[str, float], ...] = ()
 
 
 @lru_cache(maxsize=32)
@@ -69,5 +71,7 @@ def strip_at(history: RodHistory, frame: Frame, t: float, flash: float, points: 
     particles = tuple((name, history.worldline(name).seen_from(eta).event_at_time(t).x)
                       for name in ("A", "B") if history.worldline(name) is not None)
     lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]
+    driving = history.driving
+    forces = () if driving is None else tuple((end, driving.force_at(end, eta, t)) for end, _ in driving.profiles())
     return Strip(t, sigmas, x, np.tanh(rapidity), particles, tuple(i.label for i in lit),
-                 tuple(i.event.seen_from(eta).x for i in lit))
+                 tuple(i.event.seen_from(eta).x for i in lit), forces)

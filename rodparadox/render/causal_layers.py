@@ -242,6 +242,8 @@ class Fronts(CausalLayer):
     def legend_entry(self, style, history, options, clock_step=None):
         if not self.applies(history):
             return None
+        if history.driving is not None and not any(p.jumps() for _, p in history.driving.profiles()):
+            return None  # forces without a jump: the compression changes smoothly, no front is drawn
         return line_handle(style.front), "light front (a jump in \N{GREEK SMALL LETTER LAMDA})"
 
 
@@ -273,7 +275,7 @@ class Contacts(CausalLayer):
         return LayerArtists(artists=tuple(drawn))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        if not self.applies(history):
+        if not self.applies(history) or not history.impacts:  # no contacts: a rod driven by forces
             return None
         return (Line2D([], [], color="#777777", alpha=0.35, linewidth=style.rod.width * 3.2, solid_capstyle="butt"),
                 "contact: particle rides with end")

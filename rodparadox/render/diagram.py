@@ -221,6 +221,15 @@ def _causal_handlers(history) -> dict:
     return HANDLER_MAP
 
 
+def _force_handlers(history) -> dict:
+    """The legend handler of the force bands' entry (its scale), where a rod is driven by forces."""
+    if not any(h.driving is not None for h in (history if isinstance(history, tuple) else (history,))):
+        return {}
+    from rodparadox.render.force_layers import HANDLER_MAP
+
+    return HANDLER_MAP
+
+
 class _Builder:
     """One diagram's panels, laid out and then drawn into a target."""
 
@@ -302,7 +311,8 @@ class _Builder:
                                bbox_to_anchor=(0.5, (oy + layout.note_height + layout.legend_height - 2) / height),
                                ncol=layout.legend_columns, fontsize=fs["legend"], handlelength=3.2, handletextpad=0.6,
                                columnspacing=1.6, borderaxespad=0.0, borderpad=0.0, labelspacing=0.5,
-                               handler_map={tuple: HandlerTuple(ndivide=1), **_causal_handlers(self.histories)})
+                               handler_map={tuple: HandlerTuple(ndivide=1), **_causal_handlers(self.histories),
+                                            **_force_handlers(self.histories)})
         legend.set_gid("legend")
         infos.sort(key=lambda info: info.letter)
         return Diagram(target, tuple(infos),

@@ -60,6 +60,11 @@ def clock_marker(style: Style, ink: Ink) -> dict[str, Any]:
     return marker_kwargs(style.clock_size, "white", ink.colour, 0.8)
 
 
+def separation_marker(style: Style) -> dict:
+    """A separation: a hollow marker, told from a contact (filled) in any ink."""
+    return marker_kwargs(style.impact_size, "white", style.impact_colour, 1.0)
+
+
 def line_handle(ink: Ink) -> Line2D:
     return Line2D([], [], **line_kwargs(ink))
 
@@ -68,6 +73,19 @@ def widest_line(style: Style) -> float:
     """The widest line a label must keep clear of."""
     return max(ink.width for ink in (style.rod, *style.particles.values(), style.rest_simultaneity,
                                      style.moving_simultaneity, style.other_axes, style.light_cone, style.hyperbola))
+
+
+#: a rod driven by forces: its own lines of simultaneity at each stage's start and this many more while driven
+#: (12 hatched Sears's one-L pulse into a solid block)
+NOW_LINES_DRIVEN = 6
+
+
+def own_now_lines(history) -> list:
+    """The rod's own lines of simultaneity, (left end, right end) event pairs in S: a rigid rod's turns and the
+    lines between them (`turning`), or a rigid rod driven by forces (`driving`); none for a rod without them."""
+    if history.turning is not None:
+        return history.turning.now_lines()
+    return history.driving.now_lines(NOW_LINES_DRIVEN) if history.driving is not None else []
 
 
 def contacts_last(history) -> bool:
@@ -93,6 +111,7 @@ class PanelContext:
     steps: tuple[float, float]  # the x and t tick steps, units of L
     clock_step: float  # proper time between two clock ticks, same units as L
     rod_lines: int | None = None  # material lines drawn here (fewer than asked where they would crowd); None: asked
+    scale: float | None = None  # points per L on the page (a force's band is as wide in points in every panel)
 
     @property
     def L(self) -> float:
@@ -105,6 +124,16 @@ class PanelContext:
     def events(self) -> list[tuple[str, str, float, float]]:
         """Every impact in this frame: (label, end of the rod, x/L, t/L)."""
         return [(e.impact.label, e.impact.end, e.x / self.L, e.t / self.L) for e in self.view.events]
+
+    def force_events(self) -> list[tuple[str, str, float, float]]:
+        """Each force's start and end in this frame, for a rod driven by forces (`RodHistory.driving`; none
+        otherwise): (label `left-start`, ..., end of the rod, x/L, t/L), ends in order, moments in order."""
+        driving = self.history.driving
+        if driving is None:
+            return []
+        eta = self.view.frame.rapidity
+        return [(f"{e.end}-{e.moment}", e.end, e.event.seen_from(eta).x / self.L, e.event.seen_from(eta).t / self.L)
+                for e in driving.force_events() if e.moment in ("start", "end")]
 
     @property
     def contact_labels(self) -> frozenset[str]:

@@ -33,7 +33,8 @@ from rodparadox.numbers import impact_name, shown
 from rodparadox.render.styles import Ink, Style
 from rodparadox.render.layer_base import (Layer, LayerArtists, Options, PanelContext, clip_line, clock_marker,  # noqa: F401
                                           contacts_last, impact_marker, has_fronts, line_handle, line_kwargs,
-                                          marker_kwargs, widest_line)
+                                          marker_kwargs, own_now_lines, separation_marker, widest_line)
+from rodparadox.render.force_layers import ForceBands, ForceMoments
 from rodparadox.render.labels import Label
 from rodparadox.render.legibility import material_lines_text
 from rodparadox.render.text import coordinate_names, frame_symbol, impact_text_size
@@ -110,13 +111,13 @@ class RodNow(Layer):
     def enabled(self, options):
         return options.rod_now
 
-    def applies(self, history):
-        return history.turning is not None
+    def applies(self, history):  # a rigid rod: its turns' lines; a driven one: its lines of each stage
+        return history.turning is not None or bool(own_now_lines(history))
 
     def draw(self, ax, panel):
         eta = panel.view.frame.rapidity
         t_lo, t_hi = panel.view.t_range
-        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in panel.history.turning.now_lines()]
+        lines = [(a.seen_from(eta), b.seen_from(eta)) for a, b in own_now_lines(panel.history)]
         drawn, segments = [], []
         for k, (a, b) in enumerate((a, b) for a, b in lines if min(a.t, b.t) >= t_lo and max(a.t, b.t) <= t_hi):
             segment = np.array([[a.x, a.t], [b.x, b.t]]) / panel.L
@@ -239,6 +240,7 @@ class Simultaneity(Layer):
     def draw(self, ax, panel):
         slope = relative_velocity(self.frame(panel.v).velocity, panel.view.frame.velocity)  # dt/dx of the line in this panel
         events = [e for e in panel.events() if e[0] in panel.simultaneity_labels]  # a causal rod's first contacts
+        events += panel.force_events()  # a rod driven by forces: each force's start and end
         drawn: list[tuple[float, str, list[str]]] = []
         for label, _, x, t in events:
             intercept = t - slope * x
@@ -422,6 +424,8 @@ class Impacts(Layer):
         return LayerArtists(artists=tuple(markers), labels=tuple(labels))
 
     def legend_entry(self, style, history, options, clock_step=None):
+        if not history.impacts:  # a rod driven by forces: nothing strikes it
+            return None
         if contacts_last(history):  # named by its first contact, so the legend shows how labels read
             first = next(i for i in history.impacts if not i.is_separation)
             return Line2D([], [], **impact_marker(style)), f"contact ({impact_name(first.label)})"
@@ -448,11 +452,6 @@ class Separations(Layer):
         return Line2D([], [], **separation_marker(style)), f"separation ({name[0]}\N{PRIME}{name[1:]})"
 
 
-def separation_marker(style: Style) -> dict:
-    """A separation: a hollow marker, told from a contact (filled) in any ink."""
-    return marker_kwargs(style.impact_size, "white", style.impact_colour, 1.0)
-
-
 def separation_text(label: str, size: float) -> tuple[str, tuple[float, float]]:
     """A separation's label, mathtext (A1s -> A′₁, `numbers.impact_name`), and a box at least as large as it draws."""
     contact = label[:-1] if label.endswith("s") else label
@@ -465,16 +464,17 @@ _A, _B = Particle("A"), Particle("B")
 _REST, _MOVING = Simultaneity("rest", 2.2), Simultaneity("moving", 2.1)
 _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS = OtherAxes(), LightCones(), Hyperbolae(), Impacts()
 _SEPARATIONS = Separations()
+_FORCES, _FORCE_EVENTS = ForceBands(), ForceMoments()  # a rod driven by forces: each force, its start and end
 #: the causal rod's own layers, by name: `causal_layers` is imported only when one is drawn (`drawing_order`)
 _COMPRESSION, _FRONTS, _CONTACTS = "compression", "fronts", "contacts"
 
 #: the drawing order: the grid behind, the world-sheet, the rod's inside, its ends, the particles, the lines of
 #: simultaneity, the extras' lines, the impacts on top (zorders decide what covers what; this order breaks ties)
-_DRAWING = (Grid(), _SHEET, _COMPRESSION, _ROD_LINES, _FRONTS, _ROD_NOW, _CLOCKS, _CONTACTS, _ROD, _A, _B, _REST,
-            _MOVING, _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS, _SEPARATIONS)
+_DRAWING = (Grid(), _SHEET, _COMPRESSION, _ROD_LINES, _FRONTS, _ROD_NOW, _CLOCKS, _CONTACTS, _FORCES, _ROD, _A, _B,
+            _REST, _MOVING, _OTHER_AXES, _CONES, _HYPERBOLAE, _IMPACTS, _SEPARATIONS, _FORCE_EVENTS)
 #: the legend's order, as the paper's caption reads: bodies, impacts, lines of simultaneity, then the extras
-_LEGEND = (_ROD, _COMPRESSION, _A, _B, _IMPACTS, _SEPARATIONS, _CONTACTS, _FRONTS, _REST, _MOVING, _OTHER_AXES, _CONES,
-           _ROD_LINES, _ROD_NOW, _CLOCKS, _HYPERBOLAE)
+_LEGEND = (_ROD, _COMPRESSION, _FORCES, _A, _B, _IMPACTS, _SEPARATIONS, _CONTACTS, _FORCE_EVENTS, _FRONTS, _REST,
+           _MOVING, _OTHER_AXES, _CONES, _ROD_LINES, _ROD_NOW, _CLOCKS, _HYPERBOLAE)
 assert set(_LEGEND) <= set(_DRAWING)
 
 

@@ -61,7 +61,9 @@ def panel_of(history: RodHistory, letter: str, frame: Frame, window: tuple[float
     box = [x0 - margin, x1 + margin, t0 - margin, t1 + margin]
     fit_aspect(box, *ASPECT_RANGE)
     ringing = math.tanh(history.final_rapidity - frame.rapidity) if history.fronts is not None else None
-    panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing))
+    # a rod driven by forces has no impacts to read its last velocity from: its history's final rapidity
+    after = math.tanh(history.final_rapidity - frame.rapidity) if history.driving is not None else None
+    panel = Panel(letter, fv, worldlines, box, panel_title(letter, fv, ringing, after))
     panel.history = history
     panel.ringing = ringing
     return panel

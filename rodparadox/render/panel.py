@@ -27,7 +27,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         rod_lines = material_lines_that_fit(history, p.view, p.worldlines, p.width / (p.box[1] - p.box[0]),
                                             options.rod_lines)
     panel = PanelContext(history, style, options, m.fs, p.letter, p.view, p.worldlines, tuple(p.box), steps,
-                         clock_step, rod_lines)
+                         clock_step, rod_lines, p.width / (p.box[1] - p.box[0]))
     drawn: dict[str, list] = {}
     obstacles, guides, labels = [], [], []
     for layer in drawing_order(history):

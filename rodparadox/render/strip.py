@@ -74,11 +74,14 @@ class StripArtists(NamedTuple):
     colour_bar: Colorbar | None
     letter_y: float = LETTER_Y
     half_bar: float = 0.5  # the bar's half thickness, in the axes' y
+    arrows: tuple = ()  # a rod driven by forces: an arrow at each driven end, as long as the force (`draw_strip`)
+    per_force: float = 0.0  # the arrows' length per unit of force, in the axes' x (units of L)
 
     @property
     def moving(self) -> tuple:
         """What changes from one instant to the next, in the order an animation draws it."""
-        return tuple(a for a in (self.bar, self.outline, self.dots, self.flash, self.readout, *self.names)
+        return tuple(a for a in (self.bar, self.outline, self.dots, self.flash, self.readout, *self.names,
+                                 *self.arrows)
                      if a is not None)
 
 
@@ -176,12 +179,13 @@ def label_colour_bar(colour_bar: Colorbar, scale: ColourScale, size: float) -> N
 def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, frame: Frame, *, L: float = 1.0,
                colour_ax: Axes | None = None, bar_width: float | None = None, animated: bool = False,
                font_size: float | None = None, letter_y: float = LETTER_Y, readout: bool = True,
-               gid: str | None = None) -> StripArtists:
+               gid: str | None = None, force_scale: float | None = None) -> StripArtists:
     """Draw the strip of `frame` at the instant of `strip` into `ax` (its x limits are the caller's).
 
     `bar_width`: the bar's thickness in points (default: half the axes' height); `colour_ax`: where the colour
     bar goes (none without it); `animated`: the artists are left out of the canvas's own draw, for blitting;
-    `font_size`: of the letters and the readout (default: the style's).
+    `font_size`: of the letters and the readout (default: the style's); `force_scale`: for a rod driven by forces
+    (`Strip.forces`), the force an arrow as long as the style's type size shows (as plot's bands, `force_layers`).
     """
     st = _style(style)
     fs = st.font_size if font_size is None else font_size
@@ -209,10 +213,18 @@ def draw_strip(ax: Axes, strip: Strip, style: Style | str, scale: ColourScale, f
     if readout:
         said = ax.set_title("", fontsize=fs, loc="left", pad=3)
         said.set_animated(animated)
-    artists = StripArtists(bar, outline, dots, names, flash, said, colour_bar, letter_y, half_bar)
+    arrows, per_force = (), 0.0
+    if strip.forces:
+        from rodparadox.render.force_layers import band_points, strip_arrow
+
+        per_force = band_points(st) / force_scale * (ax.get_xlim()[1] - ax.get_xlim()[0]) / (
+            ax.bbox.width * 72 / ax.get_figure(root=True).dpi)  # units of L per unit of force
+        arrows = tuple(strip_arrow(ax, st, end, animated) for end, _ in strip.forces)
+    artists = StripArtists(bar, outline, dots, names, flash, said, colour_bar, letter_y, half_bar, arrows, per_force)
     gid = gid or ax.get_gid() or "strip"
     for artist, name in ((bar, "bar"), (outline, "outline"), (dots, "particles"), (flash, "impacts"), (said, "readout"),
-                         *((text, f"particle-{text.get_text()}") for text in names)):
+                         *((text, f"particle-{text.get_text()}") for text in names),
+                         *((arrow, f"force-{end}") for arrow, (end, _) in zip(arrows, strip.forces))):
         if artist is not None:
             artist.set_gid(f"{gid}-{name}")
     if not animated:
@@ -241,6 +253,11 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
         text.set_visible(bool(lo <= xp / L <= hi))  # a letter is not clipped (it may reach above the axes): hide it
     _set_letters_apart(artists, strip, L)
     artists.flash.set_data([xf / L for xf in strip.flash_x], [0.0] * len(strip.flash_x))
+    for arrow, (end, force) in zip(artists.arrows, strip.forces):  # pressing: into the rod; pulling: out of it
+        at, out = (x[0], -1.0) if end == "left" else (x[-1], 1.0)
+        tip_out = at + out * artists.per_force * abs(force)
+        arrow.set_positions(*(((tip_out, 0.0), (at, 0.0)) if force > 0 else ((at, 0.0), (tip_out, 0.0))))
+        arrow.set_visible(force != 0.0)
     if artists.readout is not None:
         artists.readout.set_text(readout_text(strip, frame, L))
     return artists.moving

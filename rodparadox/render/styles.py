@@ -91,6 +91,8 @@ class Style(NamedTuple):
     #: the ends of its compression scale (most stretched, most compressed; the unstressed middle is `sheet`)
     front: Ink = Ink("#1a1a1a", 0.45, FRONT_DASH)
     compression_ends: tuple[str, str] = ("#fff4cf", "#08306b")
+    force: Ink = Ink(_VERMILLION, 0.8)  # a force on an end: its band's outer edge and its arrows
+    force_fill: str = "#f7cdb3"  # the band's fill (a pull's band is hatched as well)
 
 
 def _frozen(mapping: dict) -> Mapping:
@@ -166,6 +168,7 @@ _PRINT = Style(
     rc=_frozen({**_COMMON_RC, **_SERIF}),
     front=Ink("#000000", 0.45, FRONT_DASH),
     compression_ends=("#ffffff", "#4d4d4d"),
+    force=Ink("#000000", 0.7), force_fill="#b8b8b8",  # darker than the sheet's grey, black arrows
 )
 
 # slides: the default's colours and dashes, with large type, thick lines and a 16:9 canvas
@@ -191,6 +194,7 @@ _SLIDES = _DEFAULT._replace(
     animation_dpi=100, animation_ticks=(4.0, 2.5), boost_size=(13.33, 7.5),
     handout_body_size=12.0,
     front=Ink("#1a1a1a", 0.9, FRONT_DASH),
+    force=_DEFAULT.force._replace(width=1.5),
     rc=_frozen({**_DEFAULT.rc, "axes.linewidth": 1.4, "xtick.major.width": 1.4, "ytick.major.width": 1.4,
                 "xtick.major.size": 6.0, "ytick.major.size": 6.0}),
 )

@@ -54,11 +54,13 @@ def _velocity_phrase(before: float, after: float) -> str:
     return f"rod first {at(before)}, finally {at(after)}"
 
 
-def panel_title(letter: str, fv: FrameView, ringing_at: float | None = None) -> str:
+def panel_title(letter: str, fv: FrameView, ringing_at: float | None = None, after: float | None = None) -> str:
     """Plain text, no mathtext (each mathtext string costs milliseconds to lay out): the frame and the rod's velocity
-    (`ringing_at`: a causal rod's velocity after its last separation, that of its centre of momentum: it rings)."""
+    (`ringing_at`: a causal rod's velocity after its last separation, that of its centre of momentum: it rings;
+    `after`: its velocity at the end, where no impact says it, as for a rod driven by forces)."""
     frame = fv.frame
-    after = fv.events[-1].rod_velocity_after if fv.events else frame.rod_velocity()
+    if after is None:
+        after = fv.events[-1].rod_velocity_after if fv.events else frame.rod_velocity()
     if ringing_at is not None:
         return f"({letter}) frame {frame_symbol(frame)}: {_velocity_phrase(frame.rod_velocity(), ringing_at)}, ringing"
     return f"({letter}) frame {frame_symbol(frame)}: {_velocity_phrase(frame.rod_velocity(), after)}"

@@ -68,12 +68,53 @@ def first_impacts_text(history, frames: Sequence[Frame]) -> str:
     return ", ".join(said)
 
 
+def _timed_in(frame) -> str:
+    """The frame a profile is timed in, as its times read: t in S, t′ in S′, or a velocity's frame."""
+    if frame == "rest":
+        return "in S"
+    if frame == "moving":
+        return "in S′"
+    return f"in the frame moving at {shown(frame, 4)} c"
+
+
+def force_text(profile) -> str:
+    """One force in words: its shape, size (units of M c²/L) and when it acts (units of L), in
+    the frame its profile is timed in."""
+    lo, hi = profile.support()
+    t = "t\N{PRIME}" if profile.frame == "moving" else "t"
+    # no-break spaces: a figure's note never tears a number from its unit
+    nb = "\N{NO-BREAK SPACE}"
+    when = f"from {t} = {shown(lo, 4)}{nb}L to {shown(hi, 4)}{nb}L {_timed_in(profile.frame)}"
+    units = "\N{NO-BREAK SPACE}M\N{NO-BREAK SPACE}c\N{SUPERSCRIPT TWO}/L"
+    if profile.shape == "points":
+        least, greatest = profile.least(), profile.greatest()
+        size = (f"between {shown(least, 4)} and {shown(greatest, 4)}{units}" if least < 0 < greatest
+                else f"up to {shown(greatest if greatest > 0 else least, 4)}{units}")
+        kind = "push" if least == 0 else "pull" if greatest == 0 else "force"
+        return f"a {kind} through {len(profile.points)} points, {size}, {when}"
+    kind = "push" if profile.peak > 0 else "pull"
+    if profile.shape == "step":
+        return f"a constant {kind} of {shown(abs(profile.peak), 4)}{units} {when}"
+    return f"a sine² {kind} peaking at {shown(abs(profile.peak), 4)}{units} {when}"
+
+
+def forces_text(history) -> str:
+    """The forces on a rod's ends in words: each end's, or one sentence for both where they are the same."""
+    profiles = dict(history.driving.profiles())
+    if len(profiles) == 2 and force_text(profiles["left"]) == force_text(profiles["right"]):
+        return f"on each end {force_text(profiles['left'])}"
+    said = [f"on the {end} end {force_text(p)}" for end, p in profiles.items()]
+    said += [f"none on the {end} end" for end in ("left", "right") if end not in profiles]
+    return "; ".join(said)
+
+
 def comparison_note(histories, frames: Sequence[Frame]) -> str:
     """One paragraph: the particles every rod is struck by, and for each rod where its first impacts fall (for rods
-    driven by forces, that the same forces drive them: no particles strike them)."""
+    driven by forces, the forces that drive them all: no particles strike them)."""
     if not histories[0].scenario.particles:
-        return ("Both rods are driven by the same forces at their ends." if len(histories) == 2
-                else "Every rod is driven by the same forces at its ends.")
+        every = "Both rods are" if len(histories) == 2 else "Every rod is"
+        return f"{every} driven by the same forces at their ends, and struck by no particle: " \
+               f"{forces_text(histories[0])}."
     starts = [particle_starts_text(h) for h in histories]
     if len(set(starts)) == 1:
         every = "Both rods are" if len(histories) == 2 else "Every rod is"
