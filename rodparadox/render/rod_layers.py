@@ -33,6 +33,8 @@ HORIZON_GRID = 32
 #: at most this many rows of it; a particle's line is sampled to 1e-4 L, densified every 0.04 L, in a window of up
 #: to PARTICLE_WINDOW L, in proportion beyond (a gap of 1e6 L: a panel's cost bounded by what it shows)
 HORIZON_ROWS, PARTICLE_WINDOW = 2048, 50.0
+#: the most points of a particle's world-line carried into the rod's chart
+PARTICLE_POINTS = 2000
 #: the ground a pivot's dots are drawn on, where the end's solid line is blanked
 PIVOT_GROUND = "white"
 
@@ -403,7 +405,10 @@ class Particles(RodLayer):
             t_lo = min(e.t for e in _corners(chart, box, L, T0)) - L
             t_hi = max(e.t for e in _corners(chart, box, L, T1)) + L
             coarse = max(1.0, (T1 - T0) / PARTICLE_WINDOW)
-            points = densified(line.sample(t_lo, t_hi, 1e-4 * L * coarse), 0.04 * L * coarse)
+            # at most PARTICLE_POINTS points: a rod driven near c spans thousands of L of S's time in a few L of its
+            # own (single at v = 0.9999999, causal: 10^5 points, each found in the chart by Newton, ran minutes)
+            spacing = max(0.04 * L * coarse, (t_hi - t_lo) / PARTICLE_POINTS)
+            points = densified(line.sample(t_lo, t_hi, 1e-4 * L * coarse), spacing)
             drawn = chart_polyline(chart, points) / L
             ink = st.particles[name]
             artist, = ax.plot(drawn[:, 0], drawn[:, 1], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,

@@ -195,3 +195,23 @@ def test_a_run_without_a_bound_of_its_own_is_bounded_in_steps(monkeypatch):
     assert "choose masses nearer the rod's, or a lower speed" in str(caught.value) and "\n" not in str(caught.value)
     with pytest.raises(ScenarioError, match="within the bound asked for"):
         run(extreme, budget=100)
+
+
+def test_the_rod_view_of_a_rod_sent_near_c_carries_a_bounded_number_of_particle_points():
+    """Issue 27, item 5: `plot single --v 0.9999999 --rod causal --frame rod` ran for minutes: the rod, sent off at
+    gamma ~ 2000, spans thousands of L of S's time in its view's few L of its own, and the particle's world-line was
+    carried into the chart every 0.04 L of S's time (1e5 points, each found by Newton). At most PARTICLE_POINTS
+    now, and B still drawn from the box's bottom to its top."""
+    import numpy as np
+
+    from rodparadox import render
+    from rodparadox.io.scenario import load
+    from rodparadox.render.rod_layers import PARTICLE_POINTS
+
+    history = run(load("single").with_overrides(v=0.9999999, rod="causal"))
+    figure = render.draw_rod_view((history,), "default")
+    [line] = [a for a in figure.findobj() if (getattr(a, "get_gid", lambda: None)() or "").endswith("particle-B")]
+    points = np.column_stack([line.get_xdata(), line.get_ydata()])
+    assert len(points) <= 2 * PARTICLE_POINTS  # each segment rounds its share up; before: ~1e5
+    shown = points[np.isfinite(points).all(axis=1)]
+    assert shown[:, 1].min() <= figure.axes[0].get_ylim()[0] and shown[:, 1].max() >= figure.axes[0].get_ylim()[1]
