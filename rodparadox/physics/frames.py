@@ -187,10 +187,13 @@ class FrameView:
     t_range: tuple[float, float]
     segments: tuple[tuple[str, tuple[Segment, ...]], ...]  # exact pieces within t_range, per world-line
 
-    def worldline_points(self, tolerance: float) -> dict[str, np.ndarray]:
-        """Each world-line as an (n, 2) array of [x, t], every kink included, arcs within `tolerance`."""
+    def worldline_points(self, tolerance: float, times: tuple[float, float] | None = None) -> dict[str, np.ndarray]:
+        """Each world-line as an (n, 2) array of [x, t], every kink included, arcs within `tolerance`; only its part
+        within the frame's `times` (t_lo, t_hi) where given."""
         out = {}
         for name, pieces in self.segments:
+            if times is not None:
+                pieces = [c for c in (p.clipped(*times) for p in pieces) if c is not None]
             parts = [p.sample(tolerance) for p in pieces]
             out[name] = np.concatenate([parts[0]] + [p[1:] for p in parts[1:]]) if parts else np.empty((0, 2))
         return out

@@ -312,3 +312,25 @@ def test_a_clock_in_mathtext_reads_its_powers_of_ten_in_mathtext():
     assert clock_reading(other, 5e6) == "$t_u$ = $5{\\times}10^{6}$ $L$"
     assert clock_reading(rest, -0.5) == "$t$ = \N{MINUS SIGN}0.5 $L$"
     assert clock_reading(moving, 1.25) == "$t$\N{PRIME} = 1.25 $L$"
+
+
+def test_a_deep_inset_samples_only_what_it_shows():
+    """Issue 27: masses 1e9 squeeze the causal rod to a sliver a billionth of L wide; its inset (x5e8) sampled the
+    whole world-lines a thousandth of its window apart, 6e6 points, and `handout --rod both` took 49 s. Sampled
+    within the inset's window only (its side either way), the inset's lines hold a bounded number of points, every
+    one of them near the window, and the sheet is still drawn across it."""
+    from rodparadox.physics.model import Particle, Scenario
+    from rodparadox.physics.models import run_rods
+
+    scenario = Scenario("heavy9", 0.6, (Particle("A", 1e9, gap=0.5), Particle("B", 1e9, gap=0.5)), 1.0, rod="causal")
+    fig = render.draw(run_rods(scenario)[0], paper_frames(0.6)).figure
+    [inset] = fig.axes[0].child_axes
+    assert inset.get_gid() == "a-inset"
+    (x0, x1), (t0, t1) = inset.get_xlim(), inset.get_ylim()
+    lines = [line for line in inset.lines if len(line.get_xdata()) > 2]
+    assert lines and all(len(line.get_xdata()) <= 20_000 for line in lines)
+    for line in lines:
+        t = np.asarray(line.get_ydata(), float)
+        t = t[np.isfinite(t)]
+        assert t.min() >= t0 - 1.01 * (t1 - t0) and t.max() <= t1 + 1.01 * (t1 - t0)
+    assert [p for p in inset.patches if (p.get_gid() or "").endswith("inset-sheet")]
