@@ -14,7 +14,6 @@ integrand is analytic).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -24,25 +23,7 @@ from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, CollocatedStage, ConstantStage, GAUSS_W,
                                              GAUSS_X, Solution, solve, stage_piece)
-from rodparadox.physics.types import EnergyMomentum, Slice
-
-#: what a force event is: its profile's first instant with force, its largest, its last
-FORCE_MOMENTS = ("start", "peak", "end")
-
-
-@dataclass(frozen=True)
-class ForceEvent:
-    """A force's start, peak or end at one end: the event in S, the end's rapidity in S there, the force there
-    (units of M c^2/L; at the end, the force just before it stops) and the instant in the profile's frame (units of
-    L)."""
-
-    end: str
-    moment: str
-    event: Event
-    rapidity: float
-    force: float
-    profile_time: float
-
+from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
 def run_forces(scenario: Scenario) -> "DrivenHistory":
     """The rigid rod of the scenario driven by its forces."""
