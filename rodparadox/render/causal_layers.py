@@ -24,6 +24,7 @@ from matplotlib.legend_handler import HandlerBase
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
+from rodparadox.numbers import shown
 from rodparadox.physics.frames import sampling_tolerance
 from rodparadox.render.layer_base import Layer, LayerArtists, line_handle
 from rodparadox.render.shading import FRONT_JUMP, SHADES, cell_edges
@@ -211,7 +212,10 @@ class Compression(CausalLayer):
 
 def lam_text(lam: float) -> str:
     """lam to two significant digits in plain decimals (115, 6.5, 0.38, 0.0086): never e-notation; more digits
-    where two would read an unstressed 1 for a stressed rod (1.0004 at v = 0.01, not 1.0)."""
+    where two would read an unstressed 1 for a stressed rod (1.0004 at v = 0.01, not 1.0); beyond a million or
+    below 1e-4, a power of ten (2×10⁹: masses 1e9 squeeze the rod so, and "2030345398" is read by no one)."""
+    if not 1e-4 <= lam < 1e6:
+        return shown(lam, 2)
     decimals = max(0, 1 - math.floor(math.log10(lam)))
     while decimals < 12 and lam != 1.0 and float(f"{lam:.{decimals}f}") == 1.0:
         decimals += 1

@@ -344,7 +344,8 @@ def test_ledger_both_gives_the_rigid_ledger_then_the_causal_one_and_the_figure_i
 
 @pytest.mark.parametrize("lam, text", [(114.63, "115"), (6.49, "6.5"), (1.0, "1.0"), (0.381, "0.38"),
                                        (0.00862, "0.0086"), (1.0004, "1.0004"), (0.99951, "0.9995"),
-                                       (1.04, "1.04")])
+                                       (1.04, "1.04"), (2030345398.0, "2\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT NINE}"),
+                                       (2.2e-7, "2.2\N{MULTIPLICATION SIGN}10\N{SUPERSCRIPT MINUS}\N{SUPERSCRIPT SEVEN}")])
 def test_the_compression_scale_is_written_in_plain_decimals(lam, text):
     """Two significant digits, but never 1.0 for a stressed rod (review: off_timing at v = 0.01 read "0.98 to 1.0")."""
     from rodparadox.render.causal_layers import lam_text
