@@ -21,9 +21,9 @@ import pytest
 #: (issue 13, item 8). One plot writes SVG, PDF and PNG: while_turning with rod lines, clocks and a third frame
 #: draws all that fig2's default plot draws and more, so fig2's plot (a command of its own before) is not needed.
 #: The ledger's figure as SVG (its elements' order) and PNG. Animations have 2 images, the fewest an animation may
-#: have, the GIF in one panel (the stills draw both frames). The handout PDF of `single` in the rest frame; the
-#: worksheet and the LaTeX folder of fig1 (two particles, both frames, every question), where an order that
-#: a hash seed changes would show.
+#: have, the GIF in one panel (the stills draw both frames). The worksheet (its PDF is written by the handout's
+#: writer, its pages and key included: a handout of its own was the same kind twice) and the LaTeX folder of fig1
+#: (two particles, both frames, every question), where an order that a hash seed changes would show.
 COMMANDS = (
     ["plot", "while_turning", "--v", "0.95", "--style", "print", "--rod-lines", "5", "--rod-now",
      "--proper-time", "--frame", "both,0.3", "--format", "svg,pdf,png", "-o", "."],
@@ -36,7 +36,6 @@ COMMANDS = (
     ["animate", "fig2", "--frame", "rest", "--fps", "4", "--seconds", "0.5", "-o", "a.gif"],
     ["animate", "while_turning", "--v", "0.95", "--mode", "boost", "--style", "print", "--fps", "4",
      "--seconds", "0.5", "--format", "png", "-o", "stills"],
-    ["handout", "single", "--frame", "rest", "-o", "."],
     # two particles, both frames, every question: where an order that hash seeds change could show
     ["handout", "fig1", "--worksheet", "-o", "."],
     ["handout", "fig1", "--format", "tex", "-o", "tex"],
@@ -81,7 +80,7 @@ def test_two_processes_with_other_hash_seeds_write_every_output_kind_with_the_sa
     suffixes = {Path(n).suffix for n in names}
     assert suffixes >= {".svg", ".pdf", ".png", ".json", ".tex", ".csv", ".gif", ".dat"}
     assert {"while_turning_v0.95_both_u0.3_print_now_clocks_lines5.svg", "fig2_ledger.png", "a.gif",
-            "single_handout_rest.pdf", "fig1_worksheet.pdf", "tex/handout.tex", "fig2_ledger.svg",
+            "fig1_worksheet.pdf", "tex/handout.tex", "fig2_ledger.svg",
             "fig1_rest_causal.svg", "fig1_rest_causal.pdf"} <= names
     assert sum(n.startswith("stills/") for n in names) == 2  # round(0.5 s * 4 fps) stills
     # the same bytes
