@@ -127,3 +127,27 @@ def with_examples(*extra):
     return decorate
 
 
+# --- force profiles (a rod driven at its ends) -----------------------------------------------------------------
+
+force_frames = st.one_of(st.just("rest"), st.just("moving"), st.floats(-0.8, 0.8))
+
+
+@st.composite
+def force_profiles(draw, end: str, least: float):
+    """A generated profile for one end: step, sine2 or points (2 to 5 corners), timed in S, S' or a frame u; its
+    force never below `least` (a pull the model carries with room: rigid -0.9, causal -0.45)."""
+    from rodparadox.physics.forces import ForceProfile
+
+    shape = draw(st.sampled_from(["step", "sine2", "points"]))
+    frame = draw(force_frames)
+    if shape == "points":
+        n = draw(st.integers(2, 5))
+        times = sorted(draw(st.lists(st.floats(-1.0, 3.0), min_size=n, max_size=n, unique=True)))
+        spread = all(b - a > 1e-3 for a, b in zip(times, times[1:]))
+        forces = draw(st.lists(st.floats(least, 1.0), min_size=n, max_size=n))
+        if not spread or all(f == 0 for f in forces):
+            forces[0], times = 0.3, [k * 0.5 for k in range(n)]
+        return ForceProfile("points", points=tuple(zip(times, forces)), frame=frame, key=f"forces.{end}")
+    peak = draw(st.floats(least, 2.0).filter(lambda p: abs(p) > 1e-3))
+    return ForceProfile(shape, peak=peak, start=draw(st.floats(-1.0, 2.0)), duration=draw(st.floats(0.05, 2.0)),
+                        frame=frame, key=f"forces.{end}")

@@ -9,32 +9,18 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from generated import force_profiles
 from rodparadox.physics.forces import ForceProfile, Forces
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.models import run_rod
 
-frames_st = st.one_of(st.just("rest"), st.just("moving"), st.floats(-0.8, 0.8))
-#: pulls stay below the causal limit M c^2/(2L) (0.5) with room: near it a long pull is refused by the run's bounds
-peak_st = st.floats(-0.45, 2.0).filter(lambda p: abs(p) > 1e-3)
+
+def profiles(end):
+    """Pulls stay below the causal limit M c^2/(2L) (0.5) with room: near it a long pull is refused by the run's
+    bounds."""
+    return force_profiles(end, -0.45)
 
 
-@st.composite
-def profiles(draw, end):
-    shape = draw(st.sampled_from(["step", "sine2", "points"]))
-    frame = draw(frames_st)
-    if shape == "points":
-        n = draw(st.integers(2, 5))
-        times = sorted(draw(st.lists(st.floats(-1.0, 3.0), min_size=n, max_size=n, unique=True)))
-        spread = all(b - a > 1e-3 for a, b in zip(times, times[1:]))
-        forces = draw(st.lists(st.floats(-0.45, 1.0), min_size=n, max_size=n))
-        if not spread or all(f == 0 for f in forces):
-            forces[0], times = 0.3, [k * 0.5 for k in range(n)]
-        return ForceProfile("points", points=tuple(zip(times, forces)), frame=frame, key=f"forces.{end}")
-    return ForceProfile(shape, peak=draw(peak_st), start=draw(st.floats(-1.0, 2.0)),
-                        duration=draw(st.floats(0.05, 2.0)), frame=frame, key=f"forces.{end}")
-
-
-@settings(max_examples=15, deadline=None)
 @given(left=st.one_of(st.none(), profiles("left")), right=st.one_of(st.none(), profiles("right")),
        v=st.floats(0.05, 0.95), t=st.floats(-2.0, 6.0), u=st.floats(-0.9, 0.9))
 def test_generated_profiles_conserve_on_slices_of_S_S_prime_and_u(left, right, v, t, u):

@@ -283,27 +283,12 @@ def test_driven_world_lines_sample_within_tolerance_and_keep_proper_time():
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-frames_st = st.one_of(st.just("rest"), st.just("moving"), st.floats(-0.8, 0.8))
-peak_st = st.floats(-0.9, 2.0).filter(lambda p: abs(p) > 1e-3)
+from generated import force_profiles  # noqa: E402
+
+def profiles(end):
+    return force_profiles(end, -0.9)
 
 
-@st.composite
-def profiles(draw, end):
-    shape = draw(st.sampled_from(["step", "sine2", "points"]))
-    frame = draw(frames_st)
-    if shape == "points":
-        n = draw(st.integers(2, 5))
-        times = sorted(draw(st.lists(st.floats(-1.0, 3.0), min_size=n, max_size=n, unique=True)))
-        assume_spread = all(b - a > 1e-3 for a, b in zip(times, times[1:]))
-        forces = draw(st.lists(st.floats(-0.9, 1.0), min_size=n, max_size=n))
-        if not assume_spread or all(f == 0 for f in forces):
-            forces[0], times = 0.3, [k * 0.5 for k in range(n)]
-        return ForceProfile("points", points=tuple(zip(times, forces)), frame=frame, key=f"forces.{end}")
-    return ForceProfile(shape, peak=draw(peak_st), start=draw(st.floats(-1.0, 2.0)), duration=draw(st.floats(0.05, 2.0)),
-                        frame=frame, key=f"forces.{end}")
-
-
-@settings(max_examples=25, deadline=None)
 @given(left=st.one_of(st.none(), profiles("left")), right=st.one_of(st.none(), profiles("right")),
        v=st.floats(0.05, 0.95), t=st.floats(-2.0, 5.0), u=st.floats(-0.9, 0.9))
 def test_generated_profiles_conserve_on_slices_of_S_S_prime_and_u(left, right, v, t, u):

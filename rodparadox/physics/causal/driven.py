@@ -34,7 +34,7 @@ from rodparadox.physics.causal.ode import (DEGREE, EPS, INTEGRATE_FROM_START as 
                                            ODE_RTOL, PRIMITIVE as _PRIMITIVE, TO_COEFFICIENTS as _TO_COEF, Solved, Step, clenshaw as _clenshaw,
                                            falling_root, negligible_tail as _tail, roughness as _roughness)
 from rodparadox.physics.causal.budget import Budget
-from rodparadox.physics.causal.solve import Const as _Const, Invariant, Solution, View as _View, constant_of
+from rodparadox.physics.causal.solve import Characteristics, Const as _Const, Solution, View as _View, constant_of
 
 #: windows of chart time L a forced run may take before it is refused (a push lasting that many crossing times)
 MAX_FORCED_WINDOWS = 2000
@@ -342,30 +342,13 @@ def solve_forces(L: float, drives: dict, budget: Budget | None = None) -> Driven
     # chart time at rest: T = t; the force starts at t_F = t cosh f - x sinh f
     start = {e: (drives[e].instants[0] + x_end[e] * math.sinh(drives[e].f)) / math.cosh(drives[e].f) for e in ends}
     T_first = min(start.values())
-    plus, minus = Invariant(), Invariant()
-    plus.append(_Const(T_first - 2 * L, T_first, 0.0))
-    minus.append(_Const(T_first - 2 * L, T_first - L, 0.0))
+    chars = Characteristics(L, T_first)  # undisturbed before the first force
+    plus, minus, a_of, b_of = chars.plus, chars.minus, chars.a, chars.b
+    end_inputs, out_append = chars.end_inputs, chars.out_append
     segment = {e: 0 for e in ends}
     first = {e: math.inf for e in ("left", "right")}
     last = {e: -math.inf for e in ("left", "right")}
     delivered = {e: Delivered() for e in ("left", "right")}
-
-    def a_of(u):
-        return -0.5 * L + plus.integrals(u)[0]
-
-    def b_of(w):
-        return 0.5 * L + minus.integrals(w)[0]
-
-    def end_inputs(end, lo, hi):
-        if end == "left":
-            return [(x, y, _View(p, 0.0, 1, x, y)) for x, y, p in plus.pieces_in(lo, hi)]
-        return [(x + L, y + L, _View(p, L, 1, x + L, y + L)) for x, y, p in minus.pieces_in(lo - L, hi - L)]
-
-    def out_append(end, piece):
-        if end == "left":
-            minus.append(piece)
-        else:
-            plus.append(_View(piece, L, 1, piece.lo + L, piece.hi + L))
 
     def coordinates(end, T):
         """(y, z): the end's own coordinate and the other one at end time T."""

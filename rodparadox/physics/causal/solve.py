@@ -327,16 +327,43 @@ def _end_coordinates(sol_a, sol_b, end: str, T: float, L: float) -> tuple[float,
     return (sol_a(T), sol_b(T)) if end == "left" else (sol_a(T + L), sol_b(T - L))
 
 
+class Characteristics:
+    """The rod's two invariants as a run builds them (undisturbed up to T_first, a crossing time early), and what
+    each end reads of them and writes into them."""
+
+    def __init__(self, L: float, T_first: float):
+        self.L, self.plus, self.minus = L, Invariant(), Invariant()
+        self.plus.append(Const(T_first - 2 * L, T_first, 0.0))
+        self.minus.append(Const(T_first - 2 * L, T_first - L, 0.0))
+
+    def a(self, u: float) -> float:
+        return -0.5 * self.L + self.plus.integrals(u)[0]
+
+    def b(self, w: float) -> float:
+        return 0.5 * self.L + self.minus.integrals(w)[0]
+
+    def end_inputs(self, end: str, lo: float, hi: float) -> list:  # an end's input pieces, as views in end time
+        L = self.L
+        if end == "left":
+            return [(x, y, View(p, 0.0, 1, x, y)) for x, y, p in self.plus.pieces_in(lo, hi)]
+        return [(x + L, y + L, View(p, L, 1, x + L, y + L)) for x, y, p in self.minus.pieces_in(lo - L, hi - L)]
+
+    def out_append(self, end: str, piece) -> None:  # the end's output piece, in end time
+        if end == "left":
+            self.minus.append(piece)
+        else:
+            self.plus.append(View(piece, self.L, 1, piece.lo + self.L, piece.hi + self.L))
+
+
 def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_first: float,
           budget: Budget | None = None) -> Solution:
     """Run the rod from chart time T_first (the first contact; before it the rod rests unstressed); `budget`: a bound
     on its work besides MAX_WINDOWS, or None for MAX_STEPS."""
     if budget is None:
         budget = Budget(MAX_STEPS, asked=False)
-    plus, minus = Invariant(), Invariant()
-    # undisturbed before the first contact; the windows start one crossing time early
-    plus.append(_Const(T_first - 2 * L, T_first, 0.0))
-    minus.append(_Const(T_first - 2 * L, T_first - L, 0.0))
+    chars = Characteristics(L, T_first)  # undisturbed before the first contact
+    plus, minus, a_of, b_of, end_inputs, out_append = (chars.plus, chars.minus, chars.a, chars.b, chars.end_inputs,
+                                                       chars.out_append)
     events: list[ContactEvent] = []
     state = {"left": None, "right": None}  # psi of the rider in contact, else None
     # a contact whose input was the constant r_in up to the window's end: (r_in, ln tanh(delta/2) there). delta =
@@ -346,24 +373,6 @@ def solve(L: float, M_over_m: dict[str, float], riders: dict[str, Rider], T_firs
     T0 = T_first - L  # a window early: the first contact is a root found inside it, like every other
     last_separation = T_first
     quiet = 0
-
-    def a_of(u):
-        return -0.5 * L + plus.integrals(u)[0]
-
-    def b_of(w):
-        return 0.5 * L + minus.integrals(w)[0]
-
-    def end_inputs(end, lo, hi):
-        """The input pieces of an end over end time [lo, hi], as views in end time."""
-        if end == "left":
-            return [(x, y, _View(p, 0.0, 1, x, y)) for x, y, p in plus.pieces_in(lo, hi)]
-        return [(x + L, y + L, _View(p, L, 1, x + L, y + L)) for x, y, p in minus.pieces_in(lo - L, hi - L)]
-
-    def out_append(end, piece):
-        if end == "left":
-            minus.append(piece)
-        else:
-            plus.append(_View(piece, L, 1, piece.lo + L, piece.hi + L))
 
     def gap(rider, T):
         """(t + x) e^-th - (t - x) e^th of the end minus the particle's: 2 (x_end - x_p) cosh - 2 (t_end - t_p) sinh,
