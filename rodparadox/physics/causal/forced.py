@@ -21,6 +21,7 @@ from rodparadox.errors import ScenarioError
 from rodparadox.physics.causal.budget import Budget
 from rodparadox.physics.causal.driven import Drive, Work, solve_forces
 from rodparadox.physics.causal.history import CONSERVED, CausalHistory
+from rodparadox.physics.forces import centre_velocity
 from rodparadox.physics.kinematics import ChartCurve
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
@@ -156,18 +157,8 @@ class Driving:
         return moment / E, E
 
     def centre_velocity(self, frame_rapidity: float, t: float) -> float:
-        """d x_E / dt on the slice t of the frame, by central differences extrapolated twice (Richardson) over
-        1e-3 L, as the rigid rod's: to about 1e-10 where nothing jumps within that span (a front reaching an end
-        kinks x_E(t) and blurs it there)."""
-        h = 1e-3 * self.history.scenario.L
-
-        def slope(step: float) -> float:
-            return (self.centre_of_energy(frame_rapidity, t + step)[0]
-                    - self.centre_of_energy(frame_rapidity, t - step)[0]) / (2.0 * step)
-
-        d1, d2, d4 = slope(h), slope(h / 2), slope(h / 4)
-        r1, r2 = (4.0 * d2 - d1) / 3.0, (4.0 * d4 - d2) / 3.0
-        return (16.0 * r2 - r1) / 15.0
+        """d x_E / dt on the slice t of the frame (`forces.centre_velocity`, over 1e-3 L)."""
+        return centre_velocity(lambda s: self.centre_of_energy(frame_rapidity, s), t, 1e-3 * self.history.scenario.L)
 
     def now_lines(self, count: int = 12) -> list:
         """None: the causal rod's lines of simultaneity are not its own (its signals run at c)."""

@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.forces import ENDS, ForceProfile, Forces
+from rodparadox.physics.forces import ENDS, ForceProfile, Forces, centre_velocity
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, CollocatedStage, ConstantStage, GAUSS_W,
@@ -282,18 +282,8 @@ class Driving:
         return float(np.sum(e * n["x"]) / np.sum(e)), float(np.sum(e))
 
     def centre_velocity(self, frame_rapidity: float, t: float) -> float:
-        """d x_E / dt on the slice t of the frame, by central differences extrapolated twice (Richardson) over
-        1e-3 L: to about 1e-12 where the forces are smooth around t (one-sided kinks, a force's switch-on, blur it
-        over that span)."""
-        h = 1e-3 * self.history.L
-
-        def slope(step: float) -> float:
-            return (self.centre_of_energy(frame_rapidity, t + step)[0]
-                    - self.centre_of_energy(frame_rapidity, t - step)[0]) / (2.0 * step)
-
-        d1, d2, d4 = slope(h), slope(h / 2), slope(h / 4)
-        r1, r2 = (4.0 * d2 - d1) / 3.0, (4.0 * d4 - d2) / 3.0
-        return (16.0 * r2 - r1) / 15.0
+        """d x_E / dt on the slice t of the frame (`forces.centre_velocity`, over 1e-3 L)."""
+        return centre_velocity(lambda s: self.centre_of_energy(frame_rapidity, s), t, 1e-3 * self.history.L)
 
     def now_lines(self, count: int = 12) -> list[tuple[Event, Event]]:
         """The rod's own lines of simultaneity (the normal lines through the left end) as (left, right) event pairs
