@@ -93,3 +93,10 @@ def unwritable_folder(tmp_path):
         yield folder
     finally:
         folder.chmod(0o700)
+
+
+@pytest.fixture
+def here(tmp_path, monkeypatch):
+    """An empty folder to run a command in (its default `outputs/` lands there)."""
+    monkeypatch.chdir(tmp_path)
+    return tmp_path

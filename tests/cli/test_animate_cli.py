@@ -32,12 +32,6 @@ def error_of(*args, expect=2) -> str:
     return lines[0][len("Error: "):]
 
 
-@pytest.fixture
-def here(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
     assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds0.5.gif\n"
     im = Image.open(here / "outputs" / "fig2_now_fps4_seconds0.5.gif")

@@ -28,12 +28,6 @@ def error_of(*args, expect=2) -> str:
     return lines[0][len("Error: "):]
 
 
-@pytest.fixture
-def here(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 def pages_text(path) -> list[str]:
     return [page.extract_text() for page in pypdf.PdfReader(io.BytesIO(path.read_bytes())).pages]
 
