@@ -127,3 +127,14 @@ def test_the_ledger_names_each_rods_own_parts():
     rigid, causal = text.split("the causal rod driven by forces")
     assert "rod kinetic" in rigid and "rod matter" not in rigid
     assert "rod matter" in causal and "rod kinetic" not in causal and "elastic energy included" in causal
+
+
+def test_force_events_simultaneous_in_a_frame_give_one_slice():
+    """sears_moving's forces start together at t' = 0.5 of S' (and peak and end together): one slice each, not one per
+    force (their two S events boosted to S' differ by rounding); the slices are the window's ends, the three instants
+    and the midpoints between them."""
+    slices = json.loads(run("ledger", "sears_moving", "--frame", "moving", "--format", "json").output)
+    times = [s["t"] for s in slices["frames"]["moving"]["slices"]]
+    assert all(b - a > 1e-9 for a, b in zip(times, times[1:]))
+    assert [round(t, 9) for t in times if 0.4 < t < 1.6] == [0.5, 0.75, 1.0, 1.25, 1.5]
+    assert len(times) == 9
