@@ -24,8 +24,8 @@ from matplotlib.patches import Patch
 
 from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
 from rodparadox.render import frame_symbol, style_context
-from rodparadox.render.ledger_figure import (STRESS_TEXT, _axis_words, _event_labels, _hidden_fill, _kinetic_ink,
-                                             _pair_axes, _stress_fill, _total_ink)
+from rodparadox.render.ledger_figure import (STRESS_TEXT, axis_words, event_labels, hidden_fill, kinetic_ink,
+                                             pair_axes, stress_fill, total_ink)
 from rodparadox.render.styles import Style
 from rodparadox.render.text import note_lines, suptitle
 from rodparadox.tables.comparison import comparison_note
@@ -100,15 +100,15 @@ def draw(histories: Sequence, frames: Sequence[Frame], style: str = "default") -
 
 def _curves(ax, q: str, letter: str, t: np.ndarray, values, checks, causal: bool, marks, L: float, st: Style) -> None:
     v = values[q]
-    fill = _stress_fill(st) if causal else _hidden_fill(st)
+    fill = stress_fill(st) if causal else hidden_fill(st)
     ax.fill_between(t, v["part"], v["rod"], gid=f"{letter}-{q}-stress", zorder=1, **fill)
-    ax.axhline(v["initial"], gid=f"{letter}-{q}-initial", zorder=2, **_total_ink(st))
+    ax.axhline(v["initial"], gid=f"{letter}-{q}-initial", zorder=2, **total_ink(st))
     for end in ("left", "right"):
         ink = st.ledger_particles[AGENT_INKS[end]]
         ax.plot(t, v[end], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes, gid=f"{letter}-{q}-{end}",
                 zorder=3)
     ax.plot(t, v["part"], color=st.rod.colour, linewidth=st.rod.width, gid=f"{letter}-{q}-rod_part", zorder=3)
-    ax.plot(t, v["rod"], gid=f"{letter}-{q}-rod", zorder=4, **_kinetic_ink(st))
+    ax.plot(t, v["rod"], gid=f"{letter}-{q}-rod", zorder=4, **kinetic_ink(st))
     at, check = checks
     ax.plot(at / L, check[q], linestyle="none", marker="o", markersize=st.font_size * 0.55, markerfacecolor="white",
             markeredgecolor="#000000", markeredgewidth=0.8, gid=f"{letter}-{q}-check", zorder=5)
@@ -158,17 +158,17 @@ def _draw(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure:
             t = times / L
             x0 = gutter + c * (column_w + gutter + 14)
             y_top = height - suptitle_h - r * row_h - title_h
-            for q, ax in _pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
+            for q, ax in pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
                 _curves(ax, q, letter, t, values, checks, causal, marks, L, st)
                 ax.set_xlim(t[0], t[-1])
                 shared.setdefault((k, q), []).append(ax)
-                _axis_words(ax, q, frame, fs)
+                axis_words(ax, q, frame, fs)
                 if q == "p":
                     model = f"{history.model} rod, " if both else ""
                     ax.set_title(f"({letter}) {model}frame {frame_symbol(frame)}", fontsize=fs * 1.1,
                                  pad=fs * 2.8 + 4)
                     ax.tick_params(labelbottom=False)
-                    _event_labels(ax, marks, L, fs, column_w / (t[-1] - t[0]), letter)
+                    event_labels(ax, marks, L, fs, column_w / (t[-1] - t[0]), letter)
     for axes in shared.values():  # the two rods' panels of one frame on one scale
         lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
         for ax in axes:
@@ -185,21 +185,21 @@ def _legend(histories: tuple, st: Style) -> tuple[list, list[str]]:
                       linestyle=inks[AGENT_INKS[end]].dashes) for end in ("left", "right")]
     labels = ["delivered by the force on the left end", "delivered by the force on the right end"]
     rod = Line2D([], [], color=st.rod.colour, linewidth=st.rod.width)
-    whole = Line2D([], [], **_kinetic_ink(st))
-    before = Line2D([], [], **_total_ink(st))
+    whole = Line2D([], [], **kinetic_ink(st))
+    before = Line2D([], [], **total_ink(st))
     check = Line2D([], [], linestyle="none", marker="o", markersize=st.font_size * 0.55, markerfacecolor="white",
                    markeredgecolor="#000000", markeredgewidth=0.8)
     causal = [h.fronts is not None for h in histories]
     if len(histories) == 2:
-        handles += [rod, whole, Patch(**_hidden_fill(st)), Patch(**_stress_fill(st))]
+        handles += [rod, whole, Patch(**hidden_fill(st)), Patch(**stress_fill(st))]
         labels += ["rod: kinetic (rigid), matter (causal)", "rod: its whole energy and momentum",
                    "rigid rod: hidden = stress = whole − kinetic", STRESS_TEXT]
     elif causal[0]:
-        handles += [rod, whole, Patch(**_stress_fill(st))]
+        handles += [rod, whole, Patch(**stress_fill(st))]
         labels += ["rod, matter (its rest-frame energy moving with it)", "rod: its whole energy and momentum",
                    STRESS_TEXT]
     else:
-        handles += [rod, whole, Patch(**_hidden_fill(st))]
+        handles += [rod, whole, Patch(**hidden_fill(st))]
         labels += ["rod (kinetic)", "rod: its whole energy and momentum", "hidden = stress = whole − kinetic"]
     handles += [before, check]
     labels += ["rod before the forces", "before the forces + delivered"]
