@@ -269,3 +269,22 @@ def test_a_strip_carries_the_force_at_each_end_and_draws_it_as_an_arrow(t, expec
             (x0, _), (x1, _) = arrow._posA_posB
             assert x1 == pytest.approx(-0.5 if end == "left" else 0.5, abs=1e-12)  # the head on the end
             assert (x1 - x0) * 72 == pytest.approx(BAND_POINTS * expected / 0.2 * (1 if end == "left" else -1))
+
+
+def test_a_thin_driven_sheet_gets_the_inset_at_the_first_force_start():
+    """As for particles, a panel whose world-sheet is drawn thinner than 3 mm gets a magnified inset, centred on the
+    frame's first events: for Sears at v = 0.95, S' only, at the left force's start, x' = -t' = gamma (-0.5 + 0.95 x
+    0.5) (the event x = -L/2, t = L/2 of S), with its marker and S's and S''s lines through it."""
+    diagram = drawn("sears", 0.95)
+    insets = {p.letter: [c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset"] for p in diagram.panels}
+    assert not insets["a"] and len(insets["b"]) == 1
+    inset = insets["b"][0]
+    g = 1 / math.sqrt(1 - 0.95 ** 2)
+    x, t = g * (-0.5 + 0.95 * 0.5), g * (0.5 - 0.95 * 0.5)
+    (x0, x1), (t0, t1) = inset.get_xlim(), inset.get_ylim()
+    assert x0 < x < x1 and t0 < t < t1
+    marker = next(line for line in inset.lines if line.get_gid() == "b-inset-impact-left-start")
+    assert marker.get_xdata()[0] == pytest.approx(x, abs=1e-12) and marker.get_ydata()[0] == pytest.approx(t, abs=1e-12)
+    assert {"b-inset-simultaneity-rest-left-start", "b-inset-simultaneity-moving-left-start"} <= {
+        line.get_gid() for line in inset.lines}
+    assert next(t for t in inset.texts if t.get_gid() == "b-inset-note").get_text().startswith("$\\times")
