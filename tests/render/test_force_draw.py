@@ -233,7 +233,6 @@ def test_the_same_figure_gives_the_same_bytes():
 # --- what plot still refuses for forces -------------------------------------------------------------------
 
 @pytest.mark.parametrize("args, words", [
-    (("sears", "--frame", "rod"), "the rod's own view of a rod driven by forces is not drawn yet; choose a frame."),
     (("push", "--rod", "causal", "--rod-now"), "--rod-now draws the rigid rod's own lines of simultaneity, and the "
                                               "causal rod has none"),
     (("push", "--rod", "causal", "--proper-time"), "--proper-time draws the rigid rod's clocks only for now"),
@@ -288,3 +287,28 @@ def test_a_thin_driven_sheet_gets_the_inset_at_the_first_force_start():
     assert {"b-inset-simultaneity-rest-left-start", "b-inset-simultaneity-moving-left-start"} <= {
         line.get_gid() for line in inset.lines}
     assert next(t for t in inset.texts if t.get_gid() == "b-inset-note").get_text().startswith("$\\times")
+
+
+# --- the rod's own view ----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("rod", ["rigid", "causal"])
+def test_the_rods_own_view_draws_the_push_as_a_band_beside_its_end_from_on_to_off(rod):
+    """push: F = 0.25 (the legend's force: the band 0.3 L wide) on the left end; on and off on the end (X = 0) at the
+    chart times of its start and end. The rigid rod's T is its left end's proper time (T = t of S before the push):
+    on at 0.5, off at 0.5 + asinh(F t / M)/(F/M) = 0.5 + 4 asinh(1) (hyperbolic motion for 4 L of S's time)."""
+    from matplotlib.figure import Figure
+
+    h = runs("push")[0 if rod == "rigid" else 1]
+    ax = Figure().add_subplot()
+    drawn = render.draw_rod_panel(ax, h, "default", letter="r")
+    gids = {a.get_gid(): a for a in drawn.forces}
+    band = gids["r-force-left-press"].get_xy()
+    assert band[:, 0].min() == pytest.approx(-0.3, abs=1e-12) and band[:, 0].max() == pytest.approx(0.0, abs=1e-12)
+    on, off = (gids[f"r-force-event-left-{m}"].get_xydata()[0] for m in ("start", "end"))
+    assert on[0] == pytest.approx(0.0, abs=1e-12) and off[0] == pytest.approx(0.0, abs=1e-12)
+    assert on[1] == pytest.approx(0.5, abs=1e-12) and band[:, 1].min() == pytest.approx(on[1], abs=1e-12)
+    assert band[:, 1].max() == pytest.approx(off[1], abs=1e-12)
+    if rod == "rigid":
+        assert off[1] == pytest.approx(0.5 + 4 * math.asinh(1.0), abs=1e-12)
+    words = [t.get_text() for t in drawn.key[0].get_texts()]
+    assert "a force starts (on)\nor ends (off)" in words and not any("contact" in w for w in words)
