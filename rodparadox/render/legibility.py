@@ -15,6 +15,7 @@ import numpy as np
 from rodparadox.numbers import SCIENTIFIC_ABOVE, impact_name, nice_number, shown
 from rodparadox.physics import rod
 from rodparadox.physics.history import RodHistory
+from rodparadox.physics.kinematics import Event
 from rodparadox.physics.frames import FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.render.labels import boxes_hit_segments
 from rodparadox.render.layer_base import clip_line, impact_marker, line_kwargs
@@ -140,6 +141,7 @@ class InsetPlan(NamedTuple):
     window: tuple[float, float, float, float]
     magnification: float
     about: tuple[Mark, ...]  # the events (impacts, or a force's start or end) it is centred on
+    free: bool = False  # a driven rod's small motion: each end's world-line without the forces drawn too, dashed
 
 
 def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float, height: float,
@@ -196,6 +198,72 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             _, _, (x, y) = min(free)
             return InsetPlan((x, y, side), window, magnification, about)
     return None
+
+
+#: a driven rod whose ends stray from their world-lines without the forces by less than this on the page (points:
+#: less than the rod's ends are wide), but by more than MOTION_LEAST of L, gets an inset of where they stray most
+MOTION_BELOW = 0.5 * MM
+MOTION_LEAST = 1e-9
+
+
+def free_line(history, fv: FrameView, end: str) -> tuple[np.ndarray, np.ndarray]:
+    """A point (units of L) and the direction of the end's world-line in the panel's frame had no force acted: at
+    rest in S at x = -L/2 or L/2 (where every driven rod starts)."""
+    f, L = fv.frame.rapidity, history.scenario.L
+    start = Event(-0.5 * L if end == "rod_left" else 0.5 * L, 0.0).seen_from(f)
+    return np.array([start.x / L, start.t / L]), np.array([-math.sinh(f), math.cosh(f)])  # (dx, dt): at -tanh f
+
+
+def motion_inset_plan(history, fv: FrameView, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float,
+                      height: float, keep_clear, lines, events: Sequence[Mark]) -> InsetPlan | None:
+    """The inset of a driven rod's small motion, or None: where an end strays from its world-line without the
+    forces by less than MOTION_BELOW on the page but more than MOTION_LEAST L, centred where it strays most while
+    its forces act (in the panel's time, between the first force's start and the last one's end), magnified a nice
+    factor that draws that straying INSET_BELOW wide; placed as `inset_plan` places its inset."""
+    if history.driving is None or "rod_left" not in worldlines or not events:
+        return None
+    x0, x1, t0, t1 = box
+    scale = width / (x1 - x0)
+    lo, hi = min(e.t for e in events), max(e.t for e in events)
+    most, where = 0.0, None
+    for end in ("rod_left", "rod_right"):
+        points = worldlines[end]
+        acting = points[(points[:, 1] >= lo) & (points[:, 1] <= hi)]
+        if not len(acting):
+            continue
+        origin, along = free_line(history, fv, end)
+        rel = acting - origin
+        gap = np.abs(rel[:, 0] * along[1] - rel[:, 1] * along[0]) / math.hypot(*along)
+        k = int(gap.argmax())
+        if gap[k] > most:
+            most, where = float(gap[k]), acting[k]
+    if where is None or not MOTION_LEAST < most < MOTION_BELOW / scale:
+        return None
+    magnification = nice_number(INSET_BELOW / (most * scale), "at_least")
+    segments = _segments_pt(lines, box, scale)
+    for fraction in INSET_SIDES:
+        side = fraction * min(width, height)
+        half = side / 2 / (scale * magnification)
+        window = (where[0] - half, where[0] + half, where[1] - half, where[1] + half)
+        spot = place_inset(side, width, height, keep_clear, segments)
+        if spot is not None:
+            return InsetPlan((*spot, side), window, magnification, (), free=True)
+    return None
+
+
+def place_inset(side: float, width: float, height: float, keep_clear, segments) -> tuple[float, float] | None:
+    """The corner of the panel for an inset `side` points wide that hides none of `keep_clear` and crosses the
+    fewest `segments`, or None."""
+    corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
+               (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
+    free = []
+    for k, (x, y) in enumerate(corners):
+        rect = (x - INSET_MARGIN, y - INSET_MARGIN, x + side + INSET_MARGIN, y + side + INSET_MARGIN)
+        if any(rect[0] < b[2] and b[0] < rect[2] and rect[1] < b[3] and b[1] < rect[3] for b in keep_clear):
+            continue
+        crossed = int(boxes_hit_segments(np.array([rect]), segments)[0]) if len(segments) else 0
+        free.append((crossed, k, (x, y)))
+    return min(free)[2] if free else None
 
 
 def _thinnest_near(worldlines: dict[str, np.ndarray], t: float) -> tuple[float, float]:
@@ -278,6 +346,13 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
         if name in points:
             for k, run in enumerate(_runs(points[name], window)):
                 artists += inset.plot(run[:, 0], run[:, 1], **line_kwargs(ink), zorder=z, gid=f"{letter}-inset-{name}-{k}")
+    if plan.free:  # each end without the forces: the small motion is the gap between the two
+        for end in ("rod_left", "rod_right"):
+            origin, along = free_line(history, fv, end)
+            segment = clip_line(origin[0], origin[1], along[0], along[1], plan.window)
+            if segment is not None:
+                artists += inset.plot(segment[:, 0], segment[:, 1], color=style.rod.colour, linewidth=0.8,
+                                      linestyle=(0, (4.0, 2.0)), zorder=3, gid=f"{letter}-inset-free-{end}")
     for end, runs in zip(("rod_left", "rod_right"), ends):
         for k, run in enumerate(runs):
             artists += inset.plot(run[:, 0], run[:, 1], **line_kwargs(style.rod), zorder=4,
@@ -301,7 +376,10 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
     factor = f"$\\times{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3, math_text=True)}$"
     pad = 3.0
     # the note inside the inset: without the impacts' names if they make it too wide, in smaller type if need be
-    for text in ([factor + about] if about else []) + [factor]:
+    candidates = ([factor + about] if about else []) + [factor]
+    if plan.free:  # the dashed lines named, in smaller type if need be
+        candidates = [factor + "; dashed: no force"]
+    for text in candidates:
         w, h, _ = approximate_size(text, font_size)
         if w <= side - 2 * pad:
             break

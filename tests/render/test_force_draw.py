@@ -312,3 +312,27 @@ def test_the_rods_own_view_draws_the_push_as_a_band_beside_its_end_from_on_to_of
         assert off[1] == pytest.approx(0.5 + 4 * math.asinh(1.0), abs=1e-12)
     words = [t.get_text() for t in drawn.key[0].get_texts()]
     assert "a force starts (on)\nor ends (off)" in words and not any("contact" in w for w in words)
+
+
+def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line(tmp_path):
+    """Sears's pulses timed in S' at a tenth of the preset's peak move the ends by less than half a millimetre on
+    the page: each panel gets an inset magnifying where an end strays most, with each end's world-line without the
+    forces dashed (in S the rest at x = -L/2 and L/2; in S' the lines of velocity v through them at t = 0). At the
+    preset's own peak the motion is seen without one."""
+    from rodparadox.io.scenario import load as load_file
+
+    path = tmp_path / "weak.yaml"
+    path.write_text("v: 0.6\nforces:\n  left: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n"
+                    "  right: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n")
+    weak = run_rods(load_file(str(path)), "rigid")[0]
+    diagram = render.draw(weak, paper_frames(0.6))
+    for p in diagram.panels:
+        inset = next(c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset")
+        free = {line.get_gid(): line.get_xydata() for line in inset.lines if "-inset-free-" in line.get_gid()}
+        assert free, p.letter
+        for gid, xy in free.items():  # on the unforced world-line: x' = gamma (x + v t), t' = gamma (t + v x)
+            x = -0.5 if gid.endswith("left") else 0.5
+            f = p.frame.rapidity
+            assert np.allclose(np.cosh(f) * xy[:, 0] + np.sinh(f) * xy[:, 1], x, atol=1e-12)
+        assert "dashed: no force" in next(t for t in inset.texts if t.get_gid() == f"{p.letter}-inset-note").get_text()
+    assert not any(c.get_gid().endswith("-inset") for p in drawn("sears_moving").panels for c in p.axes.child_axes)
