@@ -128,17 +128,6 @@ def test_the_ledger_names_each_rods_own_parts():
     assert "rod matter" in causal and "rod kinetic" not in causal and "elastic energy included" in causal
 
 
-def test_force_events_simultaneous_in_a_frame_give_one_slice():
-    """sears_moving's forces start together at t' = 0.5 of S' (and peak and end together): one slice each, not one per
-    force (their two S events boosted to S' differ by rounding); the slices are the window's ends, the three instants
-    and the midpoints between them."""
-    slices = json.loads(run("ledger", "sears_moving", "--frame", "moving", "--format", "json").output)
-    times = [s["t"] for s in slices["frames"]["moving"]["slices"]]
-    assert all(b - a > 1e-9 for a, b in zip(times, times[1:]))
-    assert [round(t, 9) for t in times if 0.4 < t < 1.6] == [0.5, 0.75, 1.0, 1.25, 1.5]
-    assert len(times) == 9
-
-
 def test_ledger_draws_the_figure_of_a_rod_driven_by_forces(tmp_path):
     """The figure: what each agent delivered, the rod's parts and its whole, the check on the table's slices."""
     path = tmp_path / "push.svg"

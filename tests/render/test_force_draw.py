@@ -316,16 +316,16 @@ def test_the_rods_own_view_draws_the_push_as_a_band_beside_its_end_from_on_to_of
 
 def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line(tmp_path):
     """Sears's pulses timed in S' at a tenth of the preset's peak move the ends by less than half a millimetre on
-    the page: each panel gets an inset magnifying where an end strays most, with each end's world-line without the
-    forces dashed (in S the rest at x = -L/2 and L/2; in S' the lines of velocity v through them at t = 0). At the
-    preset's own peak the motion is seen without one."""
+    the page: the panel of S' gets an inset magnifying where an end strays most, with each end's world-line without
+    the forces dashed (the rest at x = -L/2 and L/2 of S, boosted: x' = gamma (x + v t)). At the preset's own peak
+    the motion is seen without one."""
     from rodparadox.io.scenario import load as load_file
 
     path = tmp_path / "weak.yaml"
     path.write_text("v: 0.6\nforces:\n  left: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n"
                     "  right: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n")
     weak = run_rods(load_file(str(path)), "rigid")[0]
-    diagram = render.draw(weak, paper_frames(0.6))
+    diagram = render.draw(weak, paper_frames(0.6)[1:])  # S' alone: its unforced lines the boosted rest
     for p in diagram.panels:
         inset = next(c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset")
         free = {line.get_gid(): line.get_xydata() for line in inset.lines if "-inset-free-" in line.get_gid()}

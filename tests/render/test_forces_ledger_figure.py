@@ -90,3 +90,14 @@ def test_both_rods_figure_has_every_curve_one_scale_and_the_legend(few_slices):
     words = [t.get_text() for t in figure.legends[0].get_texts()]
     assert "delivered by the force on the left end" in words and "rigid rod: hidden = stress = whole − kinetic" in words
     assert not any("particle" in w for w in words)
+
+
+def test_force_events_simultaneous_in_a_frame_give_one_slice_of_the_table():
+    """sears_moving's forces start together at t' = 0.5 of S' (and peak and end together): one slice each, not one per
+    force (their two S events boosted to S' differ by rounding); the slices are the window's ends, the three instants
+    and the midpoints between them."""
+    from rodparadox.tables.forces_ledger import slice_times
+
+    times = slice_times(runs("sears_moving")[0], paper_frames(V)[1])
+    assert all(b - a > 1e-9 for a, b in zip(times, times[1:])) and len(times) == 9
+    assert [round(t, 9) for t in times if 0.4 < t < 1.6] == [0.5, 0.75, 1.0, 1.25, 1.5]
