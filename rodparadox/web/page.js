@@ -66,6 +66,8 @@
     return n === "rest" ? ["x", "t"] : n === "moving" ? ["x" + PRIME, "t" + PRIME] : ["x\u1d64", "t\u1d64"];
   }
   function boost(x, t, c, s) { return [c * x - s * t, c * t - s * x]; }
+  // the labels of a force's start and end beside their markers (as the figures')
+  const FORCE_WORDS = {start: "on", end: "off"};
 
   // A line in S with its periods unrolled: a causal line gives one period from `repeat_from` and how many
   // times it repeats, each copy moved by `period` (dx, dt).
@@ -83,8 +85,16 @@
     return {x, t, before: w.before, after: w.after};
   }
 
-  // A model's geometry in the current frame: every embedded point boosted once, the time window as Python's
-  // frames.time_window computes it, each line extended straight to the window's ends.
+  // The time window of the frame (embedded: Python's frames.time_window for each position of the frame slider
+  // and for S').
+  function frameWindow(m, u) {
+    if (frameName(u) === "moving") return m.windows.moving;
+    const k = Math.round(u * 100) + scenario().frame_steps;
+    return [m.windows.lo[k], m.windows.hi[k]];
+  }
+
+  // A model's geometry in the current frame: every embedded point boosted once, each line extended straight to
+  // the window's ends.
   function geometry(name) {
     name = name || shownModels()[0];
     const key = [state.scenario, state.speed, name, state.u].join("/");
@@ -92,11 +102,7 @@
     if (cache.size > 12) cache.clear();
     const m = modelNamed(name), eta = Math.atanh(state.u), c = Math.cosh(eta), s = Math.sinh(eta);
     if (m === null) return null;
-    const times = m.changes.map(([x, t]) => c * t - s * x);
-    const first = Math.min(...times), last = Math.max(...times);
-    const atStart = m.starts.map(([x, t]) => c * t - s * x);
-    const lead = Math.min(Math.max(first - Math.min(...atStart), 0.5), 2.0);
-    const lo = first - lead, hi = last + lead;
+    const [lo, hi] = frameWindow(m, state.u);
     const line = (given) => {
       const X = [], T = [], P = [], w = unrolled(given);
       for (let k = 0; k < w.x.length; k++) {
@@ -117,9 +123,22 @@
       drawn[name] = clipped(worldlines[name], lo, hi);
       for (const x of drawn[name][0]) { xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); }
     }
-    const pad = Math.max(0.08 * (xmax - xmin), 0.25);
+    // room for a driven end's band outside it (a type size wide at most: 0.6 L at the narrowest panels' scale)
+    const pad = Math.max(0.08 * (xmax - xmin), m.forces ? 0.6 : 0.25);
     const g = {key, name, model: m, eta, c, s, lo, hi, worldlines, drawn, impacts, material: m.material.map(line),
                box: [xmin - pad, xmax + pad, lo, hi]};
+    if (m.forces) {  // a rod driven by forces: its bands, arrows and force events, boosted
+      g.bands = m.forces.bands.map((b) => {
+        const X = [], T = [];
+        b.x.forEach((x, k) => { const [bx, bt] = boost(x, b.t[k], c, s); X.push(bx); T.push(bt); });
+        return {end: b.end, X, T, F: b.F};
+      });
+      g.arrows = m.forces.arrows.map(([end, x, t, F]) => [end, ...boost(x, t, c, s), F]);
+      g.forceEvents = m.forces.events.map((e) => {
+        const [x, t] = boost(e.x, e.t, c, s);
+        return Object.assign({}, e, {X: x, T: t, label: e.end + "-" + e.moment, name: FORCE_WORDS[e.moment] || ""});
+      });
+    }
     if (m.model === "causal") {
       g.fronts = m.fronts.map(([xl, tl, xr, tr]) => [...boost(xl, tl, c, s), ...boost(xr, tr, c, s)]);
       g.cells = causalCells(m.cells, eta);

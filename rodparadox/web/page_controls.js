@@ -6,8 +6,7 @@
     controls.speed.value = String(state.speed);
     controls.speed.setAttribute("aria-valuetext", "v = " + shown(v(), 10));
     $("speed-value").textContent = shown(v(), 10);
-    const reach = Math.max(scenario().frame_reach, ...speeds.map((e) => e.v));
-    controls.frame.min = String(-Math.ceil(reach * 100)); controls.frame.max = String(Math.ceil(reach * 100));
+    controls.frame.min = String(-scenario().frame_steps); controls.frame.max = String(scenario().frame_steps);
     rodControls.forEach((input, k) => {
       input.checked = RODS[k] === state.rod;
       input.disabled = RODS[k] !== "rigid" && !modelNamed("causal") || RODS[k] !== "causal" && !modelNamed("rigid");
