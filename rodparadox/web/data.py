@@ -28,7 +28,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from rodparadox.errors import RodParadoxError
-from rodparadox.numbers import impact_name
+from rodparadox.numbers import _without_zero_sign, impact_name
 from rodparadox.physics.types import WORLDLINE_NAMES
 from rodparadox.physics.models import run_rod
 from rodparadox.physics.frames import check_below_c, Frame, frame_of_velocity, moving_frame, rest_frame
@@ -73,10 +73,11 @@ LEDGER_INSTANTS = 41
 #: milliseconds: its stress integrated across it)
 FORCES_LEDGER_FRAMES = (-0.6, 0.6)
 FORCES_LEDGER_INSTANTS = 21
-#: decimals of the time windows (units of L; a pixel is about 1e-2 L)
-WINDOW_DECIMALS = 4
-#: decimals of the ledger's numbers (the ledger prints 4)
-LEDGER_DECIMALS = 5
+#: decimals of the time windows (units of L; a pixel is about 1e-2 L, the diagram about 1e2 pixels per L)
+WINDOW_DECIMALS = 3
+#: decimals of the ledger's numbers, as the page prints them (and as the ledger's table, `tables.build`): the
+#: numbers are embedded rounded to them, so that the page's cells are their shortest text
+LEDGER_DECIMALS = 4
 #: significant digits of the drawn points and the ledger's numbers (a pixel is 1e-3 of a panel; the ledger prints 4
 #: decimals); the impacts keep every digit
 DRAWN_DIGITS = 7
@@ -99,6 +100,11 @@ def drawn(value: float, digits: int = DRAWN_DIGITS) -> float:
 def fixed(value: float) -> float:
     """A ledger number with LEDGER_DECIMALS decimals, never -0."""
     return round(value, LEDGER_DECIMALS) + 0.0
+
+
+def ledger_cell(value: float) -> str:
+    """A ledger cell as the page prints it: LEDGER_DECIMALS decimals, a real minus, no sign on a zero or a positive."""
+    return _without_zero_sign(f"{value + 0.0:+.{LEDGER_DECIMALS}f}").replace("-", "\u2212").lstrip("+")
 
 
 def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAWN_DIGITS) -> dict[str, Any]:
@@ -304,9 +310,11 @@ def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str 
 
     from rodparadox.render.shading import SHADES
 
-    from rodparadox.numbers import NICE_MULTIPLES
+    from rodparadox.numbers import NICE_MULTIPLES, TABLE_DIGITS
+    from rodparadox.tolerances import PRINTED_ZERO
 
     out = {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL, "shades": SHADES,
+           "formats": {"digits": TABLE_DIGITS, "printed_zero": PRINTED_ZERO, "ledger_decimals": LEDGER_DECIMALS},
            "tick_multiples": [*NICE_MULTIPLES, 10], "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}
     if any(s.forces is not None for _, s in scenarios):  # the bands' inks, in a page that draws forces
         out["force_inks"] = force_inks()

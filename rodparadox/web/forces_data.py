@@ -19,7 +19,7 @@ from typing import Any, Callable
 import numpy as np
 
 from rodparadox.io.export_forces import force_rows
-from rodparadox.numbers import coordinate_format, nice_number, velocity_format
+from rodparadox.numbers import MINUS, coordinate_format, nice_number, velocity_format
 from rodparadox.tables.forces_ledger import parts_of
 
 #: instants of a profile's own time along its support (its corners and jumps besides): a sine^2 band smooth at the
@@ -110,8 +110,8 @@ def tables(history, frames) -> dict[str, Any]:
         out[frame.name] = {
             "caption": f"Each force's start, peak and end in frame {symbol}",
             "header": ["force", "end", x, t, "F", "end velocity"],
-            "rows": [[r["moment"], r["end"], coordinate(r["x"]), coordinate(r["t"]), force(r["force"]),
-                      velocity(r["end_velocity"])] for r in rs],
+            "rows": [[r["moment"], r["end"], *(text.replace("-", MINUS) for text in (
+                coordinate(r["x"]), coordinate(r["t"]), force(r["force"]), velocity(r["end_velocity"])))] for r in rs],
             "notes": ["x and t in units of L, F in M c\u00b2/L (a push > 0, a pull < 0), velocities in units of c; "
                       "F at an end: the force just before it stops."]}
     return out

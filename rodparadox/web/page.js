@@ -31,13 +31,58 @@
   const cache = new Map();  // the geometry of each scenario, speed, model and frame drawn lately
 
   // --- numbers as the tool writes them ------------------------------------------------------------------
-  function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
-    if (/^-?0(\.0*)?(e[+-]?\d+)?$/.test(text)) return text.replace("-", "");
-    return text[0] === "-" ? MINUS + text.slice(1) : "+" + text;
+  // The tables' rules, Python's (`numbers.coordinate_format`, `velocity_format`; the ledger's fixed decimals), with
+  // their parameters embedded (`DATA.formats`): the digits of a double rounded as Python rounds them (ties to
+  // even on its exact value), a real minus sign, no sign on a zero.
+  const FORMATS = DATA.formats;
+  function rounded(a, n) {  // a > 0 to n >= 0 significant digits: [digits (n of them), exponent of the first]
+    const [m, e] = a.toExponential(100).split("e"), d = m.replace(".", "");
+    let exp = Number(e), head = d.slice(0, n);
+    const rest = d.slice(n), last = n ? Number(head[n - 1]) : 0;
+    if (rest[0] > "5" || (rest[0] === "5" && (/[1-9]/.test(rest.slice(1)) || last % 2 === 1))) {
+      head = n ? (BigInt(head) + 1n).toString() : "1";
+      if (head.length > n) { exp += 1; head = head.slice(0, Math.max(n, 1)); if (!n) return ["", exp]; }
+    } else if (!n) return ["", -Infinity];
+    return [head, exp];
   }
-  const coordinate = (x) => signed(Math.abs(x) < 1e-12 ? "0" : x.toPrecision(7));
-  const velocity = (u) => signed(u.toFixed(6));
-  const fixed4 = (x) => { const s = (Math.abs(x) < 5e-5 ? 0 : x).toFixed(4); return s[0] === "-" ? MINUS + s.slice(1) : s; };
+  function pyG(x, p) {  // Python's format(x, "+#.{p}g")
+    const sign = x < 0 || Object.is(x, -0) ? "-" : "+", a = Math.abs(x);
+    if (a === 0) return sign + "0." + "0".repeat(p - 1);
+    const [d, exp] = rounded(a, p);
+    if (exp < -4 || exp >= p) return `${sign}${d[0]}.${d.slice(1)}e${exp < 0 ? "-" : "+"}${String(Math.abs(exp)).padStart(2, "0")}`;
+    return sign + (exp >= 0 ? d.slice(0, exp + 1) + "." + d.slice(exp + 1) : "0." + "0".repeat(-exp - 1) + d);
+  }
+  function pyF(x, decimals) {  // Python's format(x, "+.{decimals}f")
+    const sign = x < 0 || Object.is(x, -0) ? "-" : "+", a = Math.abs(x);
+    const n = a === 0 ? -1 : Number(a.toExponential(100).split("e")[1]) + 1 + decimals;  // digits kept
+    const [d, exp] = n < 0 ? ["", -Infinity] : rounded(a, n);
+    let units;  // the value as an integer count of 10^-decimals
+    if (exp === -Infinity) units = "0";
+    else if (!d) units = "1";  // rounded up from below the last decimal
+    else units = d + "0".repeat(Math.max(exp + 1 + decimals - d.length, 0));
+    units = units.replace(/^0+(?=.)/, "").padStart(decimals + 1, "0");
+    const text = decimals ? units.slice(0, -decimals) + "." + units.slice(-decimals) : units;
+    return sign + text;
+  }
+  function withoutZeroSign(text) {  // -0.000 is +0.000: a value that rounds to zero has no sign
+    return text[0] === "-" && !/[1-9]/.test(text.split("e")[0]) ? "+" + text.slice(1) : text;
+  }
+  const minus = (text) => text.replace(/-/g, MINUS);
+  function coordinateFormat(values) {  // numbers.coordinate_format
+    const largest = Math.max(0, ...values.map(Math.abs));
+    return (x) => (Math.abs(x) <= FORMATS.printed_zero * largest ? "+0" : minus(withoutZeroSign(pyG(x + 0, FORMATS.digits))));
+  }
+  function velocityFormat(values) {  // numbers.velocity_format
+    const largest = Math.max(0, ...values.map(Math.abs));
+    let decimals = FORMATS.digits - 1;
+    if (largest > 0 && largest < 0.1) decimals = FORMATS.digits - 2 - Math.floor(Math.log10(largest));
+    return (u) => {
+      const nearC = Math.abs(u) > 0.5 ? Math.ceil(-Math.log10(1 - Math.abs(u))) + 1 : 0;
+      return minus(withoutZeroSign(pyF(u + 0, Math.max(decimals, nearC))));
+    };
+  }
+  // a ledger cell: FORMATS.ledger_decimals decimals (the embedded numbers have no more), no sign but a minus
+  const ledgerCell = (x) => minus(withoutZeroSign(pyF(x + 0, FORMATS.ledger_decimals))).replace("+", "");
   function shown(x, digits) {  // up to `digits` significant digits, trailing zeros dropped, a real minus sign
     let s = Number(x.toPrecision(digits)).toString();
     if (s === "-0") s = "0";

@@ -140,5 +140,6 @@
   // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took; row and
   // column of the first panel, or of panel k (0 or 1)
   window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(shared()),
+                         formats: {coordinateFormat, velocityFormat, ledgerCell},
                          row: (t, k) => PANELS[k || 0].placed.row(t), column: (x, k) => PANELS[k || 0].placed.column(x)};
 })();

@@ -29,8 +29,12 @@
       return;
     }
     if (g.forceEvents) {  // a driven rod: each force's start, peak and end, boosted
-      const rows = g.forceEvents.slice().sort((a, b) => a.T - b.T).map((e) => [e.moment, e.end, coordinate(e.X * L),
-        coordinate(e.T * L), coordinate(e.force), velocity(Math.tanh(e.rapidity - g.eta))]);
+      const events = g.forceEvents.slice().sort((a, b) => a.T - b.T);
+      const coordinate = coordinateFormat(events.flatMap((e) => [e.X * L, e.T * L]));
+      const force = coordinateFormat(events.map((e) => e.force).concat(m.forces.bands.flatMap((b) => b.F)));
+      const velocity = velocityFormat(events.map((e) => Math.tanh(e.rapidity - g.eta)));
+      const rows = events.map((e) => [e.moment, e.end, coordinate(e.X * L), coordinate(e.T * L), force(e.force),
+                                      velocity(Math.tanh(e.rapidity - g.eta))]);
       const names = coordinateNames(state.u);
       fillTable(panel.events, `Each force's start, peak and end in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): ` +
                 "decimals boosted from the exact events (choose S or S\u2032 for the table as the events are printed)",
@@ -45,10 +49,12 @@
       instant[k] = n;
     }
     order.sort((a, b) => instant[a] - instant[b] || a - b);
+    const speeds = (i) => [i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => Math.tanh(r - g.eta));
+    const coordinate = coordinateFormat(g.impacts.flatMap((i) => [i.X * L, i.T * L]));
+    const velocity = velocityFormat(g.impacts.flatMap(speeds));
     const rows = order.map((k) => {
       const i = g.impacts[k];
-      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L),
-              ...[i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => velocity(Math.tanh(r - g.eta)))];
+      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L), ...speeds(i).map(velocity)];
     });
     const names = coordinateNames(state.u);
     fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted ` +
@@ -69,7 +75,7 @@
       best.slices.forEach((row, n) => { if (Math.abs(timeOf(best, n) - now) < Math.abs(timeOf(best, k) - now)) k = n; });
     }
     const slice = best.slices[k];
-    const rows = best.rows.map((name, b) => [name, fixed4(slice[2 * b]), fixed4(slice[2 * b + 1])]);
+    const rows = best.rows.map((name, b) => [name, ledgerCell(slice[2 * b]), ledgerCell(slice[2 * b + 1])]);
     const frameU = best.u === 0 ? "S" : best.u === -v() ? "S\u2032" : "u = " + shown(best.u, 4);
     const clock = best.u === 0 ? "t" : best.u === -v() ? "t\u2032" : "t\u1d64";
     const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
@@ -81,11 +87,11 @@
                "this is the nearest frame, at the same fraction of its time window)"),
               ["body", "E (M c\u00b2)", "p (M c)"], rows,
               m.ledger_note ? [m.ledger_note + ` Computed before the page was made, on ${best.slices.length} slices of each ` +
-                               "tabulated frame (to 10\u207b\u2075 M c\u00b2)."]
+                               "tabulated frame (to 10\u207b\u2074 M c\u00b2)."]
               : causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
                         "elastic energy included) and its stress part (its pressure's p (u u \u2212 \u03b7) across the " +
                         "slice), each a density along the slice: nothing is hidden. Computed before the page was made, on " +
-                        "41 slices of each tabulated frame (to 10\u207b\u2075 M c\u00b2)."] : []);
+                        "41 slices of each tabulated frame (to 10\u207b\u2074 M c\u00b2)."] : []);
   }
 
   // --- the legend: the same elements and inks as the SVG figures --------------------------------------------

@@ -865,7 +865,7 @@ def driven(data: dict, name: str, model: str = "rigid") -> dict:
 def test_each_frames_window_is_time_windows_for_particles_forces_and_both_rods(forces_data, fig2_data):
     """`windows.changes(h).windows` against `frames.time_window` (the library's, one frame at a time) to 1e-12, for
     the rigid and the causal rod struck by particles and driven by forces; the page embeds it for every position
-    of the frame slider and for S', to its 4 decimals."""
+    of the frame slider and for S', to its 3 decimals."""
     from rodparadox.physics.frames import frame_of_velocity, time_window
     from rodparadox.web import windows
 
@@ -881,8 +881,8 @@ def test_each_frames_window_is_time_windows_for_particles_forces_and_both_rods(f
         assert steps == 95 and len(m["windows"]["lo"]) == len(m["windows"]["hi"]) == 2 * steps + 1
         for k in (0, 40, steps, 2 * steps):
             lo, hi = time_window(h, frame_of_velocity((k - steps) / 100))
-            assert [m["windows"]["lo"][k], m["windows"]["hi"][k]] == pytest.approx([lo, hi], abs=5.1e-5)
-        assert m["windows"]["moving"] == pytest.approx(time_window(h, frame_of_velocity(-0.6)), abs=5.1e-5)
+            assert [m["windows"]["lo"][k], m["windows"]["hi"][k]] == pytest.approx([lo, hi], abs=5.1e-4)
+        assert m["windows"]["moving"] == pytest.approx(time_window(h, frame_of_velocity(-0.6)), abs=5.1e-4)
 
 
 def test_sears_forces_by_hand_in_s_the_events_every_digit_the_bands_on_the_ends(forces_data):
@@ -971,4 +971,78 @@ def test_force_tables_of_s_and_s_prime_are_what_events_prints(forces_data):
         printed = [line.split() for line in text.splitlines() if line.startswith("  ") and line.split()[0] in
                    ("start", "peak", "end")]
         tables = driven(forces_data, name)["tables"]
-        assert [row for t in ("rest", "moving") for row in tables[t]["rows"]] == printed
+        assert [[cell.replace(MINUS, "-") for cell in row] for t in ("rest", "moving") for row in tables[t]["rows"]] \
+            == printed
+
+
+def format_grid() -> list[float]:
+    """Numbers a table can hold, and the hard cases of rounding: exact ties at the 7th digit (powers of two: Python
+    rounds them to even, JavaScript's toPrecision up), carries (9.9999995), tiny and huge values, both signs."""
+    grid = [0.0, -0.0, 1.0, -1.0, 0.5, 17 / 12, 19 / 12, -0.75, 1.583333e-05, 2.5e-5, 9.9999995, 99999.995, 1234567.5,
+            1234566.5, 2236.068, 1e-12, 3e-13, 0.1, 0.09999999, 0.999999, 0.9999995, 0.99999999, -0.99999999]
+    grid += [2.0 ** k for k in range(-24, 24)] + [-(2.0 ** k) * 3 for k in range(-20, 20, 3)]
+    grid += [k / 64 for k in range(-64, 65)] + [0.6 ** k for k in range(1, 40, 3)]
+    return grid
+
+
+def test_the_pages_formatters_are_pythons_on_a_grid(opened):
+    """The page formats the tables of frames it boosts to itself (their cells too many to embed) by the rules of
+    `numbers.coordinate_format` and `velocity_format` and the ledger's decimals, their parameters embedded: the
+    same text as Python's for every number of a grid, each rule on a few sets of rows (the largest sets the digits)."""
+    from rodparadox.numbers import coordinate_format, velocity_format
+
+    grid = format_grid()
+    velocities = [u for u in grid if abs(u) < 1]
+    sets = [grid, [x for x in grid if abs(x) < 1e-3], [x for x in grid if abs(x) < 2]]
+    got = opened.tab.evaluate("""([sets, velocities, grid]) => {
+        const f = window.searsParadox.formats;
+        return {coordinate: sets.map((s) => s.map(f.coordinateFormat(s))),
+                velocity: [velocities, velocities.filter((u) => Math.abs(u) < 0.05)].map((s) => s.map(f.velocityFormat(s))),
+                ledger: grid.map(f.ledgerCell)};
+    }""", [sets, velocities, grid])
+    # -0.0 does not survive JSON: the page is asked about +0.0 there (and prints no sign on a zero either way)
+    assert got["coordinate"] == [[coordinate_format(s)(x).replace("-", MINUS) for x in s] for s in sets]
+    small = [u for u in velocities if abs(u) < 0.05]
+    assert got["velocity"] == [[velocity_format(s)(u).replace("-", MINUS) for u in s] for s in (velocities, small)]
+    assert got["ledger"] == [web_data.ledger_cell(x) for x in grid]
+    assert got["ledger"][grid.index(2.0 ** -5)] == "0.0312"  # a tie, to even (toFixed gives 0.0313)
+
+
+@pytest.fixture(scope="session")
+def forces_file(forces_page, tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("html") / "forces.html"
+    path.write_text(forces_page, encoding="utf-8")
+    return path
+
+
+def test_force_presets_bands_force_events_and_their_ledger_in_s_s_prime_and_on_a_phone(browser, forces_file,
+                                                                                    forces_data, screenshots):
+    """sears in S: the left band is drawn outside the left end, a type size wide at the peak (0.2 is the scale): at
+    t = 5/6 (F = 0.2 sin^2(pi/3), 3/4 of it; between two arrows) in the force's fill a third of a type size out, and
+    not before the force; in S' its four starts and ends are labelled on and off, each table's cells those Python
+    made; push and sears_moving from the scenario menu; a phone draws the same."""
+    for viewport, name in (({"width": 1366, "height": 768}, "laptop"), ({"width": 390, "height": 844}, "phone")):
+        tab = Opened(browser, forces_file, viewport)
+        size = tab.tab.evaluate("parseFloat(getComputedStyle(document.body).fontSize)")
+        fill = [int(STYLES["default"].force_fill[k:k + 2], 16) for k in (1, 3, 5)]
+        column, row = (tab.tab.evaluate(f"window.searsParadox.{f}({a})") for f, a in (("column", -0.5), ("row", 5 / 6)))
+        inside = tab.pixel(column - size / 3, row)[:3]
+        assert max(abs(a - b) for a, b in zip(inside, fill)) < 12, inside
+        assert max(abs(a - b) for a, b in zip(tab.pixel(column - size / 3, tab.tab.evaluate(
+            "window.searsParadox.row(0.25)"))[:3], fill)) > 40
+        tab.tab.screenshot(path=str(screenshots / f"sears_{name}.png"), full_page=True)
+        tab.tab.click("#frame-moving")
+        tab.settled()
+        labels = {b["label"] for b in json.loads(tab.tab.get_attribute("#diagram", "data-labels"))}
+        assert labels == {"left-start", "left-end", "right-start", "right-end"}
+        events = driven(forces_data, "sears")["tables"]["moving"]["rows"]
+        assert tab.tab.evaluate("[...document.querySelectorAll('#events tbody tr')].map((r) => "
+                                "[...r.cells].map((c) => c.textContent))") == events
+        assert list(tab.rows("ledger"))[:2] == ["delivered left", "delivered right"]
+        tab.tab.screenshot(path=str(screenshots / f"sears_moving_frame_{name}.png"), full_page=True)
+        for k, preset in ((2, "push"), (1, "sears_moving")):
+            tab.tab.select_option("#scenario", str(k))
+            tab.settled()
+            assert forces_data[preset]["title"] in tab.tab.inner_text("#heading")
+            tab.tab.screenshot(path=str(screenshots / f"{preset}_{name}.png"), full_page=True)
+        tab.close()
