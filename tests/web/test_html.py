@@ -164,9 +164,9 @@ def test_every_ledger_slice_adds_up_to_the_total_before_the_first_impact(fig2_da
                 total += EnergyMomentum.of(p.mass, a - eta)
             assert frame["rows"] == ["particle A", "particle B", "rod (kinetic)", "hidden (stress)", "total"]
             for row in frame["slices"]:  # the embedded total, and the parts adding up to it
-                assert row[-2:] == pytest.approx([total.E, total.p], abs=5e-6)
-                assert sum(row[0:-2:2]) == pytest.approx(total.E, abs=5e-5 * 4)
-                assert sum(row[1:-2:2]) == pytest.approx(total.p, abs=5e-5 * 4)
+                assert row[-2:] == pytest.approx([total.E, total.p], abs=5.1e-5)  # 4 decimals each
+                assert sum(row[0:-2:2]) == pytest.approx(total.E, abs=5.1e-5 * 4)
+                assert sum(row[1:-2:2]) == pytest.approx(total.p, abs=5.1e-5 * 4)
     for v in (0.3, 0.6):  # S', S, then the grid's other frames, each once
         frames = [f["u"] for f in at_speed(fig2_data, v)["ledger"]]
         assert frames[:2] == [-v, 0.0] and sorted(frames) == sorted({-v, 0.0, *web_data.LEDGER_FRAMES})
@@ -288,16 +288,16 @@ def test_causal_ledger_adds_up_to_the_total_before_the_first_contact_and_the_rod
                 total += EnergyMomentum.of(p.mass, (1 if p.name == "A" else -1) * math.atanh(s.speed(p)) - eta)
             assert frame["rows"] == ["particle A", "particle B", "rod, matter", "rod, stress", "total"]
             for row in frame["slices"]:
-                assert row[-2:] == pytest.approx([total.E, total.p], abs=4e-5)
-                assert sum(row[0:-2:2]) == pytest.approx(total.E, abs=4e-5)
-                assert sum(row[1:-2:2]) == pytest.approx(total.p, abs=4e-5)
+                assert row[-2:] == pytest.approx([total.E, total.p], abs=9e-5)  # 4 decimals each
+                assert sum(row[0:-2:2]) == pytest.approx(total.E, abs=2.4e-4)
+                assert sum(row[1:-2:2]) == pytest.approx(total.p, abs=2.4e-4)
             lo, hi = frame["window"]
-            assert frame["slices"][0][4:8] == pytest.approx([math.cosh(eta), -math.sinh(eta), 0.0, 0.0], abs=1e-5)
+            assert frame["slices"][0][4:8] == pytest.approx([math.cosh(eta), -math.sinh(eta), 0.0, 0.0], abs=5.1e-5)
             for k in (13, 27):
                 rod = h.rod_energy_momentum(eta, lo + (hi - lo) * k / (len(frame["slices"]) - 1))
                 row = frame["slices"][k]
-                assert row[4] + row[6] == pytest.approx(rod.E, abs=2e-5)
-                assert row[5] + row[7] == pytest.approx(rod.p, abs=2e-5)
+                assert row[4] + row[6] == pytest.approx(rod.E, abs=1.2e-4)
+                assert row[5] + row[7] == pytest.approx(rod.p, abs=1.2e-4)
 
 
 def test_the_rod_the_page_opens_on_is_the_scenarios_or_rods(rigid_grid):
@@ -949,17 +949,17 @@ def test_forces_ledger_rows_delivered_and_conserved_against_the_library(forces_d
                 assert frame["rows"] == list(parts)
                 f, (lo, hi) = math.atanh(frame["u"]), frame["window"]
                 for k, row in enumerate(frame["slices"]):
-                    assert row[8:10] == pytest.approx([row[4] + row[6], row[5] + row[7]], abs=1.5e-5)
-                    assert row[8:10] == pytest.approx(row[10:12], abs=1.5e-5)
+                    assert row[8:10] == pytest.approx([row[4] + row[6], row[5] + row[7]], abs=1.6e-4)
+                    assert row[8:10] == pytest.approx(row[10:12], abs=1.6e-4)
                 for k in (0, len(frame["slices"]) // 2, len(frame["slices"]) - 1):
                     t = lo + (hi - lo) * k / (len(frame["slices"]) - 1)
                     for j, end in enumerate(("left", "right")):
                         em = h.driving.delivered(end, f, t)
-                        assert frame["slices"][k][2 * j:2 * j + 2] == pytest.approx([em.E, em.p], abs=6e-6)
+                        assert frame["slices"][k][2 * j:2 * j + 2] == pytest.approx([em.E, em.p], abs=5.1e-5)
     for model in ("rigid", "causal"):  # the causal rod's ends move in: the agents' work is its elastic energy
         s_frame = next(f for f in driven(forces_data, "sears", model)["ledger"] if f["u"] == 0.0)
         last = s_frame["slices"][-1]
-        assert (last[1], last[3]) == pytest.approx((0.1, -0.1), abs=6e-6) and last[0] == last[2]
+        assert (last[1], last[3]) == pytest.approx((0.1, -0.1), abs=5.1e-5) and last[0] == last[2]
         if model == "rigid":
             assert all(row[6:8] == [0.0, 0.0] for row in s_frame["slices"]) and last[0] == 0.0
 
@@ -1021,7 +1021,7 @@ def test_force_presets_bands_force_events_and_their_ledger_in_s_s_prime_and_on_a
     t = 5/6 (F = 0.2 sin^2(pi/3), 3/4 of it; between two arrows) in the force's fill a third of a type size out, and
     not before the force; in S' its four starts and ends are labelled on and off, each table's cells those Python
     made; push and sears_moving from the scenario menu; a phone draws the same."""
-    for viewport, name in (({"width": 1366, "height": 768}, "laptop"), ({"width": 390, "height": 844}, "phone")):
+    for viewport, name in (({"width": 390, "height": 844}, "phone"), ({"width": 1366, "height": 768}, "laptop")):
         tab = Opened(browser, forces_file, viewport)
         size = tab.tab.evaluate("parseFloat(getComputedStyle(document.body).fontSize)")
         fill = [int(STYLES["default"].force_fill[k:k + 2], 16) for k in (1, 3, 5)]
@@ -1031,6 +1031,9 @@ def test_force_presets_bands_force_events_and_their_ledger_in_s_s_prime_and_on_a
         assert max(abs(a - b) for a, b in zip(tab.pixel(column - size / 3, tab.tab.evaluate(
             "window.searsParadox.row(0.25)"))[:3], fill)) > 40
         tab.tab.screenshot(path=str(screenshots / f"sears_{name}.png"), full_page=True)
+        if name == "phone":  # the same drawing, narrower: the rest once, on the laptop
+            tab.close()
+            continue
         tab.tab.click("#frame-moving")
         tab.settled()
         labels = {b["label"] for b in json.loads(tab.tab.get_attribute("#diagram", "data-labels"))}
