@@ -13,10 +13,15 @@ model (`MODELS`: the rigid rod, then the causal rod, whose part `causal_data` gi
 * the same for `MATERIAL_POINTS` material points of the rod, for the strip under the diagram (coarser: it is drawn
   small), and the colour scale's half-range in rapidity, which is the same in every frame;
 * the events tables of S and S' as `sears-paradox events` writes them, with their fractions (`tables.build`);
-* the ledger (each body's kinetic (E, p) and the hidden part) on a grid of frames (`LEDGER_FRAMES`, and S') and of
-  instants (`LEDGER_INSTANTS` over each frame's time window): the rod's kinetic part and the hidden part on a
-  slice are not one four-vector, so they cannot be boosted; the page shows the slice nearest its frame and instant
-  and says which.
+* the ledger (each body's kinetic (E, p), the hidden part and the total, with the rows' names) on a grid of frames
+  (`LEDGER_FRAMES`, and S') and of instants (`LEDGER_INSTANTS` evenly over each frame's time window): the rod's
+  kinetic part and the hidden part on a slice are not one four-vector, so they cannot be boosted; the page shows
+  the slice nearest its frame and instant and says which;
+* the time window of every frame the page can show (each position of the frame slider, and S'; `windows`), the
+  tables' format rules (`numbers.coordinate_format`, `velocity_format`: their parameters, for the frames the
+  page boosts itself) and the nice multiples its tick steps are chosen from (the choice depends on the pixels);
+* for a rod driven by forces (`forces_data`): each force's band, its start, peak and end, their tables as
+  `events` prints them, and the ledger of `ledger` (what each agent delivered, the rod's parts, the check).
 """
 
 from __future__ import annotations

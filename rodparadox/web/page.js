@@ -1,5 +1,5 @@
-// The page's script, part 1 of 4 (page.py joins page.js, page_draw.js, page_tables.js and page_controls.js, in
-// that order, into one <script>: one scope, no build step): the data, the state, numbers, frames and boosts.
+// The page's script, part 1 of 5 (page.py joins page.js, page_draw.js, page_forces.js, page_tables.js and
+// page_controls.js, in that order, into one <script>: one scope, no build step): the data, the state, numbers, frames and boosts.
 // Plain JavaScript, no network. Every number comes from the data Python embedded: the page only
 // Lorentz-transforms embedded points (exact for each point) and interpolates along the sampled lines to draw.
 // Two rod models per speed: the rigid rod and the causal rod (README, "The causal rod"), shown alone or side by

@@ -1,4 +1,4 @@
-// The page's script, part 4 of 4 (page.py joins the parts into one <script>): the controls and the start.
+// The page's script, part 5 of 5 (page.py joins the parts into one <script>): the controls and the start.
   // --- the controls ----------------------------------------------------------------------------------------
   function setSpeedControl() {
     const speeds = scenario().speeds;

@@ -1,4 +1,4 @@
-// The page's script, part 3 of 4 (page.py joins the parts into one <script>): the tables and the legend.
+// The page's script, part 4 of 5 (page.py joins the parts into one <script>): the tables and the legend.
   // --- the tables ------------------------------------------------------------------------------------------
   function fillTable(table, caption, header, rows, notes) {
     $(table.id + "-caption").textContent = caption;  // above the table, wrapped to the window: only the cells scroll
