@@ -843,12 +843,14 @@ FORCE_PRESETS = ("sears", "sears_moving", "push")
 
 @pytest.fixture(scope="session")
 def forces_page() -> str:
-    """One page holding the three force presets at their own speed only (no grid: a run per rod each), both rods."""
-    steps, web_data.SPEED_STEPS = web_data.SPEED_STEPS, 0
+    """One page holding the three force presets at their own speed only (no grid: a run per rod each), both rods,
+    with a coarse ledger (5 slices a frame: a driven rigid rod's slice costs milliseconds)."""
+    saved = web_data.SPEED_STEPS, web_data.LEDGER_INSTANTS, web_data.FORCES_LEDGER_INSTANTS
+    web_data.SPEED_STEPS, web_data.LEDGER_INSTANTS, web_data.FORCES_LEDGER_INSTANTS = 0, 5, 5
     try:
         return page([(name, load(name)) for name in FORCE_PRESETS])
     finally:
-        web_data.SPEED_STEPS = steps
+        web_data.SPEED_STEPS, web_data.LEDGER_INSTANTS, web_data.FORCES_LEDGER_INSTANTS = saved
 
 
 @pytest.fixture(scope="session")
