@@ -123,7 +123,10 @@ def ledger_rows(history) -> tuple[str, ...]:
 
 
 def ledger_note(history) -> str:
-    return parts_of(history)[1]
+    """The ledger's note (`tables.forces_ledger`) up to its centre of energy, which the page does not show (its
+    velocity costs several slices a slice)."""
+    note = parts_of(history)[1]
+    return note[:note.index(" x_E is")]
 
 
 def ledger_slice(history, f: float, t: float, parts: tuple | None = None, delivered: tuple | None = None) -> list[float]:
