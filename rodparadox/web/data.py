@@ -33,7 +33,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from rodparadox.errors import RodParadoxError
-from rodparadox.numbers import _without_zero_sign, impact_name
+from rodparadox.numbers import MINUS, impact_name
 from rodparadox.physics.types import WORLDLINE_NAMES
 from rodparadox.physics.models import run_rod
 from rodparadox.physics.frames import check_below_c, Frame, frame_of_velocity, moving_frame, rest_frame
@@ -109,7 +109,8 @@ def fixed(value: float) -> float:
 
 def ledger_cell(value: float) -> str:
     """A ledger cell as the page prints it: LEDGER_DECIMALS decimals, a real minus, no sign on a zero or a positive."""
-    return _without_zero_sign(f"{value + 0.0:+.{LEDGER_DECIMALS}f}").replace("-", "\u2212").lstrip("+")
+    text = f"{value + 0.0:.{LEDGER_DECIMALS}f}"
+    return (text.lstrip("-") if float(text) == 0 else text).replace("-", MINUS)
 
 
 def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAWN_DIGITS) -> dict[str, Any]:
