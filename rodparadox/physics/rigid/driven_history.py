@@ -225,6 +225,7 @@ class Driving:
 
     def __init__(self, history: DrivenHistory):
         self.history = history
+        self._force_events = None
 
     @property
     def forces(self) -> Forces:
@@ -301,6 +302,13 @@ class Driving:
         return out
 
     def force_events(self) -> tuple[ForceEvent, ...]:
+        """Each force's start, peak and end at its end, in S (`_computed_force_events`), computed once per run: the
+        page and the tables ask for them several times."""
+        if self._force_events is None:
+            self._force_events = self._computed_force_events()
+        return self._force_events
+
+    def _computed_force_events(self) -> tuple[ForceEvent, ...]:
         """Each force's start, peak and end at its end, in S (see them in any frame with `Event.seen_from`)."""
         h = self.history
         out = []
