@@ -53,7 +53,7 @@ def _with_rod(scenario):
 
 
 #: the commands that show a rod driven by forces (the others refuse such a scenario in one sentence, for now)
-FORCES_COMMANDS = ("events", "export", "ledger", "plot", "animate")
+FORCES_COMMANDS = ("events", "export", "ledger", "plot", "animate", "handout")
 
 
 def _check_forces(scenario, rod: str, command: str) -> None:

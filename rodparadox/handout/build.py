@@ -32,6 +32,7 @@ import re
 from dataclasses import dataclass, replace
 from typing import Sequence
 
+from rodparadox.handout import forces
 from rodparadox.handout.causal_compare import comparison
 from rodparadox.handout.causal_reading import compare
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
@@ -140,6 +141,8 @@ def far_end_and_light(histories: Sequence[RodHistory]) -> tuple[RodHistory, Impa
     its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
     t_P + L."""
     for h in histories:
+        if h.turning is None:  # a rod driven by forces: no turn
+            continue
         turn = next(iter(h.turning.turns), None)
         if turn is None or turn.rapidity_from != 0.0:
             continue
@@ -274,6 +277,8 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
     key; the tables are left blank. With the `causal` rod's history, the section ends with the comparison of the
     two rods (`causal_compare`), and a worksheet with its questions (`worksheet_causal`)."""
+    if history.driving is not None:  # a rod driven by forces: Sears's own paradox (`forces`)
+        return _forces_section(stem, history, frames, worksheet, with_speed, equal_scales, causal, parts, chosen)
     caption = diagram_caption(history, frames, tell=not worksheet)
     if equal_scales and len(frames) > 1:
         caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
@@ -326,6 +331,20 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
         key += told
         key += compared[1]
     return Section(stem, section_title, tuple(blocks)), key
+
+
+def _forces_section(stem: str, history: RodHistory, frames: tuple[Frame, ...], worksheet: bool, with_speed: bool,
+                    equal_scales: bool, causal, parts: frozenset[str],
+                    chosen: Sequence[int] | None = None) -> tuple[Section, list[Block]]:
+    """A rod driven by forces: its section (`forces.section_blocks`), and for a worksheet its part of the key."""
+    causal = causal if "comparison" in parts else None
+    if worksheet:
+        blocks, key = forces.worksheet_blocks(stem, history, frames, causal, parts, heading(history, with_speed),
+                                              heading(history, with_speed=True), chosen, equal_scales)
+        return Section(stem, heading(history, with_speed=True), tuple(blocks)), key
+    blocks = forces.section_blocks(stem, history, frames, causal, parts, heading(history, with_speed), worksheet,
+                                   equal_scales)
+    return Section(stem, heading(history, with_speed=True), tuple(blocks)), []
 
 
 @dataclass(frozen=True)
