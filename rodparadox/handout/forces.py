@@ -162,9 +162,14 @@ def read(history, frames: Sequence[Frame]) -> ForcesReading:
     for frame in frames:
         rows = force_rows(history, frame)
         moments = tuple(Moment(r["end"], r["moment"], r["x"], r["t"], r["force"], r["end_velocity"]) for r in rows)
-        slices = tuple(_momenta(history, frame, t) for t in slice_times(history, frame, moments))
-        key = max(slices, key=lambda s: abs(s.stress.p))
-        seen.append(FrameForces(frame, moments, slices, key, slices[0].rod))
+        times = slice_times(history, frame, moments)
+        # the key slice: halfway between two of the forces' moments (never at one: a worksheet asks those instants),
+        # where the stress holds the most momentum
+        halves = [_momenta(history, frame, 0.5 * (a + b)) for a, b in zip(times[:-2], times[1:-1])]
+        key = max(halves, key=lambda s: abs(s.stress.p)) if halves else None
+        slices = tuple(sorted([_momenta(history, frame, t) for t in times] + ([key] if key else []),
+                              key=lambda s: s.t))
+        seen.append(FrameForces(frame, moments, slices, key or slices[-1], slices[0].rod))
     areas = tuple((end, p.area()) for end, p in driving.profiles())
     return ForcesReading(history, tuple(seen), math.tanh(history.final_rapidity), areas)
 
@@ -506,8 +511,8 @@ def worksheet_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None,
 
     def blank(f: FrameForces):
         def cells(m: Moment, x: str, t: str) -> frozenset[str]:
-            if f.frame == timed:  # the set-up gives the forces' times in this frame, and where each starts
-                return frozenset() if m.moment == "start" else frozenset({x, "end velocity"})
+            if f.frame == timed:  # the set-up gives the forces' times in this frame, a question where each starts
+                return frozenset({"end velocity"}) if m.moment == "start" else frozenset({x, "end velocity"})
             return frozenset({x, t, "end velocity"})
         return cells
 
