@@ -358,11 +358,9 @@ def shift_text(r: ForcesReading, f: FrameForces) -> str:
                  f"momentum delivered is in the stress, {signed(k.stress.p)} M c (a stressed body moving at v carries "
                  f"momentum that no motion of its matter shows; von Laue).")
     else:
-        text += (f" The rod's {moving} part has changed by {signed(kinetic_change)} M c, and its stress part holds "
-                 f"{signed(k.stress.p)} M c: the rod does move a little while it is squeezed, but most of the "
-                 f"momentum delivered is in the stress." if abs(k.stress.p) > abs(kinetic_change) else
-                 f" The rod's {moving} part has changed by {signed(kinetic_change)} M c, and its stress part holds "
-                 f"{signed(k.stress.p)} M c.")
+        text += (f" The rod's {moving} part has changed by {signed(kinetic_change)} M c and its stress part holds "
+                 f"{signed(k.stress.p)} M c: the rod moves while the forces act, and what was delivered is shared "
+                 f"between its motion and its stress.")
     text += (f" Its centre of energy moves at {in_c(k.v_E)} there, while p/E = {in_c(k.p_over_E)}: for a closed "
              f"system they would be equal; with forces acting at its ends they are not.")
     after = f.slices[-1]

@@ -185,3 +185,16 @@ def test_sections_leave_out_what_is_not_asked():
         assert (Heading(PARADOX_TITLE, 2) in blocks) == ("ledger" in parts)
         assert (doc.sections[0].name == "introduction") == ("paradox" in parts)
     assert set(SECTIONS) >= {"paradox", "diagrams", "tables", "ledger"}
+
+
+def test_the_words_name_no_software(sears, sears_sheet, push):
+    """No software word (`test_handout_words.SOFTWARE`) in any block's words, the answer key's included."""
+    from test_handout_words import SOFTWARE
+
+    for doc in (sears, sears_sheet, push):
+        words = [b.text for b in doc.blocks() if isinstance(b, (Paragraph, Heading))]
+        words += [b.caption for b in doc.blocks() if hasattr(b, "caption")]
+        words += [" ".join(b.answer) + b.text for b in doc.blocks() if isinstance(b, Question)]
+        words += [n for b in doc.blocks() if isinstance(b, Table) for n in (*b.header, *b.notes)]
+        found = [m.group() for text in words for m in SOFTWARE.finditer(text)]
+        assert not found, found
