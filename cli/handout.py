@@ -109,7 +109,8 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
         items.append(Item(stem, rigid, frames, causal))
         # the rod's own view (--frame both,rod, or rod among --sections): of the rigid rod, and of the causal rod when
         # compared
-        if "rod" in sections and (frames != shown_frames or parts is not None):
+        # (a rod driven by forces has no own view drawn yet: --sections leaves it out, --frame both,rod is refused)
+        if "rod" in sections and (frames != shown_frames or (parts is not None and s.forces is None)):
             views[stem] = (items[-1].history,) + ((causal,) if causal is not None else ())
     from rodparadox.physics.rod_view import refuse_thin_view
 

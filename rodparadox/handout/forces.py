@@ -290,7 +290,7 @@ def _p(x: float) -> str:
     return "0" if x == 0.0 else f"{x:+.4f}".replace("-", MINUS)
 
 
-def momentum_table(r: ForcesReading, f: FrameForces, stem: str = "", blank: bool = False) -> Table:
+def momentum_table(r: ForcesReading, f: FrameForces, compared: bool = False, blank: bool = False) -> Table:
     """Von Laue's row per slice: the momentum each agent delivered, the rod's kinetic (matter) part and its stress
     part, the total, and beside p/E the velocity of the rod's centre of energy."""
     t = time_name(f.frame)
@@ -300,9 +300,9 @@ def momentum_table(r: ForcesReading, f: FrameForces, stem: str = "", blank: bool
         values = (s.left.p, s.right.p, s.moving.p, s.stress.p, s.rod.p)
         rows.append((Cell(in_l(s.t, 4).replace(" L", "")), *(Cell(_p(x), blank) for x in values),
                      Cell(_p(s.p_over_E), blank), Cell(_p(s.v_E), blank)))
-    return Table(f"{stem}momentum_{'causal_' if r.fronts else ''}{frame_word(f.frame)}",
+    return Table(f"momentum_{'causal_' if r.fronts else ''}{frame_word(f.frame)}",
                  f"Where the momentum is in frame {frame_symbol(f.frame)}"
-                 + (" (causal rod)" if r.fronts else (" (rigid rod)" if stem else "")),
+                 + (" (causal rod)" if r.fronts else (" (rigid rod)" if compared else "")),
                  (t, "left delivered", "right delivered", f"rod {moving}", "rod stress", "rod total", "p/E", "v_E"),
                  tuple(rows), "lnnnnnnn",
                  (f"Momenta in M c; v_E is the velocity of the rod's centre of energy, p/E the rod's total momentum "
@@ -447,7 +447,7 @@ def paradox_blocks(readings: Sequence[ForcesReading], stem: str, blank: bool = F
             break
     for f_index in range(len(first.frames)):
         for r in readings:
-            blocks.append(momentum_table(r, r.frames[f_index], stem if len(readings) > 1 else "", blank))
+            blocks.append(momentum_table(r, r.frames[f_index], len(readings) > 1, blank))
     return blocks
 
 
