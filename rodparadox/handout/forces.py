@@ -339,8 +339,14 @@ def balance_text(r: ForcesReading, f: FrameForces) -> str:
         text += (f" The rod is squeezed from both ends at once: its ends move in, but the two halves move "
                  f"oppositely and its momentum stays {signed(peak.rod.p)} M c; the work done on it, "
                  f"{signed(peak.left.E + peak.right.E)} M c² by then, is stored as its energy.")
-    else:
+    elif all(abs(x.moving.p - f.initial.p) < 1e-9 for x in f.slices):
         text += " Nothing moves: the balanced forces only stress the rod, the same all along it."
+    else:  # balanced in this frame, not in the rod's own: the rigid rod moves (sears_moving seen from S′)
+        k = max(f.slices, key=lambda x: abs(x.moving.p - f.initial.p))
+        text += (f" Yet the rod moves: the forces balance at every instant of {name}, not at every instant of the "
+                 f"rod's own time, so at {t} = {in_l(k.t)} its {moving} part is {signed(k.moving.p)} M c and its "
+                 f"stress part {signed(k.stress.p)} M c: together {signed(k.rod.p)} M c, its momentum before the forces "
+                 f"plus what the agents have delivered.")
     return text
 
 

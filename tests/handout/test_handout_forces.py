@@ -211,3 +211,14 @@ def test_the_command_writes_only_the_sections_asked(here):
     assert not [f for f in files if "diagram" in f or "forces_" in f], files
     tex = (here / "out" / "handout.tex").read_text()
     assert "Sears's own paradox" in tex and "The paradox and its resolution" in tex
+
+
+def test_sears_moving_the_rigid_rod_moves_though_the_forces_balance_in_s_prime():
+    """Timed in S′, the forces balance at every instant of S′ but not of the rod's own time (S): the rigid rod's
+    kinetic part in S′ changes, and the text says so, never "Nothing moves"."""
+    rigid = rods("sears_moving")[0]
+    doc = build([("sears_moving", rigid)], sections=("ledger",))
+    words = text_of(doc)
+    assert "Nothing moves" not in words and "Yet the rod moves" in words
+    table = next(t for t in tables(doc, "Where the momentum is in frame S′"))
+    assert max(abs(number(row[3].text) - 0.75) for row in table.rows) > 1e-3
