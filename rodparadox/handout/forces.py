@@ -421,20 +421,17 @@ def far_start(history, end: str, t0: float, t1: float) -> float:
     return hi
 
 
-def paradox_blocks(readings: Sequence[ForcesReading], stem: str, blank: bool = False) -> list[Block]:
+def paradox_blocks(readings: Sequence[ForcesReading]) -> list[Block]:
     """The section "Sears's own paradox" (two forces) or "One end pushed" (one), for each rod given (the rigid rod
-    first): the sentences and, per frame, the momentum table of each rod."""
+    first): what each agent delivers, and where the momentum is, in sentences (`momentum_blocks`: the tables)."""
     first = readings[0]
     two = len(first.areas) == 2
     blocks: list[Block] = [Heading(PARADOX_TITLE if two else PUSH_TITLE, 2), Paragraph(delivered_text(first))]
     if two:
         blocks.append(Paragraph(
             "Sears asked: where the forces act at different instants, the momentum delivered changes while the "
-            "rod's velocity does not; where is the momentum in between? The tables below follow it, slice by slice "
-            "of each frame: what each agent has delivered, the rod's " + ("kinetic part (its mass moving) "
-                                                                          if not first.fronts else "moving part ")
-            + "and its stress part, which add up to the total; beside p/E, the velocity of the rod's centre of "
-              "energy."))
+            "rod's velocity does not; where is the momentum in between? The answer is in the rod's stress, which "
+            "carries momentum when the rod moves. The tables at the end of the section follow it slice by slice."))
         for r in readings:
             said = []
             for f in r.frames:
@@ -442,19 +439,45 @@ def paradox_blocks(readings: Sequence[ForcesReading], stem: str, blank: bool = F
             blocks.append(Paragraph(" ".join(said)))
     else:
         blocks += [Paragraph(push_text(r)) for r in readings]
-        r = first
-        for g in first.frames:
-            k = g.key
-            blocks.append(Paragraph(
-                f"In {frame_name(g.frame)}, while the push acts, the agent's momentum is partly in the rod's motion "
-                f"and partly in its stress: at {time_name(g.frame)} = {in_l(k.t)} the agent has delivered "
-                f"{signed(k.left.p + k.right.p)} M c, the {_model(r)}'s kinetic part has gained "
-                f"{signed(k.moving.p - g.initial.p)} M c and its stress holds {signed(k.stress.p)} M c."))
-            break
+        g = first.frames[0]
+        k = g.key
+        blocks.append(Paragraph(
+            f"In {frame_name(g.frame)}, while the push acts, the agent's momentum is partly in the rod's motion "
+            f"and partly in its stress: at {time_name(g.frame)} = {in_l(k.t)} the agent has delivered "
+            f"{signed(k.left.p + k.right.p)} M c, the {_model(first)}'s kinetic part has gained "
+            f"{signed(k.moving.p - g.initial.p)} M c and its stress holds {signed(k.stress.p)} M c."))
+    return blocks
+
+
+def momentum_blocks(readings: Sequence[ForcesReading], blank: bool = False) -> list[Block]:
+    """Per frame, each rod's momentum table (von Laue's row, slice by slice), after the sentence that reads them."""
+    first = readings[0]
+    moving = "kinetic part (its mass moving with its points' velocities)" if len(readings) == 1 else \
+        "kinetic part (rigid rod) or matter part (causal rod)"
+    blocks: list[Block] = [
+        Heading("Where the momentum is, slice by slice", 2),
+        Paragraph(f"On slices of each frame (each force's start, peak and end, a slice halfway between two of them "
+                  f"where the stress holds most, and one after the forces): what each agent has delivered, the rod's "
+                  f"{moving} and its stress part, which add up to its total; beside p/E, the velocity v_E of the "
+                  f"rod's centre of energy.")]
     for f_index in range(len(first.frames)):
         for r in readings:
             blocks.append(momentum_table(r, r.frames[f_index], len(readings) > 1, blank))
     return blocks
+
+
+def causal_diagram(stem: str, causal, frames, worksheet: bool, equal_scales: bool) -> DiagramBlock:
+    """The causal rod's diagram, in the same frames as the rigid rod's."""
+    from rodparadox.physics.frames import PANEL_LETTERS
+
+    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {frame_name(f)}" for k, f in enumerate(frames))
+    caption = (f"The causal rod, driven by the same forces: {panels}. Its world-sheet is shaded by its compression "
+               f"λ, its length per unit of proper length (the legend gives the scale); the forces are drawn as for "
+               f"the rigid rod.")
+    if worksheet is False:
+        caption += " Through each start and end run the lines of simultaneity of S and S′."
+    return DiagramBlock(f"{stem}_causal_diagram", causal, tuple(frames), caption, tell=not worksheet,
+                        equal_scales=equal_scales)
 
 
 def frames_tables(readings: Sequence[ForcesReading], blank_columns=None) -> list[Block]:
@@ -474,15 +497,24 @@ def frames_tables(readings: Sequence[ForcesReading], blank_columns=None) -> list
     return blocks
 
 
-def diagram(stem: str, history, frames, worksheet: bool, equal_scales: bool, causal=None) -> DiagramBlock:
+def diagram(stem: str, history, frames, worksheet: bool, equal_scales: bool, causal=None,
+            together: bool = False) -> DiagramBlock:
+    """The rigid rod's diagram; `together`: with the causal rod's row under it (a handout's), else the causal rod's,
+    where compared, is its own block (a worksheet's: `causal_diagram`, set apart so that each fits a page with the
+    text around it)."""
     caption = diagram_caption(history, frames, tell=not worksheet)
+    if together:
+        caption += (" The upper row is the rigid rod, the lower row the causal rod, driven by the same forces, its "
+                    "world-sheet shaded by its compression λ, its length per unit of proper length (the legend gives "
+                    "the scale); each frame's two panels are drawn to one scale.")
+        return DiagramBlock(f"{stem}_diagram", history, tuple(frames), caption, tell=not worksheet,
+                            equal_scales=equal_scales, compared=causal)
     if causal is not None:
-        caption += (" The upper row is the rigid rod, the lower row the causal rod, driven by the same forces; each "
-                    "frame's two panels are drawn to one scale.")
-    elif equal_scales and len(frames) > 1:
+        caption = caption.replace(": (a)", ", the rigid rod: (a)", 1)
+    if equal_scales and len(frames) > 1:
         caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
     return DiagramBlock(f"{stem}_diagram", history, tuple(frames), caption, tell=not worksheet,
-                        equal_scales=equal_scales, compared=causal)
+                        equal_scales=equal_scales)
 
 
 def section_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None, parts=frozenset(),
@@ -490,13 +522,21 @@ def section_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None, p
     """A handout's section on a driven rod (`build._section` for a history with `driving`)."""
     readings = [read(history, frames)] + ([read(causal, frames)] if causal is not None else [])
     blocks: list[Block] = [Heading(heading), Paragraph(setup_text(history))]
-    if "diagrams" in parts:
-        blocks += [diagram(stem, history, frames, worksheet, equal_scales, causal),
-                   Heading("What the diagram shows", 2), *explanation(readings[0])]
+    ledger = "ledger" in parts or "comparison" in parts
+    if causal is None:  # the diagram, then what it shows and the paradox's sentences (they fill the page it leaves)
+        if "diagrams" in parts:
+            blocks += [diagram(stem, history, frames, worksheet, equal_scales),
+                       Heading("What the diagram shows", 2), *explanation(readings[0])]
+        blocks += paradox_blocks(readings) if ledger else []
+    else:  # both rods' diagram, a page tall, the sentences after it (they fill the page before it)
+        if "diagrams" in parts:
+            blocks += [diagram(stem, history, frames, worksheet, equal_scales, causal, together=True),
+                       Heading("What the diagrams show", 2), *explanation(readings[0])]
+        blocks += paradox_blocks(readings) if ledger else []
     if "tables" in parts:
         blocks += [Heading("The numbers", 2), *frames_tables(readings)]
-    if "ledger" in parts or "comparison" in parts:
-        blocks += paradox_blocks(readings, stem)
+    if ledger:
+        blocks += momentum_blocks(readings)
     return blocks
 
 
@@ -525,23 +565,22 @@ def worksheet_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None,
     told: list[Block] = []
     if "diagrams" in parts:
         blocks.append(diagram(stem, history, frames, True, equal_scales, causal))
+        if causal is not None:
+            blocks.append(causal_diagram(stem, causal, frames, True, equal_scales))
         told += [Heading("What the diagram shows", 2), *explanation(readings[0])]
     filled: list[Block] = []
-    if "tables" in parts:
+    if "tables" in parts:  # the rigid rod's to fill in (the questions ask about it); the key fills both rods'
         blocks += [Heading("The numbers", 2)]
-        for b in frames_tables(readings, blank):
-            if isinstance(b, Table):
-                blocks.append(b)
-                filled.append(replace(b.filled(), name=f"{stem}_{b.name}_key"))
-            else:
-                blocks.append(Paragraph(b.text.replace("The forces in", "Fill in the forces in", 1)
-                                        + " The cells left empty are yours to fill in."
-                                        if not filled else b.text))
-                filled.append(b)
+        for k, b in enumerate(frames_tables(readings[:1], blank)):
+            blocks.append(b if isinstance(b, Table) or k else
+                          Paragraph(b.text.replace("The forces in", "Fill in the forces in", 1)
+                                    + " The cells left empty are yours to fill in."))
+        filled = [replace(b.filled(), name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b
+                  for b in frames_tables(readings, blank)]
     blocks += [Heading("Questions", 2), *asked]
     if "ledger" in parts or "comparison" in parts:
         told += [replace(b, name=f"{stem}_{b.name}_key") if isinstance(b, Table) else b
-                 for b in paradox_blocks(readings, stem)]
+                 for b in paradox_blocks(readings) + momentum_blocks(readings)]
     key: list[Block] = [Heading(key_heading, 2), Paragraph(setup_text(history)),
                         *([Heading("The numbers", 2), *filled] if filled else []),
                         Heading("Questions and answers", 2), *asked, *told]

@@ -71,7 +71,8 @@ def text_of(doc) -> str:
 
 def test_a_forces_handout_has_its_diagram_its_tables_and_sears_s_own_paradox(sears, push):
     blocks = sears.sections[1].blocks
-    assert any(isinstance(b, DiagramBlock) and b.compared is not None for b in blocks)  # both rods drawn
+    drawn = [b.drawn for b in blocks if isinstance(b, DiagramBlock)]  # both rods drawn, the rigid rod's row first
+    assert [[h.fronts is not None for h in pair] for pair in drawn] == [[False, True]]
     assert Heading(PARADOX_TITLE, 2) in blocks and "\u2019" in PARADOX_TITLE
     assert Heading(PUSH_TITLE, 2) in push.sections[1].blocks
     # nothing of particles: no impacts, no particle's start
