@@ -138,15 +138,16 @@ class ForcesReading:
 
 
 def _momenta(history, frame: Frame, t: float) -> Momenta:
+    """The slice t of the frame (t in the scenario's unit of length; the `Momenta` holds it in units of L)."""
     row = slice_row(history, frame, t)
     left, right, moving, stress, rod, _ = row["parts"].values()
-    return Momenta(t, left, right, moving, stress, rod, row["p_over_E"], row["v_E"])
+    return Momenta(t / history.scenario.L, left, right, moving, stress, rod, row["p_over_E"], row["v_E"])
 
 
 def slice_times(history, frame: Frame, moments: Sequence[Moment]) -> tuple[float, ...]:
     """The slices a frame's table prints: each force's start, peak and end (one row per instant; at the first start
     nothing is delivered yet), and after the last, halfway to the window's end."""
-    hi = time_window(history, frame)[1]
+    hi = time_window(history, frame)[1] / history.scenario.L
     times = sorted({m.t for m in moments})
     out: list[float] = []
     for t in times:
@@ -161,8 +162,10 @@ def read(history, frames: Sequence[Frame]) -> ForcesReading:
     seen = []
     for frame in frames:
         rows = force_rows(history, frame)
-        moments = tuple(Moment(r["end"], r["moment"], r["x"], r["t"], r["force"], r["end_velocity"]) for r in rows)
-        times = slice_times(history, frame, moments)
+        L = history.scenario.L
+        moments = tuple(Moment(r["end"], r["moment"], r["x"] / L, r["t"] / L, r["force"], r["end_velocity"])
+                        for r in rows)
+        times = tuple(t * L for t in slice_times(history, frame, moments))
         # the key slice: halfway between two of the forces' moments (never at one: a worksheet asks those instants),
         # where the stress holds the most momentum
         halves = [_momenta(history, frame, 0.5 * (a + b)) for a, b in zip(times[:-2], times[1:-1])]
@@ -316,14 +319,33 @@ def _model(r: ForcesReading) -> str:
     return "causal rod" if r.fronts else "rigid rod"
 
 
+def _timed_in(frame) -> str:
+    """The frame a profile is timed in, in running text: S, S′, the frame u = 0.3."""
+    return {"rest": "S", "moving": "S′"}.get(frame, None) if isinstance(frame, str) else \
+        f"the frame moving at {in_c(float(frame))} relative to S"
+
+
 def delivered_text(r: ForcesReading) -> str:
     """The momentum each force delivers in the frame its profile is timed in: the profile's area."""
+    profiles = dict(r.history.driving.profiles())
     said = [f"the {end} agent delivers {signed(area if end == 'left' else -area)} M c" for end, area in r.areas]
-    timed = {p.frame for _, p in r.history.driving.profiles()}
-    where = {"rest": "S", "moving": "S′"}.get(next(iter(timed)), "the frame its force is timed in") \
-        if len(timed) == 1 else "the frame its force is timed in"
-    return (f"In {where}, in whose time the forces are given, the momentum an agent delivers is the area under its "
-            f"force against time: {listed(said)}.")
+    timed = {p.frame for p in profiles.values()}
+    if len(timed) == 1:
+        where = _timed_in(next(iter(timed)))
+        return (f"In {where}, in whose time the forces are given, the momentum an agent delivers is the area under "
+                f"its force against time: {listed(said)}.")
+    said = [f"{text} in {_timed_in(profiles[end].frame)}" for text, (end, _) in zip(said, r.areas)]
+    return (f"In the frame in whose time a force is given, the momentum its agent delivers is the area under the force "
+            f"against time: {listed(said)}.")
+
+
+def sears_case(r: ForcesReading) -> bool:
+    """Sears's case: two equal forces, timed in one frame, acting at the same instants of it."""
+    profiles = [p for _, p in r.history.driving.profiles()]
+    return (len(profiles) == 2 and profiles[0] == profiles[1]
+            and all(f.together("start") and f.together("end") for f in r.frames
+                    if f.frame.name == profiles[0].frame or (not isinstance(profiles[0].frame, str)
+                                                             and abs(f.frame.velocity - profiles[0].frame) < 1e-12)))
 
 
 def balance_text(r: ForcesReading, f: FrameForces) -> str:
@@ -381,21 +403,30 @@ def push_text(r: ForcesReading) -> str:
     (end, profile), = driving.profiles()
     events = {e.moment: e for e in driving.force_events() if e.end == end}
     start, stop = events["start"], events["end"]
-    duration = stop.event.t - start.event.t
+    L = r.history.scenario.L
+    t0, t1 = start.event.t / L, stop.event.t / L
     u = math.tanh(stop.rapidity)
-    if not r.fronts:
-        a = math.sinh(stop.rapidity) / duration
-        return (f"The rigid rod: the push gives its {end} end a constant proper acceleration, "
-                f"{numeral(a)} c²/L = F/M; in S that end moves on a hyperbola and, when the push ends at "
-                f"t = {in_l(stop.event.t)}, it moves at {in_c(u)} and has gone {in_l(abs(stop.event.x - start.event.x))}. "
-                f"The whole rod moves at once, along its own lines of simultaneity.")
-    steps = staircase(r.history, end, start.event.t, stop.event.t)
+    kind = "push" if profile.greatest() > 0 else "pull"
     far = "right" if end == "left" else "left"
-    arrive = far_start(r.history, far, start.event.t, stop.event.t)
-    return (f"The causal rod: its {end} end moves at once at {in_c(steps[0])}, and keeps that velocity until the "
-            f"push's first signal has crossed the rod and come back; its velocity changes in steps, "
-            f"{listed([in_c(w) for w in steps])}, while the push lasts. Its {far} end starts to move only at "
-            f"t = {in_l(arrive)}, when the push's first signal, at c, reaches it.")
+    constant = profile.shape == "step"  # constant in the end's own rest frame: |proper acceleration| F/M
+    if not r.fronts:
+        if constant:  # a constant force on a rod at rest in S: hyperbolic motion, proper acceleration F/M
+            a = abs(math.sinh(stop.rapidity)) / (t1 - t0)
+            return (f"The rigid rod: the {kind} gives its {end} end a constant proper acceleration, "
+                    f"{numeral(a)} c²/L = |F|/M; in S that end moves on a hyperbola and, when the {kind} ends at "
+                    f"t = {in_l(t1)}, it moves at {in_c(u)} and has gone {in_l(abs(stop.event.x - start.event.x) / L)}. "
+                    f"The whole rod moves at once, along its own lines of simultaneity.")
+        return (f"The rigid rod: when the force ends, at t = {in_l(t1)} in S, its {end} end moves at {in_c(u)}. The "
+                f"whole rod moves at once, along its own lines of simultaneity.")
+    arrive = far_start(r.history, far, start.event.t, stop.event.t) / L
+    signal = (f" Its {far} end starts to move only at t = {in_l(arrive)}, when the force's first signal, at c, "
+              f"reaches it." if arrive < t1 else "")
+    if constant:
+        steps = staircase(r.history, end, start.event.t, stop.event.t)
+        return (f"The causal rod: its {end} end moves at once at {in_c(steps[0])}, and keeps that velocity until the "
+                f"{kind}'s first signal has crossed the rod and come back; its velocity changes in steps, "
+                f"{listed([in_c(w) for w in steps])}, while the {kind} lasts." + signal)
+    return f"The causal rod: when the force ends its {end} end moves at {in_c(u)}." + signal
 
 
 def staircase(history, end: str, t0: float, t1: float, samples: int = 400) -> tuple[float, ...]:
@@ -426,12 +457,18 @@ def paradox_blocks(readings: Sequence[ForcesReading]) -> list[Block]:
     first): what each agent delivers, and where the momentum is, in sentences (`momentum_blocks`: the tables)."""
     first = readings[0]
     two = len(first.areas) == 2
-    blocks: list[Block] = [Heading(PARADOX_TITLE if two else PUSH_TITLE, 2), Paragraph(delivered_text(first))]
+    kind = "pushed" if any(p.greatest() > 0 for _, p in first.history.driving.profiles()) else "pulled"
+    blocks: list[Block] = [Heading(PARADOX_TITLE if two else PUSH_TITLE.replace("pushed", kind), 2),
+                           Paragraph(delivered_text(first))]
     if two:
         blocks.append(Paragraph(
             "Sears asked: where the forces act at different instants, the momentum delivered changes while the "
             "rod's velocity does not; where is the momentum in between? The answer is in the rod's stress, which "
-            "carries momentum when the rod moves. The tables at the end of the section follow it slice by slice."))
+            "carries momentum when the rod moves. The tables at the end of the section follow it slice by slice."
+            if sears_case(first) else
+            "While the forces act, the momentum they deliver is shared between the rod's motion and its stress, "
+            "which carries momentum when the rod moves. The tables at the end of the section follow it slice by "
+            "slice."))
         for r in readings:
             said = []
             for f in r.frames:
@@ -442,7 +479,7 @@ def paradox_blocks(readings: Sequence[ForcesReading]) -> list[Block]:
         g = first.frames[0]
         k = g.key
         blocks.append(Paragraph(
-            f"In {frame_name(g.frame)}, while the push acts, the agent's momentum is partly in the rod's motion "
+            f"In {frame_name(g.frame)}, while the {kind[:-2]} acts, the agent's momentum is partly in the rod's motion "
             f"and partly in its stress: at {time_name(g.frame)} = {in_l(k.t)} the agent has delivered "
             f"{signed(k.left.p + k.right.p)} M c, the {_model(first)}'s kinetic part has gained "
             f"{signed(k.moving.p - g.initial.p)} M c and its stress holds {signed(k.stress.p)} M c."))

@@ -38,14 +38,15 @@ def _w(a: FrameForces, b: FrameForces) -> float:
 
 
 def question_starts(r: ForcesReading, a: FrameForces, b: FrameForces) -> Asked:
-    """Where the forces start in a (given), when in b (Lorentz); at one instant of b? Which first?"""
+    """Where each force starts in a (given), when in b (Lorentz); at one instant of b? Which first? (One force: when
+    it starts in b.)"""
     w = _w(a, b)
     g = gamma(w)
     xa, ta = coordinates(a.frame)
     _, tb = coordinates(b.frame)
     A, B = frame_name(a.frame), frame_name(b.frame)
     sign, W = ("+" if w < 0 else MINUS), answer_numeral(abs(w))
-    starts = [a.when(end, "start") for end in ("left", "right")]
+    starts = [a.when(end, "start") for end in a.ends]
     stated = "; ".join(f"the {m.end} force starts at {xa} = {in_l(m.x, ANSWER_DIGITS)}, {ta} = "
                        f"{in_l(m.t, ANSWER_DIGITS)}" for m in starts)
     steps = [f"{capitalised(B)} moves at w = {in_c(w, ANSWER_DIGITS)} relative to {A}, so {tb} = γ({ta} − w {xa}) "
@@ -56,20 +57,27 @@ def question_starts(r: ForcesReading, a: FrameForces, b: FrameForces) -> Asked:
         times.append(g * inner)
         steps.append(f"The {m.end} force: {tb} = {answer_numeral(g)} × ({answer_numeral(m.t)} {sign} {W} × "
                      f"{bracketed(m.x)}) L = {in_l_approx(g * inner)}.")
+    asks = [told_number(f"the {m.end} force's start in {B}", t) for m, t in zip(starts, times)]
+    if len(starts) == 1:
+        return Asked(f"In {A}, {stated}. {capitalised(B)} moves at {in_c(w, ANSWER_DIGITS)} relative to {A}. Use the "
+                     f"Lorentz transformation to find when it starts in {B}.", tuple(steps), tuple(asks))
     gap = abs(times[1] - times[0])
-    first = "left" if times[0] < times[1] else "right"
-    other = "right" if first == "left" else "left"
-    steps.append(f"So in {B} the {first} force starts first, {in_l_approx(gap)} before the {other} one, though in "
-                 f"{A} they start together: the forces that balance at every instant of {A} act at different "
-                 f"instants of {B}.")
-    asks = (told_number(f"the left force's start in {B}", times[0]),
-            told_number(f"the right force's start in {B}", times[1]),
-            told_number(f"the gap between the starts in {B}", gap),
-            told_claim(f"the {first} force first in {B}", f"the {first} force starts first", f"{first} force acts from",
-                       f"the {first} force acts first"))
+    if gap <= 1e-9 * (1.0 + abs(times[0])):
+        steps.append(f"So in {B} the two forces start at the same instant.")
+        asks.append(told_claim(f"the forces start together in {B}", "start at the same instant"))
+    else:
+        first = "left" if times[0] < times[1] else "right"
+        other = "right" if first == "left" else "left"
+        together = a.together("start")
+        steps.append(f"So in {B} the {first} force starts first, {in_l_approx(gap)} before the {other} one"
+                     + (f", though in {A} they start together: the forces that balance at every instant of {A} act "
+                        f"at different instants of {B}." if together else "."))
+        asks += [told_number(f"the gap between the starts in {B}", gap),
+                 told_claim(f"the {first} force first in {B}", f"the {first} force starts first",
+                            f"{first} force acts from", f"the {first} force acts first")]
     return Asked(f"In {A}, {stated}. {capitalised(B)} moves at {in_c(w, ANSWER_DIGITS)} relative to {A}. Use the "
                  f"Lorentz transformation to find {tb} of each start. Do the forces start at the same instant of "
-                 f"{B}? If not, which starts first, and how much earlier?", tuple(steps), asks)
+                 f"{B}? If not, which starts first, and how much earlier?", tuple(steps), tuple(asks))
 
 
 def question_momentum(r: ForcesReading, a: FrameForces, b: FrameForces) -> Asked:
@@ -127,40 +135,41 @@ def push_questions(r: ForcesReading, a: FrameForces, b: FrameForces) -> list[Ask
     (end, profile), = driving.profiles()
     events = {e.moment: e for e in driving.force_events() if e.end == end}
     start, stop = events["start"], events["end"]
-    F = start.force
+    F = start.force  # units of M c²/L
     L = r.history.scenario.L
     dt = (stop.event.t - start.event.t) / L
-    a_ = F  # proper acceleration F/M, units of c²/L (M = 1, F in M c²/L)
+    a_ = abs(F)  # the proper acceleration's size |F|/M, units of c²/L (M = 1, F in M c²/L)
     u = math.tanh(stop.rapidity)
     dx = abs(stop.event.x - start.event.x) / L
     tau = stop.rapidity / a_
+    kind = "push" if F > 0 else "pull"
     first = Asked(
-        f"The agent pushes the {end} end with a constant force F = {answer_numeral(F)} M c²/L, from t = "
-        f"{in_l(start.event.t / L)} to t = {in_l(stop.event.t / L)} in S. A rigid rod's pushed end, with nothing at "
-        f"the other end, has proper acceleration F/M. How fast does that end move in S when the push ends, and how "
-        f"far has it gone?",
-        (f"Constant proper acceleration a = F/M = {answer_numeral(a_)} c²/L from rest is hyperbolic motion: the "
+        f"The agent {kind}s the {end} end with a constant force F = {answer_numeral(F)} M c²/L, from t = "
+        f"{in_l(start.event.t / L)} to t = {in_l(stop.event.t / L)} in S. A rigid rod's end driven so, with nothing "
+        f"at the other end, has a proper acceleration of size |F|/M. How fast does that end move in S when the {kind} ends, and "
+        f"how far has it gone?",
+        (f"Constant proper acceleration a = |F|/M = {answer_numeral(a_)} c²/L from rest is hyperbolic motion: the "
          f"velocity after a time Δt of S is u = aΔt/√(1 + (aΔt)²), the distance (√(1 + (aΔt)²) − 1)/a.",
          f"With Δt = {in_l(dt)}: aΔt = {answer_numeral(a_ * dt)}, so u = {in_c_approx(u)} and the end has gone "
          f"{in_l_approx(dx)}."),
         (told_number("the pushed end's velocity when the push ends, in S", u),
          told_number("the pushed end's distance", dx)))
     second = Asked(
-        f"How long does the push last in the pushed end's own time (its proper time)?",
+        f"How long does the {kind} last in the driven end's own time (its proper time)?",
         (f"On the hyperbola the rapidity grows as aτ, and sinh(aτ) = aΔt: τ = asinh(aΔt)/a = "
          f"asinh({answer_numeral(a_ * dt)})/{answer_numeral(a_)} L = {in_l_approx(tau)}, less than the "
          f"{in_l(dt)} of S.",),
         (told_number("the push's proper duration", tau),))
-    w = _w(a, b)
+    b = next(f for f in r.frames if f.frame.name != "rest")  # the events above are S's
+    w = math.tanh(b.frame.rapidity)
     g = gamma(w)
-    xa, ta = coordinates(a.frame)
     tb = coordinates(b.frame)[1]
     B = frame_name(b.frame)
     t_end = g * (stop.event.t - w * stop.event.x) / L
     third = Asked(
-        f"When does the push end in {B}, which moves at {in_c(w, ANSWER_DIGITS)} relative to S?",
-        (f"The push ends at the event x = {in_l(stop.event.x / L, ANSWER_DIGITS)}, t = "
-         f"{in_l(stop.event.t / L, ANSWER_DIGITS)} of S (the answer before). {tb} = γ(t − w x) with γ = "
+        f"When does the {kind} end in {B}, which moves at {in_c(w, ANSWER_DIGITS)} relative to S?",
+        (f"The {kind} ends at the event x = {in_l(stop.event.x / L, ANSWER_DIGITS)}, t = "
+         f"{in_l(stop.event.t / L, ANSWER_DIGITS)} of S (found above). {tb} = γ(t − w x) with γ = "
          f"{answer_numeral(g)}: {tb} = {in_l_approx(t_end)}.",),
         (told_number(f"the push's end in {B}", t_end),))
     return [first, second, third]
@@ -169,15 +178,19 @@ def push_questions(r: ForcesReading, a: FrameForces, b: FrameForces) -> list[Ask
 def force_questions(r: ForcesReading, chosen: Sequence[int] | None = None) -> tuple[Question, ...]:
     """The questions on the rigid rod's reading `r`, numbered from 1 (`chosen`: the teacher's choice)."""
     a, b = timed_frame(r)
+    profiles = dict(r.history.driving.profiles())
     if len(r.areas) == 2:
-        asked = [question_starts(r, a, b)] if a.together("start") else []
+        asked = [question_starts(r, a, b)]
         balanced = a.together("start") and a.together("end") and abs(r.areas[0][1] - r.areas[1][1]) < 1e-12
         if balanced and abs(b.key.stress.p) > 1e-9 and abs(b.key.moving.p - b.initial.p) < 1e-9:
             asked.append(question_momentum(r, a, b))  # Sears's question: the rod's motion unchanged, yet ...
         if abs(b.key.v_E - b.key.p_over_E) > 1e-6:
             asked.append(question_centre(r, b))
-    else:
+    elif next(iter(profiles.values())).shape == "step":  # one constant force: hyperbolic motion
         asked = push_questions(r, a, b)
+    else:
+        asked = [question_starts(r, a, b)] + ([question_centre(r, b)] if abs(b.key.v_E - b.key.p_over_E) > 1e-6
+                                              else [])
     if chosen is not None:
         asked = [asked[k - 1] for k in chosen if 1 <= k <= len(asked)]
     return tuple(Question(k + 1, q.text, q.answer, q.asks) for k, q in enumerate(asked))

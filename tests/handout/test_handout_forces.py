@@ -155,7 +155,7 @@ def test_push_rigid_hyperbolic_motion_and_causal_staircase(push, push_sheet):
     u = a * (t1 - t0) / math.sqrt(1 + (a * (t1 - t0)) ** 2)
     dx = (math.sqrt(1 + (a * (t1 - t0)) ** 2) - 1) / a
     words = text_of(push)
-    assert f"constant proper acceleration, {a:g} c²/L = F/M" in words
+    assert f"constant proper acceleration, {a:g} c²/L = |F|/M" in words
     assert f"it moves at +{u:.4f} c and has gone {dx:.4g} L" in words
     kappa = math.log(1 + 2 * F)  # ρ₀ = M/L = 1
     first = F / (1 + F)
@@ -223,3 +223,65 @@ def test_sears_moving_the_rigid_rod_moves_though_the_forces_balance_in_s_prime()
     assert "Nothing moves" not in words and "Yet the rod moves" in words
     table = next(t for t in tables(doc, "Where the momentum is in frame S′"))
     assert max(abs(number(row[3].text) - 0.75) for row in table.rows) > 1e-3
+
+
+# --- scenarios no preset has ---------------------------------------------------------------------------------------
+
+#: (name, v, L, forces): two unlike forces timed in S′ and in the frame u = 0.3; a sine² pull alone; a constant pull
+#: alone on a rod of L = 2 (its times and lengths in units of L)
+GENERATED = [
+    ("gen_two", 0.47, 1.0, "left: {shape: points, points: [[0.2, 0], [0.6, 0.3], [1.4, 0.1], [1.8, 0]], frame: moving}\n"
+                           "  right: {shape: step, peak: 0.15, start: 0.4, duration: 0.8, frame: 0.3}"),
+    ("gen_pull", 0.8, 1.0, "right: {shape: sine2, peak: -0.3, start: 0.3, duration: 1.2}"),
+    ("gen_step", 0.35, 2.0, "right: {shape: step, peak: -0.2, start: 0.25, duration: 2.5}"),
+]
+AREAS = {"gen_two": {"left": 0.5 * 0.4 * 0.3 + 0.8 * 0.2 + 0.5 * 0.4 * 0.1, "right": 0.15 * 0.8},
+         "gen_pull": {"right": -0.3 * 1.2 / 2}, "gen_step": {"right": -0.2 * 2.5}}
+
+
+@functools.lru_cache(maxsize=None)
+def generated(name: str):
+    from rodparadox.io.scenario import parse
+
+    _, v, L, forces = next(g for g in GENERATED if g[0] == name)
+    scenario = parse(f"name: {name}\nv: {v}\nL: {L}\nforces:\n  {forces}\n", f"{name}.yaml", name)
+    rigid, = run_rods(scenario, "rigid")
+    return rigid, build([(name, rigid)]), build([(name, rigid)], worksheet=True)
+
+
+@pytest.mark.parametrize("name", [g[0] for g in GENERATED])
+def test_a_generated_scenario_s_handout_adds_up_and_its_worksheet_tells_nothing(name):
+    from test_worksheet_tells_nothing import _latex_of, _questions, found_leaks, model_text
+
+    rigid, doc, sheet = generated(name)
+    words = text_of(doc)
+    for end, area in AREAS[name].items():  # delivered in its own frame = the profile's area (right: −area)
+        said = re.search(rf"the {end} agent delivers ([+−][\d./]+) M c", words).group(1)
+        value = number(said) if "/" not in said else float(said[1:].split("/")[0]) / float(said.split("/")[1])
+        sign = -1.0 if said.startswith("−") else 1.0
+        value = sign * abs(value)
+        assert value == pytest.approx(area if end == "left" else -area, rel=1e-3), (end, said, area)
+    for table in tables(doc, "Where the momentum is"):
+        initial = number(table.rows[0][5].text) - number(table.rows[0][1].text) - number(table.rows[0][2].text)
+        for row in table.rows:
+            left, right, moving, stress, total = (number(c.text) for c in row[1:6])
+            assert total == pytest.approx(initial + left + right, abs=2e-4) == pytest.approx(moving + stress, abs=2e-4)
+    section = sheet.sections[1]
+    assert _questions(section)
+    found = found_leaks(section, [("model", model_text(section)), ("latex", _latex_of(sheet)[1])])
+    assert not found, found
+
+
+def test_a_constant_pull_on_a_longer_rod_is_hyperbolic_in_units_of_l():
+    """gen_step: F = −0.2 M c²/L on the right end of a rod of L = 2 for 2.5 L: proper acceleration |F|/M in c²/L,
+    u = aΔt/√(1 + (aΔt)²), distance (√(1 + (aΔt)²) − 1)/a in units of L."""
+    _, doc, sheet = generated("gen_step")
+    a, dt = 0.2, 2.5
+    u = a * dt / math.sqrt(1 + (a * dt) ** 2)
+    dx = (math.sqrt(1 + (a * dt) ** 2) - 1) / a
+    words = text_of(doc)
+    assert f"constant proper acceleration, {a:g} c²/L = |F|/M" in words
+    assert f"it moves at +{u:.4f} c and has gone {dx:.4g} L" in words  # a pull on the right end: to the right
+    asks = {f.what: f for q in sheet.sections[1].blocks if isinstance(q, Question) for f in q.asks}
+    assert f"{u:.4f}" in asks["the pushed end's velocity when the push ends, in S"].forms
+    assert f"{math.asinh(a * dt) / a:.4f}" in asks["the push's proper duration"].forms
