@@ -127,10 +127,21 @@ WORKSHEET_PARADOX = (
     f"resolution of {FRANKLIN}.")
 
 
-def worksheet_introduction() -> Section:
+#: where a document has rods driven by forces: Sears's own statement (forces that act for a while, not impulses), and
+#: in a handout what its sections show (a worksheet's says only the first: where the momentum is, is asked)
+FORCES_INTRO = ("Sears's own statement has forces that act for a while at the two ends, not impulses; the "
+                "scenarios below with forces apply such forces, given as functions of time.")
+FORCES_RESOLUTION = (" While they act at different instants of S′, the momentum they deliver changes, yet the "
+                     "rigid rod’s velocity does not: those sections follow the momentum slice by slice, into the "
+                     "rod’s stress, which carries momentum when the rod moves (von Laue).")
+
+
+def worksheet_introduction(forces: bool = False) -> Section:
     """A worksheet's first section: the paradox as a question; the whole introduction opens the answer key (its
-    resolution tells what the questions ask: the impulses act at different instants of S′)."""
-    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
+    resolution tells what the questions ask: the impulses act at different instants of S′). `forces`: some scenario
+    is driven by forces (Sears's own statement said, not where the momentum goes)."""
+    extra = (Paragraph(FORCES_INTRO.replace("'", "’")),) if forces else ()
+    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX), *extra))
 
 
 def far_end_and_light(histories: Sequence[RodHistory]) -> tuple[RodHistory, Impact, str, float, float] | None:
@@ -164,8 +175,10 @@ def introduction(histories: Sequence[RodHistory] = ()) -> Section:
                          f"{impact.end} end at t = {in_l(moves)} in S, and the {far} end starts to move at that same "
                          f"instant of S, while light from {impact_name(impact.label)} reaches it only at t = "
                          f"{in_l(light)}.")
+    forces = (Paragraph(FORCES_INTRO.replace("'", "\u2019") + FORCES_RESOLUTION),) \
+        if any(h.driving is not None for h in histories) else ()
     return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
-                                                   Paragraph(RESOLUTION), Paragraph(idealisation)))
+                                                   Paragraph(RESOLUTION), Paragraph(idealisation), *forces))
 
 
 #: the parts of a handout a teacher may choose (`build`'s `sections`), in the order they come: the paradox and its
@@ -382,7 +395,8 @@ def build(items: Sequence[Item | tuple], frames: Sequence[Frame] | None = None, 
             shown_frames = tuple(moving_frame(item.history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append(replace(item, frames=shown_frames))
     first = introduction([e.history for e in entries])
-    opening = [worksheet_introduction() if worksheet else first] if "paradox" in parts else []
+    driven = any(e.history.driving is not None for e in entries)
+    opening = [worksheet_introduction(driven) if worksheet else first] if "paradox" in parts else []
     key: list[Block] = []
     several_speeds = len({_speed(e.history) for e in entries}) > 1
     body = []

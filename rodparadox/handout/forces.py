@@ -14,6 +14,7 @@ a turn) are left out.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, replace
 from typing import Sequence
@@ -157,7 +158,13 @@ def slice_times(history, frame: Frame, moments: Sequence[Moment]) -> tuple[float
 
 
 def read(history, frames: Sequence[Frame]) -> ForcesReading:
-    """The reading of `history` (driven: `history.driving` not None) in each frame."""
+    """The reading of `history` (driven: `history.driving` not None) in each frame (read once per history and
+    frames: a worksheet and its key, a handout of the same run, read the same slices)."""
+    return _read(history, tuple(frames))
+
+
+@functools.lru_cache(maxsize=16)
+def _read(history, frames: tuple[Frame, ...]) -> ForcesReading:
     driving = history.driving
     seen = []
     for frame in frames:
@@ -168,8 +175,9 @@ def read(history, frames: Sequence[Frame]) -> ForcesReading:
         times = tuple(t * L for t in slice_times(history, frame, moments))
         # the key slice: halfway between two of the forces' moments (never at one: a worksheet asks those instants),
         # where the stress holds the most momentum
-        halves = [_momenta(history, frame, 0.5 * (a + b)) for a, b in zip(times[:-2], times[1:-1])]
-        key = max(halves, key=lambda s: abs(s.stress.p)) if halves else None
+        halves = [0.5 * (a + b) for a, b in zip(times[:-2], times[1:-1])]
+        key = _momenta(history, frame, max(halves, key=lambda t: abs(history.rod_parts(frame.rapidity, t)[1].p))) \
+            if halves else None
         slices = tuple(sorted([_momenta(history, frame, t) for t in times] + ([key] if key else []),
                               key=lambda s: s.t))
         seen.append(FrameForces(frame, moments, slices, key or slices[-1], slices[0].rod))

@@ -249,7 +249,8 @@ def generated(name: str):
     return rigid, build([(name, rigid)]), build([(name, rigid)], worksheet=True)
 
 
-@pytest.mark.parametrize("name", [g[0] for g in GENERATED])
+@pytest.mark.parametrize("name", [pytest.param(g[0], marks=pytest.mark.slow) if g[0] == "gen_two" else g[0]
+                                  for g in GENERATED])  # gen_two's 16 slices cost 2 s: in the full run
 def test_a_generated_scenario_s_handout_adds_up_and_its_worksheet_tells_nothing(name):
     from test_worksheet_tells_nothing import _latex_of, _questions, found_leaks, model_text
 
@@ -285,3 +286,21 @@ def test_a_constant_pull_on_a_longer_rod_is_hyperbolic_in_units_of_l():
     asks = {f.what: f for q in sheet.sections[1].blocks if isinstance(q, Question) for f in q.asks}
     assert f"{u:.4f}" in asks["the pushed end's velocity when the push ends, in S"].forms
     assert f"{math.asinh(a * dt) / a:.4f}" in asks["the push's proper duration"].forms
+
+
+@pytest.mark.parametrize("name", ["sears", pytest.param("sears_moving", marks=pytest.mark.slow), "push"])
+def test_the_pages_are_set_like_a_book(name):
+    """Both rods' handout and worksheet at 0.6 on A4, read from the page plan (no drawing), under the rules of
+    `test_page_rules`: headings and introductions with what follows, short tables whole, no page more than a quarter
+    empty but a section's last, nor a third but the last before the key."""
+    import test_page_rules as rules
+    from rodparadox.handout.pdf import page_plan
+
+    rigid, causal = rods(name)
+    plans = [(f"{name} {kind}", doc, page_plan(doc, "a4"))
+             for kind, doc in (("handout", build([(name, rigid, None, causal)])),
+                               ("worksheet", build([(name, rigid, None, causal)], worksheet=True)))]
+    rules.test_no_heading_or_introduction_is_left_apart_from_what_follows_it(plans)
+    rules.test_a_short_table_is_whole_and_on_its_introduction_s_page(plans)
+    rules.test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans)
+    rules.test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans)
