@@ -11,7 +11,7 @@ from rodparadox.io.scenario import load
 from rodparadox.physics.models import run_rod
 
 
-@pytest.mark.parametrize("command", ["handout", "html"])
+@pytest.mark.parametrize("command", ["html"])  # handout shows forces (tests/handout/test_handout_forces.py)
 @pytest.mark.parametrize("name", ["sears", "sears_moving", "push"])
 def test_commands_that_cannot_show_forces_yet_refuse_them_in_one_sentence(command, name, tmp_path):
     message = error_of(command, name, "-o", tmp_path)
