@@ -348,36 +348,37 @@ def delivered_text(r: ForcesReading) -> str:
 
 
 def sears_case(r: ForcesReading) -> bool:
-    """Sears's case: two equal forces, timed in one frame, acting at the same instants of it."""
+    """Sears's case: two equal forces, timed in the rod's rest frame S, acting at the same instants of it."""
     profiles = [p for _, p in r.history.driving.profiles()]
-    return (len(profiles) == 2 and profiles[0] == profiles[1]
+    return (len(profiles) == 2 and profiles[0] == profiles[1] and profiles[0].frame == "rest"  # the rod's own frame
             and all(f.together("start") and f.together("end") for f in r.frames
                     if f.frame.name == profiles[0].frame or (not isinstance(profiles[0].frame, str)
                                                              and abs(f.frame.velocity - profiles[0].frame) < 1e-12)))
 
 
 def balance_text(r: ForcesReading, f: FrameForces) -> str:
-    """The frame where the forces are simultaneous: what delivered and the rod hold at the key slice."""
+    """The frame where the forces are simultaneous: what was delivered when they peak, and what the rod does."""
     name, t = frame_name(f.frame), time_name(f.frame)
     peak = next((s for s in f.slices if abs(s.t - f.when("left", "peak").t) <= 1e-9 * (1 + abs(s.t))), f.key)
     moving = "matter" if r.fronts else "kinetic"
     text = (f"The {_model(r)} in {name}: at {t} = {in_l(peak.t)}, when both forces peak, the left agent has delivered "
             f"{signed(peak.left.p)} M c and the right {signed(peak.right.p)} M c, together {signed(peak.delivered)} "
-            f"M c; the rod's {moving} part is {signed(peak.moving.p)} M c and its stress "
-            f"part {signed(peak.stress.p)} M c.")
-    if r.fronts:
-        text += (f" The rod is squeezed from both ends at once: its ends move in, but the two halves move "
-                 f"oppositely and its momentum stays {signed(peak.rod.p)} M c; the work done on it, "
-                 f"{signed(peak.left.E + peak.right.E)} M c² by then, is stored as its energy.")
-    elif all(abs(x.moving.p - f.initial.p) < 1e-9 for x in f.slices):
-        text += " Nothing moves: the balanced forces only stress the rod, the same all along it."
-    else:  # balanced in this frame, not in the rod's own: the rigid rod moves (sears_moving seen from S′)
-        k = max(f.slices, key=lambda x: abs(x.moving.p - f.initial.p))
-        text += (f" Yet the rod moves: the forces balance at every instant of {name}, not at every instant of the "
-                 f"rod's own time, so at {t} = {in_l(k.t)} its {moving} part is {signed(k.moving.p)} M c and its "
-                 f"stress part {signed(k.stress.p)} M c: together {signed(k.rod.p)} M c, its momentum before the forces "
-                 f"plus what the agents have delivered.")
-    return text
+            f"M c.")
+    still = all(abs(x.moving.p - f.initial.p) < 1e-9 for x in f.slices)
+    if not r.fronts and still:
+        return text + (f" Nothing moves: the balanced forces only stress the rod, the same all along it; its "
+                       f"{moving} part stays {signed(peak.moving.p)} M c and its stress part {signed(peak.stress.p)} "
+                       f"M c.")
+    if r.fronts and abs(f.initial.p) < 1e-12:  # squeezed from both ends at once in its own rest frame
+        return text + (f" The rod is squeezed from both ends at once: its ends move in, its two halves oppositely, "
+                       f"and its momentum stays {signed(peak.rod.p)} M c; the work done on it, "
+                       f"{signed(peak.left.E + peak.right.E)} M c² by then, is stored as its energy.")
+    # balanced in this frame, not in the rod's own time: the rod moves (sears_moving seen from S′)
+    k = max(f.slices, key=lambda x: abs(x.moving.p - f.initial.p))
+    return text + (f" Yet the rod moves: the forces balance at every instant of {name}, not at every instant of the "
+                   f"rod's own time, so at {t} = {in_l(k.t)} its {moving} part is {signed(k.moving.p)} M c and its "
+                   f"stress part {signed(k.stress.p)} M c: together {signed(k.rod.p)} M c, its momentum before the "
+                   f"forces plus what the agents have delivered.")
 
 
 def shift_text(r: ForcesReading, f: FrameForces) -> str:

@@ -113,6 +113,24 @@ def question_momentum(r: ForcesReading, a: FrameForces, b: FrameForces) -> Asked
                  tuple(steps), asks)
 
 
+def question_balanced_moves(r: ForcesReading, a: FrameForces) -> Asked:
+    """Forces balanced at every instant of a frame that is not the rod's rest frame: the rigid rod still moves."""
+    A, ta = frame_name(a.frame), coordinates(a.frame)[1]
+    k = max(a.slices, key=lambda x: abs(x.moving.p - a.initial.p))
+    steps = [f"Yes. A rigid rod obeys the forces on its own lines of simultaneity, those of the frame it rests in "
+             f"(S before the forces), not those of {A}: the forces that are equal at every instant of {A} are not "
+             f"equal at every instant of the rod's own time, so the rod turns and moves while they act.",
+             f"At {ta} = {in_l(k.t, ANSWER_DIGITS)} its kinetic part is {signed(k.moving.p, ANSWER_DIGITS)} M c, "
+             f"against {signed(a.initial.p, ANSWER_DIGITS)} M c before the forces, and its stress holds the rest, "
+             f"{signed(k.stress.p, ANSWER_DIGITS)} M c: together what it held before, since in {A} the two agents "
+             f"have delivered equal and opposite momenta by every instant. After both forces it moves as before."]
+    return Asked(f"In {A} the two forces are equal and opposite at every instant. Does the rigid rod's velocity "
+                 f"change while they act? Explain with the rod's own lines of simultaneity.", tuple(steps),
+                 (told_number(f"the kinetic part at {ta} = {k.t}", k.moving.p),
+                  told_number(f"the stress part at {ta} = {k.t}", k.stress.p),
+                  told_claim("the rod moves though balanced", "Yet the rod moves", "the rod turns and moves")))
+
+
 def question_centre(r: ForcesReading, b: FrameForces) -> Asked:
     k = b.key
     tb = coordinates(b.frame)[1]
@@ -184,6 +202,8 @@ def force_questions(r: ForcesReading, chosen: Sequence[int] | None = None) -> tu
         balanced = a.together("start") and a.together("end") and abs(r.areas[0][1] - r.areas[1][1]) < 1e-12
         if balanced and abs(b.key.stress.p) > 1e-9 and abs(b.key.moving.p - b.initial.p) < 1e-9:
             asked.append(question_momentum(r, a, b))  # Sears's question: the rod's motion unchanged, yet ...
+        elif balanced and any(abs(x.moving.p - a.initial.p) > 1e-6 for x in a.slices):
+            asked.append(question_balanced_moves(r, a))  # balanced in S′, not in the rod's own time
         if abs(b.key.v_E - b.key.p_over_E) > 1e-6:
             asked.append(question_centre(r, b))
     elif next(iter(profiles.values())).shape == "step":  # one constant force: hyperbolic motion
