@@ -1,188 +1,38 @@
 """A handout's section on a rod driven by forces at its ends (docs/model.md, "Forces at the ends"): Sears's own
 paradox. Pure text and tables, no drawing.
 
-`read` reads a driven history once (`ForcesReading`): each force's start, peak and end in each frame shown, where
-and when, with the end's velocity; on chosen slices of each frame the momentum each agent has delivered, the rod's
-kinetic (rigid) or matter (causal) part, its stress part, its total, p/E and the velocity of its centre of energy.
-`section_blocks` turns it into the section's blocks: the set-up, the diagram, what it shows, the forces' tables and
-"Sears's own paradox" (where the momentum is while the forces act at different instants: in the stress, von
-Laue's point), both rods side by side where the causal rod is given; for one push, the rigid rod's hyperbolic
-motion against the causal rod's staircase. Every number is read from the histories; the sentences say nothing a
-history does not show. Sections that have no meaning for forces (impacts, particles' starts, the rod's own view of
-a turn) are left out.
+`forces_reading.read` reads a driven history once; `section_blocks` (a handout's) and `worksheet_blocks` (a
+worksheet's and its key's, the questions from `worksheet_forces`) turn it into the section's blocks: the set-up,
+the diagram, what it shows, "Sears's own paradox" (where the momentum is while the forces act at different
+instants: in the stress, von Laue's point; for one constant push, the rigid rod's hyperbola against the causal
+rod's steps), the forces' tables and the momentum slice by slice, both rods side by side where the causal rod is
+given. Every number is read from the histories; the sentences say nothing a history does not show. What has no
+meaning for forces (impacts, particles' starts, the strips, the rod's own view) is left out.
 """
 
 from __future__ import annotations
 
-import functools
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Sequence
 
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Heading, Paragraph, Table
+from rodparadox.handout.forces_reading import (ZERO, ForcesReading, FrameForces, Moment, far_start, read, signed,
+                                               staircase, zero)
+from rodparadox.handout.narrative import frame_described
 from rodparadox.handout.words import in_c, in_l, listed, numeral, time_name
-from rodparadox.io.export_forces import force_rows
-from rodparadox.numbers import MINUS, coordinate_format, exact, shown, velocity_format
-from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word, time_window
-from rodparadox.physics.types import EnergyMomentum
+from rodparadox.handout.worksheet_forces import force_questions, timed_frame
+from rodparadox.numbers import MINUS, coordinate_format, exact, velocity_format
+from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word
 from rodparadox.tables.build import coordinates, with_fraction
 from rodparadox.tables.comparison import force_text
-from rodparadox.tables.forces_ledger import slice_row
 
 #: how a force's moments are named in a table and in the sentences
 MOMENTS = {"start": "on", "peak": "peak", "end": "off"}
-#: momenta below this (units of M c) are rounding: printed as 0, never as "the rod moves"
-ZERO = 1e-9
 #: the title of the section that explains where the momentum is (the typographic apostrophe, as the headings set it)
 PARADOX_TITLE = "Sears\u2019s own paradox"
 #: the title of the same section for a rod pushed at one end only
 PUSH_TITLE = "One end pushed: where the momentum goes"
-
-
-def _zero(x: float) -> float:
-    return 0.0 if abs(x) < ZERO else x + 0.0
-
-
-def signed(x: float, digits: int = 4) -> str:
-    """+0.1250, −0.03831, 0: a momentum with its sign, `digits` significant digits (a fraction where one fits)."""
-    x = _zero(x)
-    if x == 0.0:
-        return "0"
-    text = numeral(x, digits)
-    return text if text.startswith(MINUS) else "+" + text
-
-
-# --- the reading -----------------------------------------------------------------------------------------------
-
-@dataclass(frozen=True)
-class Moment:
-    """A force's start, peak or end seen from a frame: its end, where and when (units of L), the force (M c²/L) and
-    the end's velocity there."""
-
-    end: str
-    moment: str
-    x: float
-    t: float
-    force: float
-    velocity: float
-
-
-@dataclass(frozen=True)
-class Momenta:
-    """One slice t of a frame: the momentum (and energy) each agent delivered up to it, the rod's kinetic (matter)
-    part and its stress part, their sum, p/E and the centre of energy's velocity."""
-
-    t: float
-    left: EnergyMomentum
-    right: EnergyMomentum
-    moving: EnergyMomentum
-    stress: EnergyMomentum
-    rod: EnergyMomentum
-    p_over_E: float
-    v_E: float
-
-    @property
-    def delivered(self) -> float:
-        return self.left.p + self.right.p
-
-
-@dataclass(frozen=True)
-class FrameForces:
-    """A frame's view of the forces: their moments in its time order, the slices its table prints, and the key
-    slice (where the stress holds most momentum)."""
-
-    frame: Frame
-    moments: tuple[Moment, ...]
-    slices: tuple[Momenta, ...]
-    key: Momenta
-    initial: EnergyMomentum
-
-    def when(self, end: str, moment: str) -> Moment:
-        return next(m for m in self.moments if m.end == end and m.moment == moment)
-
-    @property
-    def ends(self) -> tuple[str, ...]:
-        return tuple(dict.fromkeys(m.end for m in self.moments))
-
-    def together(self, moment: str) -> bool:
-        """Both forces' `moment` at one instant of the frame (False with one force)."""
-        if len(self.ends) < 2:
-            return False
-        a, b = (self.when(end, moment).t for end in ("left", "right"))
-        return abs(a - b) <= 1e-9 * (1.0 + abs(a) + abs(b))
-
-    @property
-    def first(self) -> str | None:
-        """The end whose force starts first in this frame (None: both at once, or one force)."""
-        if len(self.ends) < 2 or self.together("start"):
-            return None
-        return min(("left", "right"), key=lambda end: self.when(end, "start").t)
-
-
-@dataclass(frozen=True)
-class ForcesReading:
-    """A driven history read once for the text: the model's name as the text says it, the velocity after the
-    forces in S, each profile's area (the momentum it delivers in its own frame), and each frame's forces."""
-
-    history: object
-    frames: tuple[FrameForces, ...]
-    final_velocity: float
-    areas: tuple[tuple[str, float], ...]
-
-    @property
-    def fronts(self) -> bool:
-        """The rod carries its stress as fronts at c (the causal rod): its moving part is 'matter'."""
-        return self.history.fronts is not None
-
-    def frame(self, name: str) -> FrameForces:
-        return next(f for f in self.frames if f.frame.name == name)
-
-
-def _momenta(history, frame: Frame, t: float) -> Momenta:
-    """The slice t of the frame (t in the scenario's unit of length; the `Momenta` holds it in units of L)."""
-    row = slice_row(history, frame, t)
-    left, right, moving, stress, rod, _ = row["parts"].values()
-    return Momenta(t / history.scenario.L, left, right, moving, stress, rod, row["p_over_E"], row["v_E"])
-
-
-def slice_times(history, frame: Frame, moments: Sequence[Moment]) -> tuple[float, ...]:
-    """The slices a frame's table prints: each force's start, peak and end (one row per instant; at the first start
-    nothing is delivered yet), and after the last, halfway to the window's end."""
-    hi = time_window(history, frame)[1] / history.scenario.L
-    times = sorted({m.t for m in moments})
-    out: list[float] = []
-    for t in times:
-        if not out or t - out[-1] > 1e-9 * (1.0 + abs(t)):
-            out.append(t)
-    return (*out, out[-1] + 0.5 * (hi - out[-1]))
-
-
-def read(history, frames: Sequence[Frame]) -> ForcesReading:
-    """The reading of `history` (driven: `history.driving` not None) in each frame (read once per history and
-    frames: a worksheet and its key, a handout of the same run, read the same slices)."""
-    return _read(history, tuple(frames))
-
-
-@functools.lru_cache(maxsize=16)
-def _read(history, frames: tuple[Frame, ...]) -> ForcesReading:
-    driving = history.driving
-    seen = []
-    for frame in frames:
-        rows = force_rows(history, frame)
-        L = history.scenario.L
-        moments = tuple(Moment(r["end"], r["moment"], r["x"] / L, r["t"] / L, r["force"], r["end_velocity"])
-                        for r in rows)
-        times = tuple(t * L for t in slice_times(history, frame, moments))
-        # the key slice: halfway between two of the forces' moments (never at one: a worksheet asks those instants),
-        # where the stress holds the most momentum
-        halves = [0.5 * (a + b) for a, b in zip(times[:-2], times[1:-1])]
-        key = _momenta(history, frame, max(halves, key=lambda t: abs(history.rod_parts(frame.rapidity, t)[1].p))) \
-            if halves else None
-        slices = tuple(sorted([_momenta(history, frame, t) for t in times] + ([key] if key else []),
-                              key=lambda s: s.t))
-        seen.append(FrameForces(frame, moments, slices, key or slices[-1], slices[0].rod))
-    areas = tuple((end, p.area()) for end, p in driving.profiles())
-    return ForcesReading(history, tuple(seen), math.tanh(history.final_rapidity), areas)
 
 
 # --- the set-up and the diagram's caption ------------------------------------------------------------------------
@@ -214,11 +64,10 @@ def setup_text(history) -> str:
 def diagram_caption(history, frames: Sequence[Frame], tell: bool = True) -> str:
     """Which panel is which frame and how the forces are drawn; with `tell`, the lines of simultaneity through each
     force's start and end (a worksheet leaves them out: which force starts first is asked)."""
-    from rodparadox.handout.narrative import _frame_described
     from rodparadox.physics.frames import PANEL_LETTERS
 
     s = history.scenario
-    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {_frame_described(f, s.v)}" for k, f in enumerate(frames))
+    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {frame_described(f, s.v)}" for k, f in enumerate(frames))
     sentences = [f"At v = {exact(s.v)}: {panels}.",
                  "Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  "its shaded world-sheet.",
@@ -258,7 +107,7 @@ def velocity_text(r: ForcesReading) -> str:
     said = []
     for f in r.frames:
         after = f.slices[-1]
-        said.append(f"{in_c(_zero(after.rod.p / after.rod.E)) if after.rod.p else '0'} in {frame_name(f.frame)}")
+        said.append(f"{in_c(zero(after.rod.p / after.rod.E)) if after.rod.p else '0'} in {frame_name(f.frame)}")
     before = [f"{in_c(f.initial.p / f.initial.E) if abs(f.initial.p) > ZERO else '0'} in {frame_name(f.frame)}"
               for f in r.frames]
     return (f"Before the forces the rod moves at {listed(before)}; after them, at {listed(said)}"
@@ -285,7 +134,7 @@ def events_table(r: ForcesReading, f: FrameForces, blank=None, stem: str = "", b
     moments = sorted(f.moments, key=lambda m: (m.end, order[m.moment])) if by_end else f.moments
     for m in moments:
         cells = {x: with_fraction(coordinate(m.x), m.x), t: with_fraction(coordinate(m.t), m.t),
-                 "F": force(_zero(m.force)), "end velocity": velocity(_zero(m.velocity))}
+                 "F": force(zero(m.force)), "end velocity": velocity(zero(m.velocity))}
         rows.append((Cell(MOMENTS[m.moment]), Cell(m.end),
                      *(Cell(text.replace("-", MINUS), blank is not None and column in blank(m, x, t))
                        for column, text in cells.items())))
@@ -297,7 +146,7 @@ def events_table(r: ForcesReading, f: FrameForces, blank=None, stem: str = "", b
 
 
 def _p(x: float) -> str:
-    x = _zero(x)
+    x = zero(x)
     return "0" if x == 0.0 else f"{x:+.4f}".replace("-", MINUS)
 
 
@@ -401,8 +250,8 @@ def shift_text(r: ForcesReading, f: FrameForces) -> str:
     text += (f" Its centre of energy moves at {in_c(k.v_E)} there, while p/E = {in_c(k.p_over_E)}: for a closed "
              f"system they would be equal; with forces acting at its ends they are not.")
     after = f.slices[-1]
-    text += (f" When both forces are off, the stress is {'gone' if abs(after.stress.p) < 1e-9 else signed(after.stress.p) + ' M c'} "
-             f"and the rod holds {signed(after.rod.p)} M c.")
+    stress = "gone" if abs(after.stress.p) < 1e-9 else f"{signed(after.stress.p)} M c"
+    text += f" When both forces are off, the stress is {stress} and the rod holds {signed(after.rod.p)} M c."
     return text
 
 
@@ -423,7 +272,8 @@ def push_text(r: ForcesReading) -> str:
             a = abs(math.sinh(stop.rapidity)) / (t1 - t0)
             return (f"The rigid rod: the {kind} gives its {end} end a constant proper acceleration, "
                     f"{numeral(a)} c²/L = |F|/M; in S that end moves on a hyperbola and, when the {kind} ends at "
-                    f"t = {in_l(t1)}, it moves at {in_c(u)} and has gone {in_l(abs(stop.event.x - start.event.x) / L)}. "
+                    f"t = {in_l(t1)}, it moves at {in_c(u)} and has gone "
+                    f"{in_l(abs(stop.event.x - start.event.x) / L)}. "
                     f"The whole rod moves at once, along its own lines of simultaneity.")
         return (f"The rigid rod: when the force ends, at t = {in_l(t1)} in S, its {end} end moves at {in_c(u)}. The "
                 f"whole rod moves at once, along its own lines of simultaneity.")
@@ -436,29 +286,6 @@ def push_text(r: ForcesReading) -> str:
                 f"{kind}'s first signal has crossed the rod and come back; its velocity changes in steps, "
                 f"{listed([in_c(w) for w in steps])}, while the {kind} lasts." + signal)
     return f"The causal rod: when the force ends its {end} end moves at {in_c(u)}." + signal
-
-
-def staircase(history, end: str, t0: float, t1: float, samples: int = 400) -> tuple[float, ...]:
-    """The distinct velocities (in S) of the driven end while its force acts (the causal rod's steps), in order."""
-    sigma = 0.0 if end == "left" else history.scenario.L
-    out: list[float] = []
-    for k in range(1, samples):
-        w = history.material_velocity(sigma, 0.0, t0 + (t1 - t0) * k / samples)
-        if not out or abs(w - out[-1]) > 1e-9:
-            out.append(w)
-    return tuple(out)
-
-
-def far_start(history, end: str, t0: float, t1: float) -> float:
-    """The first instant of S at which the far end moves (bisection on its velocity)."""
-    sigma = 0.0 if end == "left" else history.scenario.L
-    lo, hi = t0, t1
-    if abs(history.material_velocity(sigma, 0.0, hi)) < 1e-12:
-        return hi
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if abs(history.material_velocity(sigma, 0.0, mid)) < 1e-12 else (lo, mid)
-    return hi
 
 
 def paradox_blocks(readings: Sequence[ForcesReading]) -> list[Block]:
@@ -593,9 +420,6 @@ def worksheet_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None,
     without the lines of simultaneity through the forces' starts and ends (which force acts first is asked), the
     forces' tables with the cells to fill in left blank, and the questions (`worksheet_forces`); the key: the
     filled tables, the worked answers, what the diagram shows and Sears's own paradox with its momentum tables."""
-    from rodparadox.handout.document import Question  # noqa: F401 (the questions' type)
-    from rodparadox.handout.worksheet_forces import force_questions, timed_frame
-
     readings = [read(history, frames)] + ([read(causal, frames)] if causal is not None else [])
     timed = timed_frame(readings[0])[0].frame
 

@@ -5,7 +5,7 @@ Two forces: when each starts in the other frame (a Lorentz transformation; which
 on a slice of that frame while they act at different instants (delivered, the rod's kinetic part, its stress); the
 centre of energy against p/E. One push: the pushed end's velocity and distance (hyperbolic motion, proper
 acceleration F/M), its proper time, and when the push ends in the other frame. Every number is the rigid rod's, read
-from its history (`forces.read`), the working written from the closed forms it satisfies.
+from its history (`forces_reading.read`), the working written from the closed forms it satisfies.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import math
 from typing import Sequence
 
 from rodparadox.handout.document import Question
-from rodparadox.handout.forces import ForcesReading, FrameForces, signed
+from rodparadox.handout.forces_reading import ForcesReading, FrameForces, signed
 from rodparadox.handout.words import (ANSWER_DIGITS, answer_numeral, bracketed, capitalised, in_c, in_c_approx, in_l,
                                       in_l_approx, told_claim, told_number)
 from rodparadox.handout.worksheet_frames import Asked, gamma
@@ -141,8 +141,8 @@ def question_centre(r: ForcesReading, b: FrameForces) -> Asked:
              "Here the agents feed energy in and out at the two ends, at different rates at each instant of "
              f"{B}, and the stress carries momentum that no flow of energy along the rod shows: for a closed "
              "system they would be equal; with forces at its ends they are not."]
-    return Asked(f"While the forces act, does the rod's centre of energy in {B} move at p/E (its total momentum over its "
-                 f"total energy)? When must the two agree?", tuple(steps),
+    return Asked(f"While the forces act, does the rod's centre of energy in {B} move at p/E (its total momentum over "
+                 f"its total energy)? When must the two agree?", tuple(steps),
                  (told_number(f"v_E at {tb} = {k.t}", k.v_E), told_number(f"p/E at {tb} = {k.t}", k.p_over_E),
                   told_claim("closed system", "for a closed system they would be equal")))
 
@@ -164,8 +164,8 @@ def push_questions(r: ForcesReading, a: FrameForces, b: FrameForces) -> list[Ask
     first = Asked(
         f"The agent {kind}s the {end} end with a constant force F = {answer_numeral(F)} M c²/L, from t = "
         f"{in_l(start.event.t / L)} to t = {in_l(stop.event.t / L)} in S. A rigid rod's end driven so, with nothing "
-        f"at the other end, has a proper acceleration of size |F|/M. How fast does that end move in S when the {kind} ends, and "
-        f"how far has it gone?",
+        f"at the other end, has a proper acceleration of size |F|/M. How fast does that end move in S when the "
+        f"{kind} ends, and how far has it gone?",
         (f"Constant proper acceleration a = |F|/M = {answer_numeral(a_)} c²/L from rest is hyperbolic motion: the "
          f"velocity after a time Δt of S is u = aΔt/√(1 + (aΔt)²), the distance (√(1 + (aΔt)²) − 1)/a.",
          f"With Δt = {in_l(dt)}: aΔt = {answer_numeral(a_ * dt)}, so u = {in_c_approx(u)} and the end has gone "

@@ -230,8 +230,9 @@ def test_sears_moving_the_rigid_rod_moves_though_the_forces_balance_in_s_prime()
 #: (name, v, L, forces): two unlike forces timed in S′ and in the frame u = 0.3; a sine² pull alone; a constant pull
 #: alone on a rod of L = 2 (its times and lengths in units of L)
 GENERATED = [
-    ("gen_two", 0.47, 1.0, "left: {shape: points, points: [[0.2, 0], [0.6, 0.3], [1.4, 0.1], [1.8, 0]], frame: moving}\n"
-                           "  right: {shape: step, peak: 0.15, start: 0.4, duration: 0.8, frame: 0.3}"),
+    ("gen_two", 0.47, 1.0,
+     "left: {shape: points, points: [[0.2, 0], [0.6, 0.3], [1.4, 0.1], [1.8, 0]], frame: moving}\n"
+     "  right: {shape: step, peak: 0.15, start: 0.4, duration: 0.8, frame: 0.3}"),
     ("gen_pull", 0.8, 1.0, "right: {shape: sine2, peak: -0.3, start: 0.3, duration: 1.2}"),
     ("gen_step", 0.35, 2.0, "right: {shape: step, peak: -0.2, start: 0.25, duration: 2.5}"),
 ]
