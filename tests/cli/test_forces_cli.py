@@ -114,7 +114,6 @@ def test_ledger_writes_delivered_rod_parts_and_the_check_per_slice():
 
 @pytest.mark.parametrize("args, words", [
     (("ledger", "sears", "--format", "markdown"), "ledger is written as text, json or csv only for now"),
-    (("ledger", "sears", "--format", "svg"), "ledger figure is not drawn yet"),
 ])
 def test_what_ledger_cannot_do_with_forces_is_refused_in_one_sentence(args, words, tmp_path):
     assert words in error_of(*args, "-o", tmp_path / ("x." + args[-1]))
@@ -127,3 +126,12 @@ def test_the_ledger_names_each_rods_own_parts():
     rigid, causal = text.split("the causal rod driven by forces")
     assert "rod kinetic" in rigid and "rod matter" not in rigid
     assert "rod matter" in causal and "rod kinetic" not in causal and "elastic energy included" in causal
+
+
+def test_ledger_draws_the_figure_of_a_rod_driven_by_forces(tmp_path):
+    """The figure: what each agent delivered, the rod's parts and its whole, the check on the table's slices."""
+    path = tmp_path / "push.svg"
+    run("ledger", "push", "--rod", "causal", "--frame", "rest", "-o", path)
+    svg = path.read_text()
+    for gid in ("a-p-left", "a-E-right", "a-p-rod_part", "a-p-stress", "a-p-rod", "a-p-check", "a-label-left on"):
+        assert f'id="{gid}"' in svg

@@ -17,7 +17,6 @@ import math
 
 import numpy as np
 
-from rodparadox.errors import ScenarioError
 from rodparadox.physics.forces import ENDS, ForceProfile, Forces, centre_velocity
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
@@ -55,7 +54,10 @@ class DrivenHistory:
     # --- the interface ----------------------------------------------------------------------------------------------
 
     def own_chart(self):
-        raise ScenarioError("the rod's own view of a rod driven by forces is not drawn yet; choose a frame.")
+        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`)."""
+        from rodparadox.physics.rigid.driven_chart import DrivenChart
+
+        return DrivenChart(self)
 
     def worldline(self, name: str) -> WorldLine | None:
         if name == "rod_left":
