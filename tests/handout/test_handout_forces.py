@@ -305,3 +305,12 @@ def test_the_pages_are_set_like_a_book(name):
     rules.test_a_short_table_is_whole_and_on_its_introduction_s_page(plans)
     rules.test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans)
     rules.test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans)
+
+
+def test_the_rod_s_own_view_is_refused_in_one_sentence_for_forces(tmp_path):
+    """handout sears --frame both,rod: one sentence naming what to do, nothing written."""
+    from helpers import error_of
+
+    message = error_of("handout", "sears", "--frame", "both,rod", "-o", tmp_path)
+    assert "sears drives the rod by forces, whose own view a handout does not hold yet" in message
+    assert not list(tmp_path.iterdir())
