@@ -194,7 +194,7 @@ def test_the_legend_and_the_note_say_forces_not_particles():
     assert not any(text in ("impact", "contact: particle rides with end") or "particle" in text for text in texts)
     assert "light front (a jump in λ)" not in texts  # smooth forces: no front
     note = next(t for t in diagram.figure.texts if t.get_gid() == "comparison-note").get_text()
-    assert ("Both rods are driven by the same forces at their ends, and struck by no particle: on each end a sine² "
+    assert ("Both rods are driven by the same forces at their ends: on each end a sine² "
             "push peaking at 0.2 M c²/L from t′ = 0.5 L to 1.5 L in S′.") == " ".join(note.replace("\xa0", " ").split())
     assert all("\xa0" not in line[:1] + line[-1:] for line in note.split("\n"))  # no unit torn from its number
 
