@@ -202,13 +202,14 @@ def test_the_words_name_no_software(sears, sears_sheet, push):
 
 
 def test_the_command_writes_only_the_sections_asked(here):
-    """handout sears --sections paradox,ledger,rod --format tex: the paradox and the momentum tables, no diagram, no
-    forces' tables, and no rod's own view (a driven rod has none drawn yet: left out, not refused)."""
+    """handout sears --frame both,rod --sections paradox,ledger,rod --format tex: the paradox, the momentum tables and
+    the rod's own view (once refused for a driven rod), no diagram, no forces' tables."""
     from helpers import run
 
-    run("handout", "sears", "--sections", "paradox,ledger,rod", "--format", "tex", "-o", "out")
+    run("handout", "sears", "--frame", "both,rod", "--sections", "paradox,ledger,rod", "--format", "tex", "-o", "out")
     files = sorted(p.name for p in (here / "out").iterdir())
     assert "sears_momentum_rest.tex" in files and "sears_momentum_moving.tex" in files
+    assert "sears_rod_view.pdf" in files
     assert not [f for f in files if "diagram" in f or "forces_" in f], files
     tex = (here / "out" / "handout.tex").read_text()
     assert "Sears's own paradox" in tex and "The paradox and its resolution" in tex
@@ -307,10 +308,72 @@ def test_the_pages_are_set_like_a_book(name):
     rules.test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans)
 
 
-def test_the_rod_s_own_view_is_refused_in_one_sentence_for_forces(tmp_path):
-    """handout sears --frame both,rod: one sentence naming what to do, nothing written."""
-    from helpers import error_of
+def test_the_rod_s_own_view_of_a_driven_rod_says_each_model_s_chart(sears, sears_sheet):
+    """handout --frame both,rod of a driven rod, both rods: the view after the diagram (a worksheet's in its key, before
+    the questions' answers), its caption true for a driven rod, per model. The rigid rod's chart: its own lines of
+    simultaneity, T the left end's proper time, X the distance from it, clocks at 1 + αX (driven_chart's dτ_X =
+    (1 + αX) dT); no turn, pivot or impact, which a driven rod has none of. The causal rod's: its material chart, and
+    no particle riding an end."""
+    from rodparadox.handout.document import RodViewBlock
+    from rodparadox.handout.own_view import ANSWERED, with_rod_views
 
-    message = error_of("handout", "sears", "--frame", "both,rod", "-o", tmp_path)
-    assert "sears drives the rod by forces, whose own view a handout does not hold yet" in message
-    assert not list(tmp_path.iterdir())
+    rigid, causal = rods("sears")
+    doc = with_rod_views(sears, {"sears": (rigid, causal)})
+    blocks = doc.sections[1].blocks
+    at = next(k for k, b in enumerate(blocks) if isinstance(b, RodViewBlock))
+    assert isinstance(blocks[at - 1], DiagramBlock) and blocks[at].histories == (rigid, causal)
+    caption = " ".join(blocks[at].caption.split())
+    rigid_words, causal_words = caption.split("Causal rod:")
+    for said in ("Rigid rod: each level line is one of the rod's own lines of simultaneity",
+                 "T is the proper time of its left end", "X the distance from the left end along that line",
+                 "its clock runs at 1 + \N{GREEK SMALL LETTER ALPHA}X/c\N{SUPERSCRIPT TWO} of T's rate"):
+        assert said in rigid_words, said
+    assert "every material point stands still and every light ray runs at 45\N{DEGREE SIGN}" in causal_words
+    assert caption.count("Each force is drawn as a band beside the end it acts on") == 1
+    for unsaid in ("turns:", "a turn", "pivot", "impact", "particle", "hatched", "never moves"):
+        assert unsaid not in caption.lower(), unsaid
+    alone = with_rod_views(sears, {"sears": (rigid,)})  # the rigid rod alone: no causal rod in its caption
+    assert "Causal rod" not in next(b for b in alone.blocks() if isinstance(b, RodViewBlock)).caption
+    sheet = with_rod_views(sears_sheet, {"sears": (rigid, causal)})
+    key = list(sheet.answer_key)
+    answered = next(k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == ANSWERED)
+    assert isinstance(key[answered - 1], RodViewBlock) and key[answered - 1].caption == blocks[at].caption
+    assert not any(isinstance(b, RodViewBlock) for s in sheet.sections for b in s.blocks)
+
+
+def test_the_rod_s_own_view_of_a_driven_rod_runs_into_nothing_on_its_page():
+    """The view of both driven rods on an A4 page, its caption and a paragraph under it, measured as the PDF draws
+    them (`test_handout_pdf.drawn_extents`): no text or axes of the figure meets a line of the page's text, and all
+    lies inside the page. Its keys are taller than its panels (sears: about L of the rods' time); they once ran
+    into the caption. Squeezed to its least height (`render.least_height`, what a page may shrink it to), the rigid
+    rod's view still holds its key."""
+    from matplotlib.figure import Figure
+    from matplotlib.legend import Legend
+    from test_handout_pdf import drawn_extents, page_runs, pdf_renderer, run_box
+
+    from rodparadox import render
+    from rodparadox.handout.document import Handout, RodViewBlock, Section
+    from rodparadox.handout.own_view import rod_view_caption
+    from rodparadox.handout.pdf import page_figures
+    from rodparadox.handout.pdf_text import MARGIN
+    from rodparadox.handout.tex import text_width_in
+
+    histories = rods("sears")
+    block = RodViewBlock("rod_view", histories, rod_view_caption(histories))
+    doc = Handout("t", (Section("sears", "s", (block, Paragraph("After the view."))),))
+    [page] = page_figures(doc, "a4", "print")
+    drawn = drawn_extents(page, "print")  # draws the page as the PDF does; the page's own runs first
+    runs = [run_box(r, pdf_renderer(page)) for r in page_runs(page)]
+    figure_boxes = [(what, box) for what, box in drawn[len(runs):]]
+    assert len(figure_boxes) > 20 and len(runs) > 5
+    for what, box in figure_boxes:  # (its axis's name reaches into the left margin, as a struck rod's view's does)
+        assert 0.0 <= box.x0 and box.x1 <= page.bbox.width - MARGIN + 0.5, (what, box)
+        assert not [r for r in runs if r.overlaps(box)], what
+    rigid = histories[:1]
+    width = text_width_in("a4") * 72
+    least = render.least_height(rigid, "print")
+    assert least < render.rod_view_size(rigid, "print", width)[1]  # a page may squeeze this one
+    squeezed = Figure(figsize=(width / 72, least / 72), dpi=72)
+    render.draw_rod_view_into(squeezed, rigid, "print")
+    [key] = squeezed.findobj(Legend)
+    assert key.get_window_extent(pdf_renderer(squeezed)).y0 >= 0.0
