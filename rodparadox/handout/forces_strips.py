@@ -58,7 +58,7 @@ def force_strips_caption(history, frame: Frame, times: Sequence[float], model: s
     return (f"{rod[0].upper()}{rod[1:]} in {symbol} at {time_name(frame)} = {instants} (in units of L), earliest "
             f"first. {bar}. An arrow at an end is the force acting there, its length in proportion to the force, "
             f"pointing into the rod where the force presses and out of it where it pulls; no arrow where the force "
-            f"is zero (as at the instant a smooth force starts or ends). Beside a row, the forces that start (on), "
+            f"is zero (as when a force ends, or a smooth one starts). Beside a row, the forces that start (on), "
             f"peak or end (off) at its instant.")
 
 

@@ -56,6 +56,9 @@ LETTER_Y = 0.45
 #: in a block of stills the bar is this fraction of a row's height, and a letter starts just above it
 STILL_BAR = 0.3
 STILL_LETTER_Y = STILL_BAR + 0.05
+#: an arrow shorter than this (units of L) is a force zero to rounding (a sine² at its start seen from another
+#: frame: 2e-32): none is drawn, since its head alone would show
+ARROW_ZERO = 1e-9
 
 
 class StripArtists(NamedTuple):
@@ -257,7 +260,7 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
         at, out = (x[0], -1.0) if end == "left" else (x[-1], 1.0)
         tip_out = at + out * artists.per_force * abs(force)
         arrow.set_positions(*(((tip_out, 0.0), (at, 0.0)) if force > 0 else ((at, 0.0), (tip_out, 0.0))))
-        arrow.set_visible(force != 0.0)
+        arrow.set_visible(abs(force) * artists.per_force > ARROW_ZERO)  # not a head on a force zero to rounding
     if artists.readout is not None:
         artists.readout.set_text(readout_text(strip, frame, L))
     return artists.moving

@@ -377,3 +377,79 @@ def test_the_rod_s_own_view_of_a_driven_rod_runs_into_nothing_on_its_page():
     render.draw_rod_view_into(squeezed, rigid, "print")
     [key] = squeezed.findobj(Legend)
     assert key.get_window_extent(pdf_renderer(squeezed)).y0 >= 0.0
+
+
+# --- the rod at successive instants -------------------------------------------------------------------------------
+
+#: sears at v = 0.6 in S′ (hand: t′ = γ (t + v x), γ = 1.25; the left end at x = −1/2, the right at +1/2, each force
+#: on at t = 1/2, peak at 1, off at 3/2 of S): the left force on, peak, off at t′ = 1/4, 7/8, 3/2, the right at 1,
+#: 13/8, 9/4; with an instant before and one after, the eight rows
+SEARS_S_PRIME = {0.25: "left on", 0.875: "left peak", 1.0: "right on", 1.5: "left off", 1.625: "right peak",
+                 2.25: "right off"}
+
+
+def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, sears_sheet):
+    """Each frame's strips of each rod (rigid first) after the diagram's explanation, a worksheet's in its key; the
+    rows at each force's start, peak and end (hand: SEARS_S_PRIME; in S both forces at t = 1/2, 1, 3/2), one before
+    and one after, each row's note naming the forces that start, peak or end then; the caption true for forces."""
+    from rodparadox.handout.document import Strips
+    from rodparadox.physics.frames import moving_frame, rest_frame
+    from rodparadox.render.strip import _force_notes
+
+    rigid, causal = rods("sears")
+    blocks = [b for b in sears.blocks() if isinstance(b, Strips)]
+    assert [(b.history.model, b.frame.name) for b in blocks] == [("rigid", "rest"), ("causal", "rest"),
+                                                                 ("rigid", "moving"), ("causal", "moving")]
+    assert not [b for s in sears_sheet.sections for b in s.blocks if isinstance(b, Strips)]
+    assert len([b for b in sears_sheet.answer_key if isinstance(b, Strips)]) == 4
+    moving = blocks[2]
+    inner = moving.times[1:-1]
+    assert inner == pytest.approx(sorted(SEARS_S_PRIME), abs=1e-12)
+    assert moving.times[0] < 0.25 and moving.times[-1] > 2.25
+    assert _force_notes(rigid, moving.frame, moving.times, 1.0) == ["", *SEARS_S_PRIME.values(), ""]
+    rest = blocks[0]
+    assert [t for t in rest.times if 0.25 < t < 1.75] == pytest.approx([0.5, 1.0, 1.5], abs=1e-12)
+    assert [n for n in _force_notes(rigid, rest.frame, rest.times, 1.0) if n] == [
+        "left and right on", "left and right peak", "left and right off"]
+    assert rest.caption.startswith("The rigid rod in S at t = ") and "so it has one shade" in rest.caption
+    assert blocks[1].caption.startswith("The causal rod in S at t = ") and "shaded by the velocity" in blocks[1].caption
+    for b in blocks:
+        assert "An arrow at an end is the force acting there" in b.caption
+        assert "particle" not in b.caption and "impact" not in b.caption
+
+
+def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
+    """sears in S′ (v = 0.6), drawn: an arrow only where a force acts (SEARS_S_PRIME: at t′ = 1 the right force
+    starts, a sine² at zero, while the left acts), pressing: from outside the rod to its end; at a peak (0.2 M c²/L,
+    the scale's force) as long as band_points; inside the axes."""
+    from matplotlib.figure import Figure
+
+    from rodparadox.render.force_layers import band_points
+    from rodparadox.render.strip import draw_strips_into
+    from rodparadox.render.styles import STYLES
+
+    from rodparadox.physics.frames import moving_frame
+
+    rigid = rods("sears")[0]
+    frame = moving_frame(V)
+    times = (0.875, 1.0, 1.625)  # left peak, right on (zero), right peak
+    figure = Figure(figsize=(6.0, 3.0), dpi=72)
+    rows = draw_strips_into(figure, rigid, frame, times, "print")
+    for ax, t in zip(rows, times):
+        arrows = {p.get_gid().rsplit("-", 1)[1]: p for p in ax.patches if "force" in str(p.get_gid())}
+        shown_ends = {end for end, a in arrows.items() if a.get_visible()}
+        assert shown_ends == {0.875: {"left"}, 1.0: {"left"}, 1.625: {"right"}}[t]
+        for end in shown_ends:
+            (x_tail, _), (x_head, _) = arrows[end]._posA_posB  # as update_strip set them
+            rod = [x for line in ax.lines if line.get_gid() and line.get_gid().endswith("outline")
+                   for x in line.get_xdata()]
+            at = min(rod) if end == "left" else max(rod)
+            assert x_head == pytest.approx(at, abs=1e-12)  # the head on the end: pressing
+            assert (x_tail < x_head) == (end == "left")  # from outside the rod
+            lo, hi = ax.get_xlim()
+            assert lo < x_tail < hi
+            points = abs(x_head - x_tail) * ax.bbox.width / (hi - lo)
+            if t != 1.0:  # a peak: F = 0.2, the scale's force
+                assert points == pytest.approx(band_points(STYLES["print"]), rel=1e-6)
+            else:  # the left force at t′ = 1 (t = 1.1 at x = −1/2): 0.2 sin²(0.6 π), by hand
+                assert points == pytest.approx(band_points(STYLES["print"]) * math.sin(0.6 * math.pi) ** 2, rel=1e-6)
