@@ -311,9 +311,10 @@ def label_boxes(ax, box: Sequence[float], scale: float, pad: float) -> list[tupl
 
 
 def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: Style, letter: str, font_size: float,
-               width: float, height: float, events: Sequence[Mark]) -> tuple:
+               width: float, height: float, events: Sequence[Mark], simultaneity: bool = True) -> tuple:
     """The inset as a child Axes of the panel: the world-sheet, the rod's ends, the particles, the lines of
-    simultaneity through the impacts and the impacts, at equal scales, framed, its magnification written in it."""
+    simultaneity through the impacts (where the panel draws them: `simultaneity`; a worksheet asks them) and the
+    impacts, at equal scales, framed, its magnification written in it."""
     x, y, side = plan.rect
     inset = ax.inset_axes((x / width, y / height, side / width, side / height), zorder=9)
     inset.set_gid(f"{letter}-inset")
@@ -359,7 +360,7 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
                                   gid=f"{letter}-inset-{end}-{k}")
     v = history.scenario.v
     for family, ink, frame in (("rest", style.rest_simultaneity, rest_frame()),
-                               ("moving", style.moving_simultaneity, moving_frame(v))):
+                               ("moving", style.moving_simultaneity, moving_frame(v)))[:2 if simultaneity else 0]:
         slope = relative_velocity(frame.velocity, fv.frame.velocity)
         for e in events:
             segment = clip_line(e.x, e.t, 1.0, slope, plan.window)
