@@ -185,18 +185,9 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t)
         half = side / 2 / (scale * magnification)
         window = (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)
-        corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
-                   (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
-        free = []
-        for k, (x, y) in enumerate(corners):
-            rect = (x - INSET_MARGIN, y - INSET_MARGIN, x + side + INSET_MARGIN, y + side + INSET_MARGIN)
-            if any(rect[0] < b[2] and b[0] < rect[2] and rect[1] < b[3] and b[1] < rect[3] for b in keep_clear):
-                continue
-            crossed = int(boxes_hit_segments(np.array([rect]), segments)[0]) if len(segments) else 0
-            free.append((crossed, k, (x, y)))
-        if free:
-            _, _, (x, y) = min(free)
-            return InsetPlan((x, y, side), window, magnification, about)
+        spot = place_inset(side, width, height, keep_clear, segments)
+        if spot is not None:
+            return InsetPlan((*spot, side), window, magnification, about)
     return None
 
 
