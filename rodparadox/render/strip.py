@@ -39,6 +39,7 @@ from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
+from rodparadox.render.force_layers import force_notes
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.render.text import coordinate_names
 from rodparadox.tolerances import ONE_INSTANT, STEP_ROUNDING
@@ -422,7 +423,7 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bo
     """Each row's time (t′ = 1.25 L) and the events at that instant (mathtext), or an empty note: impacts of a rod
     whose impacts are instantaneous; of a rod whose `contacts` last (the causal rod's), contacts and separations,
     each named as what it is (a particle leaving an end is no impact); of a `history` driven by forces, each force
-    that starts, peaks or ends then (`_force_notes`)."""
+    that starts, peaks or ends then (`force_layers.force_notes`)."""
     from rodparadox.numbers import impact_name
 
     def named(word: str, events: Sequence[str]) -> str:
@@ -439,27 +440,9 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bo
 
     labels = [clock_reading(frame, s.t / L) for s in strips]
     if history is not None and history.driving is not None:
-        return labels, _force_notes(history, frame, [s.t for s in strips], L)
+        return labels, force_notes(history, frame, [s.t for s in strips], L)
     return labels, [note(s.flashing) for s in strips]
 
-
-#: how a force's moments are named beside a row of stills (as the handout's tables name them)
-FORCE_MOMENTS = {"start": "on", "peak": "peak", "end": "off"}
-
-
-def _force_notes(history, frame: Frame, times: Sequence[float], L: float) -> list[str]:
-    """Per row (its instant), the forces that start, peak or end then (within ONE_INSTANT L), by moment: "left on",
-    "left and right peak"; empty where none does."""
-    eta = frame.rapidity
-    events = [(e.event.time_in(eta), e.end, e.moment) for e in history.driving.force_events()]
-    notes = []
-    for row in times:
-        said = {}
-        for t, end, moment in events:
-            if abs(t - row) <= ONE_INSTANT * L:
-                said.setdefault(moment, []).append(end)
-        notes.append(", ".join(f"{' and '.join(ends)} {FORCE_MOMENTS[m]}" for m, ends in said.items()))
-    return notes
 
 
 def _contacts_last(history: RodHistory) -> bool:
@@ -518,7 +501,7 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
     with style_context(style) as st:
         bar = colour_scale(history, frame).shown is not None
         if history.driving is not None:  # its rows' notes from the instants alone: a driven rod's strips cost
-            labels = ([clock_reading(frame, t / L) for t in times], _force_notes(history, frame, times, L))
+            labels = ([clock_reading(frame, t / L) for t in times], force_notes(history, frame, times, L))
         else:
             labels = _stills_labels(strips_at(history, frame, times, ONE_INSTANT * L), frame, L,
                                     _contacts_last(history), history)

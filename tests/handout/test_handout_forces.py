@@ -402,7 +402,7 @@ def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, 
     and one after, each row's note naming the forces that start, peak or end then; the caption true for forces."""
     from rodparadox.handout.document import Strips
     from rodparadox.physics.frames import moving_frame, rest_frame
-    from rodparadox.render.strip import _force_notes
+    from rodparadox.render.force_layers import force_notes
 
     rigid, causal = rods("sears")
     blocks = [b for b in sears.blocks() if isinstance(b, Strips)]
@@ -414,10 +414,10 @@ def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, 
     inner = moving.times[1:-1]
     assert inner == pytest.approx(sorted(SEARS_S_PRIME), abs=1e-12)
     assert moving.times[0] < 0.25 and moving.times[-1] > 2.25
-    assert _force_notes(rigid, moving.frame, moving.times, 1.0) == ["", *SEARS_S_PRIME.values(), ""]
+    assert force_notes(rigid, moving.frame, moving.times, 1.0) == ["", *SEARS_S_PRIME.values(), ""]
     rest = blocks[0]
     assert [t for t in rest.times if 0.25 < t < 1.75] == pytest.approx([0.5, 1.0, 1.5], abs=1e-12)
-    assert [n for n in _force_notes(rigid, rest.frame, rest.times, 1.0) if n] == [
+    assert [n for n in force_notes(rigid, rest.frame, rest.times, 1.0) if n] == [
         "left and right on", "left and right peak", "left and right off"]
     assert rest.caption.startswith("The rigid rod in S at t = ") and "so it has one shade" in rest.caption
     assert blocks[1].caption.startswith("The causal rod in S at t = ") and "shaded by the velocity" in blocks[1].caption
