@@ -6,8 +6,8 @@ worksheet's and its key's, the questions from `worksheet_forces`) turn it into t
 the diagram, what it shows, "Sears's own paradox" (where the momentum is while the forces act at different
 instants: in the stress, von Laue's point; for one constant push, the rigid rod's hyperbola against the causal
 rod's steps), the forces' tables and the momentum slice by slice, both rods side by side where the causal rod is
-given. Every number is read from the histories; the sentences say nothing a history does not show. What has no
-meaning for forces (impacts, particles' starts, the strips, the rod's own view) is left out.
+given, and each frame's strips of each rod (`forces_strips`). Every number is read from the histories; the sentences
+say nothing a history does not show. What has no meaning for forces (impacts, particles' starts) is left out.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from dataclasses import replace
 from typing import Sequence
 
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Heading, Paragraph, Table
+from rodparadox.handout.forces_strips import strips_blocks
 from rodparadox.handout.forces_reading import (ZERO, ForcesReading, FrameForces, Moment, far_start, read, signed,
                                                staircase, zero)
 from rodparadox.handout.narrative import frame_described
@@ -407,6 +408,8 @@ def section_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None, p
             blocks += [diagram(stem, history, frames, worksheet, equal_scales, causal, together=True),
                        Heading("What the diagrams show", 2), *explanation(readings[0])]
         blocks += paradox_blocks(readings) if ledger else []
+    if "strips" in parts:  # each frame's strips, each rod's
+        blocks += strips_blocks(stem, [r.history for r in readings], frames)
     if "tables" in parts:
         blocks += [Heading("The numbers", 2), *frames_tables(readings)]
     if ledger:
@@ -439,6 +442,8 @@ def worksheet_blocks(stem: str, history, frames: tuple[Frame, ...], causal=None,
         if causal is not None:
             blocks.append(causal_diagram(stem, causal, frames, True, equal_scales))
         told += [Heading("What the diagram shows", 2), *explanation(readings[0])]
+    if "strips" in parts:  # in the key: the rows' forces and shading tell which force acts first
+        told += strips_blocks(stem, [r.history for r in readings], frames)
     filled: list[Block] = []
     if "tables" in parts:  # the rigid rod's to fill in (the questions ask about it); the key fills both rods'
         blocks += [Heading("The numbers", 2)]

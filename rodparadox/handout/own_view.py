@@ -37,13 +37,25 @@ def rod_view_caption(histories: Sequence, tell: bool = True) -> str:
                          + ("Hatched: beyond the pivot during its turn, where the rod's own time places an event "
                             "twice, once on a line of the rest frame before the turn and once on one after it."
                             if turns else ""))
-        else:
+        elif h.fronts is not None:
             parts.append("Causal rod: the chart in which every material point stands still and every light ray runs "
                          "at 45\N{DEGREE SIGN}, so each front that carries a push or a pull crosses the rod in a time "
                          "L; a clock runs slow where the rod is compressed (d\N{GREEK SMALL LETTER TAU} = dT/"
-                         "\N{GREEK SMALL LETTER LAMDA}). A particle in contact rides the end (a band); outside the rod "
-                         "the chart is carried out along light rays from its ends, so the particles' approach and "
-                         "departure are drawn where those rays place them.")
+                         "\N{GREEK SMALL LETTER LAMDA})."
+                         + (" A particle in contact rides the end (a band); outside the rod the chart is carried out "
+                            "along light rays from its ends, so the particles' approach and departure are drawn where "
+                            "those rays place them." if h.driving is None else ""))
+        else:  # a rigid rod driven by forces: its lines of simultaneity turn smoothly, no turn about a pivot
+            parts.append("Rigid rod: each level line is one of the rod's own lines of simultaneity, on which all its "
+                         "points are at rest together at that instant; T is the proper time of its left end (the time "
+                         "of S while the rod rests in S before the forces), and X the distance from the left end "
+                         "along that line. While the rod accelerates its lines turn, and a point at X keeps its X "
+                         "while its clock runs at 1 + \N{GREEK SMALL LETTER ALPHA}X/c\N{SUPERSCRIPT TWO} of T's rate, "
+                         "\N{GREEK SMALL LETTER ALPHA} the left end's proper acceleration (positive towards the right "
+                         "end).")
+    if any(h.driving is not None for h in histories):
+        parts.append("Each force is drawn as a band beside the end it acts on, as wide as the force at each instant; "
+                     "on and off mark where it starts and ends.")
     return " ".join(parts)
 
 

@@ -460,5 +460,7 @@ def measure(block: Block, pages: Pages, style: Style, ruled: bool) -> Measured:
 
         def draw_rod_view(target, block=block):
             render.draw_rod_view_into(target, block.histories, style.name)
-        return Picture(min(height, room), caption, pages, 1.2 * t.body, draw_rod_view)
+        # never lower than its keys (`render.least_height`): a smaller picture would set them on its caption
+        return Picture(min(height, room), caption, pages, 1.2 * t.body, draw_rod_view,
+                       render.least_height(block.histories, style.name))
     raise TypeError(f"a handout has no block of type {type(block).__name__}")

@@ -49,7 +49,7 @@ _HOME = {
     **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
                     "rodparadox.render.strip"),
     "LABEL_REACH": "rodparadox.render.labels",
-    **dict.fromkeys(("draw_rod_panel", "draw_rod_view", "draw_rod_view_into", "rod_view_size"),
+    **dict.fromkeys(("draw_rod_panel", "draw_rod_view", "draw_rod_view_into", "least_height", "rod_view_size"),
                     "rodparadox.render.rod_panel"),
     **dict.fromkeys(("LAYERS", "LEGEND", "Layer", "LayerArtists", "Options", "PanelContext"), "rodparadox.render.layers"),
     **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol",

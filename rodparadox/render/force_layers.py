@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 from matplotlib.legend_handler import HandlerBase
@@ -22,9 +23,11 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Polygon, Rectangle
 
 from rodparadox.numbers import nice_number, shown
+from rodparadox.physics.frames import Frame
 from rodparadox.render.labels import Label
 from rodparadox.render.layer_base import Layer, LayerArtists, impact_marker, line_kwargs
 from rodparadox.render.styles import Style
+from rodparadox.tolerances import ONE_INSTANT
 
 #: the width of a band, in the style's type size (9 points in the default style), for the legend's force
 #: (`force_scale`): no band is wider
@@ -231,3 +234,22 @@ class ForceKeyHandler(HandlerBase):
 
 #: the legend's handlers of the force layers' handles
 HANDLER_MAP = {ForceKey: ForceKeyHandler()}
+
+
+#: how a force's moments are named beside a row of stills (as the handout's tables name them)
+FORCE_MOMENTS = {"start": "on", "peak": "peak", "end": "off"}
+
+
+def force_notes(history, frame: Frame, times: Sequence[float], L: float) -> list[str]:
+    """Per row of a block of stills (`strip`; its instant), the forces that start, peak or end then (within
+    ONE_INSTANT L), by moment: "left on", "left and right peak"; empty where none does."""
+    eta = frame.rapidity
+    events = [(e.event.time_in(eta), e.end, e.moment) for e in history.driving.force_events()]
+    notes = []
+    for row in times:
+        said = {}
+        for t, end, moment in events:
+            if abs(t - row) <= ONE_INSTANT * L:
+                said.setdefault(moment, []).append(end)
+        notes.append(", ".join(f"{' and '.join(ends)} {FORCE_MOMENTS[m]}" for m, ends in said.items()))
+    return notes

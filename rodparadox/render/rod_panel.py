@@ -34,6 +34,8 @@ from rodparadox.render.text import impact_text_size, suptitle, tick_text, ticks_
 X_MARGIN = 0.75
 #: the width of the panel's key, on its right, in units of the tick labels' size
 KEY_WIDTH = 14.0
+#: points by which a view must be taller than its panels to be held so by its keys (`least_height`), not rounding
+KEY_SLACK = 1e-6
 
 
 class RodPanelArtists(NamedTuple):
@@ -168,7 +170,9 @@ def _rod_view(histories: Sequence, style: str, diagram, first: bool) -> Figure:
         title_band = 2.2 * fs["suptitle"]
         width, height = rod_view_size(histories, style, st.max_width * 72)
         figure = Figure(figsize=(width / 72, (height + title_band) / 72), dpi=72)
-        _into(figure, histories, st, boxes[0], (0.0, 0.0, width, height), width, height + title_band)
+        panels = _panels_height(width, len(histories), boxes[0], st)
+        _into(figure, histories, st, boxes[0], (0.0, 0.0, width, height), width, height + title_band,
+              panels - sum(_margins(st)[2:]) if height > panels + KEY_SLACK else None)
         figure.text(0.5, 1 - 6 / (height + title_band), suptitle(histories[0].scenario, width, fs["suptitle"]),
                     ha="center", va="top", fontsize=fs["suptitle"], gid="title")
         return figure
@@ -205,13 +209,35 @@ def _margins(st: Style) -> tuple[float, float, float, float]:
 
 def rod_view_size(histories: Sequence, style: str, width: float) -> tuple[float, float]:
     """(width, height) in points of the rod's own view of each history, side by side, at most `width` wide and its
-    panels at most the style's panel height."""
+    panels at most the style's panel height; at least `least_height` high, so that no key runs below it."""
     st = STYLES[style]
     left, key, bottom, top = _margins(st)
     X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
     aspect = (X1 - X0) / (T1 - T0)
     h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
-    return len(histories) * (left + h_ax * aspect + key), h_ax + bottom + top
+    return len(histories) * (left + h_ax * aspect + key), max(h_ax + bottom + top, least_height(histories, style))
+
+
+def least_height(histories: Sequence, style: str) -> float:
+    """The least height in points of the rod's own view of `histories`: its keys hang from the panels' top on their
+    right, so the figure reaches at least the tallest key (and a line of slack) below the panels' top. A short view
+    (a rod driven by forces for about L: its panels are as wide as they are tall) has a key taller than its panels;
+    measured as the key is drawn, in the style's rcParams."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from rodparadox.render.diagram import style_context
+
+    st = STYLES[style]
+    fs = font_sizes(st)
+    box = _union([rod_box(h) for h in histories])
+    with style_context(style):
+        figure = Figure(figsize=(4.0, 4.0), dpi=72)
+        renderer = FigureCanvasAgg(figure).get_renderer()
+        ax = figure.add_axes((0.0, 0.0, 0.1, 0.1))
+        keys = [_key(ax, RodPanel(h, chart_of(h), st, fs, "a", box, nice_clock_step(box[3] - box[2], 12)))
+                for h in histories]
+        tallest = max(k.get_window_extent(renderer).height for k in keys)
+    return _margins(st)[3] + tallest + fs["tick"]
 
 
 def _union(boxes):
@@ -233,24 +259,37 @@ def _rod_view_into(target, histories: Sequence, style: str) -> None:
     dpi = root.dpi
     W, H = target.bbox.width * 72 / dpi, target.bbox.height * 72 / dpi
     width, height = rod_view_size(histories, style, W)
+    left, key, bottom, top = _margins(st)
+    box = _union([rod_box(h) for h in histories])
+    h_ax = None
     if height > H:  # the target is lower than the natural size: the panels shrink to fit it
-        left, key, bottom, top = _margins(st)
-        X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
         h_ax = H - bottom - top
-        width, height = len(histories) * (left + h_ax * (X1 - X0) / (T1 - T0) + key), H
-    _into(target, histories, st, _union([rod_box(h) for h in histories]),
-          ((W - width) / 2, (H - height) / 2, width, height), W, H)
+        width, height = len(histories) * (left + h_ax * (box[1] - box[0]) / (box[3] - box[2]) + key), H
+    elif height > _panels_height(width, len(histories), box, st) + KEY_SLACK:  # the keys are taller than the panels
+        h_ax = _panels_height(width, len(histories), box, st) - bottom - top
+    _into(target, histories, st, box, ((W - width) / 2, (H - height) / 2, width, height), W, H, h_ax)
 
 
-def _into(target, histories, st: Style, box, area, W: float, H: float) -> None:
-    """The panels side by side in `area` (x, y, width, height in points from the target's lower left)."""
+def _panels_height(width: float, count: int, box, st: Style) -> float:
+    """The height of panels side by side `width` wide, with their margins (`rod_view_size`'s without the keys)."""
+    left, key, bottom, top = _margins(st)
+    return (width / count - left - key) * (box[3] - box[2]) / (box[1] - box[0]) + bottom + top
+
+
+def _into(target, histories, st: Style, box, area, W: float, H: float, h_ax: float | None = None) -> None:
+    """The panels side by side in `area` (x, y, width, height in points from the target's lower left), their top
+    at its top below the titles' margin; `h_ax` their height (None: the area's, less the margins)."""
     left, key, bottom, top = _margins(st)
     x, y, width, height = area
-    h_ax = height - bottom - top
+    y_ax = y + bottom
+    if h_ax is None:
+        h_ax = height - bottom - top
+    else:  # lower than the area: at its top, the keys reaching down beside and below them
+        y_ax = y + height - top - h_ax
     w_ax = h_ax * (box[1] - box[0]) / (box[3] - box[2])
     for k, h in enumerate(histories):
         x0 = x + k * (left + w_ax + key) + left
-        ax = target.add_axes(((x0) / W, (y + bottom) / H, w_ax / W, h_ax / H))
+        ax = target.add_axes(((x0) / W, y_ax / H, w_ax / W, h_ax / H))
         ax.set_gid(f"rod{k}-view")
         draw_rod_panel(ax, h, st, letter="abcdefgh"[k], box=box)
 

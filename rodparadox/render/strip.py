@@ -39,6 +39,7 @@ from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
+from rodparadox.render.force_layers import force_notes
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.render.text import coordinate_names
 from rodparadox.tolerances import ONE_INSTANT, STEP_ROUNDING
@@ -56,6 +57,9 @@ LETTER_Y = 0.45
 #: in a block of stills the bar is this fraction of a row's height, and a letter starts just above it
 STILL_BAR = 0.3
 STILL_LETTER_Y = STILL_BAR + 0.05
+#: an arrow shorter than this (units of L) is a force zero to rounding (a sine² at its start seen from another
+#: frame: 2e-32): none is drawn, since its head alone would show
+ARROW_ZERO = 1e-9
 
 
 class StripArtists(NamedTuple):
@@ -257,7 +261,7 @@ def update_strip(artists: StripArtists, strip: Strip, frame: Frame, L: float = 1
         at, out = (x[0], -1.0) if end == "left" else (x[-1], 1.0)
         tip_out = at + out * artists.per_force * abs(force)
         arrow.set_positions(*(((tip_out, 0.0), (at, 0.0)) if force > 0 else ((at, 0.0), (tip_out, 0.0))))
-        arrow.set_visible(force != 0.0)
+        arrow.set_visible(abs(force) * artists.per_force > ARROW_ZERO)  # not a head on a force zero to rounding
     if artists.readout is not None:
         artists.readout.set_text(readout_text(strip, frame, L))
     return artists.moving
@@ -318,13 +322,19 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
         contacts = _contacts_last(history)
-        labels, notes = _stills_labels(strips, frame, L, contacts)
+        labels, notes = _stills_labels(strips, frame, L, contacts, history)
         spanned = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
+        forces = None
+        if history.driving is not None:  # a rod driven by forces: an arrow at each end, as long as the force there
+            from rodparadox.render.force_layers import band_points, force_scale
+
+            forces = force_scale(history)
         # the room for the whole block's labels: the parts of a block split between pages keep one axes width, and
         # so one tick step
         # a colour bar only where the rod's velocity varies (fig1's rod never changes: no bar of ±0.0997)
         bar = scale.shown is not None
-        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts)), fs, bar)
+        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts, history)),
+                            fs, bar)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -337,6 +347,9 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
         lo, hi = float(xs.min()), float(xs.max())
         margin = max(0.06 * (hi - lo), 0.1)
+        if forces is not None:  # room beyond each end for the longest arrow (band_points at the scale's force)
+            reach = band_points(st) + 0.5 * fs["tick"]
+            margin = max(margin, reach * (hi - lo) / (axes_w - 2.0 * reach))
         lo, hi = lo - margin, hi + margin
         step = nice_number(10.0 ** np.floor(np.log10((hi - lo) / 10)), "above")
         while (hi - lo) / step > max(2.0, axes_w / (3.0 * approximate_size("−0.00", fs["tick"])[0])):
@@ -352,7 +365,7 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
             ax.set_gid(f"strips-row-{k}")  # its artists: strips-row-0-bar, strips-row-0-particles, ...
             ax.set_xlim(lo, hi)
             draw_strip(ax, strip, st, scale, frame, L=L, bar_width=STILL_BAR * row_h / 2, font_size=fs["label"],
-                       letter_y=STILL_LETTER_Y, readout=False)
+                       letter_y=STILL_LETTER_Y, readout=False, force_scale=forces)
             ax.set_xticks(ticks)
             ax.xaxis.set_major_formatter(_Ticks(step))
             ax.tick_params(labelsize=fs["tick"], length=3.5, pad=3.5, labelbottom=(k == len(times) - 1))
@@ -405,11 +418,12 @@ class _StillsRoom(NamedTuple):
                 self.top + self.below + rows * row_scale * self.least_row + self.row_gap * (rows - 1))
 
 
-def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bool = False
+def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bool = False, history=None
                    ) -> tuple[list[str], list[str]]:
     """Each row's time (t′ = 1.25 L) and the events at that instant (mathtext), or an empty note: impacts of a rod
     whose impacts are instantaneous; of a rod whose `contacts` last (the causal rod's), contacts and separations,
-    each named as what it is (a particle leaving an end is no impact)."""
+    each named as what it is (a particle leaving an end is no impact); of a `history` driven by forces, each force
+    that starts, peaks or ends then (`force_layers.force_notes`)."""
     from rodparadox.numbers import impact_name
 
     def named(word: str, events: Sequence[str]) -> str:
@@ -425,7 +439,10 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bo
                          ([named("separation", leaving)] if leaving else []))
 
     labels = [clock_reading(frame, s.t / L) for s in strips]
+    if history is not None and history.driving is not None:
+        return labels, force_notes(history, frame, [s.t for s in strips], L)
     return labels, [note(s.flashing) for s in strips]
+
 
 
 def _contacts_last(history: RodHistory) -> bool:
@@ -480,11 +497,15 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
     if not times:
         raise ValueError("draw_strips_into needs at least one time")
     L = history.scenario.L
+    times = tuple(sorted(float(t) for t in times))
     with style_context(style) as st:
-        strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
         bar = colour_scale(history, frame).shown is not None
-        return _stills_room(*_stills_labels(strips, frame, L, _contacts_last(history)), font_sizes(st),
-                            bar).size(len(strips), row_scale)
+        if history.driving is not None:  # its rows' notes from the instants alone: a driven rod's strips cost
+            labels = ([clock_reading(frame, t / L) for t in times], force_notes(history, frame, times, L))
+        else:
+            labels = _stills_labels(strips_at(history, frame, times, ONE_INSTANT * L), frame, L,
+                                    _contacts_last(history), history)
+        return _stills_room(*labels, font_sizes(st), bar).size(len(times), row_scale)
 
 
 class _Ticks:

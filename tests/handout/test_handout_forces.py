@@ -210,13 +210,14 @@ def test_the_words_name_no_software(sears, sears_sheet, push):
 
 
 def test_the_command_writes_only_the_sections_asked(here):
-    """handout sears --sections paradox,ledger,rod --format tex: the paradox and the momentum tables, no diagram, no
-    forces' tables, and no rod's own view (a driven rod has none drawn yet: left out, not refused)."""
+    """handout sears --frame both,rod --sections paradox,ledger,rod --format tex: the paradox, the momentum tables and
+    the rod's own view (once refused for a driven rod), no diagram, no forces' tables."""
     from helpers import run
 
-    run("handout", "sears", "--sections", "paradox,ledger,rod", "--format", "tex", "-o", "out")
+    run("handout", "sears", "--frame", "both,rod", "--sections", "paradox,ledger,rod", "--format", "tex", "-o", "out")
     files = sorted(p.name for p in (here / "out").iterdir())
     assert "sears_momentum_rest.tex" in files and "sears_momentum_moving.tex" in files
+    assert "sears_rod_view.pdf" in files
     assert not [f for f in files if "diagram" in f or "forces_" in f], files
     tex = (here / "out" / "handout.tex").read_text()
     assert "Sears's own paradox" in tex and "The paradox and its resolution" in tex
@@ -315,10 +316,148 @@ def test_the_pages_are_set_like_a_book(name):
     rules.test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans)
 
 
-def test_the_rod_s_own_view_is_refused_in_one_sentence_for_forces(tmp_path):
-    """handout sears --frame both,rod: one sentence naming what to do, nothing written."""
-    from helpers import error_of
+def test_the_rod_s_own_view_of_a_driven_rod_says_each_model_s_chart(sears, sears_sheet):
+    """handout --frame both,rod of a driven rod, both rods: the view after the diagram (a worksheet's in its key, before
+    the questions' answers), its caption true for a driven rod, per model. The rigid rod's chart: its own lines of
+    simultaneity, T the left end's proper time, X the distance from it, clocks at 1 + αX (driven_chart's dτ_X =
+    (1 + αX) dT); no turn, pivot or impact, which a driven rod has none of. The causal rod's: its material chart, and
+    no particle riding an end."""
+    from rodparadox.handout.document import RodViewBlock
+    from rodparadox.handout.own_view import ANSWERED, with_rod_views
 
-    message = error_of("handout", "sears", "--frame", "both,rod", "-o", tmp_path)
-    assert "sears drives the rod by forces, whose own view a handout does not hold yet" in message
-    assert not list(tmp_path.iterdir())
+    rigid, causal = rods("sears")
+    doc = with_rod_views(sears, {"sears": (rigid, causal)})
+    blocks = doc.sections[1].blocks
+    at = next(k for k, b in enumerate(blocks) if isinstance(b, RodViewBlock))
+    assert isinstance(blocks[at - 1], DiagramBlock) and blocks[at].histories == (rigid, causal)
+    caption = " ".join(blocks[at].caption.split())
+    rigid_words, causal_words = caption.split("Causal rod:")
+    for said in ("Rigid rod: each level line is one of the rod's own lines of simultaneity",
+                 "T is the proper time of its left end", "X the distance from the left end along that line",
+                 "its clock runs at 1 + \N{GREEK SMALL LETTER ALPHA}X/c\N{SUPERSCRIPT TWO} of T's rate"):
+        assert said in rigid_words, said
+    assert "every material point stands still and every light ray runs at 45\N{DEGREE SIGN}" in causal_words
+    assert caption.count("Each force is drawn as a band beside the end it acts on") == 1
+    for unsaid in ("turns:", "a turn", "pivot", "impact", "particle", "hatched", "never moves"):
+        assert unsaid not in caption.lower(), unsaid
+    alone = with_rod_views(sears, {"sears": (rigid,)})  # the rigid rod alone: no causal rod in its caption
+    assert "Causal rod" not in next(b for b in alone.blocks() if isinstance(b, RodViewBlock)).caption
+    sheet = with_rod_views(sears_sheet, {"sears": (rigid, causal)})
+    key = list(sheet.answer_key)
+    answered = next(k for k, b in enumerate(key) if isinstance(b, Heading) and b.text == ANSWERED)
+    assert isinstance(key[answered - 1], RodViewBlock) and key[answered - 1].caption == blocks[at].caption
+    assert not any(isinstance(b, RodViewBlock) for s in sheet.sections for b in s.blocks)
+
+
+def test_the_rod_s_own_view_of_a_driven_rod_runs_into_nothing_on_its_page():
+    """The view of both driven rods on an A4 page, its caption and a paragraph under it, measured as the PDF draws
+    them (`test_handout_pdf.drawn_extents`): no text or axes of the figure meets a line of the page's text, and all
+    lies inside the page. Its keys are taller than its panels (sears: about L of the rods' time); they once ran
+    into the caption. Squeezed to its least height (`render.least_height`, what a page may shrink it to), the rigid
+    rod's view still holds its key."""
+    from matplotlib.figure import Figure
+    from matplotlib.legend import Legend
+    from test_handout_pdf import drawn_extents, page_runs, pdf_renderer, run_box
+
+    from rodparadox import render
+    from rodparadox.handout.document import Handout, RodViewBlock, Section
+    from rodparadox.handout.own_view import rod_view_caption
+    from rodparadox.handout.pdf import page_figures
+    from rodparadox.handout.pdf_text import MARGIN
+    from rodparadox.handout.tex import text_width_in
+
+    histories = rods("sears")
+    block = RodViewBlock("rod_view", histories, rod_view_caption(histories))
+    doc = Handout("t", (Section("sears", "s", (block, Paragraph("After the view."))),))
+    [page] = page_figures(doc, "a4", "print")
+    drawn = drawn_extents(page, "print")  # draws the page as the PDF does; the page's own runs first
+    runs = [run_box(r, pdf_renderer(page)) for r in page_runs(page)]
+    figure_boxes = [(what, box) for what, box in drawn[len(runs):]]
+    assert len(figure_boxes) > 20 and len(runs) > 5
+    for what, box in figure_boxes:  # (its axis's name reaches into the left margin, as a struck rod's view's does)
+        assert 0.0 <= box.x0 and box.x1 <= page.bbox.width - MARGIN + 0.5, (what, box)
+        assert not [r for r in runs if r.overlaps(box)], what
+    rigid = histories[:1]
+    width = text_width_in("a4") * 72
+    least = render.least_height(rigid, "print")
+    assert least < render.rod_view_size(rigid, "print", width)[1]  # a page may squeeze this one
+    squeezed = Figure(figsize=(width / 72, least / 72), dpi=72)
+    render.draw_rod_view_into(squeezed, rigid, "print")
+    [key] = squeezed.findobj(Legend)
+    assert key.get_window_extent(pdf_renderer(squeezed)).y0 >= 0.0
+
+
+# --- the rod at successive instants -------------------------------------------------------------------------------
+
+#: sears at v = 0.6 in S′ (hand: t′ = γ (t + v x), γ = 1.25; the left end at x = −1/2, the right at +1/2, each force
+#: on at t = 1/2, peak at 1, off at 3/2 of S): the left force on, peak, off at t′ = 1/4, 7/8, 3/2, the right at 1,
+#: 13/8, 9/4; with an instant before and one after, the eight rows
+SEARS_S_PRIME = {0.25: "left on", 0.875: "left peak", 1.0: "right on", 1.5: "left off", 1.625: "right peak",
+                 2.25: "right off"}
+
+
+def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, sears_sheet):
+    """Each frame's strips of each rod (rigid first) after the diagram's explanation, a worksheet's in its key; the
+    rows at each force's start, peak and end (hand: SEARS_S_PRIME; in S both forces at t = 1/2, 1, 3/2), one before
+    and one after, each row's note naming the forces that start, peak or end then; the caption true for forces."""
+    from rodparadox.handout.document import Strips
+    from rodparadox.physics.frames import moving_frame, rest_frame
+    from rodparadox.render.force_layers import force_notes
+
+    rigid, causal = rods("sears")
+    blocks = [b for b in sears.blocks() if isinstance(b, Strips)]
+    assert [(b.history.model, b.frame.name) for b in blocks] == [("rigid", "rest"), ("causal", "rest"),
+                                                                 ("rigid", "moving"), ("causal", "moving")]
+    assert not [b for s in sears_sheet.sections for b in s.blocks if isinstance(b, Strips)]
+    assert len([b for b in sears_sheet.answer_key if isinstance(b, Strips)]) == 4
+    moving = blocks[2]
+    inner = moving.times[1:-1]
+    assert inner == pytest.approx(sorted(SEARS_S_PRIME), abs=1e-12)
+    assert moving.times[0] < 0.25 and moving.times[-1] > 2.25
+    assert force_notes(rigid, moving.frame, moving.times, 1.0) == ["", *SEARS_S_PRIME.values(), ""]
+    rest = blocks[0]
+    assert [t for t in rest.times if 0.25 < t < 1.75] == pytest.approx([0.5, 1.0, 1.5], abs=1e-12)
+    assert [n for n in force_notes(rigid, rest.frame, rest.times, 1.0) if n] == [
+        "left and right on", "left and right peak", "left and right off"]
+    assert rest.caption.startswith("The rigid rod in S at t = ") and "so it has one shade" in rest.caption
+    assert blocks[1].caption.startswith("The causal rod in S at t = ") and "shaded by the velocity" in blocks[1].caption
+    for b in blocks:
+        assert "An arrow at an end is the force acting there" in b.caption
+        assert "particle" not in b.caption and "impact" not in b.caption
+
+
+def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
+    """sears in S′ (v = 0.6), drawn: an arrow only where a force acts (SEARS_S_PRIME: at t′ = 1 the right force
+    starts, a sine² at zero, while the left acts), pressing: from outside the rod to its end; at a peak (0.2 M c²/L,
+    the scale's force) as long as band_points; inside the axes."""
+    from matplotlib.figure import Figure
+
+    from rodparadox.render.force_layers import band_points
+    from rodparadox.render.strip import draw_strips_into
+    from rodparadox.render.styles import STYLES
+
+    from rodparadox.physics.frames import moving_frame
+
+    rigid = rods("sears")[0]
+    frame = moving_frame(V)
+    times = (0.875, 1.0, 1.625)  # left peak, right on (zero), right peak
+    figure = Figure(figsize=(6.0, 3.0), dpi=72)
+    rows = draw_strips_into(figure, rigid, frame, times, "print")
+    for ax, t in zip(rows, times):
+        arrows = {p.get_gid().rsplit("-", 1)[1]: p for p in ax.patches if "force" in str(p.get_gid())}
+        shown_ends = {end for end, a in arrows.items() if a.get_visible()}
+        assert shown_ends == {0.875: {"left"}, 1.0: {"left"}, 1.625: {"right"}}[t]
+        for end in shown_ends:
+            (x_tail, _), (x_head, _) = arrows[end]._posA_posB  # as update_strip set them
+            rod = [x for line in ax.lines if line.get_gid() and line.get_gid().endswith("outline")
+                   for x in line.get_xdata()]
+            at = min(rod) if end == "left" else max(rod)
+            assert x_head == pytest.approx(at, abs=1e-12)  # the head on the end: pressing
+            assert (x_tail < x_head) == (end == "left")  # from outside the rod
+            lo, hi = ax.get_xlim()
+            assert lo < x_tail < hi
+            points = abs(x_head - x_tail) * ax.bbox.width / (hi - lo)
+            if t != 1.0:  # a peak: F = 0.2, the scale's force
+                assert points == pytest.approx(band_points(STYLES["print"]), rel=1e-6)
+            else:  # the left force at t′ = 1 (t = 1.1 at x = −1/2): 0.2 sin²(0.6 π), by hand
+                assert points == pytest.approx(band_points(STYLES["print"]) * math.sin(0.6 * math.pi) ** 2, rel=1e-6)

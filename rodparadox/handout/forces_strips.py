@@ -1,0 +1,75 @@
+"""The rod driven by forces at successive instants of a frame (a forces handout's strips): which instants show the
+forces (`force_strip_times`: before them, each force's start, peak and end, after them) and the caption saying what
+the rows show. Pure.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+from rodparadox.handout.document import Block, Heading, Strips
+from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST
+from rodparadox.handout.words import in_c, listed, time_name
+from rodparadox.numbers import shown
+from rodparadox.physics.frames import Frame, frame_name, frame_word, time_window
+from rodparadox.render.colour_scale import colour_scale
+
+
+def force_strip_times(history, frame: Frame) -> tuple[float, ...]:
+    """Six to eight instants of the frame's time, earliest first, within `frames.time_window`: before the first
+    force, each force's start and end, each one's peak, after the last force; instants closer than STRIP_SEPARATION
+    of the window are one (two forces starting together); fewer than six, the widest gap is halved. Each is rounded
+    to 1e-12 L, as the rows' labels and the caption print it."""
+    eta = frame.rapidity
+    t_lo, t_hi = time_window(history, frame)
+    moments = [(e.moment, e.event.time_in(eta)) for e in history.driving.force_events()]
+    first, last = min(t for _, t in moments), max(t for _, t in moments)
+    # (priority, time): the lower the priority, the surer an instant is kept
+    candidates = [(0, 0.5 * (t_lo + first)), (0, 0.5 * (last + t_hi))]
+    candidates += [(1, t) for moment, t in moments if moment != "peak"]
+    candidates += [(2, t) for moment, t in moments if moment == "peak"]
+    close = STRIP_SEPARATION * (t_hi - t_lo)
+    chosen: list[tuple[int, float]] = []
+    for priority, t in sorted(candidates):
+        if all(abs(t - c) > close for _, c in chosen):
+            chosen.append((priority, t))
+    times = sorted(t for _, t in chosen[:STRIPS_MOST])
+    while len(times) < STRIPS_FEWEST:  # halve the widest gap, the ends of the window included as bounds
+        bounds = [t_lo] + times + [t_hi]
+        a, b = max(zip(bounds, bounds[1:]), key=lambda ab: ab[1] - ab[0])
+        times = sorted(times + [0.5 * (a + b)])
+    L = history.scenario.L  # rounded to 1e-12 L: a halved gap's 0 is not -2.8e-17, a peak's 1 not 0.9999999999999999
+    return tuple(round(min(max(t, t_lo), t_hi) / L, 12) * L + 0.0 for t in times)
+
+
+def force_strips_caption(history, frame: Frame, times: Sequence[float], model: str = "") -> str:
+    """What the rows show, for a rod driven by forces: at which instants, the bar's shading, the arrows; `model`:
+    the rod's name where two rods are shown ("the rigid rod")."""
+    L = history.scenario.L
+    symbol = frame_name(frame)
+    instants = listed([shown(t / L, 4) for t in times])  # as each row's label gives it
+    rod = model or "the rod"
+    if colour_scale(history, frame).shown is None:  # its velocity never changes in this frame: one shade
+        bar = (f"The bar runs from the rod's left end to its right end; its material points keep the rod's first "
+               f"velocity in {symbol}, {in_c(frame.rod_velocity())}, throughout, so it has one shade")
+    else:
+        bar = (f"The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of each of "
+               f"its material points, which the scale under the rows gives")
+    return (f"{rod[0].upper()}{rod[1:]} in {symbol} at {time_name(frame)} = {instants} (in units of L), earliest "
+            f"first. {bar}. An arrow at an end is the force acting there, its length in proportion to the force, "
+            f"pointing into the rod where the force presses and out of it where it pulls; no arrow where the force "
+            f"is zero (as when a force ends, or a smooth one starts). Beside a row, the forces that start (on), "
+            f"peak or end (off) at its instant.")
+
+
+def strips_blocks(stem: str, histories: Sequence, frames: Sequence[Frame]) -> list[Block]:
+    """Each frame's strips under a heading naming it, each rod's block (the rigid rod first) with its caption."""
+    blocks: list[Block] = []
+    for f in frames:
+        blocks.append(Heading(f"The rod at successive instants of {frame_name(f)}", 2))
+        for h in histories:
+            times = force_strip_times(h, f)
+            model = f"the {h.model} rod" if len(histories) > 1 else ""
+            blocks.append(Strips(f"{stem}_strips_{'causal_' if h.fronts is not None else ''}{frame_word(f)}", h, f, times,
+                                 force_strips_caption(h, f, times, model)))
+    return blocks
