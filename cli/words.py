@@ -18,7 +18,8 @@ OPTIONS = {"v": "--v", "L": "--L", "frame": "--frame", "frame_velocity": "--fram
            "at": "--at", "questions": "--questions", "compare_v": "--compare-v", "key": "--key",
            "sections": "--sections", "allow_long": "--allow-long", "rod": "--rod", "other_axes": "--other-axes", "light_cones": "--light-cones",
            "hyperbolae": "--hyperbolae", "grid": "--grid", "rod_lines": "--rod-lines", "rod_now": "--rod-now",
-           "proper_time": "--proper-time", "equal_scales": "--equal-scales"}
+           "proper_time": "--proper-time", "equal_scales": "--equal-scales",
+           "style": "--style"}
 
 
 def option(choice: str) -> str:

@@ -36,6 +36,9 @@ X_MARGIN = 0.75
 KEY_WIDTH = 14.0
 #: points by which a view must be taller than its panels to be held so by its keys (`least_height`), not rounding
 KEY_SLACK = 1e-6
+#: the least width in points of a panel of the rod's own view beside its key; a page narrower than that for the
+#: views side by side is refused (`rod_view_size`)
+MIN_PANEL_WIDTH = 36.0
 
 
 class RodPanelArtists(NamedTuple):
@@ -214,6 +217,14 @@ def rod_view_size(histories: Sequence, style: str, width: float) -> tuple[float,
     left, key, bottom, top = _margins(st)
     X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
     aspect = (X1 - X0) / (T1 - T0)
+    if width / len(histories) - left - key < MIN_PANEL_WIDTH:  # the keys and tick labels take the whole width
+        from rodparadox.errors import OptionError
+
+        fit = tuple(name for name, other in STYLES.items() if width / len(histories) - sum(_margins(other)[:2])
+                    >= MIN_PANEL_WIDTH)
+        raise OptionError("style", style, " or ".join(fit) or "a wider page",
+                          "the rods' own views do not fit side by side on this page in the {value} style; choose "
+                          "{style} {allowed}, or {rod} rigid or {rod} causal.")
     h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
     return len(histories) * (left + h_ax * aspect + key), max(h_ax + bottom + top, least_height(histories, style))
 

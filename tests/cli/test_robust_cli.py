@@ -465,3 +465,14 @@ def test_a_scenario_given_twice_to_a_handout_is_refused(tmp_path, monkeypatch):
     assert error_of("handout", "fig1", "fig2", "fig1", "--worksheet") == (
         "fig1 is given twice; a worksheet has one section per scenario, so give each once.")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("name", ["sears", "fig2"])
+def test_two_rods_own_views_too_wide_for_the_page_are_refused_in_one_sentence(name, tmp_path):
+    """In slides type, the two rods' own views side by side (tick labels and keys 326 pt each) need more than an A4
+    page's text width: refused naming the styles and the rods that fit, nothing written (it raised a traceback for
+    a driven rod, and drew a particle scenario's views off the page)."""
+    message = error_of("handout", name, "--frame", "both,rod", "--rod", "both", "--style", "slides", "-o", tmp_path)
+    assert message == ("the rods' own views do not fit side by side on this page in the slides style; choose --style "
+                       "default or print, or --rod rigid or --rod causal.")
+    assert not list(tmp_path.iterdir())
