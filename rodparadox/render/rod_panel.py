@@ -224,7 +224,7 @@ def rod_view_size(histories: Sequence, style: str, width: float) -> tuple[float,
                     >= MIN_PANEL_WIDTH)
         raise OptionError("style", style, " or ".join(fit) or "a wider page",
                           "the rods' own views do not fit side by side on this page in the {value} style; choose "
-                          "{style} {allowed}, or {rod} rigid or {rod} causal.")
+                          "{style} {allowed}, or the rigid rod alone ({rod} rigid).")
     h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
     return len(histories) * (left + h_ax * aspect + key), max(h_ax + bottom + top, least_height(histories, style))
 

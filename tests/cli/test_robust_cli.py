@@ -474,5 +474,5 @@ def test_two_rods_own_views_too_wide_for_the_page_are_refused_in_one_sentence(na
     a driven rod, and drew a particle scenario's views off the page)."""
     message = error_of("handout", name, "--frame", "both,rod", "--rod", "both", "--style", "slides", "-o", tmp_path)
     assert message == ("the rods' own views do not fit side by side on this page in the slides style; choose --style "
-                       "default or print, or --rod rigid or --rod causal.")
+                       "default or print, or the rigid rod alone (--rod rigid).")
     assert not list(tmp_path.iterdir())
