@@ -180,14 +180,15 @@ def impact_parts(label: str) -> tuple[str, str]:
 
 def impact_name(label: str, math_text: bool = False) -> str:
     """An impact's label as every figure, table and handout writes it: B1 -> B₁ (plain text, subscript digits),
-    or with `math_text` $B_{1}$ for mathtext; the causal rod's separation B1s as B′₁ ($B'_{1}$); anything else as
-    it is."""
+    or with `math_text` $B_{1}$ for mathtext; the causal rod's separation B1s as B′₁ (`$B$′$_{1}$`: the prime a
+    character of the text between the letter and the subscript, at the letter's height as in print; mathtext's own
+    $B'_{1}$ raises it as a superscript, above the letter's top in STIX); anything else as it is."""
     separation = label.endswith("s") and impact_parts(label[:-1])[1] != ""
     letter, digits = impact_parts(label[:-1] if separation else label)
     if not digits:
         return label
     if math_text:
-        return f"${letter}{chr(39) if separation else ''}_{{{digits}}}$"
+        return f"${letter}$\N{PRIME}$_{{{digits}}}$" if separation else f"${letter}_{{{digits}}}$"
     return letter + ("\N{PRIME}" if separation else "") + digits.translate(_SUBSCRIPT)
 
 

@@ -168,7 +168,7 @@ def test_separations_are_hollow_and_labelled_with_a_prime_contacts_filled_and_th
         marker = artist(fig, f"a-impact-{i.label}")
         label = artist(fig, f"a-impact-label-{i.label}").get_text()
         if i.kind == "separation":
-            assert marker.get_markerfacecolor() == "white" and label == f"${i.particle}'_{{{i.label[1:-1]}}}$"
+            assert marker.get_markerfacecolor() == "white" and label == f"${i.particle}$\N{PRIME}$_{{{i.label[1:-1]}}}$"
         else:
             assert marker.get_markerfacecolor() != "white" and label == f"${i.particle}_{{{i.label[1:]}}}$"
     texts = [t.get_text() for t in fig.legends[0].get_texts()]
