@@ -39,6 +39,7 @@ from rodparadox.physics.frames import Frame, frame_name
 from rodparadox.physics.snapshot import Strip, strip_at
 from rodparadox.numbers import impact_name, shown
 from rodparadox.render.colour_scale import ColourScale, colour_scale
+from rodparadox.render.strip_windows import follows_rod, outside, row_ranges, shared_range
 from rodparadox.render.styles import STYLES, Style
 from rodparadox.render.text import coordinate_names
 from rodparadox.tolerances import ONE_INSTANT, STEP_ROUNDING
@@ -324,7 +325,10 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         # so one tick step
         # a colour bar only where the rod's velocity varies (fig1's rod never changes: no bar of ±0.0997)
         bar = scale.shown is not None
-        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts)), fs, bar)
+        # each row following the rod where one shared range would shrink it to a blob (`render.strip_windows`)
+        windows = row_ranges(strips, L, None if span is None else spanned)
+        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts)), fs, bar,
+                            follow=windows is not None)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -333,29 +337,30 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
             need_w, need_h = room.size(len(times))
             raise ValueError(f"{len(times)} strips need at least {need_w / 72:.2f} x {need_h / 72:.2f} in; the "
                              f"target is {width / 72:.2f} x {height / 72:.2f} in.")
-        # the x range: every rod end and particle at these instants, with a margin
-        xs = np.concatenate([np.concatenate([s.x, [x for _, x in s.particles]]) for s in spanned]) / L
-        lo, hi = float(xs.min()), float(xs.max())
-        margin = max(0.06 * (hi - lo), 0.1)
-        lo, hi = lo - margin, hi + margin
+        # the x range: every rod end and particle at these instants, with a margin; or each row's, as wide
+        lo, hi = shared_range(spanned, L) if windows is None else windows[0]
         step = nice_number(10.0 ** np.floor(np.log10((hi - lo) / 10)), "above")
         while (hi - lo) / step > max(2.0, axes_w / (3.0 * approximate_size("−0.00", fs["tick"])[0])):
             step = nice_number(step, "above")
-        ticks = ticks_at(lo, hi, step)
         rows: list[Axes] = []
         y = height - top
         for k, (strip, label, note) in enumerate(zip(strips, labels, notes)):
             y -= row_h
             ax = target.add_axes((gutter / width, y / height, axes_w / width, row_h / height),
-                                 sharex=rows[0] if rows else None)
+                                 sharex=rows[0] if rows and windows is None else None)
             y -= row_gap
             ax.set_gid(f"strips-row-{k}")  # its artists: strips-row-0-bar, strips-row-0-particles, ...
+            if windows is not None:
+                lo, hi = windows[k]
             ax.set_xlim(lo, hi)
             draw_strip(ax, strip, st, scale, frame, L=L, bar_width=STILL_BAR * row_h / 2, font_size=fs["label"],
                        letter_y=STILL_LETTER_Y, readout=False)
-            ax.set_xticks(ticks)
+            ax.set_xticks(ticks_at(lo, hi, step))
             ax.xaxis.set_major_formatter(_Ticks(step))
-            ax.tick_params(labelsize=fs["tick"], length=3.5, pad=3.5, labelbottom=(k == len(times) - 1))
+            ax.tick_params(labelsize=fs["tick"], length=3.5, pad=3.5,
+                           labelbottom=(k == len(times) - 1 or windows is not None))
+            if windows is not None:
+                _mark_beyond(ax, strip, (lo, hi), L, st, fs["label"], k)
             ax.grid(axis="x", color=st.grid.colour, linewidth=st.grid.width, zorder=0)
             ax.set_axisbelow(True)
             ax.text(-8.0 / axes_w, 0.5 if not note else 0.62, label, transform=ax.transAxes, ha="right",
@@ -380,6 +385,19 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         shown_bar.solids.set_linewidth(0.3)
         label_colour_bar(shown_bar, scale, small)
     return tuple(rows)
+
+
+def _mark_beyond(ax: Axes, strip: Strip, window: tuple[float, float], L: float, st: Style, size: float, k: int) -> None:
+    """A row that follows the rod: each particle beyond its window, an arrowhead at that edge pointing its way, with
+    its letter inside the edge (the letter and the dot `draw_strip` drew are out of sight)."""
+    lo, hi = window
+    inset = 0.012 * (hi - lo)
+    for name, side in outside(strip, window, L):
+        at, marker, align = (lo + inset, "<", "left") if side == "left" else (hi - inset, ">", "right")
+        ax.plot([at], [0.0], marker=marker, color="black", markersize=0.5 * st.impact_size + 2, clip_on=False,
+                gid=f"strips-row-{k}-beyond-{name}")
+        ax.text(at, STILL_LETTER_Y, name, ha=align, va="bottom", fontsize=size, style="italic",
+                color=st.particles[name].colour, gid=f"strips-row-{k}-beyond-{name}-letter")
 
 
 class _StillsRoom(NamedTuple):
@@ -442,9 +460,11 @@ def _is_separation(label: str) -> bool:
     return label.endswith("s") and impact_parts(label[:-1])[1] != ""
 
 
-def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float], bar: bool = True) -> _StillsRoom:
+def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, float], bar: bool = True,
+                 follow: bool = False) -> _StillsRoom:
     """The room of `draw_strips_into` for rows with these labels, in a style's type sizes; `bar`: with room for the
-    colour bar (none where the rod's velocity never changes)."""
+    colour bar (none where the rod's velocity never changes); `follow`: each row follows the rod, with its own tick
+    labels under it (`render.strip_windows`)."""
     from rodparadox.render.text import approximate_size
 
     # room, in points: left of the rows for their labels; under them for the ticks, the x name, the colour bar
@@ -455,8 +475,8 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
     bar_h = max(5.0, 0.7 * small)
     below = (3.5 + 3.5 + tick_h + 4.0 + label_h) + ((10.0 + bar_h + (2 + 1 + 1.2 * small) * 2) if bar else 0.0) + 4.0
     least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
-    return _StillsRoom(gutter, 10.0, below, 4.0, 0.25 * fs["tick"], least_row, 8 * fs["tick"], tick_h, label_h,
-                       small, bar_h)
+    row_gap = 0.25 * fs["tick"] + ((3.5 + 3.5 + tick_h + 4.0) if follow else 0.0)
+    return _StillsRoom(gutter, 10.0, below, 4.0, row_gap, least_row, 8 * fs["tick"], tick_h, label_h, small, bar_h)
 
 
 @lru_cache(maxsize=64)
@@ -471,9 +491,10 @@ def strips_at(history: RodHistory, frame: Frame, times: tuple[float, ...], flash
 
 
 def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style: str,
-                row_scale: float = 1.0) -> tuple[float, float]:
+                row_scale: float = 1.0, span: Sequence[float] | None = None) -> tuple[float, float]:
     """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
-    `row_scale` times the least row's height: what a page must leave for the block."""
+    `row_scale` times the least row's height: what a page must leave for the block. `span`: as `draw_strips_into`'s
+    (the whole block's instants, of which these are a part)."""
     from rodparadox.render.diagram import style_context
     from rodparadox.render.layout import font_sizes
 
@@ -484,7 +505,9 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
         strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
         bar = colour_scale(history, frame).shown is not None
         return _stills_room(*_stills_labels(strips, frame, L, _contacts_last(history)), font_sizes(st),
-                            bar).size(len(strips), row_scale)
+                            bar, follows_rod(strips if span is None else strips_at(
+                                history, frame, tuple(float(t) for t in span), ONE_INSTANT * L), L)
+                            ).size(len(strips), row_scale)
 
 
 class _Ticks:
