@@ -107,15 +107,25 @@ def _without_zero_sign(text: str) -> str:
     return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
 
 
-def coordinate_format(values: list[float]):
-    """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
-    kept so that the digits say the precision; rounding-sized values (PRINTED_ZERO of the largest) are 0."""
+def coordinate_format(values: list[float], signed: bool = True):
+    """Every value of one column with the same decimals, so that the decimal points line up and every digit says
+    the same precision: TABLE_DIGITS significant digits in the largest, trailing zeros kept (+0.5000000 where the
+    largest is below 1; beside +1.048285 a zero is +0.000000, never +0, and +3.206777 keeps its place); rounding-sized
+    values (PRINTED_ZERO of the largest) are zero. A column whose largest is below SCIENTIFIC_BELOW or at least
+    10**TABLE_DIGITS writes each value with TABLE_DIGITS significant digits and an exponent (1.583333e-05).
+    `signed`: a plus sign on the positive (the events' x and t), else none (the slices' times, an energy)."""
     largest = max((abs(x) for x in values), default=0.0)
+    scientific = largest > 0.0 and not SCIENTIFIC_BELOW <= largest < 10.0 ** TABLE_DIGITS
+    decimals = 0 if largest == 0.0 or scientific else max(0, TABLE_DIGITS - 1 - math.floor(math.log10(largest)))
 
     def text(x: float) -> str:
         if abs(x) <= PRINTED_ZERO * largest:
-            return "+0"
-        return _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+            x = 0.0
+        if scientific and x != 0.0:
+            written = _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+        else:
+            written = _without_zero_sign(f"{x + 0.0:+.{decimals}f}")
+        return written if signed else written.lstrip("+")
     return text
 
 
