@@ -130,17 +130,22 @@ def coordinate_format(values: list[float], signed: bool = True):
 
 
 def velocity_format(velocities: list[float]):
-    """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
-    the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
-    as many more decimals as keep it from rounding to 1 (`frames.check_below_c`: none is 1)."""
+    """Every velocity fixed-point with one number of decimals, so that the decimal points line up: TABLE_DIGITS - 1
+    significant digits in the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and,
+    where a speed is near c, as many more decimals as keep it from rounding to 1 (`frames.check_below_c`: none is
+    1), for every velocity given: pass one column's."""
     largest = max((abs(u) for u in velocities), default=0.0)
     decimals = TABLE_DIGITS - 1
     if 0 < largest < 0.1:
         decimals = TABLE_DIGITS - 2 - math.floor(math.log10(largest))
 
+    def near_c(u: float) -> int:
+        return math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
+    # one number of decimals for every velocity given, so that a column shares them (issue 24)
+    decimals = max([decimals] + [near_c(u) for u in velocities])
+
     def text(u: float) -> str:
-        near_c = math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
-        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c)}f}")
+        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c(u))}f}")
     return text
 
 

@@ -120,7 +120,7 @@ def test_table_numbers_keep_their_digits_and_write_rounding_as_zero():
                                                                                           "-2.000000e-06"]
     assert coordinate_format([0.0])(0.0) == "+0" and coordinate_format([1.5], signed=False)(1.5) == "1.500000"
     velocity = velocity_format([0.6, -0.9999999])
-    assert [velocity(u) for u in (0.6, -0.9999999, -0.0)] == ["+0.600000", "-0.999999900", "+0.000000"]
+    assert [velocity(u) for u in (0.6, -0.9999999, -0.0)] == ["+0.600000000", "-0.999999900", "+0.000000000"]
     assert [number_text(x) for x in (17 / 12, -0.0, 1e-20)] == ["1.416667", "0", "1e-20"]
     assert number_text(1e-13, zero_below=1e-12) == "0" and number_text(-1e-13) == "-1e-13"
 

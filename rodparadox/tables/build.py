@@ -42,14 +42,14 @@ def events_table(history: RodHistory, frame: Frame, blank: bool = False) -> Tabl
     scale = history.scenario.L + max((abs(e.t) for e in fv.events), default=0.0)
     events = [fv.events[k] for k in time_order([e.t for e in fv.events], scale)]  # the rod's order at one instant
     x_text, t_text = coordinate_format([e.x for e in events]), coordinate_format([e.t for e in events])  # a column's decimals
-    velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
-                                                             e.rod_velocity_before, e.rod_velocity_after)])
+    def velocities(e):
+        return e.particle_velocity_before, e.particle_velocity_after, e.rod_velocity_before, e.rod_velocity_after
+    velocity = velocity_format([u for e in events for u in velocities(e)])  # one number of decimals for all four
     x, t = coordinates(frame)
     rows = []
     for e in events:
         numbers = [with_fraction(x_text(e.x), e.x), with_fraction(t_text(e.t), e.t)]
-        numbers += [with_fraction(velocity(u), u) for u in (e.particle_velocity_before, e.particle_velocity_after,
-                                                            e.rod_velocity_before, e.rod_velocity_after)]
+        numbers += [with_fraction(velocity(u), u) for u in velocities(e)]
         rows.append((Cell(impact_name(e.impact.label)), Cell(e.impact.end),
                      *(Cell(n.replace("-", MINUS), blank) for n in numbers)))
     notes = []
