@@ -17,8 +17,8 @@ OUTPUTS ?= outputs
 FORMATS ?= svg,pdf
 PLOT_OPTIONS ?=
 
-# every scenario struck by particles (one driven by forces, `forces:`, is not drawn yet)
-CONFIGS := $(shell grep -L '^forces:' configs/*.yaml)
+# every scenario, struck by particles or driven by forces
+CONFIGS := $(wildcard configs/*.yaml)
 SOURCES := $(wildcard rodparadox/*.py rodparadox/*/*.py cli/*.py)
 STAMPS := $(patsubst configs/%.yaml,$(OUTPUTS)/.stamps/%,$(CONFIGS))
 

@@ -168,10 +168,6 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     if rod == "both" and any(len(job.frames[0]) > 4 for job in jobs):
         raise OptionError("frame", frame, template="{what}: the ledger figure of both rods takes at most 4 frames "
                                                    "(a row of each rod per frame); give fewer.")
-    driven = next((job.scenario for job in jobs if job.scenario.forces is not None), None)
-    if driven is not None:
-        raise BadInput(f"{driven.name} drives the rod by forces at its ends, whose ledger figure is not drawn yet; "
-                       f"give --format text, json or csv.")
     histories = [run_rods(job.scenario, job.name, job.frames[0]) for job in jobs]
     planned.prepare(jobs, described, output)
 
@@ -180,8 +176,13 @@ def ledger(scenario: str, v: float | None, L: float | None, frame: str, at: str 
     from rodparadox.render import ledger_figure  # matplotlib: only now, after every input has been checked
 
     for run, job in zip(histories, jobs):
-        figure = (ledger_figure.draw_both(*run, job.frames[0], style) if len(run) == 2
-                  else ledger_figure.draw(run[0], job.frames[0], style))
+        if run[0].driving is not None:  # a rod driven by forces: what each agent delivered, the rod's parts
+            from rodparadox.render import forces_ledger_figure
+
+            figure = forces_ledger_figure.draw(run, job.frames[0], style)
+        else:
+            figure = (ledger_figure.draw_both(*run, job.frames[0], style) if len(run) == 2
+                      else ledger_figure.draw(run[0], job.frames[0], style))
         report(((path, write_atomic(path, render.figure_bytes(figure, f, style))) for f, path in job.paths.items()),
                quiet)
 

@@ -70,7 +70,7 @@ class _Main(click.Group):
 @click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="sears-paradox")
 def main() -> None:
-    """Minkowski diagrams of a rigid rod struck by particles, in two frames at once.
+    """Minkowski diagrams of a rod struck by particles or pushed by forces, in two frames at once.
 
     SCENARIO is a built-in name (see `sears-paradox list`) or a YAML file; a file
     that exists wins over a built-in name of the same name.

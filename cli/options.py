@@ -48,23 +48,16 @@ def _with_rod(scenario):
 
         check_sound_speed_rod(scenario.with_overrides(rod=rod))
     if scenario.forces is not None:
-        _check_forces(scenario, rod, context.info_name if context is not None else "this command")
+        _check_forces(scenario, rod)
     return scenario if rod == "both" else scenario.with_overrides(rod=rod)  # both: the file's rod places particles
 
 
-#: the commands that show a rod driven by forces (the others refuse such a scenario in one sentence, for now)
-FORCES_COMMANDS = ("events", "export", "ledger", "plot", "animate")
-
-
-def _check_forces(scenario, rod: str, command: str) -> None:
-    """A scenario with forces: refused by a command that cannot show it yet, and by a rod that cannot carry or be
-    driven by its forces (the pull limits, `physics.models.check_forces`), each in one sentence."""
+def _check_forces(scenario, rod: str) -> None:
+    """A scenario with forces (every command shows them): refused, in one sentence, where a rod asked for cannot
+    carry them (the pull limits, `physics.models.check_forces`)."""
     from rodparadox.errors import ScenarioError
     from rodparadox.physics.models import check_forces, models_of
 
-    if command not in FORCES_COMMANDS:
-        raise BadInput(f"{scenario.name} drives the rod by forces at its ends, which {command} cannot show yet; "
-                       f"use {' or '.join(FORCES_COMMANDS)}.")
     for model in models_of(rod, scenario):
         try:
             check_forces(scenario.with_overrides(rod=model))

@@ -28,12 +28,8 @@ WIDTH_PIXELS = 800
 
 
 def scenarios() -> list[str]:
-    """Every scenario struck by particles (one driven by forces, `forces:`, is not drawn yet)."""
-    return sorted(p.stem for p in CONFIGS.glob("*.yaml") if not drives_by_forces(p))
-
-
-def drives_by_forces(path: Path) -> bool:
-    return any(line.startswith("forces:") for line in path.read_text(encoding="utf-8").splitlines())
+    """Every built-in scenario, struck by particles or driven by forces at its ends."""
+    return sorted(p.stem for p in CONFIGS.glob("*.yaml"))
 
 
 def picture_name(name: str, style: str) -> str:
@@ -66,7 +62,7 @@ def draw(name: str, style: str) -> bytes:
     from rodparadox.physics.models import run_rods
 
     scenario = load(str(CONFIGS / f"{name}.yaml"))
-    rigid, causal = run_rods(scenario, "both")  # on the same particles, as plot --rod both runs them
+    rigid, causal = run_rods(scenario, "both")  # on the same particles (or forces), as plot --rod both runs them
     diagram = render.draw_both(rigid, causal, paper_frames(scenario.v), style)
     width_inches = diagram.figure.get_figwidth()
     buffer = io.BytesIO()

@@ -7,6 +7,8 @@
   narrative         the set-up, the diagram's caption and the explanation of what it shows
   strips            the rod at successive instants: which instants, and their caption
   worksheet         which questions a worksheet asks; `worksheet_frames` and `worksheet_rod` build them
+  forces            a rod driven by forces: its section, Sears's own paradox (`forces_reading` reads the history,
+                    `worksheet_forces` asks the questions)
   pdf               the blocks measured and set on pages with matplotlib's PDF backend
   pdf_text          the type, words wrapped into lines, and the pages they are set on
   tex               the blocks as a folder of LaTeX, figures and pgfplots data

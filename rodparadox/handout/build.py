@@ -32,6 +32,7 @@ import re
 from dataclasses import dataclass, replace
 from typing import Sequence
 
+from rodparadox.handout import forces
 from rodparadox.handout.causal_compare import comparison
 from rodparadox.handout.causal_reading import compare
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Handout, Heading, Paragraph, Section, Strips, Table
@@ -126,10 +127,21 @@ WORKSHEET_PARADOX = (
     f"resolution of {FRANKLIN}.")
 
 
-def worksheet_introduction() -> Section:
+#: where a document has rods driven by forces: Sears's own statement (forces that act for a while, not impulses), and
+#: in a handout what its sections show (a worksheet's says only the first: where the momentum is, is asked)
+FORCES_INTRO = ("Sears's own statement has forces that act for a while at the two ends, not impulses; the "
+                "scenarios below with forces apply such forces, given as functions of time.")
+FORCES_RESOLUTION = (" While they act at different instants of S′, the momentum they deliver changes, yet the "
+                     "rigid rod’s velocity does not: those sections follow the momentum slice by slice, into the "
+                     "rod’s stress, which carries momentum when the rod moves (von Laue).")
+
+
+def worksheet_introduction(forces: bool = False) -> Section:
     """A worksheet's first section: the paradox as a question; the whole introduction opens the answer key (its
-    resolution tells what the questions ask: the impulses act at different instants of S′)."""
-    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX)))
+    resolution tells what the questions ask: the impulses act at different instants of S′). `forces`: some scenario
+    is driven by forces (Sears's own statement said, not where the momentum goes)."""
+    extra = (Paragraph(FORCES_INTRO.replace("'", "’")),) if forces else ()
+    return Section("introduction", "The paradox", (Heading("The paradox"), Paragraph(WORKSHEET_PARADOX), *extra))
 
 
 def far_end_and_light(histories: Sequence[RodHistory]) -> tuple[RodHistory, Impact, str, float, float] | None:
@@ -140,6 +152,8 @@ def far_end_and_light(histories: Sequence[RodHistory]) -> tuple[RodHistory, Impa
     its hyperbola at P's instant of S (rule 3), while light from P crosses the rod's length L, at rest, only by
     t_P + L."""
     for h in histories:
+        if h.turning is None:  # a rod driven by forces: no turn
+            continue
         turn = next(iter(h.turning.turns), None)
         if turn is None or turn.rapidity_from != 0.0:
             continue
@@ -161,8 +175,10 @@ def introduction(histories: Sequence[RodHistory] = ()) -> Section:
                          f"{impact.end} end at t = {in_l(moves)} in S, and the {far} end starts to move at that same "
                          f"instant of S, while light from {impact_name(impact.label)} reaches it only at t = "
                          f"{in_l(light)}.")
+    forces = (Paragraph(FORCES_INTRO.replace("'", "\u2019") + FORCES_RESOLUTION),) \
+        if any(h.driving is not None for h in histories) else ()
     return Section("introduction", "The paradox", (Heading("The paradox and its resolution"), Paragraph(PARADOX),
-                                                   Paragraph(RESOLUTION), Paragraph(idealisation)))
+                                                   Paragraph(RESOLUTION), Paragraph(idealisation), *forces))
 
 
 #: the parts of a handout a teacher may choose (`build`'s `sections`), in the order they come: the paradox and its
@@ -274,6 +290,8 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
     on which impacts share a line, and the strips (their row labels and colour bars give velocities) move to the
     key; the tables are left blank. With the `causal` rod's history, the section ends with the comparison of the
     two rods (`causal_compare`), and a worksheet with its questions (`worksheet_causal`)."""
+    if history.driving is not None:  # a rod driven by forces: Sears's own paradox (`forces`)
+        return _forces_section(stem, history, frames, worksheet, with_speed, equal_scales, causal, parts, chosen)
     caption = diagram_caption(history, frames, tell=not worksheet)
     if equal_scales and len(frames) > 1:
         caption += " The panels are drawn to one scale: a length of L is as long on the page in each."
@@ -328,6 +346,20 @@ def _section(stem: str, history: RodHistory, frames: tuple[Frame, ...], workshee
     return Section(stem, section_title, tuple(blocks)), key
 
 
+def _forces_section(stem: str, history: RodHistory, frames: tuple[Frame, ...], worksheet: bool, with_speed: bool,
+                    equal_scales: bool, causal, parts: frozenset[str],
+                    chosen: Sequence[int] | None = None) -> tuple[Section, list[Block]]:
+    """A rod driven by forces: its section (`forces.section_blocks`), and for a worksheet its part of the key."""
+    causal = causal if "comparison" in parts else None
+    if worksheet:
+        blocks, key = forces.worksheet_blocks(stem, history, frames, causal, parts, heading(history, with_speed),
+                                              heading(history, with_speed=True), chosen, equal_scales)
+        return Section(stem, heading(history, with_speed=True), tuple(blocks)), key
+    blocks = forces.section_blocks(stem, history, frames, causal, parts, heading(history, with_speed), worksheet,
+                                   equal_scales)
+    return Section(stem, heading(history, with_speed=True), tuple(blocks)), []
+
+
 @dataclass(frozen=True)
 class Item:
     """One scenario of a handout: its file stem (fig2), its rigid rod's history, the frames its section shows (None:
@@ -363,7 +395,8 @@ def build(items: Sequence[Item | tuple], frames: Sequence[Frame] | None = None, 
             shown_frames = tuple(moving_frame(item.history.scenario.v) if f.name == "moving" else f for f in frames)
         entries.append(replace(item, frames=shown_frames))
     first = introduction([e.history for e in entries])
-    opening = [worksheet_introduction() if worksheet else first] if "paradox" in parts else []
+    driven = any(e.history.driving is not None for e in entries)
+    opening = [worksheet_introduction(driven) if worksheet else first] if "paradox" in parts else []
     key: list[Block] = []
     several_speeds = len({_speed(e.history) for e in entries}) > 1
     body = []

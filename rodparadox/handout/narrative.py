@@ -82,7 +82,7 @@ def setup_text(history: RodHistory, tell: bool = True) -> str:
 
 # --- the diagram -----------------------------------------------------------------------------------------------
 
-def _frame_described(frame: Frame, v: float) -> str:
+def frame_described(frame: Frame, v: float) -> str:
     if frame.name == "rest":
         return "S, the rod's rest frame before it is struck"
     if frame.name == "moving":
@@ -95,7 +95,7 @@ def diagram_caption(history: RodHistory, frames: Sequence[Frame], tell: bool = T
     impacts share one."""
     r = Reading(history, tuple(frames))
     s = history.scenario
-    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {_frame_described(f, s.v)}" for k, f in enumerate(frames))
+    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {frame_described(f, s.v)}" for k, f in enumerate(frames))
     labels = impact_names(history.impacts)
     particles = sorted(p.name for p in s.particles)
     # as the styles draw them (render.styles: PARTICLE_DASH, B_DASH): A dashed, B long-and-short dashed

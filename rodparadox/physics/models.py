@@ -10,7 +10,6 @@ the very same particles: their first impacts fall where that rod's response puts
 
 from __future__ import annotations
 
-from rodparadox.errors import ScenarioError
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.kinematics import Event
 from rodparadox.physics.model import ROD_MODELS, Scenario
@@ -50,7 +49,7 @@ def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None, budget: 
     short list of impacts, unbounded by it.
 
     A scenario with forces (`scenario.forces`) runs through the model package's `run_forces`, after the pull
-    limit of that model (`Forces.check_pull`); a model without it refuses the scenario in one sentence."""
+    limit of that model (`Forces.check_pull`)."""
     if scenario.forces is not None:
         return run_forces(scenario, budget)
     if budget is not None and scenario.rod == "causal":
@@ -59,13 +58,10 @@ def run_rod(scenario: Scenario, starts: dict[str, Event] | None = None, budget: 
 
 
 def check_forces(scenario: Scenario) -> None:
-    """Refuse, in one sentence, forces the scenario's own rod cannot carry (the pull limits, `Forces.check_pull`)
-    or cannot yet be driven by: where the rod is chosen, before any run."""
+    """Refuse, in one sentence, forces the scenario's own rod cannot carry (the pull limits, `Forces.check_pull`):
+    where the rod is chosen, before any run."""
     if scenario.forces is None:
         return
-    if not hasattr(_module(scenario.rod), "run_forces"):
-        raise ScenarioError(f"the {scenario.rod} rod cannot be driven by forces yet; choose the rigid rod.",
-                            "forces")
     scenario.forces.check_pull(scenario.rod)
 
 

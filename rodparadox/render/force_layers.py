@@ -70,17 +70,23 @@ def band(points: np.ndarray, profile, panel_rapidity: float, profile_rapidity: f
     lo, hi = max(lo, times[0]), min(hi, times[-1])
     if not lo < hi:
         return np.empty((0, 2)), np.empty(0)
+    instants, forces = profile_samples(profile, lo, hi, BAND_SAMPLES, times[(times > lo) & (times < hi)])
+    x = np.interp(instants, times, points[:, 0])
+    t = np.interp(instants, times, points[:, 1])
+    return np.column_stack([x, t]), np.asarray(forces, dtype=float)
+
+
+def profile_samples(profile, lo: float, hi: float, samples: int, extra=()) -> tuple[np.ndarray, np.ndarray]:
+    """Instants of the profile's time from lo to hi (`samples` of them, its corners, `extra`) and the force at each,
+    in order; a jump's instant twice, with the force before and after it."""
     corners = [b for b in profile.pieces() if lo <= b <= hi]
-    instants = np.unique(np.concatenate([np.linspace(lo, hi, BAND_SAMPLES), times[(times > lo) & (times < hi)],
-                                         corners]))
+    instants = np.unique(np.concatenate([np.linspace(lo, hi, samples), np.asarray(extra, dtype=float), corners]))
     forces = profile.value(instants)  # right-continuous: at a jump, the force after it
     for b in (b for b in profile.jumps() if lo <= b <= hi):  # and the force before it, at the same instant
         k = int(np.searchsorted(instants, b))
         instants = np.insert(instants, k, b)
         forces = np.insert(forces, k, profile.piece_value(profile.piece_index(b) - 1, b))
-    x = np.interp(instants, times, points[:, 0])
-    t = np.interp(instants, times, points[:, 1])
-    return np.column_stack([x, t]), np.asarray(forces, dtype=float)
+    return instants, np.asarray(forces, dtype=float)
 
 
 def outside(end: str) -> float:

@@ -141,7 +141,7 @@ def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
     L = s.L
     names = sorted(p.name for p in s.particles)
     particle_inks = dict(st.ledger_particles)
-    hidden_fill, total_ink, kinetic_ink = _hidden_fill(st), _total_ink(st), _kinetic_ink(st)
+    hidden, total_line, kinetic_line = hidden_fill(st), total_ink(st), kinetic_ink(st)
     for k, frame in enumerate(frames):
         letter = PANEL_LETTERS[k]
         r, c = divmod(k, per_row)
@@ -150,11 +150,11 @@ def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
         t = times / L
         x0 = gutter + c * (column_w + gutter + 14)
         y_top = height - suptitle_h - r * row_h - title_h
-        for q, ax in _pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
+        for q, ax in pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
             level = total.p if q == "p" else total.E
             _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
             ax.set_xlim(t[0], t[-1])
-            _axis_words(ax, q, frame, fs)
+            axis_words(ax, q, frame, fs)
             if q == "p":
                 ax.set_title(f"({letter}) frame {frame_symbol(frame)}", fontsize=fs * 1.1, pad=fs * 1.5 + 4)
                 ax.tick_params(labelbottom=False)
@@ -175,8 +175,8 @@ def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
     handles = [Line2D([], [], color=particle_inks[n].colour, linewidth=particle_inks[n].width,
                       linestyle=particle_inks[n].dashes) for n in names]
     labels = [f"particle {n}" for n in names]
-    handles += [Line2D([], [], color=st.rod.colour, linewidth=st.rod.width), Line2D([], [], **kinetic_ink),
-                Line2D([], [], **total_ink), Patch(**hidden_fill)]
+    handles += [Line2D([], [], color=st.rod.colour, linewidth=st.rod.width), Line2D([], [], **kinetic_line),
+                Line2D([], [], **total_line), Patch(**hidden)]
     labels += ["rod (kinetic)", "kinetic total", "total before the first impact", "hidden = total − kinetic"]
     legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, 4 / height), ncol=3,
                            fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
@@ -184,7 +184,7 @@ def _draw(history: RodHistory, frames: tuple[Frame, ...], st: Style) -> Figure:
     return figure
 
 
-def _pair_axes(figure: Figure, letter: str, x0: float, y_top: float, width: float, panel_h: float, gap: float):
+def pair_axes(figure: Figure, letter: str, x0: float, y_top: float, width: float, panel_h: float, gap: float):
     """One frame's p panel above its E panel, on one time axis, `width` x `panel_h` points each from (x0, y_top)
     down: (q, axes) each in turn, the next made only when the caller has drawn into the last."""
     W, H = figure.get_size_inches() * 72
@@ -197,7 +197,7 @@ def _pair_axes(figure: Figure, letter: str, x0: float, y_top: float, width: floa
         yield q, ax
 
 
-def _axis_words(ax, q: str, frame, fs: float) -> None:
+def axis_words(ax, q: str, frame, fs: float) -> None:
     """A ledger panel's numbers (as every figure writes them: no offsets, no 1e-06) and its axes' names: p above,
     E below with the frame's time under it."""
     for axis in (ax.xaxis, ax.yaxis):
@@ -208,15 +208,15 @@ def _axis_words(ax, q: str, frame, fs: float) -> None:
         ax.set_xlabel(f"{axis_label(coordinate_names(frame)[1])}", fontsize=fs * 1.05)
 
 
-def _hidden_fill(st: Style) -> dict:
+def hidden_fill(st: Style) -> dict:
     return {"facecolor": st.sheet, "edgecolor": st.hidden_edge, "hatch": st.hidden_hatch, "linewidth": 0.0}
 
 
-def _total_ink(st: Style) -> dict:
+def total_ink(st: Style) -> dict:
     return {"color": "#000000", "linewidth": 0.7 * st.rod.width / 1.7, "linestyle": (0, (1.0, 1.5))}
 
 
-def _kinetic_ink(st: Style) -> dict:
+def kinetic_ink(st: Style) -> dict:
     return {"color": "#000000", "linewidth": st.rod.width * 1.3}
 
 
@@ -224,14 +224,14 @@ def _rigid_curves(ax, q: str, letter: str, t: np.ndarray, values, level: float, 
     """The rigid rod's curves in one panel: the hidden part shaded, the total, each body's kinetic part, the
     kinetic total, the impacts."""
     kinetic = values[q]["kinetic"]
-    ax.fill_between(t, kinetic, np.full_like(kinetic, level), gid=f"{letter}-{q}-hidden", zorder=1, **_hidden_fill(st))
-    ax.axhline(level, gid=f"{letter}-{q}-total", zorder=2, **_total_ink(st))
+    ax.fill_between(t, kinetic, np.full_like(kinetic, level), gid=f"{letter}-{q}-hidden", zorder=1, **hidden_fill(st))
+    ax.axhline(level, gid=f"{letter}-{q}-total", zorder=2, **total_ink(st))
     for n in sorted(c for c in values[q] if c not in ("rod", "kinetic")):
         ink = st.ledger_particles[n]
         ax.plot(t, values[q][n], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
                 gid=f"{letter}-{q}-{n}", zorder=3)
     ax.plot(t, values[q]["rod"], color=st.rod.colour, linewidth=st.rod.width, gid=f"{letter}-{q}-rod", zorder=3)
-    ax.plot(t, kinetic, gid=f"{letter}-{q}-kinetic", zorder=4, **_kinetic_ink(st))
+    ax.plot(t, kinetic, gid=f"{letter}-{q}-kinetic", zorder=4, **kinetic_ink(st))
     for e in entries:
         ax.axvline(e.t / L, color="#9a9a9a", linewidth=0.6, zorder=0, gid=f"{letter}-{q}-impact-{e.impact.label}")
 
@@ -242,7 +242,7 @@ def _rigid_curves(ax, q: str, letter: str, t: np.ndarray, values, level: float, 
 STRESS_HATCH = "\\\\\\\\"
 
 
-def _stress_fill(st: Style) -> dict:
+def stress_fill(st: Style) -> dict:
     edge = st.hidden_edge if st.hidden_edge != "none" else st.rod.colour
     return {"facecolor": st.sheet, "edgecolor": edge, "hatch": STRESS_HATCH, "linewidth": 0.0}
 
@@ -251,20 +251,20 @@ def _causal_curves(ax, q: str, letter: str, t: np.ndarray, values, level: float,
     """The causal rod's curves in one panel: its stress part shaded above the particles plus its matter, the
     total, each particle, the matter part, the particles plus matter, the contacts and separations."""
     below = values[q]["matter_total"]
-    ax.fill_between(t, below, below + values[q]["rod_stress"], gid=f"{letter}-{q}-stress", zorder=1, **_stress_fill(st))
-    ax.axhline(level, gid=f"{letter}-{q}-total", zorder=2, **_total_ink(st))
+    ax.fill_between(t, below, below + values[q]["rod_stress"], gid=f"{letter}-{q}-stress", zorder=1, **stress_fill(st))
+    ax.axhline(level, gid=f"{letter}-{q}-total", zorder=2, **total_ink(st))
     for n in sorted(c for c in values[q] if not c.startswith(("rod_", "matter_"))):
         ink = st.ledger_particles[n]
         ax.plot(t, values[q][n], color=ink.colour, linewidth=ink.width, linestyle=ink.dashes,
                 gid=f"{letter}-{q}-{n}", zorder=3)
     ax.plot(t, values[q]["rod_matter"], color=st.rod.colour, linewidth=st.rod.width, gid=f"{letter}-{q}-rod_matter",
             zorder=3)
-    ax.plot(t, below, gid=f"{letter}-{q}-matter_total", zorder=4, **_kinetic_ink(st))
+    ax.plot(t, below, gid=f"{letter}-{q}-matter_total", zorder=4, **kinetic_ink(st))
     for label, _, te in events:
         ax.axvline(te / L, color="#9a9a9a", linewidth=0.6, zorder=0, gid=f"{letter}-{q}-event-{label}")
 
 
-def _event_labels(ax, events, L: float, fs: float, points_per_unit: float, letter: str) -> None:
+def event_labels(ax, events, L: float, fs: float, points_per_unit: float, letter: str) -> None:
     """The contacts' and separations' names above the panel, each over its line or as near as the names before
     it allow, on the lower tier or, where that would push a name farther, the upper one."""
     ends = [-np.inf, -np.inf]  # where each tier's last name ends, points from the panel's left
@@ -336,7 +336,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
             t = times / L
             x0 = gutter + c * (column_w + gutter + 14)
             y_top = height - suptitle_h - r * row_h - title_h
-            for q, ax in _pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
+            for q, ax in pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
                 level = total.p if q == "p" else total.E
                 if causal:
                     _causal_curves(ax, q, letter, t, values, level, events, L, st)
@@ -344,13 +344,13 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                     _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
                 ax.set_xlim(t[0], t[-1])
                 shared.setdefault((k, q), []).append(ax)
-                _axis_words(ax, q, frame, fs)
+                axis_words(ax, q, frame, fs)
                 if q == "p":
                     model = f"{history.model} rod, " if both else ""
                     ax.set_title(f"({letter}) {model}frame {frame_symbol(frame)}", fontsize=fs * 1.1,
                                  pad=fs * 2.8 + 4)
                     ax.tick_params(labelbottom=False)
-                    _event_labels(ax, events, L, fs, column_w / (t[-1] - t[0]), letter)
+                    event_labels(ax, events, L, fs, column_w / (t[-1] - t[0]), letter)
     for axes in shared.values():  # the two rods' panels of one frame on one scale
         lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
         for ax in axes:
@@ -370,14 +370,14 @@ def _rods_legend(histories: tuple, st: Style) -> tuple[list, list[str]]:
     inks = st.ledger_particles
     handles = [Line2D([], [], color=inks[n].colour, linewidth=inks[n].width, linestyle=inks[n].dashes) for n in names]
     labels = [f"particle {n}" for n in names]
-    rod, thick, total = (Line2D([], [], color=st.rod.colour, linewidth=st.rod.width), Line2D([], [], **_kinetic_ink(st)),
-                         Line2D([], [], **_total_ink(st)))
+    rod, thick, total = (Line2D([], [], color=st.rod.colour, linewidth=st.rod.width), Line2D([], [], **kinetic_ink(st)),
+                         Line2D([], [], **total_ink(st)))
     if len(histories) == 2:
-        handles += [rod, thick, total, Patch(**_hidden_fill(st)), Patch(**_stress_fill(st))]
+        handles += [rod, thick, total, Patch(**hidden_fill(st)), Patch(**stress_fill(st))]
         labels += ["rod: kinetic (rigid), matter (causal)", "kinetic total (rigid),\nparticles + matter (causal)",
                    "total before the first impact", "rigid rod: hidden = total − kinetic", STRESS_TEXT]
     else:
-        handles += [rod, thick, total, Patch(**_stress_fill(st))]
+        handles += [rod, thick, total, Patch(**stress_fill(st))]
         labels += ["rod, matter (its rest-frame energy moving with it)", "particles + matter",
                    "total before the first contact", STRESS_TEXT]
     return handles, labels

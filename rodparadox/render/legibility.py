@@ -15,6 +15,7 @@ import numpy as np
 from rodparadox.numbers import SCIENTIFIC_ABOVE, impact_name, nice_number, shown
 from rodparadox.physics import rod
 from rodparadox.physics.history import RodHistory
+from rodparadox.physics.kinematics import Event
 from rodparadox.physics.frames import FrameView, moving_frame, relative_velocity, rest_frame, sampling_tolerance
 from rodparadox.render.labels import boxes_hit_segments
 from rodparadox.render.layer_base import clip_line, impact_marker, line_kwargs
@@ -94,6 +95,44 @@ def material_lines_text(asked: int, drawn: dict[str, int]) -> str:
 
 # --- the inset ------------------------------------------------------------------------------------------------
 
+class Mark(NamedTuple):
+    """An event the inset is centred on and marks: an impact, or a force's start or end on a rod driven by forces."""
+
+    label: str  # for the artists' gids: B1, or left-start
+    x: float  # where and when in the panel's frame, units of L
+    t: float
+    about: str  # what the inset's note says it is magnified at: $B_{1}$, or "the left force's start"
+
+
+#: how the inset's note names a force's start or end
+FORCE_MOMENTS = {"start": "starts", "end": "ends"}
+
+
+def marks(history: RodHistory, fv: FrameView) -> list[Mark]:
+    """The events of the panel the inset is centred on and marks: every impact; on a rod driven by forces (the
+    capability `driving`), each force's start and end."""
+    L = history.scenario.L
+    out = [Mark(e.impact.label, e.x / L, e.t / L, impact_name(e.impact.label, math_text=True)) for e in fv.events]
+    if history.driving is not None:
+        for e in history.driving.force_events():
+            if e.moment in FORCE_MOMENTS:
+                seen = e.event.seen_from(fv.frame.rapidity)
+                out.append(Mark(f"{e.end}-{e.moment}", seen.x / L, seen.t / L, f"the {e.end} force {FORCE_MOMENTS[e.moment]}"))
+    return out
+
+
+def _about(marks_: Sequence[Mark]) -> str:
+    """The inset's note after its factor: at A₁, B₁ (impacts), where the left force starts, where both forces start."""
+    if not marks_:
+        return ""
+    if all("-" not in m.label for m in marks_):  # impacts: B1, A1s
+        return " at " + ", ".join(m.about for m in marks_)
+    moments = {m.label.split("-")[1] for m in marks_}
+    if len(marks_) == 2 and len(moments) == 1:  # both ends' forces at one instant
+        return f" where both forces {FORCE_MOMENTS[moments.pop()][:-1]}"
+    return " where " + " and ".join(m.about for m in marks_)
+
+
 class InsetPlan(NamedTuple):
     """Where the inset goes in the panel (points from the axes' lower left: x, y, side), what it shows (the window
     x0, x1, t0, t1 in units of L) and its magnification against the panel."""
@@ -101,14 +140,17 @@ class InsetPlan(NamedTuple):
     rect: tuple[float, float, float]
     window: tuple[float, float, float, float]
     magnification: float
-    about: tuple[str, ...]  # the impacts it is centred on
+    about: tuple[Mark, ...]  # the events (impacts, or a force's start or end) it is centred on
+    free: bool = False  # a driven rod's small motion: each end's world-line without the forces drawn too, dashed
 
 
 def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float, height: float,
-               keep_clear: list[tuple[float, float, float, float]], lines: list[np.ndarray]) -> InsetPlan | None:
+               keep_clear: list[tuple[float, float, float, float]], lines: list[np.ndarray],
+               events: Sequence[Mark]) -> InsetPlan | None:
     """The inset of a panel whose world-sheet is thinner than INSET_BELOW, or None.
 
-    It is centred on the frame's first impacts (those at its earliest instant) and the rod at that instant,
+    It is centred on the frame's first `events` (`marks`: impacts, or a driven rod's force starts; those at its
+    earliest instant) and the rod at that instant,
     magnified a nice factor (1, 2, 2.5 or 5 times a power of ten) that draws the sheet at least INSET_SHEET wide
     while those stay inside; where that leaves less than 2 (the rod already at rest and long there), it shows the
     sheet where it is thinnest, nearest that instant, at the factor that draws it INSET_SHEET wide. It is
@@ -117,17 +159,17 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
     """
     x0, x1, t0, t1 = box
     scale = width / (x1 - x0)  # points per L
-    if "rod_left" not in worldlines or not fv.events:
+    if "rod_left" not in worldlines or not events:
         return None
     thin = sheet_width(worldlines, scale)
     if thin >= INSET_BELOW:
         return None
-    first_t = min(e.t for e in fv.events)
-    reach = max(abs(e.t) for e in fv.events) + L
-    first = [e for e in fv.events if abs(e.t - first_t) <= SAME_LINE * reach]  # one instant: Fig. 2's B1 and A1 in S'
-    xs, ts = [e.x / L for e in first], [e.t / L for e in first]
+    first_t = min(e.t for e in events)
+    reach = max(abs(e.t) for e in events) + 1.0
+    first = [e for e in events if abs(e.t - first_t) <= SAME_LINE * reach]  # one instant: Fig. 2's B1 and A1 in S'
+    xs, ts = [e.x for e in first], [e.t for e in first]
     # and the whole rod at that instant: a turn is the rod's, from one end to the other
-    xs += [float(np.interp(first_t / L, worldlines[end][:, 1], worldlines[end][:, 0])) for end in ("rod_left", "rod_right")]
+    xs += [float(np.interp(first_t, worldlines[end][:, 1], worldlines[end][:, 0])) for end in ("rod_left", "rod_right")]
     cx, ct = (min(xs) + max(xs)) / 2, (min(ts) + max(ts)) / 2
     spread = max(max(xs) - min(xs), max(ts) - min(ts))  # the first impacts' extent, units of L
     segments = _segments_pt(lines, box, scale)
@@ -137,10 +179,10 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
         # the first impacts and the rod, and a margin of a fifth of the inset on each side, stay inside
         most = side * 0.6 / (max(spread, 1e-300) * scale)
         magnification = wanted if wanted <= most else nice_number(most, "at_most")
-        about = tuple(e.impact.label for e in first)
+        about = tuple(first)
         centre = (cx, ct)
         if magnification < 2:  # the rod at its first impacts is too wide to magnify: the sheet where it is thinnest
-            magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t / L)
+            magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t)
         half = side / 2 / (scale * magnification)
         window = (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)
         corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
@@ -156,6 +198,72 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             _, _, (x, y) = min(free)
             return InsetPlan((x, y, side), window, magnification, about)
     return None
+
+
+#: a driven rod whose ends stray from their world-lines without the forces by less than this on the page (points:
+#: less than the rod's ends are wide), but by more than MOTION_LEAST of L, gets an inset of where they stray most
+MOTION_BELOW = 0.5 * MM
+MOTION_LEAST = 1e-9
+
+
+def free_line(history, fv: FrameView, end: str) -> tuple[np.ndarray, np.ndarray]:
+    """A point (units of L) and the direction of the end's world-line in the panel's frame had no force acted: at
+    rest in S at x = -L/2 or L/2 (where every driven rod starts)."""
+    f, L = fv.frame.rapidity, history.scenario.L
+    start = Event(-0.5 * L if end == "rod_left" else 0.5 * L, 0.0).seen_from(f)
+    return np.array([start.x / L, start.t / L]), np.array([-math.sinh(f), math.cosh(f)])  # (dx, dt): at -tanh f
+
+
+def motion_inset_plan(history, fv: FrameView, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float,
+                      height: float, keep_clear, lines, events: Sequence[Mark]) -> InsetPlan | None:
+    """The inset of a driven rod's small motion, or None: where an end strays from its world-line without the
+    forces by less than MOTION_BELOW on the page but more than MOTION_LEAST L, centred where it strays most while
+    its forces act (in the panel's time, between the first force's start and the last one's end), magnified a nice
+    factor that draws that straying INSET_BELOW wide; placed as `inset_plan` places its inset."""
+    if history.driving is None or "rod_left" not in worldlines or not events:
+        return None
+    x0, x1, t0, t1 = box
+    scale = width / (x1 - x0)
+    lo, hi = min(e.t for e in events), max(e.t for e in events)
+    most, where = 0.0, None
+    for end in ("rod_left", "rod_right"):
+        points = worldlines[end]
+        acting = points[(points[:, 1] >= lo) & (points[:, 1] <= hi)]
+        if not len(acting):
+            continue
+        origin, along = free_line(history, fv, end)
+        rel = acting - origin
+        gap = np.abs(rel[:, 0] * along[1] - rel[:, 1] * along[0]) / math.hypot(*along)
+        k = int(gap.argmax())
+        if gap[k] > most:
+            most, where = float(gap[k]), acting[k]
+    if where is None or not MOTION_LEAST < most < MOTION_BELOW / scale:
+        return None
+    magnification = nice_number(INSET_BELOW / (most * scale), "at_least")
+    segments = _segments_pt(lines, box, scale)
+    for fraction in INSET_SIDES:
+        side = fraction * min(width, height)
+        half = side / 2 / (scale * magnification)
+        window = (where[0] - half, where[0] + half, where[1] - half, where[1] + half)
+        spot = place_inset(side, width, height, keep_clear, segments)
+        if spot is not None:
+            return InsetPlan((*spot, side), window, magnification, (), free=True)
+    return None
+
+
+def place_inset(side: float, width: float, height: float, keep_clear, segments) -> tuple[float, float] | None:
+    """The corner of the panel for an inset `side` points wide that hides none of `keep_clear` and crosses the
+    fewest `segments`, or None."""
+    corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
+               (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
+    free = []
+    for k, (x, y) in enumerate(corners):
+        rect = (x - INSET_MARGIN, y - INSET_MARGIN, x + side + INSET_MARGIN, y + side + INSET_MARGIN)
+        if any(rect[0] < b[2] and b[0] < rect[2] and rect[1] < b[3] and b[1] < rect[3] for b in keep_clear):
+            continue
+        crossed = int(boxes_hit_segments(np.array([rect]), segments)[0]) if len(segments) else 0
+        free.append((crossed, k, (x, y)))
+    return min(free)[2] if free else None
 
 
 def _thinnest_near(worldlines: dict[str, np.ndarray], t: float) -> tuple[float, float]:
@@ -203,7 +311,7 @@ def label_boxes(ax, box: Sequence[float], scale: float, pad: float) -> list[tupl
 
 
 def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: Style, letter: str, font_size: float,
-               width: float, height: float) -> tuple:
+               width: float, height: float, events: Sequence[Mark]) -> tuple:
     """The inset as a child Axes of the panel: the world-sheet, the rod's ends, the particles, the lines of
     simultaneity through the impacts and the impacts, at equal scales, framed, its magnification written in it."""
     x, y, side = plan.rect
@@ -238,6 +346,13 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
         if name in points:
             for k, run in enumerate(_runs(points[name], window)):
                 artists += inset.plot(run[:, 0], run[:, 1], **line_kwargs(ink), zorder=z, gid=f"{letter}-inset-{name}-{k}")
+    if plan.free:  # each end without the forces: the small motion is the gap between the two
+        for end in ("rod_left", "rod_right"):
+            origin, along = free_line(history, fv, end)
+            segment = clip_line(origin[0], origin[1], along[0], along[1], plan.window)
+            if segment is not None:
+                artists += inset.plot(segment[:, 0], segment[:, 1], color=style.rod.colour, linewidth=0.8,
+                                      linestyle=(0, (4.0, 2.0)), zorder=3, gid=f"{letter}-inset-free-{end}")
     for end, runs in zip(("rod_left", "rod_right"), ends):
         for k, run in enumerate(runs):
             artists += inset.plot(run[:, 0], run[:, 1], **line_kwargs(style.rod), zorder=4,
@@ -246,22 +361,25 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
     for family, ink, frame in (("rest", style.rest_simultaneity, rest_frame()),
                                ("moving", style.moving_simultaneity, moving_frame(v))):
         slope = relative_velocity(frame.velocity, fv.frame.velocity)
-        for e in fv.events:
-            segment = clip_line(e.x / L, e.t / L, 1.0, slope, plan.window)
+        for e in events:
+            segment = clip_line(e.x, e.t, 1.0, slope, plan.window)
             if segment is not None:
                 artists += inset.plot(segment[:, 0], segment[:, 1], **line_kwargs(ink), zorder=2,
-                                      gid=f"{letter}-inset-simultaneity-{family}-{e.impact.label}")
-    for e in fv.events:
-        if wx0 <= e.x / L <= wx1 and wt0 <= e.t / L <= wt1:
-            artists += inset.plot([e.x / L], [e.t / L], **impact_marker(style), zorder=7,
-                                  gid=f"{letter}-inset-impact-{e.impact.label}")
-    about = ", ".join(impact_name(label, math_text=True) for label in plan.about)
+                                      gid=f"{letter}-inset-simultaneity-{family}-{e.label}")
+    for e in events:
+        if wx0 <= e.x <= wx1 and wt0 <= e.t <= wt1:
+            artists += inset.plot([e.x], [e.t], **impact_marker(style), zorder=7,
+                                  gid=f"{letter}-inset-impact-{e.label}")
+    about = _about(plan.about)
     m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁶ on, 2.5×10⁶ as the ticks write it
     # in mathtext, as the impacts' names are: mathtext's fonts lack the superscript digits plain text would use
     factor = f"$\\times{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3, math_text=True)}$"
     pad = 3.0
     # the note inside the inset: without the impacts' names if they make it too wide, in smaller type if need be
-    for text in ([factor + f" at {about}"] if about else []) + [factor]:
+    candidates = ([factor + about] if about else []) + [factor]
+    if plan.free:  # the dashed lines named, in smaller type if need be
+        candidates = [factor + "; dashed: no force"]
+    for text in candidates:
         w, h, _ = approximate_size(text, font_size)
         if w <= side - 2 * pad:
             break

@@ -9,7 +9,8 @@ from rodparadox.render.styles import Style
 from rodparadox.render.labels import Area, place
 from rodparadox.render.layers import Options, PanelContext, contacts_last, drawing_order, widest_line
 from rodparadox.render.layout import Metrics, Panel
-from rodparadox.render.legibility import draw_inset, inset_plan, label_boxes, material_lines_that_fit
+from rodparadox.render.legibility import (draw_inset, inset_plan, label_boxes, marks, material_lines_that_fit,
+                                          motion_inset_plan)
 from rodparadox.render.text import axis_label, coordinate_names, tick_text, ticks_at
 
 
@@ -46,14 +47,18 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
     if options.insets:
         scale = p.width / (p.box[1] - p.box[0])  # points per L
         keep_clear = label_boxes(ax, p.box, scale, 2.0)
-        keep_clear += [((e.x / history.scenario.L - p.box[0]) * scale - style.impact_size,
-                        (e.t / history.scenario.L - p.box[2]) * scale - style.impact_size,
-                        (e.x / history.scenario.L - p.box[0]) * scale + style.impact_size,
-                        (e.t / history.scenario.L - p.box[2]) * scale + style.impact_size) for e in p.view.events]
-        plan = inset_plan(p.view, history.scenario.L, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles)
+        events = marks(history, p.view)  # impacts, or a driven rod's force starts and ends
+        keep_clear += [((e.x - p.box[0]) * scale - style.impact_size, (e.t - p.box[2]) * scale - style.impact_size,
+                        (e.x - p.box[0]) * scale + style.impact_size, (e.t - p.box[2]) * scale + style.impact_size)
+                       for e in events]
+        plan = inset_plan(p.view, history.scenario.L, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
+                          events)
+        if plan is None:  # a driven rod whose small motion would not be seen
+            plan = motion_inset_plan(history, p.view, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
+                                     events)
         if plan is not None:
             drawn["inset"] = list(draw_inset(ax, plan, history, p.view, style, p.letter, m.fs["tick"], p.width,
-                                             p.height))
+                                             p.height, events))
     return {name: tuple(artists) for name, artists in drawn.items()}
 
 

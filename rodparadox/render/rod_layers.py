@@ -10,7 +10,6 @@ point drawn is an exact chart map of an exact world-line; sampling is for drawin
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
@@ -19,6 +18,8 @@ from matplotlib.patches import Patch, Rectangle
 
 from rodparadox.numbers import impact_name
 from rodparadox.physics.rod_view import chart_polyline, densified
+from rodparadox.render.rod_forces import Forces
+from rodparadox.render.rod_layer_base import RodLayer, RodPanel
 from rodparadox.render.causal_layers import (FRONT_JUMP, Compression as FrameCompression, cells_in_rod,
                                              compression_colour_map, compression_norm)
 from rodparadox.render.styles import Style
@@ -37,43 +38,6 @@ HORIZON_ROWS, PARTICLE_WINDOW = 2048, 50.0
 PARTICLE_POINTS = 2000
 #: the ground a pivot's dots are drawn on, where the end's solid line is blanked
 PIVOT_GROUND = "white"
-
-
-class RodPanel(NamedTuple):
-    """One panel of the rod's own view as its layers see it: the run, its chart, the style, the type sizes, the
-    panel's letter, its box (X0, X1, T0, T1) in units of L and the proper time between two clock ticks (units of L)."""
-
-    history: object
-    chart: object
-    style: Style
-    fs: dict
-    letter: str
-    box: tuple[float, float, float, float]
-    step: float
-
-    @property
-    def L(self) -> float:
-        return self.history.scenario.L
-
-
-class RodLayer:
-    """One element of the rod's own view: `draw` gives its artists, `key` its (handle, text) lines of the key."""
-
-    name = ""
-
-    def applies(self, history) -> bool:
-        """Whether the run has what this layer draws."""
-        return True
-
-    def chart_times(self, history, chart) -> list[float]:
-        """Chart times (units of L) the panel's box must reach to show what this layer draws, beyond the impacts."""
-        return []
-
-    def draw(self, ax, panel: RodPanel) -> list:
-        raise NotImplementedError
-
-    def key(self, panel: RodPanel) -> list[tuple]:
-        return []
 
 
 def _with_fronts(history) -> bool:
@@ -163,24 +127,30 @@ class Fronts(RodLayer):
     def applies(self, history):
         return _with_fronts(history)
 
-    def draw(self, ax, panel):
-        chart, st, letter = panel.chart, panel.style, panel.letter
-        L, sol = chart.L, chart.solution
+    @staticmethod
+    def _jumps(panel) -> list[tuple[str, float]]:
+        """(family, u or w) of each front in the panel's chart times where lam or the velocity jumps."""
+        chart = panel.chart
+        sol = chart.solution
         us, ws = chart.fronts(panel.box[2] * panel.L, panel.box[3] * panel.L)
+        return [(family, s) for family, values, invariant in (("+", us, sol.plus), ("-", ws, sol.minus))
+                for s in values if abs(invariant.r(s) - invariant.r(np.nextafter(s, -math.inf))) > FRONT_JUMP]
+
+    def draw(self, ax, panel):
+        st, letter, L = panel.style, panel.letter, panel.chart.L
         out = []
-        for family, values, invariant in (("+", us, sol.plus), ("-", ws, sol.minus)):
-            for s in values:
-                if abs(invariant.r(s) - invariant.r(np.nextafter(s, -math.inf))) <= FRONT_JUMP:
-                    continue  # a kink, no jump
-                X = np.array([0.0, L])
-                T = s - X if family == "+" else s + X
-                line, = ax.plot(X / L, T / L, color=st.front.colour, linewidth=st.front.width,
-                                linestyle=st.front.dashes, zorder=2, gid=f"{letter}-front-{len(out)}")
-                out.append(line)
+        for family, s in self._jumps(panel):  # a kink, no jump, draws nothing
+            X = np.array([0.0, L])
+            T = s - X if family == "+" else s + X
+            line, = ax.plot(X / L, T / L, color=st.front.colour, linewidth=st.front.width,
+                            linestyle=st.front.dashes, zorder=2, gid=f"{letter}-front-{len(out)}")
+            out.append(line)
         return out
 
     def key(self, panel):
         st = panel.style
+        if panel.history.driving is not None and not self._jumps(panel):  # smooth forces: no front to name
+            return []
         return [(Line2D([], [], color=st.front.colour, linewidth=st.front.width, linestyle=st.front.dashes),
                  "light front: always\nat 45\N{DEGREE SIGN} here")]
 
@@ -210,6 +180,8 @@ class Contacts(RodLayer):
         return out
 
     def key(self, panel):
+        if not any(not i.is_separation for i in panel.history.impacts):  # driven by forces: no particle rides it
+            return []
         return [(Line2D([], [], color="#777777", alpha=0.35, linewidth=panel.style.rod.width * 3.2),
                  "contact: particle\nrides the end")]
 
@@ -454,7 +426,9 @@ class Impacts(RodLayer):
 
 STRIP, FRONTS, CONTACTS, TURNS, PIVOTS = Strip(), Fronts(), Contacts(), Turns(), Pivots()
 HORIZON, LIGHT, CLOCKS, PARTICLES, IMPACTS = Horizon(), Light(), Clocks(), Particles(), Impacts()
+FORCES = Forces()
 #: the drawing order (zorders decide what covers what; this order breaks ties)
-DRAW: tuple[RodLayer, ...] = (STRIP, FRONTS, CONTACTS, TURNS, PIVOTS, HORIZON, LIGHT, CLOCKS, PARTICLES, IMPACTS)
+DRAW: tuple[RodLayer, ...] = (STRIP, FRONTS, CONTACTS, TURNS, PIVOTS, HORIZON, LIGHT, CLOCKS, PARTICLES, IMPACTS,
+                              FORCES)
 #: the key's order: the material points' clocks, what the run's own model shows, the turns' pieces
-KEY: tuple[RodLayer, ...] = (CLOCKS, FRONTS, CONTACTS, STRIP, TURNS, LIGHT, PIVOTS, HORIZON)
+KEY: tuple[RodLayer, ...] = (CLOCKS, FRONTS, CONTACTS, STRIP, TURNS, LIGHT, PIVOTS, HORIZON, FORCES)

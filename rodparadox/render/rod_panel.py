@@ -51,6 +51,7 @@ class RodPanelArtists(NamedTuple):
     particles: tuple = ()
     impacts: tuple = ()
     key: tuple = ()
+    forces: tuple = ()  # a rod driven by forces: each force's band beside its end, its start and end marked
 
 
 def rod_box(history, chart=None) -> tuple[float, float, float, float]:
@@ -60,7 +61,7 @@ def rod_box(history, chart=None) -> tuple[float, float, float, float]:
     chart = chart or chart_of(history)
     L = history.scenario.L
     times = [chart.to_chart(i.event)[0] / L for i in history.impacts]
-    times += [T for layer in DRAW if layer.applies(history) for T in layer.chart_times(history, chart)]
+    times += [T for layer in DRAW if layer.applies(history) for T in layer.chart_times(history, chart)]  # forces too
     first = min(times)
     T0, T1 = first - min(2.0, max(0.5, first)), max(times) + 1.5
     if T1 - T0 > MAX_VIEW_SPAN:
@@ -132,9 +133,19 @@ def _key(ax, panel: RodPanel):
     entries = [entry for layer in KEY if layer.applies(panel.history) for entry in layer.key(panel)]
     legend = ax.legend([handle for handle, _ in entries], [text for _, text in entries], loc="upper left",
                        bbox_to_anchor=(1.04, 1.0), borderaxespad=0.0, fontsize=panel.fs["tick"] * 0.85,
-                       handlelength=2.0, borderpad=0.0, labelspacing=0.6, frameon=False, handler_map=HANDLER_MAP)
+                       handlelength=2.0, borderpad=0.0, labelspacing=0.6, frameon=False,
+                       handler_map=_handlers(panel.history))
     legend.set_zorder(7)
     return legend
+
+
+def _handlers(history) -> dict:
+    """The key's handlers: the compression ramp's, and the force band's for a rod driven by forces."""
+    if history.driving is None:
+        return HANDLER_MAP
+    from rodparadox.render.force_layers import HANDLER_MAP as FORCE_HANDLERS
+
+    return {**HANDLER_MAP, **FORCE_HANDLERS}
 
 
 # --- the panels with a diagram, or alone --------------------------------------------------------------------------

@@ -113,7 +113,7 @@ def comparison_note(histories, frames: Sequence[Frame]) -> str:
     driven by forces, the forces that drive them all: no particles strike them)."""
     if not histories[0].scenario.particles:
         every = "Both rods are" if len(histories) == 2 else "Every rod is"
-        return f"{every} driven by the same forces at their ends, and struck by no particle: " \
+        return f"{every} driven by the same forces at their ends: " \
                f"{forces_text(histories[0])}."
     starts = [particle_starts_text(h) for h in histories]
     if len(set(starts)) == 1:

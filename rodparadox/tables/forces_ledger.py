@@ -3,8 +3,8 @@ what each agent delivered up to the slice's end events, the rod's kinetic and st
 (E, p) before the forces plus what was delivered (the same, to rounding: the conservation law with forces), and the
 rod's centre of energy with its velocity beside p / E (von Laue's point: they differ while forces act). Pure.
 
-Slices: the times given (`--at`), else the window's ends, each force's start, peak and end in that frame, and the
-midpoints between them.
+Slices: the times given (`--at`), else the window's ends, each force's start, peak and end in that frame (events
+simultaneous in the frame, to rounding, give one slice), and the midpoints between them.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from typing import Any, Sequence
 from rodparadox.numbers import exact
 from rodparadox.physics.frames import Frame, frame_heading, time_window
 from rodparadox.physics.types import EnergyMomentum
+from rodparadox.tolerances import SAME_INSTANT
 
 FORMAT = "sears-paradox-ledger/1"
 UNITS = "E in M c^2, p in M c, M the rod's mass; t and x in the unit L is given in"
@@ -45,7 +46,10 @@ def slice_times(history, frame: Frame, at: Sequence[float] | None = None) -> tup
     if at is not None:
         return tuple(at)
     lo, hi = time_window(history, frame)
-    marks = sorted({lo, hi, *(e.event.time_in(frame.rapidity) for e in history.driving.force_events())})
+    marks = []
+    for t in sorted({lo, hi, *(e.event.time_in(frame.rapidity) for e in history.driving.force_events())}):
+        if not marks or t - marks[-1] > SAME_INSTANT * (history.scenario.L + abs(t)):
+            marks.append(t)  # events simultaneous in the frame (boosted apart by rounding) give one slice
     out = []
     for a, b in zip(marks, marks[1:]):
         out += [a, 0.5 * (a + b)]

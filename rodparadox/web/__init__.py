@@ -6,9 +6,12 @@
   causal_data  the causal rod's part of it, from its invariants' tables (`physics.causal.tables`, through the
                rod interface): its lines, cells of compression, fronts and ledger (matter and stress), for whole
                arrays at once, within the page's bounds (a speed beyond them is left out)
-  page   the page itself: inline CSS, the data as inline JSON, the script in four parts by job (`page.js`: data,
-         state, numbers, boosts; `page_draw.js`; `page_tables.js`: tables and legend; `page_controls.js`), plain
-         JavaScript joined into one <script>, no build
+  forces_data  a rod driven by forces (the `driving` capability): its bands, force events, tables and ledger
+  windows  each frame's time window (`frames.time_window` for whole arrays of frames): the page's and the ledger's
+  page   the page itself: inline CSS, the data as inline JSON, the script in five parts by job (`page.js`: data,
+         state, numbers and their formats, boosts; `page_draw.js`; `page_forces.js`: bands and force events;
+         `page_tables.js`: tables and legend; `page_controls.js`), plain JavaScript joined into one <script>, no
+         build
 
 No matplotlib anywhere here: `sears-paradox html` never imports it.
 """

@@ -169,29 +169,19 @@ def particles(history, tables, f: np.ndarray, t: np.ndarray, T_L, T_R) -> dict[s
 MATERIAL_LINES = 4
 
 
-def windows(changes: np.ndarray, starts: np.ndarray, rapidities: np.ndarray) -> np.ndarray:
-    """Each frame's time window as the page computes it (`frames.time_window`): from the first change to the
-    last, widened by the lead from the scenario's start, clamped to [L/2, 2L] (units of L)."""
-    c, s = np.cosh(rapidities)[:, None], np.sinh(rapidities)[:, None]
-    times = c * changes[None, :, 1] - s * changes[None, :, 0]
-    at_start = c * starts[None, :, 1] - s * starts[None, :, 0]
-    first, last = times.min(axis=1), times.max(axis=1)
-    lead = np.clip(first - at_start.min(axis=1), 0.5, 2.0)
-    return np.column_stack([first - lead, last + lead])
-
-
-def model_data(history, v: float, frames, reach: float, tolerance: float, material_tolerance: float,
+def model_data(history, v: float, frames, reach: float, window, tolerance: float, material_tolerance: float,
                digits: int, material_digits: int, instants: int, table_rows, fixed) -> dict[str, Any]:
     """The causal rod at one speed: what the page draws and prints (the module's docstring). `frames`: the
-    ledger's frames in the rigid rod's order (S', S, the others). Raises `TooCostly` past the page's bounds."""
+    ledger's frames in the rigid rod's order (S', S, the others); `window(rapidities)`: each frame's time window
+    (`windows.Changes.windows`). Raises `TooCostly` past the page's bounds."""
     try:
-        return _model_data(history, v, frames, reach, tolerance, material_tolerance, digits, material_digits,
+        return _model_data(history, v, frames, reach, window, tolerance, material_tolerance, digits, material_digits,
                            instants, table_rows, fixed)
     except BeyondBounds as e:
         raise TooCostly(e.what, v) from None
 
 
-def _model_data(history, v: float, frames, reach: float, tolerance: float, material_tolerance: float,
+def _model_data(history, v: float, frames, reach: float, window, tolerance: float, material_tolerance: float,
                 digits: int, material_digits: int, instants: int, table_rows, fixed) -> dict[str, Any]:
     from rodparadox.numbers import impact_name
     from rodparadox.tables.causal_ledger import event_name
@@ -203,20 +193,13 @@ def _model_data(history, v: float, frames, reach: float, tolerance: float, mater
                 "particle_before": i.particle_rapidity_before, "particle_after": i.particle_rapidity_after,
                 "rod_before": i.rod_rapidity_before, "rod_after": i.rod_rapidity_after, "simultaneous_with": None}
                for i in history.impacts]
-    changes = [(i.event.x, i.event.t) for i in history.impacts]
-    for name in ("A", "B", "rod_left", "rod_right"):
-        w = history.worldline(name)
-        if w is not None:
-            changes += [(e.x, e.t) for seg in w.segments for e in (seg.start, seg.end) if math.isfinite(e.t)]
-    starts = [(e.x, e.t) for _, e in history.starts] + [(-L / 2, 0.0), (L / 2, 0.0)]
-    changes_L, starts_L = np.array(changes) / L, np.array(starts) / L
     # the chart times every frame of the page reaches: tables over all of them (the ringing tail costs nothing)
     T_first = min(sol.plus.starts[0], sol.minus.starts[0])
     top = max(sol.plus.tail_start, sol.minus.tail_start)
     tables = history.fronts.chart_tables(T_first - 2 * L, top + 60 * L)
     speeds_ = np.concatenate([np.linspace(-reach, reach, 21), [-v]])
     f = np.arctanh(speeds_)
-    spans = windows(changes_L, starts_L, f) * L
+    spans = window(f)
     ends = [tables.end_chart_times(X, np.concatenate([f, f]), np.concatenate([spans[:, 0], spans[:, 1]]))
             for X in (0.0, L)]
     T_lo, T_hi = min(e.min() for e in ends) - 0.5 * L, max(e.max() for e in ends) + 0.5 * L
@@ -230,26 +213,46 @@ def _model_data(history, v: float, frames, reach: float, tolerance: float, mater
     bound = max(abs(r) for r in history.rapidity_range())
     # the ledger: every frame's instants at once
     rapidities = np.array([fr.rapidity for fr in frames])
-    spans = windows(changes_L, starts_L, rapidities) * L
+    spans = window(rapidities)
     fraction = np.linspace(0.0, 1.0, instants)
     ff = np.repeat(rapidities, instants)
     tt = (spans[:, 0][:, None] + (spans[:, 1] - spans[:, 0])[:, None] * fraction[None, :]).ravel()
-    sums = ledger_sums(history, tables, ff, tt)
-    bodies = [n for n in ("A", "B") if f"{n}_E" in sums] + ["matter", "stress"]
     ledger = []
+    if history.driving is not None:  # what each agent delivered, the rod's two parts, their sum, the check
+        from rodparadox.physics.types import EnergyMomentum
+        from rodparadox.web import forces_data
+
+        matter, stress = history.fronts.rod_parts_on_slices(ff, tt)
+        d, T_L, T_R = history.driving, tables.end_chart_times(0.0, ff, tt), tables.end_chart_times(L, ff, tt)
+        rows = [forces_data.ledger_slice(history, f_, t_, (EnergyMomentum(0.0, *m), EnergyMomentum(0.0, *p)),
+                                         (d.delivered_at("left", f_, TL), d.delivered_at("right", f_, TR)))
+                for f_, t_, m, p, TL, TR in zip(ff, tt, matter, stress, T_L, T_R)]
+        names = list(forces_data.ledger_rows(history))
+    else:
+        sums = ledger_sums(history, tables, ff, tt)
+        bodies = [n for n in ("A", "B") if f"{n}_E" in sums] + ["matter", "stress"]
+        rows = [[sums[f"{name}_{part}"][k] for name in bodies for part in ("E", "p")] for k in range(len(tt))]
+        rows = [row + [math.fsum(row[0::2]), math.fsum(row[1::2])] for row in rows]
+        names = [f"particle {n}" if n in ("A", "B") else f"rod, {n}" for n in bodies] + ["total"]
     for j, frame in enumerate(frames):
-        rows = []
-        for k in range(j * instants, (j + 1) * instants):
-            rows.append([fixed(sums[f"{name}_{part}"][k]) for name in bodies for part in ("E", "p")])
         # the slices evenly spread over the window: the page reads slice k's time from the window, as it is built
-        ledger.append({"u": frame.velocity + 0.0, "bodies": bodies, "slices": rows,
+        ledger.append({"u": frame.velocity + 0.0, "rows": names,
+                       "slices": [[fixed(n) for n in row] for row in rows[j * instants:(j + 1) * instants]],
                        "window": [spans[j, 0] / L, spans[j, 1] / L]})
     return {
         "model": "causal", "impacts": impacts, "worldlines": lines, "material": material,
-        "colour_bound": bound, "changes": [[drawn(x, digits), drawn(t, digits)] for x, t in changes_L],
-        "starts": [[x, t] for x, t in starts_L],
+        "colour_bound": bound,
         "tables": {"rest": table_rows(history, frames[1]), "moving": table_rows(history, frames[0])},
         "ledger": ledger, "fronts": fronts(history, tables, T_lo, T_hi),
         "cells": cells(history, tables, T_lo, T_hi, compression),
         "final": history.final_rapidity,
+        "end_events": lambda end, f, times: end_events(tables, end, f, times),  # the page's bands, if driven
     }
+
+
+def end_events(tables, end: str, f: float, times) -> tuple[np.ndarray, np.ndarray]:
+    """Where an end is in S (units of L) when the frame of rapidity f reads the times (units of L) there."""
+    L, X = tables.L, 0.0 if end == "left" else tables.L
+    T = tables.end_chart_times(X, np.full(len(times), f), np.asarray(times) * L)
+    x, t, _ = tables.point(X, T)
+    return x / L, t / L

@@ -38,3 +38,9 @@ def inks() -> dict[str, Any]:
             "compression": [style.compression_ends[0], style.sheet, style.compression_ends[1]],
         }
     return out
+
+
+def force_inks() -> dict[str, Any]:
+    """Every style's inks of the forces on the ends (`render.force_layers`: the band's edge and arrows, its fill),
+    by style name: embedded only in a page that draws forces."""
+    return {name: {"force": ink(style.force), "force_fill": style.force_fill} for name, style in STYLES.items()}

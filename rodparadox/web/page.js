@@ -1,5 +1,5 @@
-// The page's script, part 1 of 4 (page.py joins page.js, page_draw.js, page_tables.js and page_controls.js, in
-// that order, into one <script>: one scope, no build step): the data, the state, numbers, frames and boosts.
+// The page's script, part 1 of 5 (page.py joins page.js, page_draw.js, page_forces.js, page_tables.js and
+// page_controls.js, in that order, into one <script>: one scope, no build step): the data, the state, numbers, frames and boosts.
 // Plain JavaScript, no network. Every number comes from the data Python embedded: the page only
 // Lorentz-transforms embedded points (exact for each point) and interpolates along the sampled lines to draw.
 // Two rod models per speed: the rigid rod and the causal rod (README, "The causal rod"), shown alone or side by
@@ -31,13 +31,58 @@
   const cache = new Map();  // the geometry of each scenario, speed, model and frame drawn lately
 
   // --- numbers as the tool writes them ------------------------------------------------------------------
-  function signed(text) {  // a real minus sign, + before a positive number, no sign on zero
-    if (/^-?0(\.0*)?(e[+-]?\d+)?$/.test(text)) return text.replace("-", "");
-    return text[0] === "-" ? MINUS + text.slice(1) : "+" + text;
+  // The tables' rules, Python's (`numbers.coordinate_format`, `velocity_format`; the ledger's fixed decimals), with
+  // their parameters embedded (`DATA.formats`): the digits of a double rounded as Python rounds them (ties to
+  // even on its exact value), a real minus sign, no sign on a zero.
+  const FORMATS = DATA.formats;
+  function rounded(a, n) {  // a > 0 to n >= 0 significant digits: [digits (n of them), exponent of the first]
+    const [m, e] = a.toExponential(100).split("e"), d = m.replace(".", "");
+    let exp = Number(e), head = d.slice(0, n);
+    const rest = d.slice(n), last = n ? Number(head[n - 1]) : 0;
+    if (rest[0] > "5" || (rest[0] === "5" && (/[1-9]/.test(rest.slice(1)) || last % 2 === 1))) {
+      head = n ? (BigInt(head) + 1n).toString() : "1";
+      if (head.length > n) { exp += 1; head = head.slice(0, Math.max(n, 1)); if (!n) return ["", exp]; }
+    } else if (!n) return ["", -Infinity];
+    return [head, exp];
   }
-  const coordinate = (x) => signed(Math.abs(x) < 1e-12 ? "0" : x.toPrecision(7));
-  const velocity = (u) => signed(u.toFixed(6));
-  const fixed4 = (x) => { const s = (Math.abs(x) < 5e-5 ? 0 : x).toFixed(4); return s[0] === "-" ? MINUS + s.slice(1) : s; };
+  function pyG(x, p) {  // Python's format(x, "+#.{p}g")
+    const sign = x < 0 || Object.is(x, -0) ? "-" : "+", a = Math.abs(x);
+    if (a === 0) return sign + "0." + "0".repeat(p - 1);
+    const [d, exp] = rounded(a, p);
+    if (exp < -4 || exp >= p) return `${sign}${d[0]}.${d.slice(1)}e${exp < 0 ? "-" : "+"}${String(Math.abs(exp)).padStart(2, "0")}`;
+    return sign + (exp >= 0 ? d.slice(0, exp + 1) + "." + d.slice(exp + 1) : "0." + "0".repeat(-exp - 1) + d);
+  }
+  function pyF(x, decimals) {  // Python's format(x, "+.{decimals}f")
+    const sign = x < 0 || Object.is(x, -0) ? "-" : "+", a = Math.abs(x);
+    const n = a === 0 ? -1 : Number(a.toExponential(100).split("e")[1]) + 1 + decimals;  // digits kept
+    const [d, exp] = n < 0 ? ["", -Infinity] : rounded(a, n);
+    let units;  // the value as an integer count of 10^-decimals
+    if (exp === -Infinity) units = "0";
+    else if (!d) units = "1";  // rounded up from below the last decimal
+    else units = d + "0".repeat(Math.max(exp + 1 + decimals - d.length, 0));
+    units = units.replace(/^0+(?=.)/, "").padStart(decimals + 1, "0");
+    const text = decimals ? units.slice(0, -decimals) + "." + units.slice(-decimals) : units;
+    return sign + text;
+  }
+  function withoutZeroSign(text) {  // -0.000 is +0.000: a value that rounds to zero has no sign
+    return text[0] === "-" && !/[1-9]/.test(text.split("e")[0]) ? "+" + text.slice(1) : text;
+  }
+  const minus = (text) => text.replace(/-/g, MINUS);
+  function coordinateFormat(values) {  // numbers.coordinate_format
+    const largest = Math.max(0, ...values.map(Math.abs));
+    return (x) => (Math.abs(x) <= FORMATS.printed_zero * largest ? "+0" : minus(withoutZeroSign(pyG(x + 0, FORMATS.digits))));
+  }
+  function velocityFormat(values) {  // numbers.velocity_format
+    const largest = Math.max(0, ...values.map(Math.abs));
+    let decimals = FORMATS.digits - 1;
+    if (largest > 0 && largest < 0.1) decimals = FORMATS.digits - 2 - Math.floor(Math.log10(largest));
+    return (u) => {
+      const nearC = Math.abs(u) > 0.5 ? Math.ceil(-Math.log10(1 - Math.abs(u))) + 1 : 0;
+      return minus(withoutZeroSign(pyF(u + 0, Math.max(decimals, nearC))));
+    };
+  }
+  // a ledger cell: FORMATS.ledger_decimals decimals (the embedded numbers have no more), no sign but a minus
+  const ledgerCell = (x) => minus(withoutZeroSign(pyF(x + 0, FORMATS.ledger_decimals))).replace("+", "");
   function shown(x, digits) {  // up to `digits` significant digits, trailing zeros dropped, a real minus sign
     let s = Number(x.toPrecision(digits)).toString();
     if (s === "-0") s = "0";
@@ -66,6 +111,8 @@
     return n === "rest" ? ["x", "t"] : n === "moving" ? ["x" + PRIME, "t" + PRIME] : ["x\u1d64", "t\u1d64"];
   }
   function boost(x, t, c, s) { return [c * x - s * t, c * t - s * x]; }
+  // the labels of a force's start and end beside their markers (as the figures')
+  const FORCE_WORDS = {start: "on", end: "off"};
 
   // A line in S with its periods unrolled: a causal line gives one period from `repeat_from` and how many
   // times it repeats, each copy moved by `period` (dx, dt).
@@ -83,8 +130,16 @@
     return {x, t, before: w.before, after: w.after};
   }
 
-  // A model's geometry in the current frame: every embedded point boosted once, the time window as Python's
-  // frames.time_window computes it, each line extended straight to the window's ends.
+  // The time window of the frame (embedded: Python's frames.time_window for each position of the frame slider
+  // and for S').
+  function frameWindow(m, u) {
+    if (frameName(u) === "moving") return m.windows.moving;
+    const k = Math.round(u * 100) + scenario().frame_steps;
+    return [m.windows.lo[k], m.windows.hi[k]];
+  }
+
+  // A model's geometry in the current frame: every embedded point boosted once, each line extended straight to
+  // the window's ends.
   function geometry(name) {
     name = name || shownModels()[0];
     const key = [state.scenario, state.speed, name, state.u].join("/");
@@ -92,11 +147,7 @@
     if (cache.size > 12) cache.clear();
     const m = modelNamed(name), eta = Math.atanh(state.u), c = Math.cosh(eta), s = Math.sinh(eta);
     if (m === null) return null;
-    const times = m.changes.map(([x, t]) => c * t - s * x);
-    const first = Math.min(...times), last = Math.max(...times);
-    const atStart = m.starts.map(([x, t]) => c * t - s * x);
-    const lead = Math.min(Math.max(first - Math.min(...atStart), 0.5), 2.0);
-    const lo = first - lead, hi = last + lead;
+    const [lo, hi] = frameWindow(m, state.u);
     const line = (given) => {
       const X = [], T = [], P = [], w = unrolled(given);
       for (let k = 0; k < w.x.length; k++) {
@@ -117,9 +168,22 @@
       drawn[name] = clipped(worldlines[name], lo, hi);
       for (const x of drawn[name][0]) { xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); }
     }
-    const pad = Math.max(0.08 * (xmax - xmin), 0.25);
+    // room for a driven end's band outside it (a type size wide at most: 0.6 L at the narrowest panels' scale)
+    const pad = Math.max(0.08 * (xmax - xmin), m.forces ? 0.6 : 0.25);
     const g = {key, name, model: m, eta, c, s, lo, hi, worldlines, drawn, impacts, material: m.material.map(line),
                box: [xmin - pad, xmax + pad, lo, hi]};
+    if (m.forces) {  // a rod driven by forces: its bands, arrows and force events, boosted
+      g.bands = m.forces.bands.map((b) => {
+        const X = [], T = [];
+        b.x.forEach((x, k) => { const [bx, bt] = boost(x, b.t[k], c, s); X.push(bx); T.push(bt); });
+        return {end: b.end, X, T, F: b.F};
+      });
+      g.arrows = m.forces.arrows.map(([end, x, t, F]) => [end, ...boost(x, t, c, s), F]);
+      g.forceEvents = m.forces.events.map((e) => {
+        const [x, t] = boost(e.x, e.t, c, s);
+        return Object.assign({}, e, {X: x, T: t, label: e.end + "-" + e.moment, name: FORCE_WORDS[e.moment] || ""});
+      });
+    }
     if (m.model === "causal") {
       g.fronts = m.fronts.map(([xl, tl, xr, tr]) => [...boost(xl, tl, c, s), ...boost(xr, tr, c, s)]);
       g.cells = causalCells(m.cells, eta);

@@ -1,6 +1,6 @@
 """The page: one self-contained HTML document (docs/html.md, "One page to explore: `sears-paradox html`"). Pure.
 
-Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in four files
+Inline CSS (`page.css`), the data (`data.page_data`) as inline JSON, and the script (plain JavaScript in five files
 by job, `SCRIPTS`, joined verbatim into one <script>: no build step): nothing is fetched, so the page opens from
 `file://` with no network. The same scenarios, options and package give the same bytes: JSON with sorted keys and
 Python's shortest round-trip floats, no date, no version.
@@ -24,7 +24,7 @@ def asset(name: str) -> str:
 
 
 #: the script's parts, by job, joined in this order into the page's one <script> (one scope; no build step)
-SCRIPTS = ("page.js", "page_draw.js", "page_tables.js", "page_controls.js")
+SCRIPTS = ("page.js", "page_draw.js", "page_forces.js", "page_tables.js", "page_controls.js")
 
 
 def script() -> str:

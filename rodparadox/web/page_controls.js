@@ -1,4 +1,4 @@
-// The page's script, part 4 of 4 (page.py joins the parts into one <script>): the controls and the start.
+// The page's script, part 5 of 5 (page.py joins the parts into one <script>): the controls and the start.
   // --- the controls ----------------------------------------------------------------------------------------
   function setSpeedControl() {
     const speeds = scenario().speeds;
@@ -6,8 +6,7 @@
     controls.speed.value = String(state.speed);
     controls.speed.setAttribute("aria-valuetext", "v = " + shown(v(), 10));
     $("speed-value").textContent = shown(v(), 10);
-    const reach = Math.max(scenario().frame_reach, ...speeds.map((e) => e.v));
-    controls.frame.min = String(-Math.ceil(reach * 100)); controls.frame.max = String(Math.ceil(reach * 100));
+    controls.frame.min = String(-scenario().frame_steps); controls.frame.max = String(scenario().frame_steps);
     rodControls.forEach((input, k) => {
       input.checked = RODS[k] === state.rod;
       input.disabled = RODS[k] !== "rigid" && !modelNamed("causal") || RODS[k] !== "causal" && !modelNamed("rigid");
@@ -141,5 +140,6 @@
   // for the tests and the benchmark: the state, the drawing's geometry, the times each drawing took; row and
   // column of the first panel, or of panel k (0 or 1)
   window.searsParadox = {state, timings, geometry, render, nowTime: () => nowTime(shared()),
+                         formats: {coordinateFormat, velocityFormat, ledgerCell},
                          row: (t, k) => PANELS[k || 0].placed.row(t), column: (x, k) => PANELS[k || 0].placed.column(x)};
 })();

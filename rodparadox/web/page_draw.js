@@ -1,4 +1,4 @@
-// The page's script, part 2 of 4 (page.py joins the parts, in SCRIPTS' order, into one <script>): drawing the
+// The page's script, part 2 of 5 (page.py joins the parts, in SCRIPTS' order, into one <script>): drawing the
 // diagram, its labels and axes, and the strip.
   // --- drawing ---------------------------------------------------------------------------------------------
   const inks = () => DATA.styles[state.style];
@@ -11,9 +11,9 @@
     ctx.setLineDash(ink.dashes.map((d) => d * w));
     ctx.lineCap = ink.dashes.length ? "butt" : "round";
   }
-  function niceStep(span, pixels, room) {  // 1, 2, 2.5, 5 x 10^n, ticks at least `room` pixels apart
+  function niceStep(span, pixels, room) {  // the least nice step (embedded multiples x 10^n) `room` pixels apart
     const raw = span * room / pixels, power = Math.pow(10, Math.floor(Math.log10(raw)));
-    for (const m of [1, 2, 2.5, 5, 10]) if (m * power >= raw) return m * power;
+    for (const m of DATA.tick_multiples) if (m * power >= raw) return m * power;
     return 10 * power;
   }
 
@@ -131,9 +131,12 @@
       setInk(ctx, st.front, 1);
       for (const [xl, tl, xr, tr] of g.fronts) polyline(ctx, place, [xl, xr], [tl, tr]);
     }
+    if (g.bands) drawBands(ctx, place, g, size);
     // lines of simultaneity of S and S' through every impact (impacts on one line share it); the causal rod's
-    // through each particle's first contact (its later contacts and separations crowd one end)
-    const through = causal ? g.impacts.filter((i) => i.kind === "contact" && /^[AB]1$/.test(i.label)) : g.impacts;
+    // through each particle's first contact (its later contacts and separations crowd one end); a driven rod's
+    // through each force's start and end
+    const through = g.forceEvents ? g.forceEvents.filter((e) => e.moment !== "peak")
+      : causal ? g.impacts.filter((i) => i.kind === "contact" && /^[AB]1$/.test(i.label)) : g.impacts;
     for (const [which, frameU] of [["rest", 0], ["moving", -v()]]) {
       setInk(ctx, st[which], 1);
       const seen = [];
@@ -148,7 +151,7 @@
     if (state.cones) {  // arms a sixth of the panel's shorter side each way
       setInk(ctx, st.light_cone, 1);
       const arm = Math.min(x1 - x0, t1 - t0) / 6;
-      for (const i of g.impacts) for (const d of [[1, 1], [-1, 1]]) {
+      for (const i of marks(g)) for (const d of [[1, 1], [-1, 1]]) {
         polyline(ctx, place, [i.X - d[0] * arm, i.X + d[0] * arm], [i.T - d[1] * arm, i.T + d[1] * arm]);
       }
     }
@@ -172,7 +175,7 @@
     const dots = [];
     const radius = st.impact_size * pt / 2;
     ctx.font = `italic ${size}px ${family}`;
-    for (const i of g.impacts) {  // a separation of the causal rod: hollow
+    for (const i of marks(g)) {  // a separation of the causal rod: hollow
       const px = place.column(i.X), py = place.row(i.T), hollow = i.kind === "separation";
       ctx.fillStyle = hollow ? "white" : st.impact_colour; ctx.strokeStyle = hollow ? st.impact_colour : "white";
       ctx.lineWidth = hollow ? 1.3 : 0.8;
@@ -186,7 +189,7 @@
     for (const b of labels) if (b.leader) {
       ctx.beginPath(); ctx.moveTo(...b.leader[0]); ctx.lineTo(...b.leader[1]); ctx.stroke();
     }
-    for (const b of labels) label(ctx, b.name, b.x, b.baseline, "left", size);
+    for (const b of labels) label(ctx, b.name, b.x, b.baseline, "left", size, b.plain);
     for (const p of ["A", "B"]) if (g.worldlines[p]) {  // the letter beside the first part of its line
       const [X, T] = clipped(g.worldlines[p], t0, t1);
       const k = Math.min(1, X.length - 1);
@@ -212,11 +215,11 @@
   // dot, tied to it by a thin leader when it sits farther than half a label's height from the dot (as plot's
   // labels). Boxes in CSS pixels, of the ink (measured), the white halo's 1.5 px kept clear between them.
   function placeLabels(ctx, g, place, radius, size) {
-    const dots = g.impacts.map((i) => [place.column(i.X), place.row(i.T)]), placed = [], halo = 1.5;
+    const items = marks(g), dots = items.map((i) => [place.column(i.X), place.row(i.T)]), placed = [], halo = 1.5;
     const [x0, x1, t0, t1] = place.box, inside = [place.column(x0), place.row(t1), place.column(x1), place.row(t0)];
     const clash = (a, b, pad) => a[0] < b[2] + pad && b[0] < a[2] + pad && a[1] < b[3] + pad && b[1] < a[3] + pad;
-    g.impacts.forEach((i, k) => {
-      const [px, py] = dots[k], [w, ascent, descent] = labelSize(ctx, i.name, size), h = ascent + descent;
+    items.forEach((i, k) => {
+      const [px, py] = dots[k], [w, ascent, descent] = labelSize(ctx, i.name, size, i.plain), h = ascent + descent;
       const side = i.end === "right" ? 1 : -1, gap = radius + 0.3 * size, base = py - 0.35 * size;
       const candidates = [];
       for (const s of [side, -side]) for (const dx of [0, 0.8 * size, 2 * size]) for (const n of [0, 1, -1, 2, -2, 3, -3, 4, -4]) {
@@ -241,12 +244,12 @@
         const qx = Math.max(x, Math.min(px, x + w)), qy = Math.max(y, Math.min(py, y + h)), d = Math.hypot(qx - px, qy - py);
         leader = [[px + (qx - px) * radius / d, py + (qy - py) * radius / d], [qx, qy]];
       }
-      placed.push({name: i.name, label: i.label, x, y, w, h, baseline: y + ascent, leader});
+      placed.push({name: i.name, label: i.label, x, y, w, h, baseline: y + ascent, leader, plain: !!i.plain});
     });
     return placed;
   }
-  function labelSize(ctx, name, size) {  // width, ascent and descent of the ink of a label drawn by `label`
-    ctx.font = `italic ${size}px ${fontFamily()}`;
+  function labelSize(ctx, name, size, plain) {  // width, ascent and descent of the ink of a label drawn by `label`
+    ctx.font = `${plain ? "" : "italic "}${size}px ${fontFamily()}`;
     const a = ctx.measureText(name[0]);
     ctx.font = `${size}px ${fontFamily()}`;
     const b = ctx.measureText(name.slice(1));
@@ -254,16 +257,16 @@
             Math.max(a.actualBoundingBoxDescent, b.actualBoundingBoxDescent, 0)];
   }
 
-  function label(ctx, name, x, y, align, size) {  // B₁: the letter in italics, the subscript digits upright
-    const letter = name[0], digits = name.slice(1);
+  function label(ctx, name, x, y, align, size, plain) {  // B₁: the letter in italics, the subscript digits upright
+    const letter = name[0], digits = name.slice(1), italic = plain ? "" : "italic ";
     ctx.fillStyle = "black"; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
-    ctx.font = `italic ${size}px ${fontFamily()}`;
+    ctx.font = `${italic}${size}px ${fontFamily()}`;
     const w1 = ctx.measureText(letter).width;
     ctx.font = `${size}px ${fontFamily()}`;
     const w2 = ctx.measureText(digits).width;
     const start = align === "left" ? x : x - w1 - w2;
     ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255,255,255,0.85)"; ctx.setLineDash([]);
-    ctx.font = `italic ${size}px ${fontFamily()}`; ctx.strokeText(letter, start, y); ctx.fillText(letter, start, y);
+    ctx.font = `${italic}${size}px ${fontFamily()}`; ctx.strokeText(letter, start, y); ctx.fillText(letter, start, y);
     ctx.font = `${size}px ${fontFamily()}`; ctx.strokeText(digits, start + w1, y); ctx.fillText(digits, start + w1, y);
   }
 
@@ -321,7 +324,7 @@
   const OPEN_CLEAR = 0.04;
   function openingTime() {
     const view = shared(), span = view.hi - view.lo;
-    const times = view.gs.flatMap((g) => g.impacts.map((i) => (i.T - view.lo) / span)).filter((f) => f > 0 && f < 1);
+    const times = view.gs.flatMap((g) => marks(g).map((i) => (i.T - view.lo) / span)).filter((f) => f > 0 && f < 1);
     if (times.every((f) => Math.abs(f - 0.5) > OPEN_CLEAR)) return 0.5;
     const cuts = [0, ...times.sort((a, b) => a - b), 1];
     let best = null;
@@ -407,6 +410,7 @@
       ctx.fillText(p, x, bar - 0.25 * size);
     }
     for (const i of lit) star(ctx, place.column(i.X), bar + barH / 2, 0.6 * size, st.flash);
+    if (g.bands) drawStripForces(ctx, g, t, ends, bar + barH / 2, size);
     // the colour bar: its two ends and its centre, in velocity
     const cx0 = place.column(x0), cw = Math.min((x1 - x0) * place.scale, 22 * size), cy = bar + barH + 1.3 * size;
     for (let k = 0; k < cw; k += 2) { ctx.fillStyle = colourAt(k / cw); ctx.fillRect(cx0 + k, cy, 2.5, 0.6 * size); }

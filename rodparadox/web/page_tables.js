@@ -1,4 +1,4 @@
-// The page's script, part 3 of 4 (page.py joins the parts into one <script>): the tables and the legend.
+// The page's script, part 4 of 5 (page.py joins the parts into one <script>): the tables and the legend.
   // --- the tables ------------------------------------------------------------------------------------------
   function fillTable(table, caption, header, rows, notes) {
     $(table.id + "-caption").textContent = caption;  // above the table, wrapped to the window: only the cells scroll
@@ -23,8 +23,22 @@
     const rod = causal ? ", the causal rod: each contact and its separation" : ", the rigid rod";
     if (name !== "u") {
       const t = m.tables[name];
-      fillTable(panel.events, `${t.caption} (v = ${shown(v(), 10)}${rod}): every digit, with the exact fractions`,
+      fillTable(panel.events, `${t.caption} (v = ${shown(v(), 10)}${rod}): ` +
+                (m.forces ? "as the events are printed" : "every digit, with the exact fractions"),
                 t.header, t.rows, t.notes);
+      return;
+    }
+    if (g.forceEvents) {  // a driven rod: each force's start, peak and end, boosted
+      const events = g.forceEvents.slice().sort((a, b) => a.T - b.T);
+      const coordinate = coordinateFormat(events.flatMap((e) => [e.X * L, e.T * L]));
+      const force = coordinateFormat(events.map((e) => e.force).concat(m.forces.bands.flatMap((b) => b.F)));
+      const velocity = velocityFormat(events.map((e) => Math.tanh(e.rapidity - g.eta)));
+      const rows = events.map((e) => [e.moment, e.end, coordinate(e.X * L), coordinate(e.T * L), force(e.force),
+                                      velocity(Math.tanh(e.rapidity - g.eta))]);
+      const names = coordinateNames(state.u);
+      fillTable(panel.events, `Each force's start, peak and end in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): ` +
+                "decimals boosted from the exact events (choose S or S\u2032 for the table as the events are printed)",
+                ["force", "end", names[0], names[1], "F", "end velocity"], rows, m.tables.rest.notes);
       return;
     }
     const scale = 1 + Math.max(...g.impacts.map((i) => Math.abs(i.T)));
@@ -35,10 +49,12 @@
       instant[k] = n;
     }
     order.sort((a, b) => instant[a] - instant[b] || a - b);
+    const speeds = (i) => [i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => Math.tanh(r - g.eta));
+    const coordinate = coordinateFormat(g.impacts.flatMap((i) => [i.X * L, i.T * L]));
+    const velocity = velocityFormat(g.impacts.flatMap(speeds));
     const rows = order.map((k) => {
       const i = g.impacts[k];
-      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L),
-              ...[i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => velocity(Math.tanh(r - g.eta)))];
+      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L), ...speeds(i).map(velocity)];
     });
     const names = coordinateNames(state.u);
     fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted ` +
@@ -46,12 +62,11 @@
               ["impact", "end", names[0], names[1], "particle before", "particle after", "rod before", "rod after"], rows, []);
   }
 
-  const BODY = {rod: "rod (kinetic)", hidden: "hidden (stress)", matter: "rod, matter", stress: "rod, stress"};
   function drawLedger(panel, g, view) {
     const m = g.model;
     let best = m.ledger[0];
-    // a slice's time: its first number, or (the causal rod's) read from the window its slices spread evenly over
-    const timeOf = (f, k) => f.window ? f.window[0] + (f.window[1] - f.window[0]) * k / (f.slices.length - 1) : f.slices[k][0];
+    // slice k's time: the window's slices are spread evenly over it
+    const timeOf = (f, k) => f.window[0] + (f.window[1] - f.window[0]) * k / (f.slices.length - 1);
     for (const f of m.ledger) if (Math.abs(Math.atanh(f.u) - g.eta) < Math.abs(Math.atanh(best.u) - g.eta)) best = f;
     // in its own frame the slice nearest the now-line; in another, the same fraction of that frame's window
     let k = Math.round(state.time * (best.slices.length - 1));
@@ -59,28 +74,24 @@
       const now = nowTime(view);
       best.slices.forEach((row, n) => { if (Math.abs(timeOf(best, n) - now) < Math.abs(timeOf(best, k) - now)) k = n; });
     }
-    const slice = best.slices[k], first = best.window ? 0 : 1;
-    const rows = [];
-    let E = 0, p = 0;
-    best.bodies.forEach((name, b) => {
-      const e = slice[first + 2 * b], q = slice[first + 1 + 2 * b];
-      E += e; p += q;
-      rows.push([BODY[name] || "particle " + name, fixed4(e), fixed4(q)]);
-    });
-    rows.push(["total", fixed4(E), fixed4(p)]);
+    const slice = best.slices[k];
+    const rows = best.rows.map((name, b) => [name, ledgerCell(slice[2 * b]), ledgerCell(slice[2 * b + 1])]);
     const frameU = best.u === 0 ? "S" : best.u === -v() ? "S\u2032" : "u = " + shown(best.u, 4);
     const clock = best.u === 0 ? "t" : best.u === -v() ? "t\u2032" : "t\u1d64";
     const exact = Math.abs(Math.atanh(best.u) - g.eta) < 1e-12;
     const causal = m.model === "causal";
+    const others = m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ");
     fillTable(panel.ledger, `Energy and momentum of the ${m.model} rod on the slice ${clock} = ${shown(timeOf(best, k), 4)} L of ${frameU}` +
               (exact ? " (of the tabulated slices, the nearest the now-line)" :
-               ` (the ledger is tabulated in S\u2032, S and u = ${m.ledger.slice(2).map((f) => shown(f.u, 4)).join(", ")}: ` +
+               ` (the ledger is tabulated in S\u2032, S and u = ${others}: ` +
                "this is the nearest frame, at the same fraction of its time window)"),
               ["body", "E (M c\u00b2)", "p (M c)"], rows,
-              causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
+              m.ledger_note ? [m.ledger_note + ` Computed before the page was made, on ${best.slices.length} slices of each ` +
+                               "tabulated frame (to 10\u207b\u2074 M c\u00b2)."]
+              : causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
                         "elastic energy included) and its stress part (its pressure's p (u u \u2212 \u03b7) across the " +
                         "slice), each a density along the slice: nothing is hidden. Computed before the page was made, on " +
-                        "41 slices of each tabulated frame (to 10\u207b\u2075 M c\u00b2)."] : []);
+                        "41 slices of each tabulated frame (to 10\u207b\u2074 M c\u00b2)."] : []);
   }
 
   // --- the legend: the same elements and inks as the SVG figures --------------------------------------------
@@ -106,10 +117,21 @@
       items.push([swatch(st.rod_interior), "causal rod's material lines (L/4, L/2, 3L/4)"]);
       items.push([swatch(st.front), "light front (a jump in \u03bb)"]);
     }
+    const driven = gs.find((g) => g.model.forces);
+    if (driven) {
+      const fi = DATA.force_inks[state.style], scale = driven.model.forces.scale, w = fontSize();
+      const pulls = gs.some((g) => g.bands.some((b) => b.F.some((F) => F < 0)));
+      items.push([`<svg width="44" height="14" aria-hidden="true"><rect x="${38 - w}" y="1" width="${w}" height="12" fill="${fi.force_fill}" ` +
+                  `stroke="${fi.force.colour}" stroke-width="${fi.force.width * pt}"/><line x1="38" y1="0" x2="38" y2="14" stroke="${st.rod.colour}" ` +
+                  `stroke-width="${st.rod.width * pt}"/></svg>`,
+                  `force on an end: this wide at ${shown(scale, 4)} M c\u00b2/L` + (pulls ? "; hatched: a pull" : "")]);
+      items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`,
+                  "a force starts (on) or ends (off)"]);
+    }
     for (const p of ["A", "B"]) if (gs[0].model.worldlines[p]) items.push([swatch(st.particles[p]), "particle " + p]);
-    items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`,
+    if (!driven) items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="${st.impact_colour}" stroke="white"/></svg>`,
                 causal ? "impact; for the causal rod a contact (B\u2081)" : "impact"]);
-    if (causal) {
+    if (causal && !driven) {
       items.push([`<svg width="44" height="14" aria-hidden="true"><circle cx="22" cy="7" r="${st.impact_size * pt / 2}" fill="white" stroke="${st.impact_colour}" stroke-width="1.3"/></svg>`,
                   "separation (B\u2032\u2081)"]);
       items.push([`<svg width="44" height="14" aria-hidden="true"><line x1="2" y1="7" x2="42" y2="7" stroke="#777777" stroke-opacity="0.35" stroke-width="${st.rod.width * 3.2 * pt}"/></svg>`,

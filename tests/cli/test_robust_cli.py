@@ -258,18 +258,40 @@ def test_each_stopping_signal_raises_where_the_program_is(name, status):
     from sears_paradox_cli.edge import Stopped, stopped_by_signals
 
     number = getattr(signal, name)
-    before = signal.getsignal(number)
+    inherited = signal.getsignal(number)
+    # as a terminal starts it: a test run started in the background inherits SIGINT ignored, which the program
+    # rightly keeps ignoring (the next test)
+    before = signal.default_int_handler if name == "SIGINT" else signal.SIG_DFL
+    signal.signal(number, before)
     cleaned = []
-    with pytest.raises(Stopped) as e:
-        with stopped_by_signals():
-            try:
-                os.kill(os.getpid(), number)
-                time.sleep(5)  # the handler raises here, at once
-            finally:
-                cleaned.append(True)
-    assert cleaned == [True] and e.value.exit_code == status and signal.getsignal(number) is before
+    try:
+        with pytest.raises(Stopped) as e:
+            with stopped_by_signals():
+                try:
+                    os.kill(os.getpid(), number)
+                    time.sleep(5)  # the handler raises here, at once
+                finally:
+                    cleaned.append(True)
+        assert cleaned == [True] and e.value.exit_code == status and signal.getsignal(number) is before
+    finally:
+        signal.signal(number, inherited)
     word = "Ctrl-C" if name == "SIGINT" else name
     assert e.value.sentence() == f"interrupted by {word}; no file was left half-written."
+
+
+def test_a_signal_ignored_when_the_program_starts_stays_ignored():
+    """nohup's SIGHUP, a background job's SIGINT: ignored before, ignored while the command runs, as Python does."""
+    from sears_paradox_cli.edge import stopped_by_signals
+
+    inherited = signal.getsignal(signal.SIGHUP)
+    signal.signal(signal.SIGHUP, signal.SIG_IGN)
+    try:
+        with stopped_by_signals():
+            os.kill(os.getpid(), signal.SIGHUP)  # would raise Stopped were it caught
+            assert signal.getsignal(signal.SIGHUP) is signal.SIG_IGN
+        assert signal.getsignal(signal.SIGHUP) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGHUP, inherited)
 
 
 def test_ctrl_c_in_a_command_is_one_sentence_and_130(monkeypatch):

@@ -387,3 +387,70 @@ def test_the_drawn_pages_name_no_software(worksheets, v):
 
     found = [(k, m.group()) for k, text in enumerate(worksheets[v][1]) for m in SOFTWARE.finditer(text)]
     assert not found, found
+
+
+# --- rods driven by forces (Sears's own paradox) ------------------------------------------------------------------
+
+#: the presets whose rod is driven by forces at its ends
+FORCE_PRESETS = ("sears", "sears_moving", "push")
+
+
+@functools.lru_cache(maxsize=None)
+def forces_sheet(v: float, compared: bool = False, names: tuple[str, ...] = FORCE_PRESETS):
+    """The worksheet of the forces presets at v, one section each (with the causal rod's comparison: `compared`)."""
+    from rodparadox.io.scenario import load
+    from rodparadox.physics.models import run_rods
+
+    items = []
+    for name in names:
+        histories = run_rods(load(name).with_overrides(v=v), "both" if compared else "rigid")
+        items.append((name, histories[0], None, histories[1] if compared else None))
+    return build(items, worksheet=True)
+
+
+@pytest.mark.parametrize("v", SPEED_PARAMS)
+def test_a_forces_worksheet_tells_nothing_it_asks(v):
+    """The forces presets' worksheet (both rods at 0.6): every question's facts and every blank cell's number, in the
+    words and the LaTeX before the key, in every frame."""
+    doc = forces_sheet(v, compared=v == CAUSAL_SPEED)
+    latex = _latex_of(doc)
+    found = []
+    for k, section in enumerate(doc.sections[1:], start=1):
+        assert _questions(section) and all(q.asks for q in _questions(section)), section.name
+        assert blank_facts(section), section.name
+        found += found_leaks(section, [("model", model_text(section)), ("latex", latex[k])])
+    assert not found, "\n".join(map(str, found))
+    # the facts are real: every number is in the key's worked answer of its question
+    asked = [q for section in doc.sections[1:] for q in _questions(section)]
+    answered = [b for b in doc.answer_key if isinstance(b, Question)]
+    assert [q.text for q in asked] == [q.text for q in answered]
+    for q, key in zip(asked, answered):
+        for fact in q.asks:
+            if fact.number and fact.forms:
+                assert leaks(fact, " ".join(key.answer)), (q.number, fact.what)
+
+
+def test_a_forces_worksheet_s_drawn_pages_tell_nothing():
+    """sears at 0.95, the pages as drawn (the diagrams' labels, ticks and titles): no fact asked."""
+    doc = forces_sheet(0.95, names=("sears",))
+    figures = page_figures(dataclasses.replace(doc, answer_key=()))
+    drawn = _by_section(doc, _page_texts(figures))
+    found = [leak for k, section in enumerate(doc.sections[1:], start=1)
+             for leak in found_leaks(section, [("drawn", drawn[k])])]
+    assert not found, "\n".join(map(str, found))
+
+
+def test_a_leak_planted_in_a_forces_worksheet_is_found():
+    """sears at 0.6: the momentum delivered in S′ by the slice the question names, and which force starts first in
+    S′, planted in a paragraph, a cell and a caption, are found in the words and the LaTeX."""
+    doc = forces_sheet(0.6, names=("sears",))
+    section = doc.sections[1]
+    asks = {f.what: f for q in _questions(section) for f in q.asks}
+    delivered = next(f for what, f in asks.items() if what.startswith("the momentum delivered"))
+    plants = (f"together +{delivered.forms[-1]} M c", "In S′ the left force starts first.")
+    for place in ("paragraph", "cell", "caption", "question"):
+        for plant in plants:
+            planted = _planted(section, place, plant)
+            copy = dataclasses.replace(doc, sections=(doc.sections[0], planted))
+            for where, text in (("model", model_text(planted)), ("latex", _latex_of(copy)[1])):
+                assert found_leaks(planted, [(where, text)]), (place, plant, where)

@@ -206,7 +206,7 @@ def test_pulls_past_each_rods_limit_are_refused_naming_the_limit():
     run_rod(Scenario("pull", V, (), forces=rigid_ok))
     with pytest.raises(ScenarioError, match=r"only below M c\^2/L: the rigid rod's horizon"):
         run_rod(Scenario("pull", V, (), forces=Forces(ForceProfile("sine2", peak=-1.0, start=0, duration=1))))
-    with pytest.raises(ScenarioError, match=r"below M c\^2/\(2L\)|cannot be driven by forces yet"):
+    with pytest.raises(ScenarioError, match=r"only below M c\^2/\(2L\)"):
         run_rod(Scenario("pull", V, (), rod="causal", forces=rigid_ok))
 
 
@@ -289,6 +289,7 @@ def profiles(end):
     return force_profiles(end, -0.9)
 
 
+@settings(deadline=None)  # a run solves the rod's ODE: milliseconds to a few tenths of a second
 @given(left=st.one_of(st.none(), profiles("left")), right=st.one_of(st.none(), profiles("right")),
        v=st.floats(0.05, 0.95), t=st.floats(-2.0, 5.0), u=st.floats(-0.9, 0.9))
 def test_generated_profiles_conserve_on_slices_of_S_S_prime_and_u(left, right, v, t, u):

@@ -194,7 +194,7 @@ def test_the_legend_and_the_note_say_forces_not_particles():
     assert not any(text in ("impact", "contact: particle rides with end") or "particle" in text for text in texts)
     assert "light front (a jump in λ)" not in texts  # smooth forces: no front
     note = next(t for t in diagram.figure.texts if t.get_gid() == "comparison-note").get_text()
-    assert ("Both rods are driven by the same forces at their ends, and struck by no particle: on each end a sine² "
+    assert ("Both rods are driven by the same forces at their ends: on each end a sine² "
             "push peaking at 0.2 M c²/L from t′ = 0.5 L to 1.5 L in S′.") == " ".join(note.replace("\xa0", " ").split())
     assert all("\xa0" not in line[:1] + line[-1:] for line in note.split("\n"))  # no unit torn from its number
 
@@ -233,7 +233,6 @@ def test_the_same_figure_gives_the_same_bytes():
 # --- what plot still refuses for forces -------------------------------------------------------------------
 
 @pytest.mark.parametrize("args, words", [
-    (("sears", "--frame", "rod"), "the rod's own view of a rod driven by forces is not drawn yet; choose a frame."),
     (("push", "--rod", "causal", "--rod-now"), "--rod-now draws the rigid rod's own lines of simultaneity, and the "
                                               "causal rod has none"),
     (("push", "--rod", "causal", "--proper-time"), "--proper-time draws the rigid rod's clocks only for now"),
@@ -269,3 +268,71 @@ def test_a_strip_carries_the_force_at_each_end_and_draws_it_as_an_arrow(t, expec
             (x0, _), (x1, _) = arrow._posA_posB
             assert x1 == pytest.approx(-0.5 if end == "left" else 0.5, abs=1e-12)  # the head on the end
             assert (x1 - x0) * 72 == pytest.approx(BAND_POINTS * expected / 0.2 * (1 if end == "left" else -1))
+
+
+def test_a_thin_driven_sheet_gets_the_inset_at_the_first_force_start():
+    """As for particles, a panel whose world-sheet is drawn thinner than 3 mm gets a magnified inset, centred on the
+    frame's first events: for Sears at v = 0.95, S' only, at the left force's start, x' = -t' = gamma (-0.5 + 0.95 x
+    0.5) (the event x = -L/2, t = L/2 of S), with its marker and S's and S''s lines through it."""
+    diagram = drawn("sears", 0.95)
+    insets = {p.letter: [c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset"] for p in diagram.panels}
+    assert not insets["a"] and len(insets["b"]) == 1
+    inset = insets["b"][0]
+    g = 1 / math.sqrt(1 - 0.95 ** 2)
+    x, t = g * (-0.5 + 0.95 * 0.5), g * (0.5 - 0.95 * 0.5)
+    (x0, x1), (t0, t1) = inset.get_xlim(), inset.get_ylim()
+    assert x0 < x < x1 and t0 < t < t1
+    marker = next(line for line in inset.lines if line.get_gid() == "b-inset-impact-left-start")
+    assert marker.get_xdata()[0] == pytest.approx(x, abs=1e-12) and marker.get_ydata()[0] == pytest.approx(t, abs=1e-12)
+    assert {"b-inset-simultaneity-rest-left-start", "b-inset-simultaneity-moving-left-start"} <= {
+        line.get_gid() for line in inset.lines}
+    assert next(t for t in inset.texts if t.get_gid() == "b-inset-note").get_text().startswith("$\\times")
+
+
+# --- the rod's own view ----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("rod", ["rigid", "causal"])
+def test_the_rods_own_view_draws_the_push_as_a_band_beside_its_end_from_on_to_off(rod):
+    """push: F = 0.25 (the legend's force: the band 0.3 L wide) on the left end; on and off on the end (X = 0) at the
+    chart times of its start and end. The rigid rod's T is its left end's proper time (T = t of S before the push):
+    on at 0.5, off at 0.5 + asinh(F t / M)/(F/M) = 0.5 + 4 asinh(1) (hyperbolic motion for 4 L of S's time)."""
+    from matplotlib.figure import Figure
+
+    h = runs("push")[0 if rod == "rigid" else 1]
+    ax = Figure().add_subplot()
+    drawn = render.draw_rod_panel(ax, h, "default", letter="r")
+    gids = {a.get_gid(): a for a in drawn.forces}
+    band = gids["r-force-left-press"].get_xy()
+    assert band[:, 0].min() == pytest.approx(-0.3, abs=1e-12) and band[:, 0].max() == pytest.approx(0.0, abs=1e-12)
+    on, off = (gids[f"r-force-event-left-{m}"].get_xydata()[0] for m in ("start", "end"))
+    assert on[0] == pytest.approx(0.0, abs=1e-12) and off[0] == pytest.approx(0.0, abs=1e-12)
+    assert on[1] == pytest.approx(0.5, abs=1e-12) and band[:, 1].min() == pytest.approx(on[1], abs=1e-12)
+    assert band[:, 1].max() == pytest.approx(off[1], abs=1e-12)
+    if rod == "rigid":
+        assert off[1] == pytest.approx(0.5 + 4 * math.asinh(1.0), abs=1e-12)
+    words = [t.get_text() for t in drawn.key[0].get_texts()]
+    assert "a force starts (on)\nor ends (off)" in words and not any("contact" in w for w in words)
+
+
+def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line(tmp_path):
+    """Sears's pulses timed in S' at a tenth of the preset's peak move the ends by less than half a millimetre on
+    the page: the panel of S' gets an inset magnifying where an end strays most, with each end's world-line without
+    the forces dashed (the rest at x = -L/2 and L/2 of S, boosted: x' = gamma (x + v t)). At the preset's own peak
+    the motion is seen without one."""
+    from rodparadox.io.scenario import load as load_file
+
+    path = tmp_path / "weak.yaml"
+    path.write_text("v: 0.6\nforces:\n  left: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n"
+                    "  right: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n")
+    weak = run_rods(load_file(str(path)), "rigid")[0]
+    diagram = render.draw(weak, paper_frames(0.6)[1:])  # S' alone: its unforced lines the boosted rest
+    for p in diagram.panels:
+        inset = next(c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset")
+        free = {line.get_gid(): line.get_xydata() for line in inset.lines if "-inset-free-" in line.get_gid()}
+        assert free, p.letter
+        for gid, xy in free.items():  # on the unforced world-line: x' = gamma (x + v t), t' = gamma (t + v x)
+            x = -0.5 if gid.endswith("left") else 0.5
+            f = p.frame.rapidity
+            assert np.allclose(np.cosh(f) * xy[:, 0] + np.sinh(f) * xy[:, 1], x, atol=1e-12)
+        assert "dashed: no force" in next(t for t in inset.texts if t.get_gid() == f"{p.letter}-inset-note").get_text()
+    assert not any(c.get_gid().endswith("-inset") for p in drawn("sears_moving").panels for c in p.axes.child_axes)

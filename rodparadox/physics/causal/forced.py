@@ -72,6 +72,7 @@ class Driving:
     def __init__(self, history: "DrivenHistory"):
         self.history = history
         self._drives = history.solution.drives
+        self._force_events = None
 
     @property
     def forces(self):
@@ -180,6 +181,13 @@ class Driving:
         return hi
 
     def force_events(self) -> tuple:
+        """Each force's start, peak and end at its end, in S (`_computed_force_events`), computed once per run: the
+        page and the tables ask for them several times."""
+        if self._force_events is None:
+            self._force_events = self._computed_force_events()
+        return self._force_events
+
+    def _computed_force_events(self) -> tuple:
         """Each force's start, peak and end at its end (`types.ForceEvent`, in S): the end's rapidity just after the
         start and the peak, just before the end (a step's switch-on and -off are fronts: it jumps there)."""
         history, out = self.history, []

@@ -17,7 +17,6 @@ import math
 
 import numpy as np
 
-from rodparadox.errors import ScenarioError
 from rodparadox.physics.forces import ENDS, ForceProfile, Forces, centre_velocity
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
@@ -55,7 +54,10 @@ class DrivenHistory:
     # --- the interface ----------------------------------------------------------------------------------------------
 
     def own_chart(self):
-        raise ScenarioError("the rod's own view of a rod driven by forces is not drawn yet; choose a frame.")
+        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`)."""
+        from rodparadox.physics.rigid.driven_chart import DrivenChart
+
+        return DrivenChart(self)
 
     def worldline(self, name: str) -> WorldLine | None:
         if name == "rod_left":
@@ -223,6 +225,7 @@ class Driving:
 
     def __init__(self, history: DrivenHistory):
         self.history = history
+        self._force_events = None
 
     @property
     def forces(self) -> Forces:
@@ -299,6 +302,13 @@ class Driving:
         return out
 
     def force_events(self) -> tuple[ForceEvent, ...]:
+        """Each force's start, peak and end at its end, in S (`_computed_force_events`), computed once per run: the
+        page and the tables ask for them several times."""
+        if self._force_events is None:
+            self._force_events = self._computed_force_events()
+        return self._force_events
+
+    def _computed_force_events(self) -> tuple[ForceEvent, ...]:
         """Each force's start, peak and end at its end, in S (see them in any frame with `Event.seen_from`)."""
         h = self.history
         out = []

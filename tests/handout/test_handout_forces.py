@@ -1,0 +1,316 @@
+"""The handout and worksheet of a rod driven by forces (issue 26: "Sears's own paradox"), checked against closed
+forms computed here, never read from the engine: a sine² profile's area, the Lorentz transformation of an end at
+rest, the momentum a force on an end at rest delivers in another frame, hyperbolic motion under a constant push
+(proper acceleration F/M), the causal rod's staircase tanh((2n + 1)κ/2) with κ = ln(1 + 2F/ρ₀), and the rod's total
+= initial + delivered on every printed row. One document per preset, built once per module (text only: no PDF)."""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import pytest
+
+from rodparadox.handout.build import SECTIONS, build
+from rodparadox.handout.document import DiagramBlock, Heading, Paragraph, Question, Table
+from rodparadox.handout.forces import PARADOX_TITLE, PUSH_TITLE
+from rodparadox.io.scenario import load
+from rodparadox.numbers import MINUS
+from rodparadox.physics.models import run_rods
+
+V = 0.6
+GAMMA = 1.25  # 1/√(1 − 0.6²)
+
+
+@functools.lru_cache(maxsize=None)
+def rods(name: str, v: float = V):
+    return run_rods(load(name).with_overrides(v=v), "both")
+
+
+def number(text: str) -> float:
+    return float(text.replace(MINUS, "-").split(" ")[0])
+
+
+def sine2_area(peak: float, start: float, duration: float, t: float) -> float:
+    """∫ peak sin²(π (s − start)/duration) ds from start to t (clipped to the support)."""
+    s = min(max(t - start, 0.0), duration)
+    return peak * (s / 2 - duration * math.sin(2 * math.pi * s / duration) / (4 * math.pi))
+
+
+@pytest.fixture(scope="module")
+def sears():
+    rigid, causal = rods("sears")
+    return build([("sears", rigid, None, causal)])
+
+
+@pytest.fixture(scope="module")
+def sears_sheet():
+    rigid, causal = rods("sears")
+    return build([("sears", rigid, None, causal)], worksheet=True)
+
+
+@pytest.fixture(scope="module")
+def push():
+    rigid, causal = rods("push")
+    return build([("push", rigid, None, causal)])
+
+
+@pytest.fixture(scope="module")
+def push_sheet():
+    return build([("push", rods("push")[0])], worksheet=True)
+
+
+def tables(doc, prefix: str) -> list[Table]:
+    return [b for b in doc.blocks() if isinstance(b, Table) and b.caption.startswith(prefix)]
+
+
+def text_of(doc) -> str:
+    return "\n".join(b.text for b in doc.blocks() if isinstance(b, (Paragraph, Heading)))
+
+
+def test_a_forces_handout_has_its_diagram_its_tables_and_sears_s_own_paradox(sears, push):
+    blocks = sears.sections[1].blocks
+    drawn = [b.drawn for b in blocks if isinstance(b, DiagramBlock)]  # both rods drawn, the rigid rod's row first
+    assert [[h.fronts is not None for h in pair] for pair in drawn] == [[False, True]]
+    assert Heading(PARADOX_TITLE, 2) in blocks and "\u2019" in PARADOX_TITLE
+    assert Heading(PUSH_TITLE, 2) in push.sections[1].blocks
+    # nothing of particles: no impacts, no particle's start
+    words = text_of(sears)
+    assert "impacts in" not in words and "Particle" not in words
+    assert len(tables(sears, "The forces in frame")) == 4 and len(tables(sears, "Where the momentum is")) == 4
+
+
+def test_the_rows_add_up_rod_total_is_initial_plus_delivered(sears, push):
+    for doc in (sears, push):
+        for table in tables(doc, "Where the momentum is"):
+            initial = number(table.rows[0][5].text)  # the first row: a force's start, nothing delivered yet
+            assert number(table.rows[0][1].text) == number(table.rows[0][2].text) == 0.0
+            for row in table.rows:
+                left, right, moving, stress, total = (number(c.text) for c in row[1:6])
+                assert total == pytest.approx(initial + left + right, abs=2e-4), (table.caption, row)
+                assert total == pytest.approx(moving + stress, abs=2e-4), (table.caption, row)
+
+
+def test_sears_in_s_balanced_forces_nothing_moves(sears):
+    rigid = next(t for t in tables(sears, "Where the momentum is in frame S ") if "rigid" in t.caption)
+    for row in rigid.rows:
+        left, right, moving, stress, total = (number(c.text) for c in row[1:6])
+        assert moving == stress == total == 0.0
+        t = number(row[0].text)
+        assert left == pytest.approx(sine2_area(0.2, 0.5, 1.0, t), abs=6e-5) and right == pytest.approx(-left)
+    assert "Nothing moves" in text_of(sears)
+    # the momentum each agent delivers in S, its profile's area: 0.2 × 1 / 2
+    assert "the left agent delivers +0.1 M c and the right agent delivers −0.1 M c" in text_of(sears)
+
+
+def _in_s_prime(t_prime: float) -> tuple[float, float]:
+    """The momentum each agent has delivered in S′ by the slice t′ (ends at rest at x = ∓1/2 in S): the slice meets
+    the end x at t = t′/γ − v x, where the agent has delivered p = ±area in S and no energy, γ p in S′."""
+    left = GAMMA * sine2_area(0.2, 0.5, 1.0, t_prime / GAMMA + V * 0.5)
+    right = -GAMMA * sine2_area(0.2, 0.5, 1.0, t_prime / GAMMA - V * 0.5)
+    return left, right
+
+
+def test_sears_in_s_prime_the_momentum_is_in_the_stress(sears):
+    rigid = next(t for t in tables(sears, "Where the momentum is in frame S′") if "rigid" in t.caption)
+    for row in rigid.rows:
+        t = number(row[0].text)
+        left, right = _in_s_prime(t)
+        cells = [number(c.text) for c in row[1:6]]
+        assert cells[0] == pytest.approx(left, abs=6e-5) and cells[1] == pytest.approx(right, abs=6e-5)
+        assert cells[2] == 0.75  # the kinetic part: γ M v, unchanged
+        assert cells[3] == pytest.approx(left + right, abs=6e-5)  # the stress holds what was delivered
+    # the sentence's slice and numbers, from the closed form
+    m = re.search(r"The rigid rod in S′: at t′ = ([\d.]+) L the left agent has delivered \+([\d.]+) M c and the right "
+                  r"−([\d.]+) M c, together \+([\d.]+) M c", text_of(sears))
+    t = float(m.group(1))
+    left, right = _in_s_prime(t)
+    assert float(m.group(2)) == pytest.approx(left, rel=1e-3) and float(m.group(3)) == pytest.approx(-right, rel=1e-3)
+    assert float(m.group(4)) == pytest.approx(left + right, rel=1e-3)
+    assert "Yet the rod’s kinetic part is still +0.75 M c" in text_of(sears).replace("'", "’")
+
+
+def test_the_worksheet_asks_when_the_forces_start_in_s_prime(sears_sheet):
+    asked = [b for b in sears_sheet.sections[1].blocks if isinstance(b, Question)]
+    assert asked and all(q.asks for q in asked)
+    starts = {f.what: f for f in asked[0].asks}
+    for end, x in (("left", -0.5), ("right", 0.5)):
+        t_prime = GAMMA * (0.5 + V * x)  # t′ = γ(t + v x), S′ moving at −v
+        forms = starts[f"the {end} force's start in S′"].forms
+        assert not forms or f"{t_prime:.4f}" in forms or f"{t_prime:.4g}" in forms
+    assert "the left force starts first" in " ".join(asked[0].asks[-1].forms)
+    momentum = asked[1]
+    delivered = next(f for f in momentum.asks if f.what.startswith("the momentum delivered"))
+    t = float(delivered.what.split("= ")[1])
+    assert f"{sum(_in_s_prime(t)):.4f}" in delivered.forms
+    # the key answers each question
+    answered = [b for b in sears_sheet.answer_key if isinstance(b, Question)]
+    assert [q.text for q in answered] == [q.text for q in asked]
+
+
+def test_push_rigid_hyperbolic_motion_and_causal_staircase(push, push_sheet):
+    F, t0, t1 = 0.25, 0.5, 4.5
+    a = F  # proper acceleration F/M
+    u = a * (t1 - t0) / math.sqrt(1 + (a * (t1 - t0)) ** 2)
+    dx = (math.sqrt(1 + (a * (t1 - t0)) ** 2) - 1) / a
+    words = text_of(push)
+    assert f"constant proper acceleration, {a:g} c²/L = |F|/M" in words
+    assert f"it moves at +{u:.4f} c and has gone {dx:.4g} L" in words
+    kappa = math.log(1 + 2 * F)  # ρ₀ = M/L = 1
+    first = F / (1 + F)
+    assert first == pytest.approx(math.tanh(kappa / 2), abs=1e-15)
+    m = re.search(r"in steps, (.*?), while the push lasts", words)
+    steps = [s.split(" c")[0].lstrip("+") for s in re.split(r", | and ", m.group(1))]
+    expected = [math.tanh((2 * n + 1) * kappa / 2) for n in range(len(steps))]
+    for said, value in zip(steps, expected):
+        said = said.split("/")
+        assert (float(said[0]) / float(said[1]) if len(said) == 2 else float(said[0])) == pytest.approx(value, abs=5e-5)
+    assert "right end starts to move only at t = 1.5 L" in words  # the first signal at c: t0 + L
+    # the worksheet's facts: the velocity, distance and proper time of hyperbolic motion
+    asks = {f.what: f for q in push_sheet.sections[1].blocks if isinstance(q, Question) for f in q.asks}
+    assert f"{u:.4f}" in asks["the pushed end's velocity when the push ends, in S"].forms
+    assert f"{dx:.4f}" in asks["the pushed end's distance"].forms
+    assert f"{math.asinh(a * (t1 - t0)) / a:.4f}" in asks["the push's proper duration"].forms
+    x1, t1p = -0.5 + dx, GAMMA * (t1 + V * (-0.5 + dx))
+    assert f"{t1p:.4f}" in asks["the push's end in S′"].forms
+
+
+def test_sections_leave_out_what_is_not_asked():
+    rigid = rods("sears")[0]
+    for parts in (("diagrams", "ledger"), ("paradox", "tables")):
+        doc = build([("sears", rigid)], sections=parts)
+        blocks = [b for s in doc.sections for b in s.blocks]
+        assert any(isinstance(b, DiagramBlock) for b in blocks) == ("diagrams" in parts)
+        assert any(isinstance(b, Table) and b.caption.startswith("The forces") for b in blocks) == ("tables" in parts)
+        assert (Heading(PARADOX_TITLE, 2) in blocks) == ("ledger" in parts)
+        assert (doc.sections[0].name == "introduction") == ("paradox" in parts)
+    assert set(SECTIONS) >= {"paradox", "diagrams", "tables", "ledger"}
+
+
+def test_the_words_name_no_software(sears, sears_sheet, push):
+    """No software word (`test_handout_words.SOFTWARE`) in any block's words, the answer key's included."""
+    from test_handout_words import SOFTWARE
+
+    for doc in (sears, sears_sheet, push):
+        words = [b.text for b in doc.blocks() if isinstance(b, (Paragraph, Heading))]
+        words += [b.caption for b in doc.blocks() if hasattr(b, "caption")]
+        words += [" ".join(b.answer) + b.text for b in doc.blocks() if isinstance(b, Question)]
+        words += [n for b in doc.blocks() if isinstance(b, Table) for n in (*b.header, *b.notes)]
+        found = [m.group() for text in words for m in SOFTWARE.finditer(text)]
+        assert not found, found
+
+
+def test_the_command_writes_only_the_sections_asked(here):
+    """handout sears --sections paradox,ledger,rod --format tex: the paradox and the momentum tables, no diagram, no
+    forces' tables, and no rod's own view (a driven rod has none drawn yet: left out, not refused)."""
+    from helpers import run
+
+    run("handout", "sears", "--sections", "paradox,ledger,rod", "--format", "tex", "-o", "out")
+    files = sorted(p.name for p in (here / "out").iterdir())
+    assert "sears_momentum_rest.tex" in files and "sears_momentum_moving.tex" in files
+    assert not [f for f in files if "diagram" in f or "forces_" in f], files
+    tex = (here / "out" / "handout.tex").read_text()
+    assert "Sears's own paradox" in tex and "The paradox and its resolution" in tex
+
+
+def test_sears_moving_the_rigid_rod_moves_though_the_forces_balance_in_s_prime():
+    """Timed in S′, the forces balance at every instant of S′ but not of the rod's own time (S): the rigid rod's
+    kinetic part in S′ changes, and the text says so, never "Nothing moves"."""
+    rigid = rods("sears_moving")[0]
+    doc = build([("sears_moving", rigid)], sections=("ledger",))
+    words = text_of(doc)
+    assert "Nothing moves" not in words and "Yet the rod moves" in words
+    table = next(t for t in tables(doc, "Where the momentum is in frame S′"))
+    assert max(abs(number(row[3].text) - 0.75) for row in table.rows) > 1e-3
+
+
+# --- scenarios no preset has ---------------------------------------------------------------------------------------
+
+#: (name, v, L, forces): two unlike forces timed in S′ and in the frame u = 0.3; a sine² pull alone; a constant pull
+#: alone on a rod of L = 2 (its times and lengths in units of L)
+GENERATED = [
+    ("gen_two", 0.47, 1.0,
+     "left: {shape: points, points: [[0.2, 0], [0.6, 0.3], [1.4, 0.1], [1.8, 0]], frame: moving}\n"
+     "  right: {shape: step, peak: 0.15, start: 0.4, duration: 0.8, frame: 0.3}"),
+    ("gen_pull", 0.8, 1.0, "right: {shape: sine2, peak: -0.3, start: 0.3, duration: 1.2}"),
+    ("gen_step", 0.35, 2.0, "right: {shape: step, peak: -0.2, start: 0.25, duration: 2.5}"),
+]
+AREAS = {"gen_two": {"left": 0.5 * 0.4 * 0.3 + 0.8 * 0.2 + 0.5 * 0.4 * 0.1, "right": 0.15 * 0.8},
+         "gen_pull": {"right": -0.3 * 1.2 / 2}, "gen_step": {"right": -0.2 * 2.5}}
+
+
+@functools.lru_cache(maxsize=None)
+def generated(name: str):
+    from rodparadox.io.scenario import parse
+
+    _, v, L, forces = next(g for g in GENERATED if g[0] == name)
+    scenario = parse(f"name: {name}\nv: {v}\nL: {L}\nforces:\n  {forces}\n", f"{name}.yaml", name)
+    rigid, = run_rods(scenario, "rigid")
+    return rigid, build([(name, rigid)]), build([(name, rigid)], worksheet=True)
+
+
+@pytest.mark.parametrize("name", [pytest.param(g[0], marks=pytest.mark.slow) if g[0] == "gen_two" else g[0]
+                                  for g in GENERATED])  # gen_two's 16 slices cost 2 s: in the full run
+def test_a_generated_scenario_s_handout_adds_up_and_its_worksheet_tells_nothing(name):
+    from test_worksheet_tells_nothing import _latex_of, _questions, found_leaks, model_text
+
+    rigid, doc, sheet = generated(name)
+    words = text_of(doc)
+    for end, area in AREAS[name].items():  # delivered in its own frame = the profile's area (right: −area)
+        said = re.search(rf"the {end} agent delivers ([+−][\d./]+) M c", words).group(1)
+        value = number(said) if "/" not in said else float(said[1:].split("/")[0]) / float(said.split("/")[1])
+        sign = -1.0 if said.startswith("−") else 1.0
+        value = sign * abs(value)
+        assert value == pytest.approx(area if end == "left" else -area, rel=1e-3), (end, said, area)
+    for table in tables(doc, "Where the momentum is"):
+        initial = number(table.rows[0][5].text) - number(table.rows[0][1].text) - number(table.rows[0][2].text)
+        for row in table.rows:
+            left, right, moving, stress, total = (number(c.text) for c in row[1:6])
+            assert total == pytest.approx(initial + left + right, abs=2e-4) == pytest.approx(moving + stress, abs=2e-4)
+    section = sheet.sections[1]
+    assert _questions(section)
+    found = found_leaks(section, [("model", model_text(section)), ("latex", _latex_of(sheet)[1])])
+    assert not found, found
+
+
+def test_a_constant_pull_on_a_longer_rod_is_hyperbolic_in_units_of_l():
+    """gen_step: F = −0.2 M c²/L on the right end of a rod of L = 2 for 2.5 L: proper acceleration |F|/M in c²/L,
+    u = aΔt/√(1 + (aΔt)²), distance (√(1 + (aΔt)²) − 1)/a in units of L."""
+    _, doc, sheet = generated("gen_step")
+    a, dt = 0.2, 2.5
+    u = a * dt / math.sqrt(1 + (a * dt) ** 2)
+    dx = (math.sqrt(1 + (a * dt) ** 2) - 1) / a
+    words = text_of(doc)
+    assert f"constant proper acceleration, {a:g} c²/L = |F|/M" in words
+    assert f"it moves at +{u:.4f} c and has gone {dx:.4g} L" in words  # a pull on the right end: to the right
+    asks = {f.what: f for q in sheet.sections[1].blocks if isinstance(q, Question) for f in q.asks}
+    assert f"{u:.4f}" in asks["the pushed end's velocity when the push ends, in S"].forms
+    assert f"{math.asinh(a * dt) / a:.4f}" in asks["the push's proper duration"].forms
+
+
+@pytest.mark.parametrize("name", ["sears", pytest.param("sears_moving", marks=pytest.mark.slow), "push"])
+def test_the_pages_are_set_like_a_book(name):
+    """Both rods' handout and worksheet at 0.6 on A4, read from the page plan (no drawing), under the rules of
+    `test_page_rules`: headings and introductions with what follows, short tables whole, no page more than a quarter
+    empty but a section's last, nor a third but the last before the key."""
+    import test_page_rules as rules
+    from rodparadox.handout.pdf import page_plan
+
+    rigid, causal = rods(name)
+    plans = [(f"{name} {kind}", doc, page_plan(doc, "a4"))
+             for kind, doc in (("handout", build([(name, rigid, None, causal)])),
+                               ("worksheet", build([(name, rigid, None, causal)], worksheet=True)))]
+    rules.test_no_heading_or_introduction_is_left_apart_from_what_follows_it(plans)
+    rules.test_a_short_table_is_whole_and_on_its_introduction_s_page(plans)
+    rules.test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans)
+    rules.test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans)
+
+
+def test_the_rod_s_own_view_is_refused_in_one_sentence_for_forces(tmp_path):
+    """handout sears --frame both,rod: one sentence naming what to do, nothing written."""
+    from helpers import error_of
+
+    message = error_of("handout", "sears", "--frame", "both,rod", "-o", tmp_path)
+    assert "sears drives the rod by forces, whose own view a handout does not hold yet" in message
+    assert not list(tmp_path.iterdir())
