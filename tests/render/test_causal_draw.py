@@ -217,10 +217,8 @@ def test_labels_of_both_rods_sit_on_no_front():
 
 @pytest.mark.parametrize("name, v, size", [
     ("fig2", 0.6, (6.3, 7.6)),  # the handout's page with panel (d): A′₂, B′₂, B′₁, B₂, A₂ crowded, leaders crossed
-    ("fig2", 0.65, (6.3, 7.6)),  # eight faults before
-    ("unequal_masses", 0.95, (6.3, 7.6)),  # five
     ("fig2", 0.65, None),  # plot --rod both: B′₁'s leader crossed A₃'s and A′₃'s
-])
+])  # two figures (the test budget): tests/label_sweep.py draws the rest
 def test_no_label_of_both_rods_sits_on_a_marker_or_a_label_and_no_leaders_cross(name, v, size):
     """Issue 24: the causal rod's labels crowd where contacts and separations follow each other at one end; a label
     placed early took the room a later one needed, whose leader then crossed others or ran across a marker. Now a
