@@ -157,7 +157,9 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         # what the label and its leader keep clear of: every placed label, and every marker but one whose centre its
         # own marker covers (one blot, B₁ on A₁ at v near c: a label beside it or a leader from it cannot keep off it)
         own = _marker_box(anchors[0], label.avoid_radius - 1.0) if label.avoid_radius else None  # as drawn
-        clear = [box for j, box in enumerate(taken) if own is None or j >= len(markers_taken) or not _covers(own, box)]
+        mine = _marker_box(anchors[0], label.avoid_radius) if label.avoid_radius else None  # as kept clear
+        clear = [box for j, box in enumerate(taken) if own is None or j >= len(markers_taken) or tuple(box) == tuple(mine)
+                 or not _covers(own, box)]
         turn = np.abs((angles - label.preferred + 180) % 360 - 180)
         order = angles[np.lexsort((angles, turn))]
         # candidates ordered by ring, then anchor, then direction: that order breaks ties in cost
