@@ -67,7 +67,8 @@ def diagram_caption(history, frames: Sequence[Frame], tell: bool = True) -> str:
     from rodparadox.physics.frames import PANEL_LETTERS
 
     s = history.scenario
-    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {frame_described(f, s.v)}" for k, f in enumerate(frames))
+    panels = "; ".join(f"({PANEL_LETTERS[k]}) in {frame_described(f, s.v, 'the forces act')}"
+                       for k, f in enumerate(frames))
     sentences = [f"At v = {exact(s.v)}: {panels}.",
                  "Time runs up the page, x to the right, both in units of L, light at 45°; the rod's two ends bound "
                  "its shaded world-sheet.",

@@ -82,9 +82,10 @@ def setup_text(history: RodHistory, tell: bool = True) -> str:
 
 # --- the diagram -----------------------------------------------------------------------------------------------
 
-def frame_described(frame: Frame, v: float) -> str:
+def frame_described(frame: Frame, v: float, before: str = "it is struck") -> str:
+    """A panel's frame in words; `before`: what S is the rod's rest frame before ("the forces act")."""
     if frame.name == "rest":
-        return "S, the rod's rest frame before it is struck"
+        return f"S, the rod's rest frame before {before}"
     if frame.name == "moving":
         return f"S′, where the rod first moves at +{exact(v)} c"
     return f"the frame {frame_symbol(frame)}, moving at {in_c(frame.velocity)} relative to S"

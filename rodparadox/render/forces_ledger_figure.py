@@ -23,12 +23,9 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from rodparadox.physics.frames import Frame, PANEL_LETTERS, time_window
-from rodparadox.render import frame_symbol, style_context
-from rodparadox.render.ledger_figure import (STRESS_TEXT, axis_words, event_labels, hidden_fill, kinetic_ink,
-                                             pair_axes, stress_fill, total_ink)
+from rodparadox.render import style_context
+from rodparadox.render.ledger_figure import STRESS_TEXT, hidden_fill, kinetic_ink, rod_rows, stress_fill, total_ink
 from rodparadox.render.styles import Style
-from rodparadox.render.text import note_lines, suptitle
-from rodparadox.tables.comparison import comparison_note
 from rodparadox.tables.forces_ledger import slice_times
 
 #: slices of a frame's window the curves are drawn through (each force's start, peak and end added)
@@ -117,66 +114,17 @@ def _curves(ax, q: str, letter: str, t: np.ndarray, values, checks, causal: bool
 
 
 def _draw(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure:
-    """Laid out in points from the type size, as the ledger figure of a struck rod."""
-    fs = st.font_size
-    per_row = min(len(frames), 3 if st.max_width >= 10 else 2)
-    rows = -(-len(frames) // per_row)
-    gutter = fs * 1.05 * 1.4 + 3.4 * fs + 12
-    suptitle_h, pair_gap = fs * 1.25 * 1.6, 6.0
-    title_h = fs * 1.1 * 1.6 + fs * 1.5 + 4 + fs * 1.3  # a second tier of event names
-    x_axis_h = 3.5 + 3.5 + fs * 1.25 + fs * 1.05 * 1.35 + 4
-    both = len(histories) == 2
-    handles, labels = _legend(histories, st)
-    columns = 2
-    legend_h = (-(-len(labels) // columns) + 1) * fs * 1.8 + 8
-    width = st.max_width * 72
-    column_w = (width - 10 - per_row * gutter - (per_row - 1) * 14) / per_row
-    panel_h = st.panel_height * 72 * 0.6
-    row_h = title_h + 2 * panel_h + pair_gap + x_axis_h
-    note = note_lines(comparison_note(histories, frames), width - 20, fs) if both else []
-    note_h = len(note) * 1.2 * fs + 10 if note else 0.0
-    height = suptitle_h + len(histories) * rows * row_h + legend_h + note_h
-    figure = Figure(figsize=(width / 72, height / 72), dpi=72)
-    if note:
-        figure.text(10 / width, (note_h - 4) / height, "\n".join(note), ha="left", va="top", fontsize=fs,
-                    linespacing=1.2, gid="comparison-note")
-    s = histories[-1].scenario
-    figure.text(0.5, 1 - 4 / height, suptitle(s, width, fs * 1.25, ": energy and momentum"), ha="center",
-                va="top", fontsize=fs * 1.25, gid="title")
-    L = s.L
-    windows = [(min(time_window(h, f)[0] for h in histories), max(time_window(h, f)[1] for h in histories))
-               for f in frames]
-    shared: dict = {}
-    for b, history in enumerate(histories):
-        causal = history.fronts is not None
-        for k, frame in enumerate(frames):
-            letter = PANEL_LETTERS[b * len(frames) + k]
-            r, c = divmod(k, per_row)
-            r += b * rows
-            times, values, checks = series(history, frame, windows[k])
-            marks = events(history, frame)
-            t = times / L
-            x0 = gutter + c * (column_w + gutter + 14)
-            y_top = height - suptitle_h - r * row_h - title_h
-            for q, ax in pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
-                _curves(ax, q, letter, t, values, checks, causal, marks, L, st)
-                ax.set_xlim(t[0], t[-1])
-                shared.setdefault((k, q), []).append(ax)
-                axis_words(ax, q, frame, fs)
-                if q == "p":
-                    model = f"{history.model} rod, " if both else ""
-                    ax.set_title(f"({letter}) {model}frame {frame_symbol(frame)}", fontsize=fs * 1.1,
-                                 pad=fs * 2.8 + 4)
-                    ax.tick_params(labelbottom=False)
-                    event_labels(ax, marks, L, fs, column_w / (t[-1] - t[0]), letter)
-    for axes in shared.values():  # the two rods' panels of one frame on one scale
-        lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
-        for ax in axes:
-            ax.set_ylim(lo, hi)
-    legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, (note_h + 4) / height),
-                           ncol=columns, fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
-    legend.set_gid("legend")
-    return figure
+    """Laid out as the ledger figure of a struck rod (`ledger_figure.rod_rows`)."""
+    def panel(history, frame, window):
+        times, values, checks = series(history, frame, window)
+        marks = events(history, frame)
+        causal, L = history.fronts is not None, history.scenario.L
+
+        def curves(ax, q: str, letter: str, t: np.ndarray) -> None:
+            _curves(ax, q, letter, t, values, checks, causal, marks, L, st)
+        return times, marks, curves
+
+    return rod_rows(histories, frames, st, _legend(histories, st), panel)
 
 
 def _legend(histories: tuple, st: Style) -> tuple[list, list[str]]:

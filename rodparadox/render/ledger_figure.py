@@ -290,6 +290,38 @@ def event_labels(ax, events, L: float, fs: float, points_per_unit: float, letter
 
 def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure:
     """The causal rod's ledger figure, or (two histories) the rigid rod's rows above the causal rod's."""
+    both = len(histories) == 2
+
+    def panel(history, frame, window):
+        causal = history.fronts is not None
+        window = window if both else None
+        if causal:
+            times, values, events = causal_series(history, frame, window)
+            entries = ()
+        else:
+            times, values, entries = _series(history, frame, window)
+            events = [(e.impact.label, "impact", e.t) for e in entries]
+        total = history.initial_total(frame.rapidity)
+        L = history.scenario.L
+
+        def curves(ax, q: str, letter: str, t: np.ndarray) -> None:
+            level = total.p if q == "p" else total.E
+            if causal:
+                _causal_curves(ax, q, letter, t, values, level, events, L, st)
+            else:
+                _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
+        return times, events, curves
+
+    return rod_rows(histories, frames, st, _rods_legend(histories, st), panel)
+
+
+def rod_rows(histories: tuple, frames: tuple[Frame, ...], st: Style, legend: tuple[list, list[str]], panel) -> Figure:
+    """The ledger figure of one rod or (two histories) the rigid rod's rows above the causal rod's, laid out in
+    points from the type size: per frame a p panel above an E panel, the events named above them, each frame's
+    panels of both rods on one scale, the legend (`legend`: handles and labels) and, for two rods, the comparison's
+    note. `panel(history, frame, window)` gives a panel pair's times, its events ((name, kind, t)) and a function
+    `curves(ax, q, letter, t)` that draws its curves (t in units of L); `window`: the frame's time window over
+    every rod shown."""
     fs = st.font_size
     per_row = min(len(frames), 3 if st.max_width >= 10 else 2)
     rows = -(-len(frames) // per_row)
@@ -298,7 +330,7 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
     title_h = fs * 1.1 * 1.6 + fs * 1.5 + 4 + fs * 1.3  # a second tier of event names
     x_axis_h = 3.5 + 3.5 + fs * 1.25 + fs * 1.05 * 1.35 + 4
     both = len(histories) == 2
-    handles, labels = _rods_legend(histories, st)
+    handles, labels = legend
     columns = 2
     legend_h = (-(-len(labels) // columns) + 1) * fs * 1.8 + 8  # a row more: the stress's words take two lines
     width = st.max_width * 72
@@ -321,27 +353,16 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
                for f in frames]
     shared: dict = {}  # (frame, q) -> the panels that share a scale
     for b, history in enumerate(histories):
-        causal = history.fronts is not None
         for k, frame in enumerate(frames):
             letter = PANEL_LETTERS[b * len(frames) + k]
             r, c = divmod(k, per_row)
             r += b * rows
-            window = windows[k] if both else None
-            if causal:
-                times, values, events = causal_series(history, frame, window)
-            else:
-                times, values, entries = _series(history, frame, window)
-                events = [(e.impact.label, "impact", e.t) for e in entries]
-            total = history.initial_total(frame.rapidity)
+            times, events, curves = panel(history, frame, windows[k])
             t = times / L
             x0 = gutter + c * (column_w + gutter + 14)
             y_top = height - suptitle_h - r * row_h - title_h
             for q, ax in pair_axes(figure, letter, x0, y_top, column_w, panel_h, pair_gap):
-                level = total.p if q == "p" else total.E
-                if causal:
-                    _causal_curves(ax, q, letter, t, values, level, events, L, st)
-                else:
-                    _rigid_curves(ax, q, letter, t, values, level, entries, L, st)
+                curves(ax, q, letter, t)
                 ax.set_xlim(t[0], t[-1])
                 shared.setdefault((k, q), []).append(ax)
                 axis_words(ax, q, frame, fs)
@@ -355,8 +376,8 @@ def _draw_rods(histories: tuple, frames: tuple[Frame, ...], st: Style) -> Figure
         lo, hi = min(ax.get_ylim()[0] for ax in axes), max(ax.get_ylim()[1] for ax in axes)
         for ax in axes:
             ax.set_ylim(lo, hi)
-    legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, (note_h + 4) / height), ncol=columns,
-                           fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
+    legend = figure.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, (note_h + 4) / height),
+                           ncol=columns, fontsize=fs, handlelength=2.8, columnspacing=1.4, borderaxespad=0.0)
     legend.set_gid("legend")
     return figure
 

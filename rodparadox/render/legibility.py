@@ -185,18 +185,9 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t)
         half = side / 2 / (scale * magnification)
         window = (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)
-        corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
-                   (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
-        free = []
-        for k, (x, y) in enumerate(corners):
-            rect = (x - INSET_MARGIN, y - INSET_MARGIN, x + side + INSET_MARGIN, y + side + INSET_MARGIN)
-            if any(rect[0] < b[2] and b[0] < rect[2] and rect[1] < b[3] and b[1] < rect[3] for b in keep_clear):
-                continue
-            crossed = int(boxes_hit_segments(np.array([rect]), segments)[0]) if len(segments) else 0
-            free.append((crossed, k, (x, y)))
-        if free:
-            _, _, (x, y) = min(free)
-            return InsetPlan((x, y, side), window, magnification, about)
+        spot = place_inset(side, width, height, keep_clear, segments)
+        if spot is not None:
+            return InsetPlan((*spot, side), window, magnification, about)
     return None
 
 
@@ -311,9 +302,10 @@ def label_boxes(ax, box: Sequence[float], scale: float, pad: float) -> list[tupl
 
 
 def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: Style, letter: str, font_size: float,
-               width: float, height: float, events: Sequence[Mark]) -> tuple:
+               width: float, height: float, events: Sequence[Mark], simultaneity: bool = True) -> tuple:
     """The inset as a child Axes of the panel: the world-sheet, the rod's ends, the particles, the lines of
-    simultaneity through the impacts and the impacts, at equal scales, framed, its magnification written in it."""
+    simultaneity through the impacts (where the panel draws them: `simultaneity`; a worksheet asks them) and the
+    impacts, at equal scales, framed, its magnification written in it."""
     x, y, side = plan.rect
     inset = ax.inset_axes((x / width, y / height, side / width, side / height), zorder=9)
     inset.set_gid(f"{letter}-inset")
@@ -359,7 +351,7 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
                                   gid=f"{letter}-inset-{end}-{k}")
     v = history.scenario.v
     for family, ink, frame in (("rest", style.rest_simultaneity, rest_frame()),
-                               ("moving", style.moving_simultaneity, moving_frame(v))):
+                               ("moving", style.moving_simultaneity, moving_frame(v)))[:2 if simultaneity else 0]:
         slope = relative_velocity(frame.velocity, fv.frame.velocity)
         for e in events:
             segment = clip_line(e.x, e.t, 1.0, slope, plan.window)

@@ -58,7 +58,7 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
                                      events)
         if plan is not None:
             drawn["inset"] = list(draw_inset(ax, plan, history, p.view, style, p.letter, m.fs["tick"], p.width,
-                                             p.height, events))
+                                             p.height, events, options.simultaneity))
     return {name: tuple(artists) for name, artists in drawn.items()}
 
 

@@ -188,6 +188,14 @@ def test_sections_leave_out_what_is_not_asked():
     assert set(SECTIONS) >= {"paradox", "diagrams", "tables", "ledger"}
 
 
+def test_no_caption_says_the_rod_is_struck(sears, push):
+    """A rod driven by forces is struck by nothing: S is its rest frame "before the forces act"."""
+    for doc in (sears, push):
+        captions = [b.caption for b in doc.blocks() if hasattr(b, "caption")]
+        assert not [c for c in captions if "struck" in c]
+        assert any("S, the rod's rest frame before the forces act" in c for c in captions)
+
+
 def test_the_words_name_no_software(sears, sears_sheet, push):
     """No software word (`test_handout_words.SOFTWARE`) in any block's words, the answer key's included."""
     from test_handout_words import SOFTWARE

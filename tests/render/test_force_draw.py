@@ -289,6 +289,18 @@ def test_a_thin_driven_sheet_gets_the_inset_at_the_first_force_start():
     assert next(t for t in inset.texts if t.get_gid() == "b-inset-note").get_text().startswith("$\\times")
 
 
+def test_an_inset_draws_no_line_of_simultaneity_where_its_panel_draws_none():
+    """A worksheet's diagram leaves the lines of simultaneity out (a question asks them): its inset must too (the
+    inset drew them whatever the panel drew)."""
+    from rodparadox.render.layers import Options
+
+    rigid, _ = runs("sears", 0.95)
+    diagram = render.draw(rigid, paper_frames(0.95), "default", Options(simultaneity=False))
+    [inset] = [c for p in diagram.panels for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset"]
+    gids = {line.get_gid() for line in inset.lines}
+    assert "b-inset-impact-left-start" in gids and not [g for g in gids if "simultaneity" in g]
+
+
 # --- the rod's own view ----------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("rod", ["rigid", "causal"])
