@@ -391,7 +391,7 @@ def _mark_beyond(ax: Axes, strip: Strip, window: tuple[float, float], L: float, 
     """A row that follows the rod: each particle beyond its window, an arrowhead at that edge pointing its way, with
     its letter inside the edge (the letter and the dot `draw_strip` drew are out of sight)."""
     lo, hi = window
-    inset = 0.012 * (hi - lo)
+    inset = 0.012 * (hi - lo)  # the arrowhead just inside the edge
     for name, side in outside(strip, window, L):
         at, marker, align = (lo + inset, "<", "left") if side == "left" else (hi - inset, ">", "right")
         ax.plot([at], [0.0], marker=marker, color="black", markersize=0.5 * st.impact_size + 2, clip_on=False,
@@ -503,11 +503,9 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
     L = history.scenario.L
     with style_context(style) as st:
         strips = strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L)
-        bar = colour_scale(history, frame).shown is not None
+        whole = strips if span is None else strips_at(history, frame, tuple(float(t) for t in span), ONE_INSTANT * L)
         return _stills_room(*_stills_labels(strips, frame, L, _contacts_last(history)), font_sizes(st),
-                            bar, follows_rod(strips if span is None else strips_at(
-                                history, frame, tuple(float(t) for t in span), ONE_INSTANT * L), L)
-                            ).size(len(strips), row_scale)
+                            colour_scale(history, frame).shown is not None, follows_rod(whole, L)).size(len(strips), row_scale)
 
 
 class _Ticks:
