@@ -107,30 +107,45 @@ def _without_zero_sign(text: str) -> str:
     return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
 
 
-def coordinate_format(values: list[float]):
-    """Every x and t with TABLE_DIGITS significant digits (1.583333e-05, +2236.068, +0.5000000), trailing zeros
-    kept so that the digits say the precision; rounding-sized values (PRINTED_ZERO of the largest) are 0."""
+def coordinate_format(values: list[float], signed: bool = True):
+    """Every value of one column with the same decimals, so that the decimal points line up and every digit says
+    the same precision: TABLE_DIGITS significant digits in the largest, trailing zeros kept (+0.5000000 where the
+    largest is below 1; beside +1.048285 a zero is +0.000000, never +0, and +3.206777 keeps its place); rounding-sized
+    values (PRINTED_ZERO of the largest) are zero. A column whose largest is below SCIENTIFIC_BELOW or at least
+    10**TABLE_DIGITS writes each value with TABLE_DIGITS significant digits and an exponent (1.583333e-05).
+    `signed`: a plus sign on the positive (the events' x and t), else none (the slices' times, an energy)."""
     largest = max((abs(x) for x in values), default=0.0)
+    scientific = largest > 0.0 and not SCIENTIFIC_BELOW <= largest < 10.0 ** TABLE_DIGITS
+    decimals = 0 if largest == 0.0 or scientific else max(0, TABLE_DIGITS - 1 - math.floor(math.log10(largest)))
 
     def text(x: float) -> str:
         if abs(x) <= PRINTED_ZERO * largest:
-            return "+0"
-        return _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+            x = 0.0
+        if scientific and x != 0.0:
+            written = _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+        else:
+            written = _without_zero_sign(f"{x + 0.0:+.{decimals}f}")
+        return written if signed else written.lstrip("+")
     return text
 
 
 def velocity_format(velocities: list[float]):
-    """Every velocity fixed-point, so that the decimal points line up: TABLE_DIGITS - 1 significant digits in
-    the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and for a speed near c
-    as many more decimals as keep it from rounding to 1 (`frames.check_below_c`: none is 1)."""
+    """Every velocity fixed-point with one number of decimals, so that the decimal points line up: TABLE_DIGITS - 1
+    significant digits in the largest (6 decimals, more when every speed is small: 1e-6 keeps its digits), and,
+    where a speed is near c, as many more decimals as keep it from rounding to 1 (`frames.check_below_c`: none is
+    1), for every velocity given: pass one column's."""
     largest = max((abs(u) for u in velocities), default=0.0)
     decimals = TABLE_DIGITS - 1
     if 0 < largest < 0.1:
         decimals = TABLE_DIGITS - 2 - math.floor(math.log10(largest))
 
+    def near_c(u: float) -> int:
+        return math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
+    # one number of decimals for every velocity given, so that a column shares them (issue 24)
+    decimals = max([decimals] + [near_c(u) for u in velocities])
+
     def text(u: float) -> str:
-        near_c = math.ceil(-math.log10(1.0 - abs(u))) + 1 if abs(u) > 0.5 else 0
-        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c)}f}")
+        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c(u))}f}")
     return text
 
 
@@ -180,14 +195,15 @@ def impact_parts(label: str) -> tuple[str, str]:
 
 def impact_name(label: str, math_text: bool = False) -> str:
     """An impact's label as every figure, table and handout writes it: B1 -> B₁ (plain text, subscript digits),
-    or with `math_text` $B_{1}$ for mathtext; the causal rod's separation B1s as B′₁ ($B'_{1}$); anything else as
-    it is."""
+    or with `math_text` $B_{1}$ for mathtext; the causal rod's separation B1s as B′₁ (`$B$′$_{1}$`: the prime a
+    character of the text between the letter and the subscript, at the letter's height as in print; mathtext's own
+    $B'_{1}$ raises it as a superscript, above the letter's top in STIX); anything else as it is."""
     separation = label.endswith("s") and impact_parts(label[:-1])[1] != ""
     letter, digits = impact_parts(label[:-1] if separation else label)
     if not digits:
         return label
     if math_text:
-        return f"${letter}{chr(39) if separation else ''}_{{{digits}}}$"
+        return f"${letter}$\N{PRIME}$_{{{digits}}}$" if separation else f"${letter}_{{{digits}}}$"
     return letter + ("\N{PRIME}" if separation else "") + digits.translate(_SUBSCRIPT)
 
 

@@ -111,10 +111,16 @@ def test_signed_numbers_show_their_sign_exactly_or_as_drawn():
 
 
 def test_table_numbers_keep_their_digits_and_write_rounding_as_zero():
+    # a column shares its decimals: seven digits in its largest, every other value and a zero with as many decimals
     coordinate = coordinate_format([0.5, -1.25, 1e-14])
-    assert [coordinate(x) for x in (0.5, -1.25, 1e-14, -1e-14)] == ["+0.5000000", "-1.250000", "+0", "+0"]
+    assert [coordinate(x) for x in (0.5, -1.25, 1e-14, -1e-14)] == ["+0.500000", "-1.250000", "+0.000000", "+0.000000"]
+    assert [coordinate_format([0.5, 0.0])(x) for x in (0.5, 0.0)] == ["+0.5000000", "+0.0000000"]
+    assert [coordinate_format([2236.068, 3.2])(x) for x in (2236.068, 3.2)] == ["+2236.068", "+3.200"]
+    assert [coordinate_format([1.583333e-05, -2e-6])(x) for x in (1.583333e-05, -2e-6)] == ["+1.583333e-05",
+                                                                                          "-2.000000e-06"]
+    assert coordinate_format([0.0])(0.0) == "+0" and coordinate_format([1.5], signed=False)(1.5) == "1.500000"
     velocity = velocity_format([0.6, -0.9999999])
-    assert [velocity(u) for u in (0.6, -0.9999999, -0.0)] == ["+0.600000", "-0.999999900", "+0.000000"]
+    assert [velocity(u) for u in (0.6, -0.9999999, -0.0)] == ["+0.600000000", "-0.999999900", "+0.000000000"]
     assert [number_text(x) for x in (17 / 12, -0.0, 1e-20)] == ["1.416667", "0", "1e-20"]
     assert number_text(1e-13, zero_below=1e-12) == "0" and number_text(-1e-13) == "-1e-13"
 

@@ -14,13 +14,14 @@ from dataclasses import replace
 
 from rodparadox.handout.causal_reading import Comparison
 from rodparadox.handout.document import Block, Cell, DiagramBlock, Heading, Paragraph, Strips, Table
-from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST
+from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST, following_rows
 from rodparadox.handout.words import in_c, in_l, listed, numeral, signed_numeral, time_name
 from rodparadox.numbers import impact_name
 from rodparadox.numbers import exact
 from rodparadox.tables.comparison import first_impact_times, first_impacts
 from rodparadox.physics.frames import PANEL_LETTERS, Frame, frame_name, frame_symbol, frame_word, time_window
 from rodparadox.physics.types import EnergyMomentum
+from rodparadox.render.strip_windows import strips_follow_rod
 from rodparadox.tables import build as tables
 from rodparadox.tables import causal_ledger
 
@@ -79,13 +80,15 @@ def causal_strip_times(causal, frame: Frame) -> tuple[float, ...]:
     return tuple(times)
 
 
-def causal_strips_caption(frame: Frame, times: tuple[float, ...], L: float) -> str:
+def causal_strips_caption(frame: Frame, times: tuple[float, ...], L: float, follows: bool = False) -> str:
+    """`follows`: each row follows the rod (`render.strip_windows`), which the caption says."""
     symbol = frame_name(frame)
     instants = listed([numeral(t / L) for t in times])
     return (f"The causal rod and the particles in {symbol} at {time_name(frame)} = {instants} (in units of L), "
             f"earliest first. The bar runs from the rod\u2019s left end to its right end, shaded by the velocity in "
             f"{symbol} of each of its material points: it changes only where a front has passed, so the far end "
-            f"stays as it was until the front from an impact reaches it; the dots are the particles.")
+            f"stays as it was until the front from an impact reaches it; the dots are the particles."
+            + (" " + following_rows(frame) if follows else ""))
 
 
 def ledger_table(causal, frame: Frame) -> Table:
@@ -282,7 +285,8 @@ def comparison(c: Comparison, rigid, causal, frames: tuple[Frame, ...], stem: st
         times = causal_strip_times(causal, f)
         drawn += [Heading(f"The causal rod at successive instants of {frame_name(f)}", 2),
                   Strips(f"{stem}_causal_strips_{frame_word(f)}", causal, f, times,
-                         causal_strips_caption(f, times, causal.scenario.L))]
+                         causal_strips_caption(f, times, causal.scenario.L, strips_follow_rod(causal, f, times)),
+                         "The causal rod")]
     told: list[Block] = [Heading("What the comparison shows", 2), Paragraph(far_end_text(c)),
                          Paragraph(leaving_text(c, frames)), Paragraph(ringing_text(c)), Paragraph(energy_text(c)),
                          Paragraph(stress_text(c))]

@@ -90,13 +90,15 @@ class RodViewBlock:
 @dataclass(frozen=True)
 class Strips:
     """The rod and the particles in one frame's space at successive instants of that frame's time (the strip of
-    `animate`, as stills), earliest first."""
+    `animate`, as stills), earliest first. `subject`: what the heading of a part set on the next page calls the
+    rod ("The causal rod" beside the rigid one)."""
 
     name: str
     history: RodHistory
     frame: Frame
     times: tuple[float, ...]
     caption: str
+    subject: str = "The rod"
 
 
 @dataclass(frozen=True)

@@ -337,7 +337,7 @@ class StripsSet(Picture):
             self.lead = min(self.whole, self._height(block.times[:2], STRIP_ROWS_LEAST))
 
     def _height(self, times, rows: float = STRIP_ROWS) -> float:
-        return render.strips_size(self.block.history, self.block.frame, times, self.style, rows)[1]
+        return render.strips_size(self.block.history, self.block.frame, times, self.style, rows, self.block.times)[1]
 
     def _draw_rows(self, times) -> Callable:
         def draw(target, block=self.block, times=tuple(times)):
@@ -366,7 +366,7 @@ class StripsSet(Picture):
                 pages.new_page()
                 # the rest is headed again by its frame, as a table's continuation is (issue 14.5)
                 t = pages.type
-                more = wrap(words_of(f"The rod at successive instants of {frame_name(self.block.frame)} (continued)",
+                more = wrap(words_of(f"{self.block.subject} at successive instants of {frame_name(self.block.frame)} (continued)",
                                      italic=True), t.caption, pages.text_width)
                 pages.lines(more, pages.left, pages.start(len(more) * 1.3 * t.caption, 0.0), t.caption,
                             1.3 * t.caption)

@@ -7,11 +7,12 @@ from __future__ import annotations
 from typing import Sequence
 
 from rodparadox.handout.reading import Reading
-from rodparadox.handout.words import impact_names, in_c, in_l, listed, numeral, time_name
+from rodparadox.handout.words import coordinates, impact_names, in_c, in_l, listed, numeral, time_name
 from rodparadox.physics.history import RodHistory, Turn
 from rodparadox.physics.frames import Frame, frame_name, time_window
 from rodparadox.numbers import impact_name
 from rodparadox.render.colour_scale import colour_scale
+from rodparadox.render.strip_windows import strips_follow_rod
 from rodparadox.tolerances import SAME_RAPIDITY
 
 #: the fewest and the most instants of the rod shown per frame
@@ -171,5 +172,13 @@ def strips_caption(history: RodHistory, frame: Frame, times: Sequence[float]) ->
         # velocity (light) to the fastest (dark), and a rod that only slows has its first velocity at an end
         bar = (f"The bar runs from the rod's left end to its right end, shaded by the velocity in {symbol} of each of "
                f"its material points, which the scale under the rows gives")
+    follows = " " + following_rows(frame) if strips_follow_rod(history, frame, times) else ""
     return (f"The rod and the particles in {symbol} at {time_name(frame)} = {instants} (in units of L), earliest "
-            f"first. {bar}; the dots are the particles. " + _which_end_first(r, frame))
+            f"first. {bar}; the dots are the particles.{follows} " + _which_end_first(r, frame))
+
+
+def following_rows(frame: Frame) -> str:
+    """What a block of stills whose rows each follow the rod (`render.strip_windows`) says of them."""
+    return (f"The rod moves far in {frame_name(frame)} compared with its length, so each row follows it: every row "
+            f"is drawn to the same scale, centred on the rod at its instant, and has its own {coordinates(frame)[0]} "
+            f"axis; an arrowhead at a row\u2019s edge points to a particle beyond it.")

@@ -176,13 +176,16 @@ def to_table(history: RodHistory, frames: tuple[Frame, ...]) -> str:
                                                    s.L + max((abs(e.t) for e in fv.events), default=0.0))]
                for fv in views]  # each frame's time order (the rod's own order at one instant), as the handout's
     events = [e for frame_events in ordered for e in frame_events]
-    coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
+    # x and t: a column's decimals in each frame's part (as each frame's table of `events --format markdown`)
+    texts = {id(e): (x_text(e.x), t_text(e.t)) for frame_events in ordered
+             for x_text, t_text in [(coordinate_format([e.x for e in frame_events]),
+                                     coordinate_format([e.t for e in frame_events]))] for e in frame_events}
     velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
                                                                e.rod_velocity_before, e.rod_velocity_after)])
     speeds = [[velocity(u) for u in (e.particle_velocity_before, e.particle_velocity_after, e.rod_velocity_before,
                                       e.rod_velocity_after)] for e in events]
     wide = max((len(u) for us in speeds for u in us), default=0)  # left-aligned: the decimal points line up
-    rows = [(e.impact.label, e.impact.end, coordinate(e.x), coordinate(e.t),
+    rows = [(e.impact.label, e.impact.end, *texts[id(e)],
              f"{us[0]:<{wide}} -> {us[1]:<{wide}}", f"{us[2]:<{wide}} -> {us[3]:<{wide}}")
             for e, us in zip(events, speeds)]
     heads = ("impact", "end", "x", "t", "particle velocity", "rod velocity")

@@ -104,11 +104,14 @@ def table(history, frames: tuple[Frame, ...]) -> str:
     s = history.scenario
     per_frame = [force_rows(history, f) for f in frames]
     rows = [r for rs in per_frame for r in rs]
-    coordinate = coordinate_format([c for r in rows for c in (r["x"], r["t"])])
+    # x and t: a column's decimals in each frame's part, as the impacts' table (`export.to_table`)
+    texts = {id(r): (x_text(r["x"]), t_text(r["t"])) for rs in per_frame
+             for x_text, t_text in [(coordinate_format([r["x"] for r in rs]), coordinate_format([r["t"] for r in rs]))]
+             for r in rs}
     velocity = velocity_format([r["end_velocity"] for r in rows])
     force = coordinate_format([r["force"] for r in rows] + [p.greatest() for _, p in history.driving.profiles()])
     heads = ("force", "end", "x", "t", "F", "end velocity")
-    cells = [(r["moment"], r["end"], coordinate(r["x"]), coordinate(r["t"]), force(r["force"]),
+    cells = [(r["moment"], r["end"], *texts[id(r)], force(r["force"]),
               velocity(r["end_velocity"])) for r in rows]
     widths = [max([len(h)] + [len(c[k]) for c in cells]) for k, h in enumerate(heads)]
 

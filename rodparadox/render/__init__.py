@@ -30,8 +30,9 @@ The package, its imports running one way (text <- layout, labels <- layers <- pa
   colour_scale  which velocity each colour of a strip means, in one frame (pure: no matplotlib)
   rod_panel  the rod's own view (`--frame rod`): its chart, the rod a fixed strip, as a panel beside a diagram's
   strip    one frame's space at one instant (the rod coloured by its material points' velocities, the
-           particles, the impacts): `draw_strip`/`update_strip` for animations, `draw_strips_into` for a
-           block of stills, the rod at successive instants
+           particles, the impacts): `draw_strip`/`update_strip` for animations
+  strip_block  a block of stills, the rod at successive instants (`draw_strips_into`, `strips_size`)
+  strip_windows  which stretch of x each still shows: one shared range, or each row following the rod (pure)
 
 The layout is computed in points rather than by matplotlib's layout
 engines: the figure's size follows from the data (equal scales), labels are
@@ -46,8 +47,8 @@ _HOME = {
     "PANEL_LETTERS": "rodparadox.physics.frames", "relative_velocity": "rodparadox.physics.frames",
     **dict.fromkeys(("Diagram", "PanelInfo", "draw", "draw_both", "draw_into", "draw_panel_into", "figure_bytes", "natural_size", "style_context",
                      "FIGURE_METADATA"), "rodparadox.render.diagram"),
-    **dict.fromkeys(("StripArtists", "draw_strip", "draw_strips_into", "strips_size", "update_strip"),
-                    "rodparadox.render.strip"),
+    **dict.fromkeys(("StripArtists", "draw_strip", "update_strip"), "rodparadox.render.strip"),
+    **dict.fromkeys(("draw_strips_into", "strips_size"), "rodparadox.render.strip_block"),
     "LABEL_REACH": "rodparadox.render.labels",
     **dict.fromkeys(("draw_rod_panel", "draw_rod_view", "draw_rod_view_into", "least_height", "rod_view_size"),
                     "rodparadox.render.rod_panel"),

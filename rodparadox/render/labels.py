@@ -11,6 +11,11 @@ from rodparadox.render.text import text_size
 
 #: an impact's label sits within this many points of its marker's edge, or a thin leader line ties it to the marker
 LABEL_REACH = 12.0
+#: the cost of a label on a marker, another label or a leader, or of a leader across one of those (`place`): more
+#: than any number of lines crossed, less than no room at all
+FAULT = 10 ** 6
+#: how many times `place` arranges a panel's labels again, those that found no place free of faults first
+REORDERINGS = 6
 
 
 class Label(NamedTuple):
@@ -96,9 +101,12 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     Crossing a guide (an extra's line) costs as much as three rings outwards,
     and such a label gets a white ground; crossing anything else is a last resort.
     A leader is 0.6 pt wide for a label of `impact_size` in a style of 9 pt type, scaled with both.
-    `crowded` (the causal rod: contacts, separations and re-contacts at one end): four more rings, and a
-    candidate whose leader would cross a marker costs as a hundred guides, one whose leader would cross a placed
-    label is blocked as by a line.
+    `crowded` (the causal rod: contacts, separations and re-contacts at one end): four more rings.
+    A fault -- a label on a marker, on a placed label or on a leader, or the leader it would need across a marker,
+    a placed label or another leader -- costs more than any number of lines crossed (FAULT): a label is read through
+    a line, not for another. Where some label found no place free of faults and lines, the panel's labels are
+    arranged again with those labels first (REORDERINGS times at most; a label placed early takes the room a later
+    one needed), and the arrangement with the fewest faults, then the fewest labels on a line, is drawn.
     """
     x0, x1, t0, t1 = frame.box
     sx, st_ = frame.width / (x1 - x0), frame.height / (t1 - t0)  # points per unit of L (equal, up to rounding)
@@ -123,20 +131,35 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
 
     hard, soft = segments_of(obstacles), segments_of(guides)
     hard_extents, soft_extents = extents(hard), extents(soft)
-    taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
-    markers = len(taken)  # the markers' boxes, then each placed label's
+    markers_taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
     radii = np.array([2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 29.0, 37.0, 46.0] + ([56.0, 67.0, 79.0, 92.0] if crowded else []))
     angles = np.arange(0.0, 360.0, 15.0)
     never = 10 ** 9
-    drawn: list[tuple] = []
-    for label in labels:
+
+    class Placed(NamedTuple):
+        """Where a label goes (points): its text's position and alignment, its padded box, its ground, its leader."""
+
+        position: tuple[float, float]
+        alignment: tuple[str, str]
+        box: tuple[float, float, float, float]
+        ground: bool
+        leader: np.ndarray | None
+        cost: float
+
+    def choose(label: Label, taken: list, leaders: list, leader_extents) -> Placed:
         if label.box_size:
             w, h = label.box_size
         else:  # crowded: as tall as a line of its type (a text's drawn box, its ground's too), not as its glyphs
             w, h = text_size(label.text, label.size, label.italic)[:2]
             h = max(h, label.size) if crowded else h
         anchors = to_pt(np.array(label.anchors))
+        # what the label and its leader keep clear of: every placed label, and every marker but one whose centre its
+        # own marker covers (one blot, B₁ on A₁ at v near c: a label beside it or a leader from it cannot keep off it)
+        own = _marker_box(anchors[0], label.avoid_radius - 1.0) if label.avoid_radius else None  # as drawn
+        mine = _marker_box(anchors[0], label.avoid_radius) if label.avoid_radius else None  # as kept clear
+        clear = [box for j, box in enumerate(taken) if own is None or j >= len(markers_taken) or tuple(box) == tuple(mine)
+                 or not _covers(own, box)]
         turn = np.abs((angles - label.preferred + 180) % 360 - 180)
         order = angles[np.lexsort((angles, turn))]
         # candidates ordered by ring, then anchor, then direction: that order breaks ties in cost
@@ -162,19 +185,21 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 continue
             b = boxes[chunk]
             blocked = crossings(b, hard_extents)
-            if taken:
-                other = np.array(taken)
-                blocked += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
-                            & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
+            # on a marker, on another label or on a leader, or a leader across a marker, a label or another leader:
+            # a label read for another, never chosen while any candidate avoids it (a line crossed is read through)
+            faults = crossings(b, leader_extents) if leaders else np.zeros(len(chunk), dtype=int)
+            if clear:
+                other = np.array(clear)
+                faults += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
+                           & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
             crossed_guides[chunk] = crossings(b, soft_extents)
-            if crowded and label.avoid_radius and taken:  # a leader it would need crossing a marker or a label:
-                # across a marker, free candidates first (a hundred guides); across a word it strikes it out: blocked
-                crossed_guides[chunk] += 100 * _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[:markers])
-                blocked += _leaders_blocked(anchors[0], b, pad, label.avoid_radius, taken[markers:])
+            if label.avoid_radius and clear:  # the leader it would need
+                faults += _leaders_blocked(anchors[0], b, pad, label.avoid_radius, clear)
+                faults += _leaders_crossing(anchors[0], b, pad, label.avoid_radius, leaders)
             if label.guides_block:
                 blocked, crossed_guides[chunk] = blocked + crossed_guides[chunk], 0
-            cost[chunk] = 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]
-            if (blocked + crossed_guides[chunk] == 0).any():
+            cost[chunk] = FAULT * faults + 1000 * blocked + 3 * crossed_guides[chunk] + ring[chunk] + which[chunk]
+            if (faults + blocked + crossed_guides[chunk] == 0).any():
                 break
         k = int(np.lexsort((np.arange(len(boxes)), cost))[0])  # cheapest; among equals, the earliest candidate
         if cost[k] == never:  # no room inside the panel at all: centre it on the first anchor
@@ -186,39 +211,99 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
             position = (px[k], py[k])
             alignment = (("left", "center", "right")[ha[k]], ("bottom", "center", "top")[va[k]])
             ground = crossed_guides[k] > 0 or cost[k] >= 1000
-        taken.append(box)
+        leader = None
+        if label.avoid_radius and cost[k] != never:
+            leader = _leader(anchors[0], (bx[k], by[k], bx[k] + w, by[k] + h), label.avoid_radius - 1.0)
+        return Placed(tuple(position), alignment, tuple(box), bool(ground), leader, float(cost[k]))
+
+    def arrange(order: list[int]) -> tuple[dict[int, Placed], tuple[int, int]]:
+        """Each label placed in this order, and how many of them could not avoid a fault, and a line."""
+        taken, leaders = list(markers_taken), []
+        leader_extents = extents(np.empty((0, 4)))
+        out: dict[int, Placed] = {}
+        for i in order:
+            out[i] = placed = choose(labels[i], taken, leaders, leader_extents)
+            taken.append(placed.box)
+            if placed.leader is not None:
+                leaders.append(placed.leader)
+                leader_extents = extents(np.array([line.reshape(4) for line in leaders]))
+        return out, (sum(FAULT <= p.cost < never for p in out.values()), sum(1000 <= p.cost < never for p in out.values()))
+
+    # greedy, in the labels' order; where a label found no place free of faults and lines, again with those labels
+    # first (a label placed early takes the room a later one's leader needed), keeping the arrangement with fewest
+    # faults, then fewest labels on a line
+    order = list(range(len(labels)))
+    best, trouble = arrange(order)
+    latest = best
+    for _ in range(REORDERINGS):
+        if not any(trouble):
+            break
+        first = [i for i in order if 1000 <= latest[i].cost < never]
+        order = first + [i for i in order if i not in first]
+        latest, again = arrange(order)
+        if again < trouble:
+            best, trouble = latest, again
+    drawn: list[tuple] = []
+    for i, label in enumerate(labels):
+        placed = best[i]
+        position, alignment = placed.position, placed.alignment
         text = ax.text(x0 + position[0] / sx, t0 + position[1] / st_, label.text, ha=alignment[0], va=alignment[1],
                        fontsize=label.size, fontstyle="italic" if label.italic else "normal", color=label.colour,
                        zorder=8, gid=label.gid,
-                       bbox=dict(boxstyle="square,pad=0.1", facecolor="white", edgecolor="none") if ground else None)
+                       bbox=dict(boxstyle="square,pad=0.1", facecolor="white", edgecolor="none") if placed.ground else None)
         artists = (text,)
-        if label.avoid_radius and cost[k] != never:
-            leader = _leader(anchors[0], (bx[k], by[k], bx[k] + w, by[k] + h), label.avoid_radius - 1.0)
-            if leader is not None:  # a label that could not sit close is tied to its marker
-                line, = ax.plot(x0 + leader[:, 0] / sx, t0 + leader[:, 1] / st_, color=label.colour,
-                                linewidth=0.6 * label.size / impact_size * font_size / 9.0, linestyle="solid", zorder=6.5,
-                                gid=label.gid.replace("-label-", "-leader-"))
-                artists += (line,)
-                hard = np.concatenate([hard, leader.reshape(1, 4)])
-                hard_extents = extents(hard)
+        if placed.leader is not None:  # a label that could not sit close is tied to its marker
+            leader = placed.leader
+            line, = ax.plot(x0 + leader[:, 0] / sx, t0 + leader[:, 1] / st_, color=label.colour,
+                            linewidth=0.6 * label.size / impact_size * font_size / 9.0, linestyle="solid", zorder=6.5,
+                            gid=label.gid.replace("-label-", "-leader-"))
+            artists += (line,)
         drawn.append(artists)
     return drawn
+
+
+def _candidate_leaders(centre: np.ndarray, padded: np.ndarray, pad: float, radius: float
+                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For each candidate box (padded by `pad`), the leader it would need (`_leader`): its start on the marker's
+    edge, its end on the box, and whether it needs one at all."""
+    boxes = padded + np.array([pad, pad, -pad, -pad])
+    nearest = np.column_stack([np.clip(centre[0], boxes[:, 0], boxes[:, 2]), np.clip(centre[1], boxes[:, 1], boxes[:, 3])])
+    distance = np.hypot(nearest[:, 0] - centre[0], nearest[:, 1] - centre[1])
+    needs = distance - (radius - 1.0) > LABEL_REACH
+    start = centre + (nearest - centre) * ((radius - 1.0) / np.where(distance > 0, distance, 1.0))[:, None]
+    return start, nearest, needs
+
+
+def _leaders_crossing(centre: np.ndarray, padded: np.ndarray, pad: float, radius: float, leaders: list) -> np.ndarray:
+    """For each candidate box, how many placed leaders (2 x 2 arrays, points) the leader it would need crosses."""
+    if not leaders:
+        return np.zeros(len(padded), dtype=int)
+    start, end, needs = _candidate_leaders(centre, padded, pad, radius)
+    if not needs.any():
+        return np.zeros(len(padded), dtype=int)
+    placed = np.array([leader.reshape(4) for leader in leaders])  # x0 y0 x1 y1
+
+    def side(ax, ay, bx, by, cx, cy):  # the sign of the turn a -> b -> c
+        return np.sign((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+    p, q = start[:, None, :], end[:, None, :]
+    r, t = placed[None, :, :2], placed[None, :, 2:]
+    cross = ((side(p[..., 0], p[..., 1], q[..., 0], q[..., 1], r[..., 0], r[..., 1])
+              * side(p[..., 0], p[..., 1], q[..., 0], q[..., 1], t[..., 0], t[..., 1]) < 0)
+             & (side(r[..., 0], r[..., 1], t[..., 0], t[..., 1], p[..., 0], p[..., 1])
+                * side(r[..., 0], r[..., 1], t[..., 0], t[..., 1], q[..., 0], q[..., 1]) < 0))
+    return np.where(needs, np.count_nonzero(cross, axis=1), 0)
 
 
 def _leaders_blocked(centre: np.ndarray, padded: np.ndarray, pad: float, radius: float, taken: list) -> np.ndarray:
     """For each candidate box (padded by `pad`), how many taken boxes (other markers, placed labels) the leader
     it would need (`_leader`) crosses; 0 for a candidate close enough to need none."""
-    boxes = padded + np.array([pad, pad, -pad, -pad])
-    nearest = np.column_stack([np.clip(centre[0], boxes[:, 0], boxes[:, 2]), np.clip(centre[1], boxes[:, 1], boxes[:, 3])])
-    distance = np.hypot(nearest[:, 0] - centre[0], nearest[:, 1] - centre[1])
-    needs = distance - (radius - 1.0) > LABEL_REACH
+    start, nearest, needs = _candidate_leaders(centre, padded, pad, radius)
     if not needs.any():
-        return np.zeros(len(boxes), dtype=int)
-    start = centre + (nearest - centre) * ((radius - 1.0) / np.where(distance > 0, distance, 1.0))[:, None]
+        return np.zeros(len(padded), dtype=int)
     own = _marker_box(centre, radius)
     others = np.array([box for box in taken if tuple(box) != tuple(own)]).reshape(-1, 4)
     if len(others) == 0:
-        return np.zeros(len(boxes), dtype=int)
+        return np.zeros(len(padded), dtype=int)
     hits = np.count_nonzero(_hits(others, np.column_stack([start, nearest])), axis=0)
     return np.where(needs, hits, 0)
 
@@ -231,6 +316,12 @@ def _leader(centre: np.ndarray, text_box: tuple[float, float, float, float], rad
         return None
     start = centre + (nearest - centre) * (radius / distance)
     return np.array([start, nearest])
+
+
+def _covers(marker, other) -> bool:
+    """Whether a marker's box (xmin, ymin, xmax, ymax) covers the centre of another's."""
+    x, y = 0.5 * (other[0] + other[2]), 0.5 * (other[1] + other[3])
+    return marker[0] <= x <= marker[2] and marker[1] <= y <= marker[3]
 
 
 def _marker_box(centre, radius: float):

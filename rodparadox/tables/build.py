@@ -41,15 +41,15 @@ def events_table(history: RodHistory, frame: Frame, blank: bool = False) -> Tabl
     check_below_c(fv)
     scale = history.scenario.L + max((abs(e.t) for e in fv.events), default=0.0)
     events = [fv.events[k] for k in time_order([e.t for e in fv.events], scale)]  # the rod's order at one instant
-    coordinate = coordinate_format([c for e in events for c in (e.x, e.t)])
-    velocity = velocity_format([u for e in events for u in (e.particle_velocity_before, e.particle_velocity_after,
-                                                             e.rod_velocity_before, e.rod_velocity_after)])
+    x_text, t_text = coordinate_format([e.x for e in events]), coordinate_format([e.t for e in events])  # a column's decimals
+    def velocities(e):
+        return e.particle_velocity_before, e.particle_velocity_after, e.rod_velocity_before, e.rod_velocity_after
+    velocity = velocity_format([u for e in events for u in velocities(e)])  # one number of decimals for all four
     x, t = coordinates(frame)
     rows = []
     for e in events:
-        numbers = [with_fraction(coordinate(e.x), e.x), with_fraction(coordinate(e.t), e.t)]
-        numbers += [with_fraction(velocity(u), u) for u in (e.particle_velocity_before, e.particle_velocity_after,
-                                                            e.rod_velocity_before, e.rod_velocity_after)]
+        numbers = [with_fraction(x_text(e.x), e.x), with_fraction(t_text(e.t), e.t)]
+        numbers += [with_fraction(velocity(u), u) for u in velocities(e)]
         rows.append((Cell(impact_name(e.impact.label)), Cell(e.impact.end),
                      *(Cell(n.replace("-", MINUS), blank) for n in numbers)))
     notes = []
@@ -161,16 +161,24 @@ def slices_table(history: RodHistory, frame: Frame, times: Sequence[float], blan
     """Each body's kinetic (E, p), the kinetic total and the hidden part on the slices t = `times` of the frame (the
     slices `sears-paradox ledger` is asked for), a row per body, the time on the first row of each slice."""
     zero = _zero_below(history, frame)
-    rows = []
+    slices = []
     for t in times:
         s = history.energy_momentum(frame.rapidity, t)
         named = [(f"particle {name}" if name != "rod" else "rod, kinetic", em) for name, em in s.bodies]
         named += [("kinetic total", s.kinetic), ("hidden", s.hidden)]
-        for k, (body, em) in enumerate(named):
-            time = with_fraction(number_text(t), t).replace("-", MINUS) if k == 0 else ""
-            values = [number_text(em.E, zero if body == "hidden" else 0.0), number_text(em.p, zero)]
-            rows.append((Cell(time), Cell(body),
-                         *(Cell(with_fraction(text, float(text)).replace("-", MINUS), blank) for text in values)))
+        # a value below `zero` in size is rounding of a difference (the hidden part, a momentum): 0
+        slices.append((t, [(body, em.E if body != "hidden" or abs(em.E) >= zero else 0.0,
+                            em.p if abs(em.p) >= zero else 0.0) for body, em in named]))
+    # each column with one number of decimals (`numbers.coordinate_format`): the times, E, p
+    time_text = coordinate_format(list(times), signed=False)
+    e_text = coordinate_format([E for _, named in slices for _, E, _ in named], signed=False)
+    p_text = coordinate_format([p for _, named in slices for _, _, p in named], signed=False)
+    rows = []
+    for t, named in slices:
+        for k, (body, E, p) in enumerate(named):
+            time = with_fraction(time_text(t), t).replace("-", MINUS) if k == 0 else ""
+            rows.append((Cell(time), Cell(body), *(Cell(with_fraction(text, value).replace("-", MINUS), blank)
+                                                   for text, value in ((e_text(E), E), (p_text(p), p)))))
     _, tn = coordinates(frame)
     return Table(f"slices_{frame_word(frame)}",
                  f"Each body's kinetic energy and momentum at chosen instants, frame {frame_symbol(frame)}",

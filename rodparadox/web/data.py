@@ -316,11 +316,12 @@ def page_data(scenarios: Sequence[tuple[str, Scenario]], style: str, shown: str 
 
     from rodparadox.render.shading import SHADES
 
-    from rodparadox.numbers import NICE_MULTIPLES, TABLE_DIGITS
+    from rodparadox.numbers import NICE_MULTIPLES, SCIENTIFIC_BELOW, TABLE_DIGITS
     from rodparadox.tolerances import PRINTED_ZERO
 
     out = {"format": FORMAT, "style": style, "styles": inks(), "about_several": ABOUT_SEVERAL, "shades": SHADES,
-           "formats": {"digits": TABLE_DIGITS, "printed_zero": PRINTED_ZERO, "ledger_decimals": LEDGER_DECIMALS},
+           "formats": {"digits": TABLE_DIGITS, "printed_zero": PRINTED_ZERO, "ledger_decimals": LEDGER_DECIMALS,
+                       "scientific_below": SCIENTIFIC_BELOW},
            "tick_multiples": [*NICE_MULTIPLES, 10], "scenarios": [scenario_data(name, s, shown=shown) for name, s in scenarios]}
     if any(s.forces is not None for _, s in scenarios):  # the bands' inks, in a page that draws forces
         out["force_inks"] = force_inks()

@@ -97,10 +97,13 @@ COORDINATES = {"rest": ("x", "t"), "moving": ("x\u2032", "t\u2032")}
 
 def tables(history, frames) -> dict[str, Any]:
     """The force events of S and S' (`frames`: rest, moving) as `sears-paradox events` prints them: every start,
-    peak and end in the frame's time order, the digits shared by both frames' rows."""
+    peak and end in the frame's time order, F and the velocities with the digits shared by both frames' rows, x and
+    t with each frame's column's decimals."""
     per_frame = [force_rows(history, f) for f in frames]
     rows = [r for rs in per_frame for r in rs]
-    coordinate = coordinate_format([c for r in rows for c in (r["x"], r["t"])])
+    # x and t: a column's decimals in each frame (as `events` prints them, `io.export_forces.table`)
+    columns = {frame.name: (coordinate_format([r["x"] for r in rs]), coordinate_format([r["t"] for r in rs]))
+               for frame, rs in zip(frames, per_frame)}
     velocity = velocity_format([r["end_velocity"] for r in rows])
     force = coordinate_format([r["force"] for r in rows] + [p.greatest() for _, p in history.driving.profiles()])
     out = {}
@@ -111,7 +114,8 @@ def tables(history, frames) -> dict[str, Any]:
             "caption": f"Each force's start, peak and end in frame {symbol}",
             "header": ["force", "end", x, t, "F", "end velocity"],
             "rows": [[r["moment"], r["end"], *(text.replace("-", MINUS) for text in (
-                coordinate(r["x"]), coordinate(r["t"]), force(r["force"]), velocity(r["end_velocity"])))] for r in rs],
+                columns[frame.name][0](r["x"]), columns[frame.name][1](r["t"]), force(r["force"]),
+                velocity(r["end_velocity"])))] for r in rs],
             "notes": ["x and t in units of L, F in M c\u00b2/L (a push > 0, a pull < 0), velocities in units of c; "
                       "F at an end: the force just before it stops."]}
     return out

@@ -68,18 +68,23 @@
     return text[0] === "-" && !/[1-9]/.test(text.split("e")[0]) ? "+" + text.slice(1) : text;
   }
   const minus = (text) => text.replace(/-/g, MINUS);
-  function coordinateFormat(values) {  // numbers.coordinate_format
-    const largest = Math.max(0, ...values.map(Math.abs));
-    return (x) => (Math.abs(x) <= FORMATS.printed_zero * largest ? "+0" : minus(withoutZeroSign(pyG(x + 0, FORMATS.digits))));
+  function coordinateFormat(values, signed = true) {  // numbers.coordinate_format: one column, one number of decimals
+    const largest = values.reduce((m, x) => Math.max(m, Math.abs(x)), 0);
+    const scientific = largest > 0 && !(FORMATS.scientific_below <= largest && largest < 10 ** FORMATS.digits);
+    const decimals = largest === 0 || scientific ? 0 : Math.max(0, FORMATS.digits - 1 - Math.floor(Math.log10(largest)));
+    return (x) => {
+      const y = Math.abs(x) <= FORMATS.printed_zero * largest ? 0 : x + 0;
+      const text = withoutZeroSign(scientific && y !== 0 ? pyG(y, FORMATS.digits) : pyF(y, decimals));
+      return minus(signed ? text : text.replace(/^\+/, ""));
+    };
   }
-  function velocityFormat(values) {  // numbers.velocity_format
-    const largest = Math.max(0, ...values.map(Math.abs));
+  function velocityFormat(values) {  // numbers.velocity_format: every velocity given with one number of decimals
+    const largest = values.reduce((m, x) => Math.max(m, Math.abs(x)), 0);
+    const nearC = (u) => (Math.abs(u) > 0.5 ? Math.ceil(-Math.log10(1 - Math.abs(u))) + 1 : 0);
     let decimals = FORMATS.digits - 1;
     if (largest > 0 && largest < 0.1) decimals = FORMATS.digits - 2 - Math.floor(Math.log10(largest));
-    return (u) => {
-      const nearC = Math.abs(u) > 0.5 ? Math.ceil(-Math.log10(1 - Math.abs(u))) + 1 : 0;
-      return minus(withoutZeroSign(pyF(u + 0, Math.max(decimals, nearC))));
-    };
+    decimals = values.reduce((d, u) => Math.max(d, nearC(u)), decimals);
+    return (u) => minus(withoutZeroSign(pyF(u + 0, Math.max(decimals, nearC(u)))));
   }
   // a ledger cell: FORMATS.ledger_decimals decimals (the embedded numbers have no more), no sign but a minus
   const ledgerCell = (x) => minus(withoutZeroSign(pyF(x + 0, FORMATS.ledger_decimals))).replace("+", "");

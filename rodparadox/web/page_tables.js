@@ -30,10 +30,10 @@
     }
     if (g.forceEvents) {  // a driven rod: each force's start, peak and end, boosted
       const events = g.forceEvents.slice().sort((a, b) => a.T - b.T);
-      const coordinate = coordinateFormat(events.flatMap((e) => [e.X * L, e.T * L]));
+      const xText = coordinateFormat(events.map((e) => e.X * L)), tText = coordinateFormat(events.map((e) => e.T * L));
       const force = coordinateFormat(events.map((e) => e.force).concat(m.forces.bands.flatMap((b) => b.F)));
       const velocity = velocityFormat(events.map((e) => Math.tanh(e.rapidity - g.eta)));
-      const rows = events.map((e) => [e.moment, e.end, coordinate(e.X * L), coordinate(e.T * L), force(e.force),
+      const rows = events.map((e) => [e.moment, e.end, xText(e.X * L), tText(e.T * L), force(e.force),
                                       velocity(Math.tanh(e.rapidity - g.eta))]);
       const names = coordinateNames(state.u);
       fillTable(panel.events, `Each force's start, peak and end in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): ` +
@@ -50,11 +50,11 @@
     }
     order.sort((a, b) => instant[a] - instant[b] || a - b);
     const speeds = (i) => [i.particle_before, i.particle_after, i.rod_before, i.rod_after].map((r) => Math.tanh(r - g.eta));
-    const coordinate = coordinateFormat(g.impacts.flatMap((i) => [i.X * L, i.T * L]));
+    const xText = coordinateFormat(g.impacts.map((i) => i.X * L)), tText = coordinateFormat(g.impacts.map((i) => i.T * L));
     const velocity = velocityFormat(g.impacts.flatMap(speeds));
     const rows = order.map((k) => {
       const i = g.impacts[k];
-      return [i.row || i.name, i.end, coordinate(i.X * L), coordinate(i.T * L), ...speeds(i).map(velocity)];
+      return [i.row || i.name, i.end, xText(i.X * L), tText(i.T * L), ...speeds(i).map(velocity)];
     });
     const names = coordinateNames(state.u);
     fillTable(panel.events, `The impacts in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): decimals boosted ` +

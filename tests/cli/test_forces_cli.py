@@ -62,7 +62,10 @@ def test_events_lists_each_force_start_peak_and_end_in_each_frame():
     assert text.count("start left") == 3 and text.count("peak  right") == 3 and text.count("end   right") == 3
     # timed in S': both forces start at t' = 0.5 in S'
     moving = text.split("frame moving")[1].split("frame u=0.3")[0]
-    assert "start left   -0.1116437  +0.5000000" in moving and "start right  +0.7000000  +0.5000000" in moving
+    # x and t with their column's decimals in the frame (x: 1.27, t: 1.5 the largest: six)
+    rows = [" ".join(line.split()) for line in moving.splitlines()]
+    assert "start left -0.111644 +0.500000 +0.0000000 +0.556143" in rows
+    assert "start right +0.700000 +0.500000 +0.0000000 +0.600000" in rows
 
 
 def test_export_writes_the_profiles_the_force_events_and_the_world_lines():

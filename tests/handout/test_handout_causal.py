@@ -246,6 +246,9 @@ def test_the_comparison_draws_both_rods_in_the_same_frames_and_the_causal_rod_s_
     assert "(a), (b) the rigid rod; (c), (d) the causal rod" in both.caption
     strips = [b for b in blocks if isinstance(b, Strips) and b.history is causal]
     assert [s.frame for s in strips] == list(frames) and all(6 <= len(s.times) <= 8 for s in strips)
+    # a part set on the next page is headed "The causal rod at successive instants of S′ (continued)", not "The rod"
+    assert {s.subject for s in strips} == {"The causal rod"}
+    assert {b.subject for b in blocks if isinstance(b, Strips) and b.history is rigid} <= {"The rod"}
     assert "does not draw" not in " ".join(b.text for b in blocks if isinstance(b, Paragraph))
     sheet = build([("single", rigid, None, causal)], worksheet=True)
     assert not any(getattr(b, "compared", None) for b in sheet.sections[1].blocks)

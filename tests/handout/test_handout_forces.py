@@ -433,7 +433,7 @@ def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
     from matplotlib.figure import Figure
 
     from rodparadox.render.force_layers import band_points
-    from rodparadox.render.strip import draw_strips_into
+    from rodparadox.render.strip_block import draw_strips_into
     from rodparadox.render.styles import STYLES
 
     from rodparadox.physics.frames import moving_frame

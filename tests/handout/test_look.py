@@ -125,7 +125,7 @@ def test_the_causal_rods_stills_name_separations_and_contacts_not_impacts():
 
     causal = causal_history("fig1", 0.3)
     found = notes(causal, causal_strip_times(causal, rest_frame()))
-    assert found == ["contacts $A_{1}$, $B_{1}$", "separations $A'_{1}$, $B'_{1}$"]
+    assert found == ["contacts $A_{1}$, $B_{1}$", "separations $A$′$_{1}$, $B$′$_{1}$"]
     rigid = history("fig1", 0.3)
     assert notes(rigid, (5 / 3,)) == ["impacts $A_{1}$, $B_{1}$"]
 

@@ -423,6 +423,57 @@ def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:
     return problems
 
 
+def _crossing(p, q, r, s) -> bool:
+    """Whether the segments pq and rs cross (at a point inside both)."""
+    def turn(a, b, c):
+        return np.sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+    return turn(p, q, r) * turn(p, q, s) < 0 and turn(r, s, p) * turn(r, s, q) < 0
+
+
+def _leader_faults(fig, style, renderer=None, slack: float = 0.5) -> list[tuple[str, str, str]]:
+    """Issue 24: what `_collisions` lets pass, measured on the renderer's boxes (display units): an impact's label
+    on any impact's marker (its round extent, not only its centre), a leader across another impact's marker, and two
+    leaders crossing (each then reads as tied to the other's label). (kind, gid, gid); `slack` in points."""
+    renderer = renderer or _renderer(fig, style)
+    slack *= fig.dpi / 72.0
+    faults = []
+    with render.style_context(style):
+        for ax in fig.axes:
+            texts = {t.get_gid(): t.get_window_extent(renderer) for t in ax.texts
+                     if "-impact-label-" in str(t.get_gid()) and t.get_visible() and t.get_text()}
+            markers, leaders = {}, {}
+            for line in ax.lines:
+                gid = str(line.get_gid())
+                if "-impact-leader-" in gid:
+                    points = line.get_transform().transform(xy(line))
+                    leaders[gid] = (points[0], points[-1])
+                elif "-impact-" in gid and line.get_linestyle() == "None":
+                    centre = line.get_transform().transform(xy(line))[0]
+                    markers[gid] = (centre, line.get_markersize() / 2 * fig.dpi / 72.0 - slack)
+            def apart(marker: str, own: str) -> bool:
+                """Another impact's marker, not one blot with the label's own (its centre under it: B₁ on A₁ near c)."""
+                if own not in markers:
+                    return True
+                (c, _), (c0, r0) = markers[marker], markers[own]
+                return marker != own and np.max(np.abs(c - c0)) > r0 + slack
+
+            for gid, box in texts.items():
+                own = gid.replace("-impact-label-", "-impact-")
+                for marker, (centre, radius) in markers.items():
+                    nearest = np.clip(centre, (box.x0, box.y0), (box.x1, box.y1))
+                    if np.hypot(*(nearest - centre)) < radius and apart(marker, own):
+                        faults.append(("label on a marker", gid, marker))
+            names = sorted(leaders)
+            for i, gid in enumerate(names):
+                (p, q), own = leaders[gid], gid.replace("-impact-leader-", "-impact-")
+                faults += [("leaders cross", gid, other) for other in names[i + 1:] if _crossing(p, q, *leaders[other])]
+                for marker, (centre, radius) in markers.items():
+                    along = np.clip(np.dot(centre - p, q - p) / max(np.dot(q - p, q - p), 1e-12), 0.0, 1.0)
+                    if np.hypot(*(p + along * (q - p) - centre)) < radius and apart(marker, own):
+                        faults.append(("leader across a marker", gid, marker))
+    return faults
+
+
 #: frames for 1 to 8 panels: S, S', then frames on either side of both
 LAYOUT_FRAMES = ("rest", "moving", 0.3, 0.9, -0.5, 0.6, -0.9, 0.99)
 

@@ -15,6 +15,7 @@ from rodparadox.physics.snapshot import strip_at
 from rodparadox.render import draw_strips_into, style_context
 from rodparadox.render.colour_scale import colour_scale
 from rodparadox.render.strip import COLOUR_BAR_LABEL, draw_strip, update_strip
+from rodparadox.render.strip_windows import follows_rod
 from rodparadox.io.scenario import load
 
 #: drawn coordinates against the exact world-lines, in units of L: rounding only
@@ -64,7 +65,12 @@ def test_one_row_per_time_earliest_on_top_each_bar_the_exact_rod(name, v, which)
         dots = drawn(ax, "particles").get_xdata()
         want = [h.worldline(p).seen_from(eta).event_at_time(t).x for p in ("A", "B") if h.worldline(p) is not None]
         assert np.allclose(dots, want, atol=AGREE * (1 + abs(t)), rtol=0)
-        assert ax.get_xlim() == rows[0].get_xlim()  # one shared x axis
+        lo, hi = ax.get_xlim()
+        assert hi - lo == pytest.approx(np.diff(rows[0].get_xlim())[0], rel=1e-12)  # one scale
+        # one shared x axis, unless the rod drifts far for its length and each row follows it (while_turning in S′)
+        shared = not follows_rod([strip_at(h, frame, t, 0.0) for t in times], h.scenario.L)
+        assert (ax.get_xlim() == rows[0].get_xlim()) == shared or ax is rows[0]
+    assert (which, name) != ("moving", "while_turning") or not shared
 
 
 def test_rows_are_labelled_with_their_time_and_marked_impacts_only_at_their_instant():
@@ -157,8 +163,10 @@ def test_the_parts_of_a_block_split_between_pages_keep_one_tick_step_and_one_axe
         figure = Figure(figsize=(6.5, 1.2 * len(part) + 1.2))
         with render.style_context("print"):
             rows = render.draw_strips_into(figure, h, frame, part, "print", span=times)
-        parts.append((tuple(rows[0].get_xticks()), rows[0].get_position().x0, rows[0].get_position().x1))
-    assert parts[0] == parts[1]
+        ticks = rows[0].get_xticks()
+        parts.append((round(ticks[1] - ticks[0], 12), np.diff(rows[0].get_xlim())[0].round(12),
+                      rows[0].get_position().x0, rows[0].get_position().x1))
+    assert parts[0] == parts[1]  # one step, one width in L (each row follows the rod here), one axes width
 
 
 def test_a_colour_bar_only_where_the_rod_s_velocity_varies():
@@ -184,3 +192,47 @@ def test_a_colour_bar_only_where_the_rod_s_velocity_varies():
         assert len(bars) == (0 if name == "fig1" else 1), name
         heights[name] = render.strips_size(h, frame, times[:6], "print")[1]
     assert heights["fig1"] < heights["fig2"]
+
+
+def test_where_the_rod_drifts_far_each_row_follows_it_at_one_scale_and_marks_the_particles_beyond():
+    """Issue 24: the causal rod in S′ at v = 0.95 drifts 15 L while it is 0.2 to 0.6 L long, so on one shared axis
+    it was a blob. Each row now follows it: every row as wide, centred on the rod at its instant, its own ticks; a
+    particle beyond a row's edge is an arrowhead there. fig1's rigid rod at 0.95 (0.06 of the range) keeps the
+    shared axis."""
+    from helpers import causal_history
+
+    from rodparadox.handout.causal_compare import causal_strip_times
+    from rodparadox.handout.strips import strip_times
+    from rodparadox.physics.frames import moving_frame
+
+    frame = moving_frame(0.95)
+    h = causal_history("fig1", 0.95)
+    times = causal_strip_times(h, frame)
+    figure, rows = block(h, frame, times, "print", size=(6.5, 8.5))
+    widths = {round(ax.get_xlim()[1] - ax.get_xlim()[0], 12) for ax in rows}
+    assert len(widths) == 1  # one scale
+    for ax, t in zip(rows, sorted(times)):
+        a, b = bar_ends(ax)
+        lo, hi = ax.get_xlim()
+        assert lo < a < b < hi and (b - a) / (hi - lo) > 0.08  # the rod in view, at least 8 % of the row (was 1 %)
+        assert abs(0.5 * (a + b) - 0.5 * (lo + hi)) < 1e-9  # centred on it
+        assert any(label.get_visible() and label.get_text()
+                   for label in ax.get_xticklabels())  # each row its own ticks
+        beyond = {str(artist.get_gid()).rsplit("-", 1)[-1] for artist in ax.get_children()
+                  if str(artist.get_gid()).startswith(f"{ax.get_gid()}-beyond-") and not artist.get_gid().endswith("letter")}
+        for name, x in strip_at(h, frame, t, 0.0).particles:
+            assert (name in beyond) == (not lo <= x <= hi), (t, name)  # a particle out of view is marked
+    assert render_size_fits(h, frame, times)
+    rigid = history("fig1", 0.95)
+    _, shared = block(rigid, frame, strip_times(rigid, frame), "print", size=(6.5, 7.0))
+    assert len({ax.get_xlim() for ax in shared}) == 1  # the rigid rod reads on one axis: it keeps it
+
+
+def render_size_fits(h, frame, times) -> bool:
+    """A target of the least size `strips_size` gives, rows and each row's ticks included, is accepted."""
+    from rodparadox import render
+
+    w, hh = render.strips_size(h, frame, times, "print")
+    with style_context("print"):
+        render.draw_strips_into(Figure(figsize=(w / 72 + 0.01, hh / 72 + 0.01), dpi=72), h, frame, times, "print")
+    return True

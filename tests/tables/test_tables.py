@@ -165,10 +165,10 @@ def fig2_cells(frame_name: str) -> dict[str, dict[str, str]]:
     return {row[0]: dict(zip(header, row)) for row in rows}
 
 
-def decimal(q: Fraction, digits: int | None) -> str:
-    """A fraction as the tables print it: signed, with `digits` significant digits (a coordinate) or six decimals
-    (a velocity, digits None), then the fraction itself."""
-    text = f"{float(q):+#.{digits}g}" if digits else f"{float(q):+.6f}"
+def decimal(q: Fraction, decimals: int = 6) -> str:
+    """A fraction as the tables print it: signed, with its column's `decimals` (a coordinate: seven significant
+    digits in the column's largest; a velocity: six), then the fraction itself."""
+    text = f"{float(q):+.{decimals}f}"
     return f"{text.replace('-', chr(0x2212))} ({q.numerator}/{q.denominator})"
 
 
@@ -179,14 +179,16 @@ def test_fig2_at_0_6_by_hand():
     t_B, t_A = L / (2 * v), L / (2 * v) + g * v * L
     assert (t_B, t_A) == (Fraction(5, 6), Fraction(19, 12))
     rest = fig2_cells("rest")
-    assert rest["B₁"]["t"] == decimal(t_B, 7) == "+0.8333333 (5/6)"
-    assert rest["A₁"]["t"] == decimal(t_A, 7) == "+1.583333 (19/12)"
+    # the t column's largest, B₂'s 7/3, has seven digits, so six decimals: every t with six
+    assert rest["B₁"]["t"] == decimal(t_B, 6) == "+0.833333 (5/6)"
+    assert rest["A₁"]["t"] == decimal(t_A, 6) == "+1.583333 (19/12)"
+    assert rest["B₁"]["x"] == "+0.5000000" and rest["A₁"]["x"] == "\N{MINUS SIGN}0.7500000"  # x: 0.75 the largest
     t_prime = g * L / (2 * v) * (1 + v * v)  # the paper's (15), corrected
     u_after = 2 * v / (1 + v * v)
     assert (t_prime, u_after) == (Fraction(17, 12), Fraction(15, 17))
     moving = fig2_cells("moving")
-    assert moving["A₁"]["t′"] == moving["B₁"]["t′"] == decimal(t_prime, 7) == "+1.416667 (17/12)"
-    assert moving["A₁"]["rod after"] == decimal(u_after, None) == "+0.882353 (15/17)"
+    assert moving["A₁"]["t′"] == moving["B₁"]["t′"] == decimal(t_prime, 6) == "+1.416667 (17/12)"
+    assert moving["A₁"]["rod after"] == decimal(u_after) == "+0.882353 (15/17)"
     # the same cells in the LaTeX fragment: the number in an S column, its fraction in small type under it
     latex = to_latex(events_table(history_of("fig2", 0.6), paper_frames(0.6)[1]))
     row = next(line for line in latex.splitlines() if line.startswith("A$_{1}$"))
@@ -208,9 +210,11 @@ def test_fig1_ledger_hides_2g2v2_and_2g2v_in_s_prime_by_hand():
     assert (hidden_rows[1]["E before"], hidden_rows[1]["p before"]) == ("1.1250", "1.8750")  # before B₁
     header, rows = tables["Each body's kinetic energy and momentum at chosen instants, frame S′"]
     at_1 = {r[1]: (r[2], r[3]) for r in rows}
-    assert rows[0][0] == "1" and at_1["hidden"] == ("1.125", "1.875")
+    # each column with one number of decimals: seven digits in its largest (E 3.25, p 1.875)
+    assert rows[0][0] == "1.000000" and at_1["hidden"] == ("1.125000", "1.875000")
     # A has bounced to rest in S′, B still moves at 0: both have E = 1, p = 0; the rod keeps g(1, v) = (1.25, 0.75)
-    assert at_1["particle A"] == at_1["particle B"] == ("1", "0") and at_1["rod, kinetic"] == ("1.25", "0.75")
+    assert at_1["particle A"] == at_1["particle B"] == ("1.000000", "0.000000")
+    assert at_1["rod, kinetic"] == ("1.250000", "0.750000")
 
 
 # --- LaTeX: text ------------------------------------------------------------------------------------------

@@ -103,3 +103,32 @@ def test_a_table_with_a_row_of_the_wrong_length_is_refused():
         Table("t", "c", ("a", "b", "c"), ((Cell("1"), Cell("2")),), "lnn")
     with pytest.raises(ValueError, match="align"):
         Table("t", "c", ("a",), (), "x")
+
+
+@pytest.mark.parametrize("v", [0.3, 0.6, 0.95])
+def test_every_number_column_of_the_events_tables_shares_its_decimals(v):
+    """Issue 24: the tables printed "+0" beside "+1.048285" and "+0.2500000" under "+1.250000", the times with
+    six decimals under a time with seven: every number column of every events table (the rigid rod's and the causal
+    rod's, in S and S′, every preset with particles) now writes each of its numbers with one number of decimals,
+    the largest with seven significant digits."""
+    import helpers
+
+    from rodparadox.handout import causal_compare
+
+    checked = 0
+    for name in helpers.particle_presets():
+        for rod, table_of in (("rigid", events_table), ("causal", causal_compare.events_table)):
+            h = helpers.history(name, v) if rod == "rigid" else helpers.causal_history(name, v)
+            for frame in (rest_frame(), moving_frame(v)):
+                table = table_of(h, frame)
+                for k, kind in enumerate(table.align):
+                    texts = [row[k].text.split(" (")[0] for row in table.rows if kind == "n" and row[k].text]
+                    if not texts or any("e" in t for t in texts):
+                        continue
+                    decimals = {len(t.split(".")[1]) if "." in t else 0 for t in texts}
+                    assert len(decimals) == 1, (name, rod, frame.name, table.header[k], texts)
+                    if table.header[k] in ("x", "t", "x\N{PRIME}", "t\N{PRIME}"):
+                        largest = max(texts, key=lambda t: abs(number(t)))
+                        assert len(largest.lstrip("+" + MINUS).replace(".", "").lstrip("0")) == 7, (name, texts)
+                    checked += 1
+    assert checked >= 6 * 2 * 2 * 6
