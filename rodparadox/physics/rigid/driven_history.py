@@ -161,7 +161,7 @@ class DrivenHistory:
         Y = self._states(np.array(taus))
         s = np.sinh(Y[:, PHI] - f)
         tf = math.cosh(f) * Y[:, T_] - math.sinh(f) * Y[:, X_]
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # inf, nan: no crossing in (0, 1)
             sig = np.where(s != 0.0, (T - tf) / s, -1.0)
         return sorted(float(v) for v in sig if 0.0 < v < 1.0)
 
