@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Sequence
 
 from rodparadox.handout.document import Block, Heading, Strips
-from rodparadox.handout.strips import STRIP_SEPARATION, STRIPS_FEWEST, STRIPS_MOST
+from rodparadox.handout.strips import chosen_instants
 from rodparadox.handout.words import in_c, listed, time_name
 from rodparadox.numbers import shown
 from rodparadox.physics.frames import Frame, frame_name, frame_word, time_window
@@ -28,16 +28,7 @@ def force_strip_times(history, frame: Frame) -> tuple[float, ...]:
     candidates = [(0, 0.5 * (t_lo + first)), (0, 0.5 * (last + t_hi))]
     candidates += [(1, t) for moment, t in moments if moment != "peak"]
     candidates += [(2, t) for moment, t in moments if moment == "peak"]
-    close = STRIP_SEPARATION * (t_hi - t_lo)
-    chosen: list[tuple[int, float]] = []
-    for priority, t in sorted(candidates):
-        if all(abs(t - c) > close for _, c in chosen):
-            chosen.append((priority, t))
-    times = sorted(t for _, t in chosen[:STRIPS_MOST])
-    while len(times) < STRIPS_FEWEST:  # halve the widest gap, the ends of the window included as bounds
-        bounds = [t_lo] + times + [t_hi]
-        a, b = max(zip(bounds, bounds[1:]), key=lambda ab: ab[1] - ab[0])
-        times = sorted(times + [0.5 * (a + b)])
+    times = chosen_instants(candidates, t_lo, t_hi)
     L = history.scenario.L  # rounded to 1e-12 L: a halved gap's 0 is not -2.8e-17, a peak's 1 not 0.9999999999999999
     return tuple(round(min(max(t, t_lo), t_hi) / L, 12) * L + 0.0 for t in times)
 

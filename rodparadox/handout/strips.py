@@ -52,6 +52,13 @@ def strip_times(history: RodHistory, frame: Frame) -> tuple[float, ...]:
     candidates += [(1, start) for start, _ in turns if not any(r.same_time(start, t) for t in impacts)]
     candidates += [(2, 0.5 * (a + b)) for a, b in turns if b - a > 0]
     candidates += [(3, end) for _, end in turns]
+    return tuple(min(max(t, t_lo), t_hi) for t in chosen_instants(candidates, t_lo, t_hi))
+
+
+def chosen_instants(candidates: Sequence[tuple[int, float]], t_lo: float, t_hi: float) -> list[float]:
+    """Of (priority, time) candidates, the lower the priority the surer kept: at most STRIPS_MOST, none closer than
+    STRIP_SEPARATION of the window [t_lo, t_hi] to one kept before it; fewer than STRIPS_FEWEST, the widest gap
+    (the window's ends as bounds) halved until there are. In time order."""
     close = STRIP_SEPARATION * (t_hi - t_lo)
     chosen: list[tuple[int, float]] = []
     for priority, t in sorted(candidates):
@@ -62,7 +69,7 @@ def strip_times(history: RodHistory, frame: Frame) -> tuple[float, ...]:
         bounds = [t_lo] + times + [t_hi]
         a, b = max(zip(bounds, bounds[1:]), key=lambda ab: ab[1] - ab[0])
         times = sorted(times + [0.5 * (a + b)])
-    return tuple(min(max(t, t_lo), t_hi) for t in times)
+    return times
 
 
 def _kink(worldline, t: float) -> tuple[float, float]:
