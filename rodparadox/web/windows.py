@@ -54,9 +54,15 @@ def changes(history) -> Changes:
     return Changes(np.array(events, dtype=float), np.array(starts, dtype=float), L if driven else 0.5 * L, 2.0 * L)
 
 
+#: the frame slider's farthest step, in hundredths of c: a step of 100 would be a frame moving at c, which is no
+#: frame (its window's rapidity infinite); S' beyond it is shown by the page's own button
+MAX_SLIDER_STEPS = 99
+
+
 def slider_steps(reach: float) -> int:
-    """The frame slider's reach in hundredths of c (it runs from -steps to steps; the page reads its value / 100)."""
-    return math.ceil(reach * 100)
+    """The frame slider's reach in hundredths of c (it runs from -steps to steps; the page reads its value / 100),
+    never a frame at c (`MAX_SLIDER_STEPS`)."""
+    return min(math.ceil(reach * 100), MAX_SLIDER_STEPS)
 
 
 def slider_velocities(steps: int) -> np.ndarray:

@@ -1051,3 +1051,12 @@ def test_force_presets_bands_force_events_and_their_ledger_in_s_s_prime_and_on_a
             assert forces_data[preset]["title"] in tab.tab.inner_text("#heading")
             tab.tab.screenshot(path=str(screenshots / f"{preset}_{name}.png"), full_page=True)
         tab.close()
+
+
+def test_the_frame_slider_never_reaches_a_frame_at_c():
+    """A speed of 0.9999999 on the page made the slider reach k = 100 (u = 1): its window was nan and the page's
+    JSON could not be written (a traceback). The slider stops at 0.99 (S' has its own button); below, as before."""
+    from rodparadox.web.windows import slider_steps, slider_velocities
+
+    assert slider_steps(0.95) == 95 and slider_steps(0.9999999) == 99 and slider_steps(0.991) == 99
+    assert max(abs(slider_velocities(slider_steps(0.9999999)))) == 0.99
