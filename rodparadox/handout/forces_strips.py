@@ -54,13 +54,15 @@ def force_strips_caption(history, frame: Frame, times: Sequence[float], model: s
 
 
 def strips_blocks(stem: str, histories: Sequence, frames: Sequence[Frame]) -> list[Block]:
-    """Each frame's strips under a heading naming it, each rod's block (the rigid rod first) with its caption."""
+    """Each frame's strips, each rod's block (the rigid rod first) under a heading naming the rod (where two are
+    shown) and the frame, with its caption."""
     blocks: list[Block] = []
     for f in frames:
-        blocks.append(Heading(f"The rod at successive instants of {frame_name(f)}", 2))
         for h in histories:
             times = force_strip_times(h, f)
             model = f"the {h.model} rod" if len(histories) > 1 else ""
+            subject = f"The {h.model} rod" if model else "The rod"
+            blocks.append(Heading(f"{subject} at successive instants of {frame_name(f)}", 2))
             blocks.append(Strips(f"{stem}_strips_{'causal_' if h.fronts is not None else ''}{frame_word(f)}", h, f, times,
-                                 force_strips_caption(h, f, times, model)))
+                                 force_strips_caption(h, f, times, model), subject=subject))
     return blocks

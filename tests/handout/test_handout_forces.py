@@ -14,6 +14,7 @@ import pytest
 
 from rodparadox.handout.build import SECTIONS, build
 from rodparadox.handout.document import DiagramBlock, Heading, Paragraph, Question, Table
+from rodparadox.physics.frames import frame_name
 from rodparadox.handout.forces import PARADOX_TITLE, PUSH_TITLE
 from rodparadox.io.scenario import load
 from rodparadox.numbers import MINUS
@@ -424,6 +425,13 @@ def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, 
     for b in blocks:
         assert "An arrow at an end is the force acting there" in b.caption
         assert "particle" not in b.caption and "impact" not in b.caption
+    # each rod's block under its own heading, which a part set on the next page repeats (the causal rows sat under
+    # "The rod at successive instants of S", the rod named only in the caption after them)
+    everything = list(sears.blocks())
+    for b in blocks:
+        heading = everything[everything.index(b) - 1]
+        assert heading == Heading(f"The {b.history.model} rod at successive instants of {frame_name(b.frame)}", 2)
+        assert b.subject == f"The {b.history.model} rod"
 
 
 def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
