@@ -199,7 +199,11 @@ def energy_text(c: Comparison) -> str:
     (internal energy) + the change of its bulk kinetic energy; all bulk kinetic energy for the rigid rod."""
     parts = []
     for e in c.energy:
-        parts.append(f"in {frame_name(e.frame)} the particles lose {numeral(_zero(e.lost_causal, 1.0))} M c² = "
+        lost = _zero(e.lost_causal, 1.0)
+        # a frame where the particles leave with more energy than they came with: said as a gain, the sum as a loss
+        said = f"lose {numeral(lost)} M c²" if lost >= 0 else \
+            f"gain {numeral(-lost)} M c²: what they lose, {numeral(lost)} M c²,"
+        parts.append(f"in {frame_name(e.frame)} the particles {said} = "
                      f"{numeral(e.internal)} M c² of internal energy + {_signed_energy(e.bulk_change)} of bulk "
                      f"kinetic energy (from {numeral(_zero(e.bulk_before, 1.0))} to {numeral(_zero(e.bulk_after, 1.0))} "
                      f"M c²)")

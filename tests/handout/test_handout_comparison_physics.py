@@ -107,7 +107,9 @@ def test_energy_lost_by_the_particles_is_internal_plus_bulk_in_every_frame(compa
         assert lost == pytest.approx(internal + bulk_after - bulk_before, abs=1e-9)
         assert (e.lost_causal, e.internal, e.bulk_before, e.bulk_after) == pytest.approx(
             (lost, internal, bulk_before, bulk_after), abs=1e-9)
-        said = (f"the particles lose {_n(lost)} M c² = {_n(internal)} M c² of internal energy + ")
+        said = (f"the particles lose {_n(lost)} M c² = " if lost >= 0 else  # a gain said as one (single in S′)
+                f"the particles gain {_n(-lost)} M c²: what they lose, {_n(lost)} M c², = ") + \
+            f"{_n(internal)} M c² of internal energy + "
         assert said in text, (key, frame.name, said)
         assert f"(from {_n(bulk_before)} to {_n(bulk_after)} M c²)" in text
         # the rigid rod keeps M: the particles' loss is its bulk kinetic energy, cosh(θ_final − η) − cosh η
