@@ -23,18 +23,16 @@ FORMAT = "sears-paradox-ledger/1"
 UNITS = "E in M c^2, p in M c, M the rod's mass; t and x in the unit L is given in"
 #: the parts of each slice, in order: what each agent delivered, the rod's parts, their sum, and the check
 PARTS = ("delivered left", "delivered right", "rod kinetic", "rod stress", "rod", "initial + delivered")
+#: what both notes say of the parts' sum and of the centre of energy
+_SUM = ("Their sum equals the rod's (E, p) before the forces plus what the two agents delivered up to the slice's end "
+        "events. x_E is the centre of energy, v_E its velocity; for a closed system v_E = p/E, with forces they differ.")
 NOTE = ("The rod's (E, p) on a slice is its kinetic part, (M/L) int (cosh psi, sinh psi) d sigma, plus its stress "
         "part, int p tanh psi (sinh psi, cosh psi) d sigma (von Laue's momentum of a stressed body: zero on the "
-        "rod's own lines of simultaneity). Their sum equals the rod's (E, p) before the forces plus what the two "
-        "agents delivered up to the slice's end events. x_E is the centre of energy, v_E its velocity; for a closed "
-        "system v_E = p/E, with forces they differ.")
+        "rod's own lines of simultaneity). " + _SUM)
 #: the same for a rod whose signals run at c (the capability `fronts`: the causal rod), split as its own ledger is
 FRONTS_PARTS = ("delivered left", "delivered right", "rod matter", "rod stress", "rod", "initial + delivered")
 FRONTS_NOTE = ("The rod's (E, p) on a slice is its matter part, rho u u (rho its rest-frame energy density, elastic "
-               "energy included), plus its stress part, p (u u - eta) (von Laue's momentum of a stressed body). Their "
-               "sum equals the rod's (E, p) before the forces plus what the two agents delivered up to the slice's end "
-               "events. x_E is the centre of energy, v_E its velocity; for a closed system v_E = p/E, with forces they "
-               "differ.")
+               "energy included), plus its stress part, p (u u - eta) (von Laue's momentum of a stressed body). " + _SUM)
 
 
 def parts_of(history) -> tuple[tuple[str, ...], str]:
