@@ -126,7 +126,7 @@ class RodNow(Layer):
         return LayerArtists(artists=tuple(drawn), guides=tuple(segments))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        return line_handle(style.rod_now), "the rod's own lines of simultaneity"
+        return line_handle(style.rod_now), "the rod’s own lines of simultaneity"
 
 
 @dataclass(frozen=True)
