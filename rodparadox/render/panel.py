@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.history import RodHistory
@@ -40,8 +41,11 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         guides += out.guides
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
+    ends = [p.worldlines[end] for end in ("rod_left", "rod_right") if end in p.worldlines]
+    sheet = np.concatenate([ends[0], ends[1][::-1]]) if len(ends) == 2 else None  # the shaded world-sheet
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or contacts_last(history))
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or contacts_last(history),
+                   sheet=sheet)
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     if options.insets:
