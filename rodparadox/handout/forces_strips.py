@@ -55,14 +55,16 @@ def force_strips_caption(history, frame: Frame, times: Sequence[float], model: s
 
 def strips_blocks(stem: str, histories: Sequence, frames: Sequence[Frame]) -> list[Block]:
     """Each frame's strips, each rod's block (the rigid rod first) under a heading naming the rod (where two are
-    shown) and the frame, with its caption."""
+    shown) and the frame, with its caption; the blocks of one frame share one x range and one colour scale."""
     blocks: list[Block] = []
     for f in frames:
-        for h in histories:
-            times = force_strip_times(h, f)
+        chosen = [(h, force_strip_times(h, f)) for h in histories]
+        for k, (h, times) in enumerate(chosen):
             model = f"the {h.model} rod" if len(histories) > 1 else ""
             subject = f"The {h.model} rod" if model else "The rod"
             blocks.append(Heading(f"{subject} at successive instants of {frame_name(f)}", 2))
+            # the rods compared share one x range and one colour scale in each frame
             blocks.append(Strips(f"{stem}_strips_{'causal_' if h.fronts is not None else ''}{frame_word(f)}", h, f, times,
-                                 force_strips_caption(h, f, times, model), subject=subject))
+                                 force_strips_caption(h, f, times, model), subject=subject,
+                                 partners=tuple(other for j, other in enumerate(chosen) if j != k)))
     return blocks
