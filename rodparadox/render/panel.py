@@ -55,11 +55,12 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         keep_clear += [((e.x - p.box[0]) * scale - style.impact_size, (e.t - p.box[2]) * scale - style.impact_size,
                         (e.x - p.box[0]) * scale + style.impact_size, (e.t - p.box[2]) * scale + style.impact_size)
                        for e in events]
+        worldlines = list(p.worldlines.values())  # an inset hides none of them where it can
         plan = inset_plan(p.view, history.scenario.L, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
-                          events)
+                          events, worldlines)
         if plan is None:  # a driven rod whose small motion would not be seen
             plan = motion_inset_plan(history, p.view, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
-                                     events)
+                                     events, worldlines, p.motion_inset)
         if plan is not None:
             drawn["inset"] = list(draw_inset(ax, plan, history, p.view, style, p.letter, m.fs["tick"], p.width,
                                              p.height, events, options.simultaneity))

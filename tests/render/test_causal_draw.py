@@ -456,10 +456,10 @@ def test_the_rods_own_now_is_in_the_legend_only_where_a_rod_draws_it(tmp_path):
 
     fig = compared("fig2", 0.6)
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "the rod's own lines of simultaneity" in labels
+    assert "the rod’s own lines of simultaneity" in labels
     assert gids(fig, r"a-rod-now-\d+") and gids(fig, r"[cd]-rod-now-\d+") == []
     causal_rod = like_for_like("fig2", 0.6)[1]
     _, alone = legend_entries(STYLES["default"], causal_rod, render.Options(rod_now=True), 1.0)
-    assert "the rod's own lines of simultaneity" not in alone
+    assert "the rod’s own lines of simultaneity" not in alone
     result = CliRunner().invoke(main, ["plot", "fig2", "--rod", "causal", "--rod-now", "-o", str(tmp_path)])
     assert result.exit_code == 2 and "the causal rod has none" in result.output and not list(tmp_path.iterdir())

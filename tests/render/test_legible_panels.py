@@ -75,7 +75,7 @@ def test_every_legend_entry_differs_from_every_other_without_colour(style):
     assert same == []
     # the pairs the issue named, by name
     assert looks["particle A"][0] != looks["particle B"][0]
-    assert looks["material points inside the rod"][0] != looks["the rod's own lines of simultaneity"][0]
+    assert looks["material points inside the rod"][0] != looks["the rod’s own lines of simultaneity"][0]
 
 
 def test_the_grey_test_sees_a_planted_twin():
