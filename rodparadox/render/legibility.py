@@ -424,7 +424,9 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
         if wx0 <= e.x <= wx1 and wt0 <= e.t <= wt1:
             artists += inset.plot([e.x], [e.t], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.label}")
-    about = _about(plan.about)
+    # a worksheet's (`simultaneity` off: it asks which impacts share an instant) names no impacts an instant groups:
+    # "×5 at B₁, A₁" in S′ told fig2's worksheet that B₁ and A₁ are simultaneous there
+    about = _about(plan.about) if simultaneity or len(plan.about) < 2 else ""
     m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁶ on, 2.5×10⁶ as the ticks write it
     # in mathtext, as the impacts' names are: mathtext's fonts lack the superscript digits plain text would use
     factor = f"$\\times{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3, math_text=True)}$"
