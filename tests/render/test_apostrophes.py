@@ -12,8 +12,9 @@ import re
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2] / "rodparadox"
-#: what a reader sees is drawn or written by these parts
+#: what a reader sees is drawn or written by these parts (and the comparison's note under a figure of both rods)
 READ = ("render", "animate", "web")
+ALSO = ("tables/comparison.py",)
 STRAIGHT = re.compile(r"[A-Za-z]'[A-Za-z]")
 
 
@@ -41,6 +42,8 @@ def test_no_string_a_reader_sees_sets_an_apostrophe_straight():
             found += [(path.name, text[:80]) for text in straight_in_python(path.read_text(encoding="utf-8"))]
         for path in sorted((ROOT / part).rglob("*.js")):
             found += [(path.name, line.strip()[:80]) for line in straight_in_script(path.read_text(encoding="utf-8"))]
+    for name in ALSO:
+        found += [(name, text[:80]) for text in straight_in_python((ROOT / name).read_text(encoding="utf-8"))]
     assert not found, found
 
 
