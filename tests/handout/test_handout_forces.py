@@ -461,6 +461,25 @@ def test_the_two_rods_strips_share_one_x_range_and_one_colour_scale_in_each_fram
     assert bar_rigid == [] and bar_causal == ["strips-colour-bar"]
 
 
+def test_a_driven_rods_strips_say_where_their_rows_follow_the_rod():
+    """push at 0.95 in S′: the rod drifts 20 L while 0.3 L long, so each row follows it (`render.strip_windows`), both
+    rods' blocks alike; their captions said nothing of it (a particle comparison's do). Now they say so, without
+    the particles' arrowheads a driven rod has none of; in S, where one range serves, they do not."""
+    from rodparadox.handout.document import Strips
+    from rodparadox.handout.forces_strips import strips_blocks
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.render.strip_windows import strips_follow_rod
+
+    rigid, causal = rods("push", 0.95)
+    blocks = [b for b in strips_blocks("push", (rigid, causal), paper_frames(0.95)) if isinstance(b, Strips)]
+    for b in blocks:
+        follows = b.frame.name == "moving"
+        assert ("so each row follows it" in b.caption) == follows, (b.history.model, b.frame.name)
+        assert "particle" not in b.caption
+        if b.history.model == "rigid":  # as the drawing decides, from the strips themselves
+            assert strips_follow_rod(b.history, b.frame, b.times) == follows
+
+
 def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
     """sears in S′ (v = 0.6), drawn: an arrow only where a force acts (SEARS_S_PRIME: at t′ = 1 the right force
     starts, a sine² at zero, while the left acts), pressing: from outside the rod to its end; at a peak (0.2 M c²/L,
