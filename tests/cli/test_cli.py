@@ -35,6 +35,27 @@ def error_of(*args) -> str:
     return lines[0][len("Error: "):]
 
 
+def test_the_program_runs_main_with_the_collectors_thresholds_raised(monkeypatch):
+    """The console script is `run`: `main` in a collector tuned for a short process, which the tests' own process
+    (calling `main`) keeps out of."""
+    import gc
+    import tomllib
+
+    from sears_paradox_cli import main as program
+
+    scripts = tomllib.loads((Path(__file__).resolve().parents[2] / "pyproject.toml").read_text())["project"]["scripts"]
+    assert scripts == {"sears-paradox": "sears_paradox_cli.main:run"}
+    seen = []
+    monkeypatch.setattr(program, "main", lambda: seen.append(gc.get_threshold()))
+    monkeypatch.setattr(gc, "freeze", lambda: seen.append("frozen"))  # the test process's own objects stay as they are
+    before = gc.get_threshold()
+    try:
+        program.run()
+    finally:
+        gc.set_threshold(*before)
+    assert seen == [(100_000, 10, 10), "frozen"] and before[0] < 100_000
+
+
 def test_version():
     from rodparadox import __version__
 
@@ -78,6 +99,7 @@ def test_the_commands_share_one_module_and_plot_does_not_import_main():
 def test_any_library_error_is_one_sentence_and_exit_2(command, tmp_path, monkeypatch):
     """Every RodParadoxError is caught once, at the CLI edge: here one the frames module might raise."""
     import rodparadox.physics.frames
+    import sears_paradox_cli.planning  # noqa: F401  imported before the patch below, which it would keep for good
     from rodparadox.errors import RodParadoxError
 
     class Refused(ValueError, RodParadoxError):
