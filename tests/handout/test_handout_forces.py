@@ -461,6 +461,18 @@ def test_the_two_rods_strips_share_one_x_range_and_one_colour_scale_in_each_fram
     assert bar_rigid == [] and bar_causal == ["strips-colour-bar"]
 
 
+def test_no_text_writes_a_subscript_as_code_does(sears, push):
+    """Issue 24, found looking at the pages: the momentum tables' last column was headed "v_E", their note and the
+    section's paragraph said "v_E", printed as it stands; they now say the centre velocity in words."""
+    import re
+
+    for doc in (sears, push):
+        text = text_of(doc) + " ".join(" ".join(b.header) + " ".join(b.notes) for b in doc.blocks()
+                                       if isinstance(b, Table))
+        assert not re.findall(r"[A-Za-z]_[A-Za-z]", text)
+        assert "centre velocity" in text
+
+
 def test_a_driven_rods_strips_say_where_their_rows_follow_the_rod():
     """push at 0.95 in S′: the rod drifts 20 L while 0.3 L long, so each row follows it (`render.strip_windows`), both
     rods' blocks alike; their captions said nothing of it (a particle comparison's do). Now they say so, without
