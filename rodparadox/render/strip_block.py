@@ -10,7 +10,6 @@ Never pyplot; matplotlib is imported by the caller's choice of this module.
 
 from __future__ import annotations
 
-from functools import lru_cache
 from typing import NamedTuple, Sequence
 
 import numpy as np
@@ -19,11 +18,11 @@ from matplotlib.figure import Figure, SubFigure
 
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
-from rodparadox.physics.snapshot import Strip, strip_at
+from rodparadox.physics.snapshot import Strip
 from rodparadox.render.colour_scale import colour_scale, shared_scale
 from rodparadox.render.force_layers import force_notes
 from rodparadox.render.strip import STILL_BAR, STILL_LETTER_Y, clock_reading, draw_strip, label_colour_bar
-from rodparadox.render.strip_windows import follows_rod, outside, row_ranges, shared_range
+from rodparadox.render.strip_windows import follows_rod, outside, row_ranges, shared_range, strips_at
 from rodparadox.render.styles import Style
 from rodparadox.render.text import coordinate_names
 from rodparadox.tolerances import ONE_INSTANT
@@ -267,17 +266,6 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
     least_row = 2 * 0.95 * fs["label"] / (1 - STILL_LETTER_Y)  # a particle's letter fits above the bar
     row_gap = 0.25 * fs["tick"] + ((3.5 + 3.5 + tick_h + 4.0) if follow else 0.0)
     return _StillsRoom(gutter, 10.0, below, 4.0, row_gap, least_row, 8 * fs["tick"], tick_h, label_h, small, bar_h)
-
-
-@lru_cache(maxsize=64)
-def strips_at(history: RodHistory, frame: Frame, times: tuple[float, ...], flash: float) -> tuple[Strip, ...]:
-    """The strips (`physics.snapshot.strip_at`) of these instants, kept: a handout measures a block of strips for
-    every row count it tries, then draws it. Their arrays are made read-only, as they are shared."""
-    strips = tuple(strip_at(history, frame, t, flash) for t in times)
-    for strip in strips:
-        for array in (strip.sigma, strip.x, strip.velocity):
-            array.flags.writeable = False
-    return strips
 
 
 def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style: str,

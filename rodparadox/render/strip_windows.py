@@ -9,6 +9,7 @@ to row), centred on the rod at its instant, with its own ticks.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Sequence
 
 import numpy as np
@@ -62,7 +63,19 @@ def strips_follow_rod(history: RodHistory, frame: Frame, times: Sequence[float])
     """Whether the block of stills of `history` at these instants of `frame` draws each row following the rod: what
     its caption must say."""
     L = history.scenario.L
-    return follows_rod([strip_at(history, frame, float(t), ONE_INSTANT * L) for t in times], L)
+    return follows_rod(strips_at(history, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * L), L)
+
+
+@lru_cache(maxsize=64)
+def strips_at(history: RodHistory, frame: Frame, times: tuple[float, ...], flash: float) -> tuple[Strip, ...]:
+    """The strips (`physics.snapshot.strip_at`) of these instants, kept: a handout measures a block of strips for
+    every row count it tries, then draws it, and its caption says whether the rows follow the rod
+    (`strips_follow_rod`). Their arrays are made read-only, as they are shared."""
+    strips = tuple(strip_at(history, frame, t, flash) for t in times)
+    for strip in strips:
+        for array in (strip.sigma, strip.x, strip.velocity):
+            array.flags.writeable = False
+    return strips
 
 
 def outside(strip: Strip, window: tuple[float, float], L: float) -> tuple[tuple[str, str], ...]:

@@ -34,7 +34,7 @@ PAPERS = ("a4", "letter")
 def _all_plans() -> dict[str, list]:
     """Per paper: each preset's handout and worksheet at each speed, and the plan of its pages. A document's plans
     on both papers are made one after the other: they measure the same blocks of strips, which
-    `render.strip.strips_at` keeps in a small cache that the other documents' strips would push out in between."""
+    `render.strip_windows.strips_at` keeps in a small cache that the other documents' strips would push out in between."""
     out: dict[str, list] = {paper: [] for paper in PAPERS}
     for v in SPEEDS:
         for name in particle_presets():
