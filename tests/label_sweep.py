@@ -19,14 +19,14 @@ from matplotlib.figure import Figure  # noqa: E402
 from helpers import causal_history, history, particle_presets  # noqa: E402
 from rodparadox import render  # noqa: E402
 from rodparadox.physics.frames import paper_frames  # noqa: E402
-from test_render import _collisions, _leader_faults, _renderer  # noqa: E402
+from test_render import _collisions, _labels_on_sheet, _leader_faults, _renderer  # noqa: E402
 
 
 def faults(fig, style) -> list:
     renderer = _renderer(fig, style)
     impact = [c for c in _collisions(fig, style, renderer)
               if "-impact-label-" in str(c[0]) and ("-impact-label-" in str(c[1]) or "-impact-leader-" in str(c[1]))]
-    return _leader_faults(fig, style, renderer) + impact
+    return _leader_faults(fig, style, renderer) + impact + _labels_on_sheet(fig, renderer)
 
 
 if __name__ == "__main__":

@@ -201,7 +201,7 @@ def _letter_place(worldline, L: float, box) -> tuple[float, float] | None:
 def _boost_title(frame: Frame) -> str:
     """Which frame the instant shows: S, S′, or the frame of velocity u relative to S."""
     if frame.name == "rest":
-        return "seen from S, the rod's rest frame"
+        return "seen from S, the rod’s rest frame"
     if frame.name == "moving":
         return f"seen from S\N{PRIME} (velocity {shown(frame.velocity, 4)} relative to S)"
     return f"seen from the frame of velocity {shown(frame.velocity, 3)} relative to S"

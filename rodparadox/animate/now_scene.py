@@ -144,7 +144,7 @@ class NowScene:
                 lens = draw_strip(lens_ax, first, st, scale, frame, L=L, bar_width=0.5 * b.lens_h, animated=True,
                                   readout=False, force_scale=forces)
                 lens_ax.tick_params(length=b.tick_len, pad=b.tick_pad)
-                title = lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint", loc="left",
+                title = lens_ax.set_title(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod’s midpoint", loc="left",
                                           fontsize=b.small, pad=b.lens_pad)
                 shortest, longest = self._lengths[p]
                 span = 2 * half * m
@@ -196,7 +196,7 @@ class NowScene:
             elif motion.lens is not None:
                 span = self._span[p]
                 m = nice_number(LENS_MOST * span / max(float(np.ptp(shown_now.x)) / L, 1e-300), "at_most")
-                motion.lens_title.set_text(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod's midpoint")
+                motion.lens_title.set_text(f"\N{MULTIPLICATION SIGN}{m:g}, about the rod’s midpoint")
                 moved += [motion.lens_title, *update_strip(motion.lens, _scaled(_about_midpoint(shown_now),
                                                                                   2 * m / span), motion.frame, L)]
         return moved

@@ -91,7 +91,8 @@ class RodViewBlock:
 class Strips:
     """The rod and the particles in one frame's space at successive instants of that frame's time (the strip of
     `animate`, as stills), earliest first. `subject`: what the heading of a part set on the next page calls the
-    rod ("The causal rod" beside the rigid one)."""
+    rod ("The causal rod" beside the rigid one). `partners`: the other rods compared in this frame, each with its
+    block's instants, whose blocks share this one's x range and colour scale (`render.draw_strips_into`)."""
 
     name: str
     history: RodHistory
@@ -99,6 +100,7 @@ class Strips:
     times: tuple[float, ...]
     caption: str
     subject: str = "The rod"
+    partners: tuple[tuple[RodHistory, tuple[float, ...]], ...] = ()
 
 
 @dataclass(frozen=True)

@@ -165,10 +165,11 @@ def momentum_table(r: ForcesReading, f: FrameForces, compared: bool = False, bla
     return Table(f"momentum_{'causal_' if r.fronts else ''}{frame_word(f.frame)}",
                  f"Where the momentum is in frame {frame_symbol(f.frame)}"
                  + (" (causal rod)" if r.fronts else (" (rigid rod)" if compared else "")),
-                 (t, "left delivered", "right delivered", f"rod {moving}", "rod stress", "rod total", "p/E", "v_E"),
+                 (t, "left delivered", "right delivered", f"rod {moving}", "rod stress", "rod total", "p/E",
+                  "centre velocity"),
                  tuple(rows), "lnnnnnnn",
-                 (f"Momenta in M c; v_E is the velocity of the rod's centre of energy, p/E the rod's total momentum "
-                  f"over its total energy; the rod's total is its momentum before the forces, "
+                 (f"Momenta in M c; the centre velocity is that of the rod's centre of energy, p/E the rod's total "
+                  f"momentum over its total energy; the rod's total is its momentum before the forces, "
                   f"{_p(f.initial.p)}, plus what the two agents delivered.",))
 
 
@@ -333,7 +334,7 @@ def momentum_blocks(readings: Sequence[ForcesReading], blank: bool = False) -> l
         Heading("Where the momentum is, slice by slice", 2),
         Paragraph(f"On slices of each frame (each force's start, peak and end, a slice halfway between two of them "
                   f"where the stress holds most, and one after the forces): what each agent has delivered, the rod's "
-                  f"{moving} and its stress part, which add up to its total; beside p/E, the velocity v_E of the "
+                  f"{moving} and its stress part, which add up to its total; beside p/E, the velocity of the "
                   f"rod's centre of energy.")]
     for f_index in range(len(first.frames)):
         for r in readings:

@@ -329,7 +329,8 @@ class StripsSet(Picture):
     def __init__(self, block: Strips, style: str, caption: list[Line], pages: Pages, gap: float, room: float):
         self.block, self.style = block, style
         height = min(room, self._height(block.times))
-        least = render.strips_size(block.history, block.frame, block.times, style, STRIP_ROWS_LEAST)[1]
+        least = render.strips_size(block.history, block.frame, block.times, style, STRIP_ROWS_LEAST,
+                                   partners=block.partners)[1]
         super().__init__(height, caption, pages, gap, self._draw_rows(block.times), least)
         self.whole = self.lead
         self.splits = len(block.times) >= 4
@@ -337,11 +338,13 @@ class StripsSet(Picture):
             self.lead = min(self.whole, self._height(block.times[:2], STRIP_ROWS_LEAST))
 
     def _height(self, times, rows: float = STRIP_ROWS) -> float:
-        return render.strips_size(self.block.history, self.block.frame, times, self.style, rows, self.block.times)[1]
+        return render.strips_size(self.block.history, self.block.frame, times, self.style, rows, self.block.times,
+                                  self.block.partners)[1]
 
     def _draw_rows(self, times) -> Callable:
         def draw(target, block=self.block, times=tuple(times)):
-            render.draw_strips_into(target, block.history, block.frame, times, self.style, span=block.times)
+            render.draw_strips_into(target, block.history, block.frame, times, self.style, span=block.times,
+                                    partners=block.partners)
         return draw
 
     def shrink(self, by: float) -> bool:

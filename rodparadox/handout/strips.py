@@ -184,8 +184,9 @@ def strips_caption(history: RodHistory, frame: Frame, times: Sequence[float]) ->
             f"first. {bar}; the dots are the particles.{follows} " + _which_end_first(r, frame))
 
 
-def following_rows(frame: Frame) -> str:
-    """What a block of stills whose rows each follow the rod (`render.strip_windows`) says of them."""
+def following_rows(frame: Frame, particles: bool = True) -> str:
+    """What a block of stills whose rows each follow the rod (`render.strip_windows`) says of them (of the arrowheads
+    marking a particle beyond a row's edge only where there are `particles`)."""
     return (f"The rod moves far in {frame_name(frame)} compared with its length, so each row follows it: every row "
             f"is drawn to the same scale, centred on the rod at its instant, and has its own {coordinates(frame)[0]} "
-            f"axis; an arrowhead at a row\u2019s edge points to a particle beyond it.")
+            f"axis" + ("; an arrowhead at a row\u2019s edge points to a particle beyond it." if particles else "."))

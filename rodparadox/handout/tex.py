@@ -286,10 +286,11 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
         from matplotlib.figure import Figure
 
         # the least block the strips take in this style (large type in slides) grows the figure past the default
-        least = render.strips_size(block.history, block.frame, block.times, style, _STRIPS_ROW_SCALE)[1] / 72
+        least = render.strips_size(block.history, block.frame, block.times, style, _STRIPS_ROW_SCALE,
+                                   partners=block.partners)[1] / 72
         figure = Figure(figsize=(text_width_in(paper),
                                  max(_STRIPS_BELOW_IN + _STRIPS_ROW_IN * len(block.times), least)))
-        render.draw_strips_into(figure, block.history, block.frame, block.times, style)
+        render.draw_strips_into(figure, block.history, block.frame, block.times, style, partners=block.partners)
     return render.figure_bytes(figure, "pdf", style)
 
 

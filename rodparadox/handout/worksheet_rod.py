@@ -135,13 +135,13 @@ def question_stopped_turn(r: Reading) -> Asked | None:
     P, E = turn.pivot, stopper.event
     at_pivot = [i for i in cause if i in r.impacts_at(P)] or r.impacts_at(P)
     dx, dt = r.length(E.x - P.x), r.length(E.t - P.t)
-    u_far = dt / dx  # on the hyperbola (x − x_P)² − (t − t_P)² = L² the velocity is (t − t_P)/(x − x_P)
+    u_far = dt / dx  # on the hyperbola (x − x₀)² − (t − t₀)² = L² the velocity is (t − t₀)/(x − x₀)
     u_rod = r.velocity(turn.rapidity_to, rest_frame())
     S, name, stop = "S", impact_names(cause), impact_name(stopper.label)
     text = (f"{stop} strikes the {far} end while the rod is still turning from {name}. How fast is the {far} end "
             f"moving in S at that instant, and how does that compare with the rod's velocity after {name}? (During a "
-            f"turn about the event P the far end moves on the hyperbola (x − x_P)² − (t − t_P)² = L², whose velocity "
-            f"at (x, t) is (t − t_P)/(x − x_P).)")
+            f"turn about the event P = (x₀, t₀) the far end moves on the hyperbola (x − x₀)² − (t − t₀)² = L², "
+            f"whose velocity at (x, t) is (t − t₀)/(x − x₀).)")
     answer = (f"P is {impact_names(at_pivot)}, at x = {in_l(r.length(P.x), ANSWER_DIGITS)}, "
               f"t = {in_l(r.length(P.t), ANSWER_DIGITS)}; "
               f"{stop} is at x = {in_l(r.length(E.x), ANSWER_DIGITS)}, t = {in_l(r.length(E.t), ANSWER_DIGITS)}.",
@@ -207,7 +207,7 @@ def question_single(r: Reading) -> Asked | None:
     text = (f"{struck} gives the rod's momentum {velocity} at once, but the {far} end follows only gradually, on the "
             f"hyperbola of radius L about {struck}. How long after {struck}, in S, does the {far} end reach that "
             f"velocity? How far has the struck end moved by then?")
-    answer = (f"On that hyperbola t − t_P = L sinh φ and the velocity is tanh φ; it reaches |u| = "
+    answer = (f"On that hyperbola the velocity is tanh φ a time L sinh φ after {struck}; it reaches |u| = "
               f"{answer_numeral(abs(u))} where sinh φ = γ|u| = {answer_numeral(g)} × {answer_numeral(abs(u))} = "
               f"{answer_numeral(delay)}.",
               f"So the {far} end takes {in_l_approx(delay)} of S's time. Meanwhile the struck end, moving at "

@@ -59,3 +59,13 @@ def colour_scale(history: RodHistory, frame: Frame) -> ColourScale:
     bound = min(bound, FASTEST_COLOUR - abs(math.atanh(centre)))
     low, high = max(min(rapidities), -FASTEST_COLOUR), min(max(rapidities), FASTEST_COLOUR)
     return ColourScale(centre, bound, (math.tanh(low), math.tanh(high)))
+
+
+def shared_scale(histories, frame: Frame) -> ColourScale:
+    """One scale for rods compared in one frame (the rigid and the causal rod driven by the same forces): every
+    rod starts at the frame's first velocity (the centre); the widest bound; `shown` from the slowest to the fastest
+    velocity any of them takes (None where none changes), so a colour is one velocity in every rod's rows."""
+    scales = [colour_scale(h, frame) for h in histories]
+    shown = [s.shown for s in scales if s.shown is not None]
+    return ColourScale(scales[0].centre, max(s.bound for s in scales),
+                       (min(a for a, _ in shown), max(b for _, b in shown)) if shown else None)

@@ -25,7 +25,7 @@ from rodparadox.render.styles import FORMATS, STYLES, Style
 from rodparadox.render.layer_base import has_fronts
 from rodparadox.render.layers import Options, legend_entries
 from rodparadox.render.layout import Layout, Page, Panel, font_sizes, lay_out, one_scale, panel_of, tick_step
-from rodparadox.render.legibility import material_lines_that_fit
+from rodparadox.render.legibility import draws_motion_inset, inset_room, material_lines_that_fit, needs_room
 from rodparadox.render.panel import draw_panel
 from rodparadox.tolerances import FIT_SLACK
 
@@ -98,6 +98,10 @@ class Diagram:
         with style_context(self.style):
             self.figure.savefig(buffer, format="png", dpi=100, metadata=FIGURE_METADATA["png"])
         return buffer.getvalue()
+
+
+#: the legend's entry for the dashed lines of a driven rod's small-motion inset (`_Builder._make_inset_room`)
+INSET_ENTRY = "magnified inset: each end without the forces"
 
 
 def _checked(frames: Sequence[Frame]) -> tuple[Frame, ...]:
@@ -252,7 +256,7 @@ class _Builder:
         # one clock step for every panel (proper time is the same in every frame), from the longest time span
         self.clock_step = rod.clock_step(max(p.view.t_range[1] - p.view.t_range[0] for p in self.panels))
         self.histories = history
-        self.legend = legend_entries(style, history, options, self.clock_step)
+        self.legend = self._with_inset_entry(legend_entries(style, history, options, self.clock_step))
         self.rod_lines = {p.letter: options.rod_lines for p in self.panels}  # material lines drawn in each panel
         # a comparison says first what every rod is struck by, and where each rod's first impacts fall
         self.note = ""
@@ -267,6 +271,8 @@ class _Builder:
         while True:
             layout = lay_out(self.history, self.panels, self.style, self.fs, self.legend[1], page, self.options.titled,
                              self.per_row, self.note)
+            if self._make_inset_room():  # a small-motion inset's legend entry, or room for it: laid out again
+                continue
             if not self.options.rod_lines:
                 return layout
             fits = {p.letter: min(self.rod_lines[p.letter], material_lines_that_fit(
@@ -276,7 +282,47 @@ class _Builder:
             if fits == self.rod_lines:
                 return layout
             self.rod_lines = fits
-            self.legend = legend_entries(self.style, self.histories, self.options, self.clock_step, fits)
+            self.legend = self._with_inset_entry(legend_entries(self.style, self.histories, self.options,
+                                                                self.clock_step, fits))
+
+    def _make_inset_room(self) -> bool:
+        """After a layout: mark each panel of a driven rod that draws the inset of its small motion
+        (`legibility.draws_motion_inset`; the legend then names the inset's dashed lines), and widen, once, each
+        whose inset no corner holds without hiding a world-line (`needs_room`, `inset_room`: sears_moving at 0.95
+        in S, the rod at rest as wide as the panel); each frame's panels keep one box. True if anything changed
+        (the layout is then made again; a mark or a widening is never undone, so this ends)."""
+        if not self.options.insets:
+            return False
+        changed = widened = False
+        for p in self.panels:
+            history = p.history if p.history is not None else self.history
+            if p.motion_inset or not draws_motion_inset(history, p.view, p.worldlines, p.box, p.width, p.height):
+                continue
+            p.motion_inset = changed = True
+            if not p.inset_room and needs_room(p.worldlines, p.box, p.width, p.height):
+                box = list(p.data_box)
+                inset_room(p.worldlines, box)
+                p.data_box, p.box, p.inset_room = tuple(box), list(box), True
+                widened = True
+        if widened:
+            if self.options.equal_scales:
+                one_scale(self.panels)
+            elif self.per_row:
+                _same_scales(self.panels, self.per_row)
+        if changed:
+            self.legend = self._with_inset_entry(self.legend)
+        return changed
+
+    def _with_inset_entry(self, legend: tuple[list, list[str]]) -> tuple[list, list[str]]:
+        """The legend, with the dashed lines of a driven rod's small-motion inset where a panel has room for it
+        (`legibility.draws_motion_inset`: its note is then only its factor, in the ticks' type)."""
+        if not any(p.motion_inset for p in self.panels) or INSET_ENTRY in legend[1]:
+            return legend
+        from matplotlib.lines import Line2D
+
+        rod = self.style.rod
+        handle = Line2D([], [], color=rod.colour, linewidth=0.8, linestyle=(0, (4.0, 2.0)))
+        return [*legend[0], handle], [*legend[1], INSET_ENTRY]
 
     def render(self, target: Figure | SubFigure, layout: Layout, width: float, height: float) -> Diagram:
         """Draw the laid-out diagram into a target `width` x `height` points, centred in it."""

@@ -31,6 +31,7 @@ class Label(NamedTuple):
     italic: bool = False  # plain text in italics: a single letter needs no mathtext
     guides_block: bool = False  # an axis's name: it must not sit on any line, its own included
     box_size: tuple[float, float] | None = None  # (width, height) in points, if not measured from `text`
+    off_sheet: bool = False  # a particle's letter: on the rod's shaded world-sheet only as a last resort, as on a line
 
 
 class Area(NamedTuple):
@@ -92,7 +93,8 @@ def _liang_barsky(boxes: np.ndarray, segments: np.ndarray) -> np.ndarray:
 
 
 def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], guides: list[np.ndarray],
-          widest_line: float, impact_size: float, font_size: float, crowded: bool = False) -> list[tuple]:
+          widest_line: float, impact_size: float, font_size: float, crowded: bool = False,
+          sheet: np.ndarray | None = None) -> list[tuple]:
     """Put each label near its anchor where its box crosses no line, marker or earlier label; returns each label's
     artists (its text, and its leader line if it has one), in the order of `labels`.
 
@@ -100,6 +102,9 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     free one wins: nearest ring first, then nearest the preferred direction.
     Crossing a guide (an extra's line) costs as much as three rings outwards,
     and such a label gets a white ground; crossing anything else is a last resort.
+    A label marked `off_sheet` (a particle's letter) whose box's centre lies on the rod's world-sheet (`sheet`, the
+    polygon of its ends, units of L) costs as a line crossed: read as the rod's, it sits beside the sheet (issue 24:
+    B on the causal rod's sheet in unequal_masses at 0.6 and fig1 at 0.95).
     A leader is 0.6 pt wide for a label of `impact_size` in a style of 9 pt type, scaled with both.
     `crowded` (the causal rod: contacts, separations and re-contacts at one end): four more rings.
     A fault -- a label on a marker, on a placed label or on a leader, or the leader it would need across a marker,
@@ -130,6 +135,11 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         return boxes_hit_segments(boxes, segments[near])
 
     hard, soft = segments_of(obstacles), segments_of(guides)
+    if sheet is not None and len(sheet) > 2:
+        from matplotlib.path import Path  # noqa: PLC0415  (loaded by now: the panel is drawn)
+        on_sheet = Path(to_pt(sheet)).contains_points
+    else:
+        on_sheet = None
     hard_extents, soft_extents = extents(hard), extents(soft)
     markers_taken = [_marker_box(to_pt(np.array(l.anchors[:1]))[0], l.avoid_radius) for l in labels if l.avoid_radius]
     pad, edge = 2.0 + widest_line / 2, 2.0  # clear of every line's stroke, and of the frame
@@ -185,6 +195,8 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 continue
             b = boxes[chunk]
             blocked = crossings(b, hard_extents)
+            if label.off_sheet and on_sheet is not None:
+                blocked = blocked + on_sheet(np.column_stack([(b[:, 0] + b[:, 2]) / 2, (b[:, 1] + b[:, 3]) / 2]))
             # on a marker, on another label or on a leader, or a leader across a marker, a label or another leader:
             # a label read for another, never chosen while any candidate avoids it (a line crossed is read through)
             faults = crossings(b, leader_extents) if leaders else np.zeros(len(chunk), dtype=int)

@@ -126,7 +126,7 @@ class RodNow(Layer):
         return LayerArtists(artists=tuple(drawn), guides=tuple(segments))
 
     def legend_entry(self, style, history, options, clock_step=None):
-        return line_handle(style.rod_now), "the rod's own lines of simultaneity"
+        return line_handle(style.rod_now), "the rod’s own lines of simultaneity"
 
 
 @dataclass(frozen=True)
@@ -208,7 +208,7 @@ class Particle(Layer):
         times += [points[0, 1] + f * span for f in (0.35, 0.65, 0.9)]
         anchors = tuple((float(np.interp(t, points[:, 1], points[:, 0])), t) for t in times)
         label = Label(f"{panel.letter}-particle-label-{name}", name, anchors, 180.0 if name == "A" else 0.0,
-                      ink.colour, panel.fs["particle"], italic=True)
+                      ink.colour, panel.fs["particle"], italic=True, off_sheet=True)
         return LayerArtists(artists=(line,), obstacles=(points,), labels=(label,))
 
     def legend_entry(self, style, history, options, clock_step=None):

@@ -45,6 +45,8 @@ class Panel:
         self.title_lines: list[str] = [title]
         self.history = None  # the run this panel draws (`panel_of`): two rod models draw in one figure (--rod both)
         self.ringing: float | None = None  # the velocity its title says the rod rings about, if it does
+        self.inset_room = False  # its box widened for the inset of a driven rod's small motion (`legibility.inset_room`)
+        self.motion_inset = False  # it draws that inset, whose dashed lines the legend names
 
 
 def panel_of(history: RodHistory, letter: str, frame: Frame, window: tuple[float, float] | None = None) -> Panel:

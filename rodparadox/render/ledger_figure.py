@@ -383,7 +383,7 @@ def rod_rows(histories: tuple, frames: tuple[Frame, ...], st: Style, legend: tup
 
 
 #: the legend's words for the causal rod's stress part (docs/model.md, "The causal rod")
-STRESS_TEXT = "rod, stress (hatched): its pressure's share\nof the rod's energy and momentum"
+STRESS_TEXT = "rod, stress (hatched): its pressure’s share\nof the rod’s energy and momentum"
 
 
 def _rods_legend(histories: tuple, st: Style) -> tuple[list, list[str]]:

@@ -142,11 +142,12 @@ class InsetPlan(NamedTuple):
     magnification: float
     about: tuple[Mark, ...]  # the events (impacts, or a force's start or end) it is centred on
     free: bool = False  # a driven rod's small motion: each end's world-line without the forces drawn too, dashed
+    legend: bool = False  # the dashed lines named by the legend (`draws_motion_inset`), not by the inset's note
 
 
 def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float, height: float,
                keep_clear: list[tuple[float, float, float, float]], lines: list[np.ndarray],
-               events: Sequence[Mark]) -> InsetPlan | None:
+               events: Sequence[Mark], hidden: Sequence[np.ndarray] = ()) -> InsetPlan | None:
     """The inset of a panel whose world-sheet is thinner than INSET_BELOW, or None.
 
     It is centred on the frame's first `events` (`marks`: impacts, or a driven rod's force starts; those at its
@@ -154,8 +155,9 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
     magnified a nice factor (1, 2, 2.5 or 5 times a power of ten) that draws the sheet at least INSET_SHEET wide
     while those stay inside; where that leaves less than 2 (the rod already at rest and long there), it shows the
     sheet where it is thinnest, nearest that instant, at the factor that draws it INSET_SHEET wide. It is
-    placed in a corner of the panel where it hides none of `keep_clear` (boxes in points: labels, markers), crossing
-    as few of `lines` (units of L) as it can; None when no corner is free.
+    placed in a corner of the panel where it hides none of `keep_clear` (boxes in points: labels, markers) and,
+    where any of its sizes can, none of the world-lines `hidden` (units of L), crossing as few of `lines` as it
+    can; None when no corner is free.
     """
     x0, x1, t0, t1 = box
     scale = width / (x1 - x0)  # points per L
@@ -172,8 +174,8 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
     xs += [float(np.interp(first_t, worldlines[end][:, 1], worldlines[end][:, 0])) for end in ("rod_left", "rod_right")]
     cx, ct = (min(xs) + max(xs)) / 2, (min(ts) + max(ts)) / 2
     spread = max(max(xs) - min(xs), max(ts) - min(ts))  # the first impacts' extent, units of L
-    segments = _segments_pt(lines, box, scale)
-    for fraction in INSET_SIDES:
+    segments, never = _segments_pt(lines, box, scale), _segments_pt(list(hidden), box, scale)
+    for fraction, strict in [(f, True) for f in INSET_SIDES] + [(f, False) for f in INSET_SIDES]:
         side = fraction * min(width, height)
         wanted = nice_number(INSET_SHEET / max(thin, 1e-300), "at_least")
         # the first impacts and the rod, and a margin of a fifth of the inset on each side, stay inside
@@ -185,7 +187,7 @@ def inset_plan(fv: FrameView, L: float, worldlines: dict[str, np.ndarray], box: 
             magnification, about, centre = wanted, (), _thinnest_near(worldlines, first_t)
         half = side / 2 / (scale * magnification)
         window = (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)
-        spot = place_inset(side, width, height, keep_clear, segments)
+        spot = place_inset(side, width, height, keep_clear, segments, never if strict else ())
         if spot is not None:
             return InsetPlan((*spot, side), window, magnification, about)
     return None
@@ -205,16 +207,12 @@ def free_line(history, fv: FrameView, end: str) -> tuple[np.ndarray, np.ndarray]
     return np.array([start.x / L, start.t / L]), np.array([-math.sinh(f), math.cosh(f)])  # (dx, dt): at -tanh f
 
 
-def motion_inset_plan(history, fv: FrameView, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float,
-                      height: float, keep_clear, lines, events: Sequence[Mark]) -> InsetPlan | None:
-    """The inset of a driven rod's small motion, or None: where an end strays from its world-line without the
-    forces by less than MOTION_BELOW on the page but more than MOTION_LEAST L, centred where it strays most while
-    its forces act (in the panel's time, between the first force's start and the last one's end), magnified a nice
-    factor that draws that straying INSET_BELOW wide; placed as `inset_plan` places its inset."""
+def straying(history, fv: FrameView, worldlines: dict[str, np.ndarray], events: Sequence[Mark]
+             ) -> tuple[float, np.ndarray | None]:
+    """How far (units of L) a driven rod's end strays most from its world-line without the forces while they act
+    (in the panel's time, between the first force's start and the last one's end), and where; (0, None) if never."""
     if history.driving is None or "rod_left" not in worldlines or not events:
-        return None
-    x0, x1, t0, t1 = box
-    scale = width / (x1 - x0)
+        return 0.0, None
     lo, hi = min(e.t for e in events), max(e.t for e in events)
     most, where = 0.0, None
     for end in ("rod_left", "rod_right"):
@@ -228,23 +226,76 @@ def motion_inset_plan(history, fv: FrameView, worldlines: dict[str, np.ndarray],
         k = int(gap.argmax())
         if gap[k] > most:
             most, where = float(gap[k]), acting[k]
-    if where is None or not MOTION_LEAST < most < MOTION_BELOW / scale:
+    return most, where
+
+
+#: the room made for the inset of a driven rod's small motion: for an inset of INSET_SIDES[0] of the widened panel,
+#: with a margin of this part of its height
+INSET_ROOM_MARGIN = 0.06
+
+
+def draws_motion_inset(history, fv: FrameView, worldlines: dict[str, np.ndarray], box: Sequence[float],
+                       width: float, height: float) -> bool:
+    """Whether a laid-out panel (`box` in units of L, `width` x `height` points) of a driven rod draws the inset of
+    its small motion (`motion_inset_plan`'s rule; not a thin sheet's, `inset_plan`): its legend then names the
+    inset's dashed lines, which the inset's note, in the ticks' type, has no room to."""
+    if history.driving is None or "rod_left" not in worldlines:
+        return False
+    scale = width / (box[1] - box[0])
+    if sheet_width(worldlines, scale) < INSET_BELOW:
+        return False
+    most, where = straying(history, fv, worldlines, marks(history, fv))
+    return where is not None and MOTION_LEAST < most < MOTION_BELOW / scale
+
+
+def needs_room(worldlines: dict[str, np.ndarray], box: Sequence[float], width: float, height: float) -> bool:
+    """Whether no corner of a laid-out panel holds even the smallest inset without hiding a world-line (the rod at
+    rest in S, as wide as its narrow panel: sears_moving at 0.95)."""
+    scale = width / (box[1] - box[0])
+    never = _segments_pt(list(worldlines.values()), box, scale)
+    return place_inset(INSET_SIDES[-1] * min(width, height), width, height, [], np.empty((0, 4)), never) is None
+
+
+def inset_room(worldlines: dict[str, np.ndarray], box: list[float]) -> None:
+    """Widen a data box (x0, x1, t0, t1, units of L) on the left with a column beside the world-lines for the inset
+    of the rod's small motion (`needs_room`): f from the world-lines' left edge to the box's, f = INSET_ROOM_MARGIN
+    h + INSET_SIDES[0] w′ with w′ the widened width (at most the height h)."""
+    x0, x1, t0, t1 = box
+    h = t1 - t0
+    left = float(min(points[:, 0].min() for points in worldlines.values()))
+    side = INSET_SIDES[0]
+    column = min((side * (max(x1, left) - left) + INSET_ROOM_MARGIN * h) / (1.0 - side), (side + INSET_ROOM_MARGIN) * h)
+    box[0] = min(x0, left - column)
+
+
+def motion_inset_plan(history, fv: FrameView, worldlines: dict[str, np.ndarray], box: Sequence[float], width: float,
+                      height: float, keep_clear, lines, events: Sequence[Mark],
+                      hidden: Sequence[np.ndarray] = (), named: bool = False) -> InsetPlan | None:
+    """The inset of a driven rod's small motion, or None: where an end strays from its world-line without the
+    forces by less than MOTION_BELOW on the page but more than MOTION_LEAST L (or, where the legend names its
+    dashed lines, `named`, by any amount), centred where it strays most while its forces act (`straying`),
+    magnified a nice factor that draws that straying INSET_BELOW wide; placed as `inset_plan` places its inset."""
+    x0, x1, t0, t1 = box
+    scale = width / (x1 - x0)
+    most, where = straying(history, fv, worldlines, events)
+    if where is None or not MOTION_LEAST < most or not (named or most < MOTION_BELOW / scale):
         return None
     magnification = nice_number(INSET_BELOW / (most * scale), "at_least")
-    segments = _segments_pt(lines, box, scale)
-    for fraction in INSET_SIDES:
-        side = fraction * min(width, height)
-        half = side / 2 / (scale * magnification)
-        window = (where[0] - half, where[0] + half, where[1] - half, where[1] + half)
-        spot = place_inset(side, width, height, keep_clear, segments)
-        if spot is not None:
-            return InsetPlan((*spot, side), window, magnification, (), free=True)
+    segments, never = _segments_pt(lines, box, scale), _segments_pt(list(hidden), box, scale)
+    for strict in (True, False):  # hiding no world-line where any size can; else as few lines as it can
+        for fraction in INSET_SIDES:
+            side = fraction * min(width, height)
+            half = side / 2 / (scale * magnification)
+            window = (where[0] - half, where[0] + half, where[1] - half, where[1] + half)
+            spot = place_inset(side, width, height, keep_clear, segments, never if strict else ())
+            if spot is not None:
+                return InsetPlan((*spot, side), window, magnification, (), free=True, legend=named)
     return None
 
 
-def place_inset(side: float, width: float, height: float, keep_clear, segments) -> tuple[float, float] | None:
-    """The corner of the panel for an inset `side` points wide that hides none of `keep_clear` and crosses the
-    fewest `segments`, or None."""
+def place_inset(side: float, width: float, height: float, keep_clear, segments, never=()) -> tuple[float, float] | None:
+    """The corner of the panel for an inset `side` points wide that hides none of `keep_clear`, crosses none of
+    `never` (segments in points: the world-lines, where the caller asks) and the fewest `segments`, or None."""
     corners = [(width - side - INSET_MARGIN, INSET_MARGIN), (INSET_MARGIN, height - side - INSET_MARGIN),
                (width - side - INSET_MARGIN, height - side - INSET_MARGIN), (INSET_MARGIN, INSET_MARGIN)]
     free = []
@@ -252,9 +303,20 @@ def place_inset(side: float, width: float, height: float, keep_clear, segments) 
         rect = (x - INSET_MARGIN, y - INSET_MARGIN, x + side + INSET_MARGIN, y + side + INSET_MARGIN)
         if any(rect[0] < b[2] and b[0] < rect[2] and rect[1] < b[3] and b[1] < rect[3] for b in keep_clear):
             continue
+        if len(never) and boxes_hit_segments(np.array([rect]), never)[0] or _holds(rect, never):
+            continue
         crossed = int(boxes_hit_segments(np.array([rect]), segments)[0]) if len(segments) else 0
         free.append((crossed, k, (x, y)))
     return min(free)[2] if free else None
+
+
+def _holds(rect, segments) -> bool:
+    """Whether a segment lies wholly inside the rectangle (it crosses none of its sides, yet is hidden)."""
+    if not len(segments):
+        return False
+    inside = ((segments[:, 0] > rect[0]) & (segments[:, 0] < rect[2]) & (segments[:, 1] > rect[1])
+              & (segments[:, 1] < rect[3]))
+    return bool(inside.any())
 
 
 def _thinnest_near(worldlines: dict[str, np.ndarray], t: float) -> tuple[float, float]:
@@ -362,15 +424,17 @@ def draw_inset(ax, plan: InsetPlan, history: RodHistory, fv: FrameView, style: S
         if wx0 <= e.x <= wx1 and wt0 <= e.t <= wt1:
             artists += inset.plot([e.x], [e.t], **impact_marker(style), zorder=7,
                                   gid=f"{letter}-inset-impact-{e.label}")
-    about = _about(plan.about)
+    # a worksheet's (`simultaneity` off: it asks which impacts share an instant) names no impacts an instant groups:
+    # "×5 at B₁, A₁" in S′ told fig2's worksheet that B₁ and A₁ are simultaneous there
+    about = _about(plan.about) if simultaneity or len(plan.about) < 2 else ""
     m = plan.magnification  # 1000 in digits (shown would write 1e+03); from 10⁶ on, 2.5×10⁶ as the ticks write it
     # in mathtext, as the impacts' names are: mathtext's fonts lack the superscript digits plain text would use
     factor = f"$\\times{f'{m:.10g}' if m < SCIENTIFIC_ABOVE else shown(m, 3, math_text=True)}$"
     pad = 3.0
     # the note inside the inset: without the impacts' names if they make it too wide, in smaller type if need be
     candidates = ([factor + about] if about else []) + [factor]
-    if plan.free:  # the dashed lines named, in smaller type if need be
-        candidates = [factor + "; dashed: no force"]
+    if plan.free:  # the dashed lines named (by the legend, where the diagram knew of the inset: `draws_motion_inset`)
+        candidates = [factor] if plan.legend else [factor + "; dashed: no force"]
     for text in candidates:
         w, h, _ = approximate_size(text, font_size)
         if w <= side - 2 * pad:

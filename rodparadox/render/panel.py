@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from rodparadox.physics.history import RodHistory
@@ -40,8 +41,11 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         guides += out.guides
         labels += [(layer.label_rank, layer.name, label) for label in out.labels]
     labels.sort(key=lambda entry: entry[0])  # stable: within a rank, in drawing order
+    ends = [p.worldlines[end] for end in ("rod_left", "rod_right") if end in p.worldlines]
+    sheet = np.concatenate([ends[0], ends[1][::-1]]) if len(ends) == 2 else None  # the shaded world-sheet
     placed = place(ax, Area(tuple(p.box), p.width, p.height), [label for *_, label in labels], obstacles, guides,
-                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or contacts_last(history))
+                   widest_line(style), m.fs["impact"], style.font_size, crowded=crowded or contacts_last(history),
+                   sheet=sheet)
     for (_, name, _), artists in zip(labels, placed):
         drawn[name] += artists
     if options.insets:
@@ -51,11 +55,12 @@ def draw_panel(ax, p: Panel, steps: tuple[float, float], m: Metrics, history: Ro
         keep_clear += [((e.x - p.box[0]) * scale - style.impact_size, (e.t - p.box[2]) * scale - style.impact_size,
                         (e.x - p.box[0]) * scale + style.impact_size, (e.t - p.box[2]) * scale + style.impact_size)
                        for e in events]
+        worldlines = list(p.worldlines.values())  # an inset hides none of them where it can
         plan = inset_plan(p.view, history.scenario.L, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
-                          events)
+                          events, worldlines)
         if plan is None:  # a driven rod whose small motion would not be seen
             plan = motion_inset_plan(history, p.view, p.worldlines, p.box, p.width, p.height, keep_clear, obstacles,
-                                     events)
+                                     events, worldlines, p.motion_inset)
         if plan is not None:
             drawn["inset"] = list(draw_inset(ax, plan, history, p.view, style, p.letter, m.fs["tick"], p.width,
                                              p.height, events, options.simultaneity))

@@ -211,9 +211,9 @@ class Turns(RodLayer):
         st = panel.style
         if not panel.chart.turns:
             return [(Line2D([], [], linestyle="none"),
-                     "no turn: the chart is\nS throughout, every\nlevel line the rod's \"now\"")]
+                     "no turn: the chart is\nS throughout, every\nlevel line the rod’s “now”")]
         return [(Line2D([], [], color=st.rod_now.colour, linewidth=st.rod_now.width, linestyle=st.rod_now.dashes),
-                 "a turn starts or ends;\nevery level line is\nthe rod's own \"now\"")]
+                 "a turn starts or ends;\nevery level line is\nthe rod’s own “now”")]
 
 
 def pivot_ink(st: Style) -> dict:
@@ -284,7 +284,7 @@ class Horizon(RodLayer):
         if not panel.chart.turns:
             return []
         return [(Patch(facecolor="none", edgecolor=panel.style.other_axes.colour, hatch="////", linewidth=0),
-                 "beyond the pivot's\nhorizon: no place in\nthe rod's chart")]
+                 "beyond the pivot’s\nhorizon: no place in\nthe rod’s chart")]
 
 
 class Light(RodLayer):

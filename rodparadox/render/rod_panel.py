@@ -83,7 +83,7 @@ def draw_rod_panel(ax, history, style: Style | str = "default", letter: str = "r
     X0, X1, T0, T1 = box or rod_box(history, chart)
     step = clock_step or nice_clock_step(T1 - T0, 12)
     panel = RodPanel(history, chart, st, fs, letter, (X0, X1, T0, T1), step)
-    _axes(ax, panel.box, st, fs, title or f"({letter}) the {history.model} rod's own view")
+    _axes(ax, panel.box, st, fs, title or f"({letter}) the {history.model} rod’s own view")
     drawn = {layer.name: tuple(layer.draw(ax, panel)) for layer in DRAW if layer.applies(history)}
     drawn["particles"] += tuple(_particle_labels(ax, st, panel.box, letter, fs, drawn["impacts"]))
     drawn["key"] = (_key(ax, panel),)
@@ -102,7 +102,7 @@ def _axes(ax, box, st: Style, fs, title: str) -> None:
         axis.set_major_formatter(FuncFormatter(lambda value, _pos, tick=tick: tick_text(value, tick)))
     ax.tick_params(labelsize=fs["tick"], length=st.tick_length)
     ax.set_xlabel("X/L  (material label)", fontsize=fs["label"], fontstyle="italic")
-    ax.set_ylabel("T/L  (the rod's own time)", fontsize=fs["label"], fontstyle="italic")
+    ax.set_ylabel("T/L  (the rod’s own time)", fontsize=fs["label"], fontstyle="italic")
     ax.set_title(title, fontsize=fs["title"])
 
 

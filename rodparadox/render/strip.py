@@ -46,7 +46,7 @@ PRINT_GREYS = "print-greys"
 #: the print ramp: matplotlib's Greys from 0.12 (light grey, L* about 91) to 0.88 (dark grey, L* about 22)
 PRINT_RAMP = (0.12, 0.88)
 #: what the colour bar says
-COLOUR_BAR_LABEL = "velocity of the rod's material points"
+COLOUR_BAR_LABEL = "velocity of the rod’s material points"
 #: the strip's axes run from -1 to 1 vertically; the bar lies on 0, a particle's letter starts here (animations)
 LETTER_Y = 0.45
 #: in a block of stills the bar is this fraction of a row's height, and a letter starts just above it

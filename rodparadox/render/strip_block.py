@@ -19,7 +19,7 @@ from matplotlib.figure import Figure, SubFigure
 from rodparadox.physics.history import RodHistory
 from rodparadox.physics.frames import Frame
 from rodparadox.physics.snapshot import Strip
-from rodparadox.render.colour_scale import colour_scale
+from rodparadox.render.colour_scale import colour_scale, shared_scale
 from rodparadox.render.force_layers import force_notes
 from rodparadox.render.strip import STILL_BAR, STILL_LETTER_Y, clock_reading, draw_strip, label_colour_bar
 from rodparadox.render.strip_windows import follows_rod, outside, row_ranges, shared_range, strips_at
@@ -29,7 +29,8 @@ from rodparadox.tolerances import ONE_INSTANT
 
 
 def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Frame, times: Sequence[float],
-                     style: str, span: Sequence[float] | None = None) -> tuple[Axes, ...]:
+                     style: str, span: Sequence[float] | None = None,
+                     partners: Sequence[tuple[RodHistory, Sequence[float]]] = ()) -> tuple[Axes, ...]:
     """For one frame, the rod and the particles in that frame's space at each of `times` (the frame's own
     time, in the unit L is given in), stacked top to bottom, earliest on top, on one shared x axis (units
     of L, named with the frame's coordinate, e.g. x′/L); each row is labelled with its time (t′ = 1.25 L)
@@ -40,6 +41,11 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
     `span`: the instants whose rod and particles the x axis spans, and whose labels its room is made for (default
     `times`): the parts of one block set on two pages pass the whole block's, so they share one x axis and one tick
     step.
+
+    `partners`: the other rods of a comparison in this frame, each with its block's instants (the causal rod beside
+    the rigid one, driven by the same forces): the blocks share one x range (or, following the rod, one row width),
+    one room for the rows' labels, so one tick step, and one colour scale (`colour_scale.shared_scale`); a block
+    whose own rod never changes velocity still has no colour bar.
 
     Returns the rows' axes, top to bottom (earliest first); the colour bar's axes has the gid
     `strips-colour-bar` (none where the rod's velocity never changes). A target too small for the rows, their labels and the colour bar is refused
@@ -58,7 +64,8 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
     width, height = target.bbox.width * 72 / dpi, target.bbox.height * 72 / dpi  # points
     with style_context(style) as st:
         fs = font_sizes(st)
-        scale = colour_scale(history, frame)
+        scale = colour_scale(history, frame) if not partners else shared_scale(
+            [history, *(h for h, _ in partners)], frame)
         strips = strips_at(history, frame, tuple(times), ONE_INSTANT * L)
         xname, _ = coordinate_names(frame)
         contacts = _contacts_last(history)
@@ -72,11 +79,14 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         # the room for the whole block's labels: the parts of a block split between pages keep one axes width, and
         # so one tick step
         # a colour bar only where the rod's velocity varies (fig1's rod never changes: no bar of ±0.0997)
-        bar = scale.shown is not None
+        bar = colour_scale(history, frame).shown is not None
         # each row following the rod where one shared range would shrink it to a blob (`render.strip_windows`)
-        windows = row_ranges(strips, L, None if span is None else spanned)
-        room = _stills_room(*((labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts, history)),
-                            fs, bar, follow=windows is not None)
+        others = _partner_strips(frame, partners)
+        windows = row_ranges(strips, L, None if span is None and not partners else tuple(spanned) + others)
+        room_labels = (labels, notes) if span is None else _stills_labels(spanned, frame, L, contacts, history)
+        if partners:  # the room for every compared block's labels: one axes width, so one range and tick step
+            room_labels = _with_partners_labels(room_labels, frame, partners)
+        room = _stills_room(*room_labels, fs, bar, follow=windows is not None)
         gutter, right, below, top, row_gap = room.gutter, room.right, room.below, room.top, room.row_gap
         tick_h, label_h, small, bar_h = room.tick_h, room.label_h, room.small, room.bar_h
         row_h = (height - top - below - row_gap * (len(times) - 1)) / len(times)
@@ -88,7 +98,7 @@ def draw_strips_into(target: Figure | SubFigure, history: RodHistory, frame: Fra
         # the x range: every rod end and particle at these instants, with a margin (with forces, room beyond each
         # end for the longest arrow: band_points at the scale's force); or each row's, as wide
         reach = band_points(st) + 0.5 * fs["tick"] if forces is not None else 0.0
-        lo, hi = shared_range(spanned, L, reach, axes_w) if windows is None else windows[0]
+        lo, hi = shared_range(tuple(spanned) + others, L, reach, axes_w) if windows is None else windows[0]
         step = nice_number(10.0 ** np.floor(np.log10((hi - lo) / 10)), "above")
         while (hi - lo) / step > max(2.0, axes_w / (3.0 * approximate_size("−0.00", fs["tick"])[0])):
             step = nice_number(step, "above")
@@ -200,6 +210,31 @@ def _stills_labels(strips: Sequence[Strip], frame: Frame, L: float, contacts: bo
 
 
 
+def _partner_strips(frame: Frame, partners: Sequence[tuple[RodHistory, Sequence[float]]]) -> tuple[Strip, ...]:
+    """The strips of the compared rods' blocks (`draw_strips_into`'s `partners`)."""
+    return tuple(s for h, times in partners
+                 for s in strips_at(h, frame, tuple(sorted(float(t) for t in times)), ONE_INSTANT * h.scenario.L))
+
+
+def _with_partners_labels(labels: tuple[list[str], list[str]], frame: Frame,
+                          partners: Sequence[tuple[RodHistory, Sequence[float]]]) -> tuple[list[str], list[str]]:
+    """A block's row labels and notes with those of the compared rods' blocks: the room made for all of them."""
+    texts, notes = list(labels[0]), list(labels[1])
+    for h, times in partners:
+        more = _block_labels(h, frame, tuple(sorted(float(t) for t in times)))
+        texts += more[0]
+        notes += more[1]
+    return texts, notes
+
+
+def _block_labels(history: RodHistory, frame: Frame, times: tuple[float, ...]) -> tuple[list[str], list[str]]:
+    """Each row's time and note of a block at these instants (a driven rod's from the instants alone)."""
+    L = history.scenario.L
+    if history.driving is not None:
+        return [clock_reading(frame, t / L) for t in times], force_notes(history, frame, times, L)
+    return _stills_labels(strips_at(history, frame, times, ONE_INSTANT * L), frame, L, _contacts_last(history), history)
+
+
 def _contacts_last(history: RodHistory) -> bool:
     """Whether the rod's contacts last, each ended by a separation (the causal rod's): its stills name contacts and
     separations, not impacts."""
@@ -234,10 +269,11 @@ def _stills_room(labels: Sequence[str], notes: Sequence[str], fs: dict[str, floa
 
 
 def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style: str,
-                row_scale: float = 1.0, span: Sequence[float] | None = None) -> tuple[float, float]:
+                row_scale: float = 1.0, span: Sequence[float] | None = None,
+                partners: Sequence[tuple[RodHistory, Sequence[float]]] = ()) -> tuple[float, float]:
     """The least (width, height) in points of a target `draw_strips_into` accepts for these instants, with rows
-    `row_scale` times the least row's height: what a page must leave for the block. `span`: as `draw_strips_into`'s
-    (the whole block's instants, of which these are a part)."""
+    `row_scale` times the least row's height: what a page must leave for the block. `span`, `partners`: as
+    `draw_strips_into`'s (the whole block's instants, of which these are a part; the compared rods' blocks)."""
     from rodparadox.render.diagram import style_context
     from rodparadox.render.layout import font_sizes
 
@@ -253,6 +289,9 @@ def strips_size(history: RodHistory, frame: Frame, times: Sequence[float], style
             labels = ([clock_reading(frame, t / L) for t in times], force_notes(history, frame, times, L))
         else:
             labels = _stills_labels(strips, frame, L, _contacts_last(history), history)
+        if partners:
+            labels = _with_partners_labels(labels, frame, partners)
+            whole = tuple(whole) + _partner_strips(frame, partners)
         return _stills_room(*labels, font_sizes(st), bar, follows_rod(whole, L)).size(len(times), row_scale)
 
 

@@ -121,6 +121,6 @@ def comparison_note(histories, frames: Sequence[Frame]) -> str:
         lines = [f"{every} struck by the same particles: {starts[0]}, at t = 0 in S."]
     else:  # histories run apart (a library caller's): say so, never "the same particles"
         lines = ["The rods are struck by particles that start apart: "
-                 + "; ".join(f"the {h.model} rod's {text}" for h, text in zip(histories, starts)) + ", at t = 0 in S."]
+                 + "; ".join(f"the {h.model} rod’s {text}" for h, text in zip(histories, starts)) + ", at t = 0 in S."]
     lines += [f"The {h.model} rod: {first_impacts_text(h, frames)}." for h in histories]
     return " ".join(lines)

@@ -27,6 +27,7 @@ model (`MODELS`: the rigid rod, then the causal rod, whose part `causal_data` gi
 from __future__ import annotations
 
 import math
+import re
 from types import SimpleNamespace
 from typing import Any, Sequence
 
@@ -140,14 +141,21 @@ def sampled(worldline: WorldLine, L: float, tolerance: float, digits: int = DRAW
 ABOUT_SEVERAL = "This page holds several scenarios: choose one with the scenario menu."
 #: how the shared tables name the unit (`tables.build`); the page says it as a textbook does
 TABLE_UNITS = "in the unit L is given in"
+#: an apostrophe between letters, as the shared tables and the scenarios write it (rod's): the page sets rod’s
+APOSTROPHE = re.compile(r"(?<=\w)'(?=\w)")
+
+
+def typographic(text: str) -> str:
+    """The text with each apostrophe set as print sets it (the paper’s), as the handouts and figures do."""
+    return APOSTROPHE.sub("\N{RIGHT SINGLE QUOTATION MARK}", text)
 
 
 def table_rows(history, frame: Frame) -> dict[str, Any]:
     """The events table of one frame as `events` writes it (digits and fractions), cells as text."""
     table = events_table(history, frame)
-    return {"caption": table.caption, "header": list(table.header),
+    return {"caption": typographic(table.caption), "header": list(table.header),
             "rows": [[cell.text for cell in row] for row in table.rows],
-            "notes": [note.replace(TABLE_UNITS, "in units of L") for note in table.notes]}
+            "notes": [typographic(note.replace(TABLE_UNITS, "in units of L")) for note in table.notes]}
 
 
 #: the ledger's row labels (the names `Slice.bodies` gives, then the hidden part and the total)
@@ -228,7 +236,7 @@ def model_data(history, v: float, steps: int = 95) -> dict[str, Any]:
                          "arrows": forces_data.arrows(history, end_events, DRAWN_DIGITS)}
         out["tables"] = forces_data.tables(history, frames[:2])
         out["final"] = history.final_rapidity
-        out["ledger_note"] = forces_data.ledger_note(history)
+        out["ledger_note"] = typographic(forces_data.ledger_note(history))
     return out
 
 
@@ -304,7 +312,8 @@ def scenario_data(name: str, scenario: Scenario, extra: Sequence[float] = (), sh
             entries.append({"v": v, "models": ran})
     entries.sort(key=lambda e: e["v"])
     left_out = {model: sorted(vs) for model, vs in left_out.items()}
-    return {"name": name, "title": scenario.title or name, "description": scenario.description.strip(),
+    return {"name": name, "title": typographic(scenario.title or name),
+            "description": typographic(scenario.description.strip()),
             "v": scenario.v, "L": scenario.L, "speeds": entries, "left_out": left_out, "rod": shown or scenario.rod,
             "one_instant": ONE_INSTANT, "frame_steps": steps}
 

@@ -111,7 +111,7 @@ def tables(history, frames) -> dict[str, Any]:
         x, t = COORDINATES[frame.name]
         symbol = "S" if frame.name == "rest" else "S\u2032"
         out[frame.name] = {
-            "caption": f"Each force's start, peak and end in frame {symbol}",
+            "caption": f"Each force’s start, peak and end in frame {symbol}",
             "header": ["force", "end", x, t, "F", "end velocity"],
             "rows": [[r["moment"], r["end"], *(text.replace("-", MINUS) for text in (
                 columns[frame.name][0](r["x"]), columns[frame.name][1](r["t"]), force(r["force"]),

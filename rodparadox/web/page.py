@@ -75,12 +75,12 @@ TEMPLATE = """<!DOCTYPE html>
 <section aria-label="Minkowski diagrams and the rod at one instant">
 <div id="panels">
 <div class="panel" id="panel-1"><h2 id="panel-1-heading"></h2>
-<canvas id="diagram" role="img" aria-label="Minkowski diagram: the rod's world-sheet and ends, the particles, the impacts and the lines of simultaneity, in the chosen frame"></canvas>
-<canvas id="strip" role="img" aria-label="The rod and the particles at the now-line's instant, the rod coloured by the velocity of its material points"></canvas>
+<canvas id="diagram" role="img" aria-label="Minkowski diagram: the rod’s world-sheet and ends, the particles, the impacts and the lines of simultaneity, in the chosen frame"></canvas>
+<canvas id="strip" role="img" aria-label="The rod and the particles at the now-line’s instant, the rod coloured by the velocity of its material points"></canvas>
 </div>
 <div class="panel" id="panel-2" hidden><h2 id="panel-2-heading"></h2>
 <canvas id="diagram-2" role="img" aria-label="Minkowski diagram of the causal rod beside the rigid one: its world-sheet shaded by compression, its light fronts, material lines and contacts, in the chosen frame"></canvas>
-<canvas id="strip-2" role="img" aria-label="The causal rod and the particles at the now-line's instant, coloured by the velocity of its material points"></canvas>
+<canvas id="strip-2" role="img" aria-label="The causal rod and the particles at the now-line’s instant, coloured by the velocity of its material points"></canvas>
 </div>
 </div>
 <ul id="legend" aria-label="Legend"></ul>
@@ -96,7 +96,7 @@ TEMPLATE = """<!DOCTYPE html>
 <div class="control"><label for="time">time: the now-line</label><input type="range" id="time" min="0" max="1000" step="1" value="500"><output id="time-value" for="time"></output><button type="button" id="play" aria-pressed="false">Play</button></div>
 </div>
 <p class="notes" id="left-out" hidden></p>
-<div class="control"><span>the paper's frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
+<div class="control"><span>the paper’s frames</span><button type="button" id="frame-rest" aria-pressed="true">S</button><button type="button" id="frame-moving" aria-pressed="false">S′</button></div>
 <div class="control"><label for="cones">light cones</label><input type="checkbox" id="cones"></div>
 <div class="control"><label for="style">style</label><select id="style">{styles}</select></div>
 </fieldset>

@@ -71,7 +71,7 @@
     view.gs.forEach((g, k) => { PANELS[k].width = widths.px[k]; });
     view.gs.forEach((g, k) => {
       const panel = PANELS[k];
-      panel.heading.textContent = g.model.model === "causal" ? "The causal rod (sound at c)" : "The rigid rod (the paper's)";
+      panel.heading.textContent = g.model.model === "causal" ? "The causal rod (sound at c)" : "The rigid rod (the paper\u2019s)";
       const place = drawDiagram(panel, g, view);
       drawStrip(panel, place, g, view);
       drawLedger(panel, g, view);

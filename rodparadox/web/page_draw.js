@@ -422,7 +422,7 @@
       ctx.textAlign = align; ctx.fillText(speed(Math.abs(u) < 1e-12 ? 0 : u, 3), cx0 + f * cw, cy + 0.75 * size);
     });
     ctx.textAlign = "left";
-    fitted(ctx, "velocity of the rod's material points (c = 1)", cx0, cy + 1.9 * size, place.width, 0.85 * size, family);
+    fitted(ctx, "velocity of the rod\u2019s material points (c = 1)", cx0, cy + 1.9 * size, place.width, 0.85 * size, family);
   }
 
   function star(ctx, x, y, r, colour) {

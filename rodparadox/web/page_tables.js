@@ -36,7 +36,7 @@
       const rows = events.map((e) => [e.moment, e.end, xText(e.X * L), tText(e.T * L), force(e.force),
                                       velocity(Math.tanh(e.rapidity - g.eta))]);
       const names = coordinateNames(state.u);
-      fillTable(panel.events, `Each force's start, peak and end in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): ` +
+      fillTable(panel.events, `Each force\u2019s start, peak and end in the frame ${frameSymbol(state.u)} (v = ${shown(v(), 10)}${rod}): ` +
                 "decimals boosted from the exact events (choose S or S\u2032 for the table as the events are printed)",
                 ["force", "end", names[0], names[1], "F", "end velocity"], rows, m.tables.rest.notes);
       return;
@@ -88,8 +88,8 @@
               ["body", "E (M c\u00b2)", "p (M c)"], rows,
               m.ledger_note ? [m.ledger_note + ` Computed before the page was made, on ${best.slices.length} slices of each ` +
                                "tabulated frame (to 10\u207b\u2074 M c\u00b2)."]
-              : causal ? ["The rod's (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
-                        "elastic energy included) and its stress part (its pressure's p (u u \u2212 \u03b7) across the " +
+              : causal ? ["The rod\u2019s (E, p) is split into its matter part (its rest-frame energy density moving with it, " +
+                        "elastic energy included) and its stress part (its pressure\u2019s p (u u \u2212 \u03b7) across the " +
                         "slice), each a density along the slice: nothing is hidden. Computed before the page was made, on " +
                         "41 slices of each tabulated frame (to 10\u207b\u2074 M c\u00b2)."] : []);
   }
@@ -113,8 +113,8 @@
       }
       const lam = (x) => x.toFixed(Math.max(0, 1 - Math.floor(Math.log10(x))));
       items.push([`<svg width="44" height="14" aria-hidden="true">${ramp.join("")}</svg>`,
-                  `causal rod's compression \u03bb: ${lam(Math.exp(lo))} to ${lam(Math.exp(hi))}, 1 unstressed`]);
-      items.push([swatch(st.rod_interior), "causal rod's material lines (L/4, L/2, 3L/4)"]);
+                  `causal rod\u2019s compression \u03bb: ${lam(Math.exp(lo))} to ${lam(Math.exp(hi))}, 1 unstressed`]);
+      items.push([swatch(st.rod_interior), "causal rod\u2019s material lines (L/4, L/2, 3L/4)"]);
       items.push([swatch(st.front), "light front (a jump in \u03bb)"]);
     }
     const driven = gs.find((g) => g.model.forces);
@@ -140,7 +140,7 @@
     items.push([swatch(st.rest), "line of simultaneity of S"]);
     items.push([swatch(st.moving), "line of simultaneity of S\u2032"]);
     if (state.cones) items.push([swatch(st.light_cone), "light cone of an impact"]);
-    items.push([swatch({colour: st.flash, width: 2 * st.rod.width / 1.7, dashes: []}), "now: the frame's instant under the scrubber"]);
+    items.push([swatch({colour: st.flash, width: 2 * st.rod.width / 1.7, dashes: []}), "now: the frame\u2019s instant under the scrubber"]);
     const html = items.map(([svg, text]) => `<li>${svg}<span>${text}</span></li>`).join("");
     if (legendShown !== html) { legendShown = html; $("legend").innerHTML = html; }
   }

@@ -434,6 +434,64 @@ def test_the_strips_of_a_driven_rod_show_each_force_s_start_peak_and_end(sears, 
         assert b.subject == f"The {b.history.model} rod"
 
 
+def test_the_two_rods_strips_share_one_x_range_and_one_colour_scale_in_each_frame(sears):
+    """Issue 24: the rigid and the causal rod's blocks of one frame were drawn each to its own x range (in S the
+    rigid rod's −0.6 to 0.6, the causal's −0.5 to 0.5) and colour scale; now each block names the other
+    (`Strips.partners`) and, drawn, both have one x range, one tick step and one colour scale, as a comparison must;
+    the rigid rod, which never moves in S, still has no colour bar."""
+    from matplotlib.figure import Figure
+
+    from rodparadox.handout.document import Strips
+    from rodparadox.render.strip_block import draw_strips_into
+
+    blocks = [b for b in sears.blocks() if isinstance(b, Strips)]
+    for b in blocks:
+        assert [(h.model, times) for h, times in b.partners] == [
+            (o.history.model, o.times) for o in blocks if o.frame == b.frame and o is not b]
+    drawn = []
+    for b in blocks[:2]:  # S: rigid, causal (each block's strips are the other's partners: computed once)
+        figure = Figure(figsize=(6.0, 6.0), dpi=72)
+        rows = draw_strips_into(figure, b.history, b.frame, b.times, "print", partners=b.partners)
+        norm = rows[0].collections[0].norm
+        drawn.append((rows[-1].get_xlim(), list(rows[-1].get_xticks()), (norm.vmin, norm.vmax),
+                      [ax.get_gid() for ax in figure.axes if ax.get_gid() == "strips-colour-bar"]))
+    (x_rigid, ticks_rigid, norm_rigid, bar_rigid), (x_causal, ticks_causal, norm_causal, bar_causal) = drawn
+    assert x_rigid == pytest.approx(x_causal, abs=1e-12) and ticks_rigid == ticks_causal
+    assert norm_rigid == pytest.approx(norm_causal, abs=1e-12)
+    assert bar_rigid == [] and bar_causal == ["strips-colour-bar"]
+
+
+def test_no_text_writes_a_subscript_as_code_does(sears, push):
+    """Issue 24, found looking at the pages: the momentum tables' last column was headed "v_E", their note and the
+    section's paragraph said "v_E", printed as it stands; they now say the centre velocity in words."""
+    import re
+
+    for doc in (sears, push):
+        text = text_of(doc) + " ".join(" ".join(b.header) + " ".join(b.notes) for b in doc.blocks()
+                                       if isinstance(b, Table))
+        assert not re.findall(r"[A-Za-z]_[A-Za-z]", text)
+        assert "centre velocity" in text
+
+
+def test_a_driven_rods_strips_say_where_their_rows_follow_the_rod():
+    """push at 0.95 in S′: the rod drifts 20 L while 0.3 L long, so each row follows it (`render.strip_windows`), both
+    rods' blocks alike; their captions said nothing of it (a particle comparison's do). Now they say so, without
+    the particles' arrowheads a driven rod has none of; in S, where one range serves, they do not."""
+    from rodparadox.handout.document import Strips
+    from rodparadox.handout.forces_strips import strips_blocks
+    from rodparadox.physics.frames import paper_frames
+    from rodparadox.render.strip_windows import strips_follow_rod
+
+    rigid, causal = rods("push", 0.95)
+    blocks = [b for b in strips_blocks("push", (rigid, causal), paper_frames(0.95)) if isinstance(b, Strips)]
+    for b in blocks:
+        follows = b.frame.name == "moving"
+        assert ("so each row follows it" in b.caption) == follows, (b.history.model, b.frame.name)
+        assert "particle" not in b.caption
+        if b.history.model == "rigid":  # as the drawing decides, from the strips themselves
+            assert strips_follow_rod(b.history, b.frame, b.times) == follows
+
+
 def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
     """sears in S′ (v = 0.6), drawn: an arrow only where a force acts (SEARS_S_PRIME: at t′ = 1 the right force
     starts, a sine² at zero, while the left acts), pressing: from outside the rod to its end; at a peak (0.2 M c²/L,

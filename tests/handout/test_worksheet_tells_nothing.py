@@ -389,6 +389,34 @@ def test_the_drawn_pages_name_no_software(worksheets, v):
     assert not found, found
 
 
+#: an apostrophe between letters set straight (rod's), where print sets a typographic one (rod’s)
+STRAIGHT_APOSTROPHE = re.compile(r"[A-Za-z]'[A-Za-z]")
+
+
+@pytest.mark.parametrize("v", SPEED_PARAMS)
+def test_the_drawn_pages_set_every_apostrophe_typographic(worksheets, v):
+    """Issue 24: the pages as drawn, the diagrams' legends, colour bars (rod’s material points) and the rod's own
+    view included, and at PDF_SPEED the PDF's text, set no apostrophe straight."""
+    _, drawn, pdf, _ = worksheets[v]
+    found = [(k, text[max(0, m.start() - 30):m.end() + 10]) for k, text in enumerate(drawn + (pdf or []))
+             for m in STRAIGHT_APOSTROPHE.finditer(text)]
+    assert not found, found
+
+
+#: a letter subscripted as source code writes it (x_P), which a page prints as it stands
+UNDERSCORED = re.compile(r"[A-Za-z]_[A-Za-z]")
+
+
+@pytest.mark.parametrize("v", SPEED_PARAMS)
+def test_the_drawn_pages_write_no_subscript_as_code_does(worksheets, v):
+    """Issue 24, found looking at the pages: the question on a turn (off_timing, while_turning) printed
+    "(x − x_P)² − (t − t_P)² = L²" as it stands; it now writes P = (x₀, t₀), subscripts a page sets."""
+    _, drawn, pdf, _ = worksheets[v]
+    found = [(k, text[max(0, m.start() - 30):m.end() + 10]) for k, text in enumerate(drawn + (pdf or []))
+             for m in UNDERSCORED.finditer(text)]
+    assert not found, found
+
+
 # --- rods driven by forces (Sears's own paradox) ------------------------------------------------------------------
 
 #: the presets whose rod is driven by forces at its ends

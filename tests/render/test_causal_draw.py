@@ -29,7 +29,7 @@ from rodparadox.render.styles import STYLE_NAMES, STYLES
 from sears_paradox_cli.main import main
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from test_render import (_collisions, _distance_to_polyline, _far_labels, _leader_faults, _renderer, artist, gids,  # noqa: E402
+from test_render import (_collisions, _distance_to_polyline, _far_labels, _labels_on_sheet, _leader_faults, _renderer, artist, gids,  # noqa: E402
                          xy)
 
 
@@ -213,6 +213,14 @@ def test_labels_touch_nothing_in_slides():
 def test_labels_of_both_rods_sit_on_no_front():
     """fig1 at 0.95 with both rods, frame S: the causal row's A′₂ sat on a light front (fronts were guides then)."""
     assert _label_problems(both("fig1", 0.95, "default", ("rest",)).figure, "default") == []
+
+
+def test_no_particle_s_letter_sits_on_a_world_sheet():
+    """Issue 24: B sat on the causal rod's shaded world-sheet (fig1 at 0.95 with both rods, frame S: the figure of
+    the test above), read as the rod's; a particle's letter now costs as a line crossed there. The handout-sized
+    and plot-sized figures of every preset at 0.3, 0.6 and 0.95: tests/label_sweep.py (4 found before, 0 now)."""
+    fig = both("fig1", 0.95, "default", ("rest",)).figure
+    assert _labels_on_sheet(fig, _renderer(fig, "default")) == []
 
 
 @pytest.mark.parametrize("name, v, size", [
@@ -448,10 +456,10 @@ def test_the_rods_own_now_is_in_the_legend_only_where_a_rod_draws_it(tmp_path):
 
     fig = compared("fig2", 0.6)
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "the rod's own lines of simultaneity" in labels
+    assert "the rod’s own lines of simultaneity" in labels
     assert gids(fig, r"a-rod-now-\d+") and gids(fig, r"[cd]-rod-now-\d+") == []
     causal_rod = like_for_like("fig2", 0.6)[1]
     _, alone = legend_entries(STYLES["default"], causal_rod, render.Options(rod_now=True), 1.0)
-    assert "the rod's own lines of simultaneity" not in alone
+    assert "the rod’s own lines of simultaneity" not in alone
     result = CliRunner().invoke(main, ["plot", "fig2", "--rod", "causal", "--rod-now", "-o", str(tmp_path)])
     assert result.exit_code == 2 and "the causal rod has none" in result.output and not list(tmp_path.iterdir())

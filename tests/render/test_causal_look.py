@@ -86,7 +86,7 @@ def test_the_stress_band_closes_the_ledger_on_every_slice():
 
 def test_the_legend_names_the_stress_part_as_the_real_local_hidden_momentum():
     texts = [t.get_text().replace("\n", " ") for t in causal_figure().legends[0].get_texts()]
-    assert "rod, stress (hatched): its pressure's share of the rod's energy and momentum" in texts
+    assert "rod, stress (hatched): its pressure’s share of the rod’s energy and momentum" in texts
     assert any(t.startswith("rod, matter") for t in texts) and "total before the first contact" in texts
     names = sorted(a.get_text() for a in causal_figure().findobj(lambda a: str(a.get_gid()).startswith("a-label-")))
     assert names == ["B\N{PRIME}\N{SUBSCRIPT ONE}", "B\N{SUBSCRIPT ONE}"]

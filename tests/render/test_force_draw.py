@@ -330,7 +330,9 @@ def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line
     """Sears's pulses timed in S' at a tenth of the preset's peak move the ends by less than half a millimetre on
     the page: the panel of S' gets an inset magnifying where an end strays most, with each end's world-line without
     the forces dashed (the rest at x = -L/2 and L/2 of S, boosted: x' = gamma (x + v t)). At the preset's own peak
-    the motion is seen without one."""
+    the motion is seen without one. Issue 24 (sears_moving at 0.95 in S: the inset hid the rod's right end, its note
+    "×10; dashed: no force" shrunk below the ticks' type): the panel is widened for it, so it hides no world-line,
+    its note is its factor in the ticks' type, and the legend names the dashed lines."""
     from rodparadox.io.scenario import load as load_file
 
     path = tmp_path / "weak.yaml"
@@ -338,6 +340,9 @@ def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line
                     "  right: {shape: sine2, peak: 0.02, start: 0.5, duration: 1, frame: moving}\n")
     weak = run_rods(load_file(str(path)), "rigid")[0]
     diagram = render.draw(weak, paper_frames(0.6)[1:])  # S' alone: its unforced lines the boosted rest
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(diagram.figure).get_renderer()
     for p in diagram.panels:
         inset = next(c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset")
         free = {line.get_gid(): line.get_xydata() for line in inset.lines if "-inset-free-" in line.get_gid()}
@@ -346,5 +351,42 @@ def test_a_weak_forces_tiny_motion_gets_an_inset_against_the_unforced_world_line
             x = -0.5 if gid.endswith("left") else 0.5
             f = p.frame.rapidity
             assert np.allclose(np.cosh(f) * xy[:, 0] + np.sinh(f) * xy[:, 1], x, atol=1e-12)
-        assert "dashed: no force" in next(t for t in inset.texts if t.get_gid() == f"{p.letter}-inset-note").get_text()
+        note = next(t for t in inset.texts if t.get_gid() == f"{p.letter}-inset-note")
+        assert note.get_text().startswith("$\\times") and note.get_fontsize() >= p.axes.xaxis.get_ticklabels()[0].get_fontsize()
+        box = inset.get_window_extent(renderer).padded(2.0)
+        for line in p.axes.lines:  # the panel's world-lines, all of them outside it
+            if line.get_gid() in (f"{p.letter}-{name}" for name in ("rod_left", "rod_right", "A", "B")):
+                path = line.get_transform().transform_path(line.get_path())
+                assert not path.intersects_bbox(box, filled=True), line.get_gid()
+    legend = next(a for a in diagram.figure.findobj() if getattr(a, "get_gid", lambda: None)() == "legend")
+    assert "magnified inset: each end without the forces" in [t.get_text() for t in legend.get_texts()]
     assert not any(c.get_gid().endswith("-inset") for p in drawn("sears_moving").panels for c in p.axes.child_axes)
+
+
+def test_the_small_motions_inset_of_a_rod_at_rest_hides_no_world_line_and_its_note_reads():
+    """Issue 24: `handout sears_moving --v 0.95 --rod both`, page 2: in S the rod at rest is as wide as its narrow
+    panel, and the weak-force inset (x10, the unforced world-lines dashed) hid the rod's right end above t = 1.2, its
+    note "x10; dashed: no force" shrunk below the ticks' type. Drawn at the handout's size (6.3 x 7.6 in): each
+    panel of S is widened on the left (its box no longer symmetric about the rod at rest), its inset hides none of
+    the panel's world-lines, its note is its factor in the ticks' type, and the legend names the dashed lines."""
+    from matplotlib.figure import Figure
+    from matplotlib.transforms import TransformedBbox
+
+    rigid, causal = runs("sears_moving", 0.95)
+    figure = Figure(figsize=(6.3, 7.6), dpi=72)
+    diagram = render.draw_into(figure, (rigid, causal), paper_frames(0.95), "print")
+    for p in diagram.panels:
+        if p.frame.name != "rest":
+            continue
+        x0, x1 = p.axes.get_xlim()
+        assert -x0 > x1 + 0.5, (p.letter, x0, x1)  # room on the left, beyond the symmetric -x1
+        inset = next(c for c in p.axes.child_axes if c.get_gid() == f"{p.letter}-inset")
+        # where its locator puts it (no renderer needed: the bounds are the panel's axes fractions)
+        box = TransformedBbox(inset.get_axes_locator()(inset, None), figure.transSubfigure).frozen().padded(2.0)
+        for line in p.axes.lines:
+            if line.get_gid() in (f"{p.letter}-rod_left", f"{p.letter}-rod_right"):
+                assert not line.get_transform().transform_path(line.get_path()).intersects_bbox(box, filled=True)
+        note = next(t for t in inset.texts if t.get_gid() == f"{p.letter}-inset-note")
+        assert note.get_text() == "$\\times10$"
+        assert note.get_fontsize() >= p.axes.xaxis.get_ticklabels()[0].get_fontsize()
+    assert "magnified inset: each end without the forces" in [t.get_text() for t in figure.legends[0].get_texts()]

@@ -39,7 +39,7 @@ def test_off_by_default_and_in_the_legend_when_on():
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
     # "material points inside the rod", with how many where fewer fit 1 mm apart (test_legible_panels)
     assert any(t.startswith("material points inside the rod") for t in legend)
-    assert "the rod's own lines of simultaneity" in legend
+    assert "the rod’s own lines of simultaneity" in legend
     assert any(re.fullmatch(r"proper time: a tick every [\d.]+ \$L\$", t) for t in legend)
 
 

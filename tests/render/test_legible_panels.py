@@ -75,7 +75,7 @@ def test_every_legend_entry_differs_from_every_other_without_colour(style):
     assert same == []
     # the pairs the issue named, by name
     assert looks["particle A"][0] != looks["particle B"][0]
-    assert looks["material points inside the rod"][0] != looks["the rod's own lines of simultaneity"][0]
+    assert looks["material points inside the rod"][0] != looks["the rod’s own lines of simultaneity"][0]
 
 
 def test_the_grey_test_sees_a_planted_twin():
@@ -334,3 +334,14 @@ def test_a_deep_inset_samples_only_what_it_shows():
         t = t[np.isfinite(t)]
         assert t.min() >= t0 - 1.01 * (t1 - t0) and t.max() <= t1 + 1.01 * (t1 - t0)
     assert [p for p in inset.patches if (p.get_gid() or "").endswith("inset-sheet")]
+
+
+def test_a_worksheets_inset_names_no_impacts_an_instant_groups():
+    """Issue 24: fig2's worksheet at 0.95 (no lines of simultaneity: it asks whether B₁ and A₁ are simultaneous in
+    S′) had in panel (b) an inset noted "×5 at B₁, A₁": the inset is centred on the impacts of the frame's first
+    instant, so its note told the answer. A worksheet's note is then its factor alone; a handout's names them."""
+    frames = paper_frames(0.95)[1:]
+    for simultaneity, note in ((False, "$\\times5$"), (True, "$\\times5$ at $B_{1}$, $A_{1}$")):
+        drawn = render.draw(history("fig2", 0.95), frames, "print", render.Options(simultaneity=simultaneity))
+        [inset] = [c for c in drawn.panels[0].axes.child_axes if c.get_gid() == "a-inset"]
+        assert [t.get_text() for t in inset.texts if t.get_gid() == "a-inset-note"] == [note]

@@ -423,6 +423,27 @@ def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:
     return problems
 
 
+def _labels_on_sheet(fig, renderer) -> list[tuple[str, str]]:
+    """Issue 24: a particle's letter whose box's centre lies on its panel's world-sheet (between the rod's two ends,
+    as drawn), read as the rod's (B on the causal rod's sheet: unequal_masses at 0.6, fig1 at 0.95)."""
+    from matplotlib.path import Path
+
+    problems = []
+    for ax in fig.axes:
+        ends = {line.get_gid().rsplit("-", 1)[1]: line for line in ax.lines
+                if re.fullmatch(r"[a-z]-rod_(left|right)", line.get_gid() or "")}
+        if set(ends) != {"rod_left", "rod_right"}:
+            continue
+        left, right = (ends[end].get_transform().transform(xy(ends[end])) for end in ("rod_left", "rod_right"))
+        sheet = Path(np.concatenate([left, right[::-1]]))
+        for text in ax.texts:
+            if "-particle-label-" in (text.get_gid() or ""):
+                box = text.get_window_extent(renderer)
+                if sheet.contains_point(((box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2)):
+                    problems.append((text.get_gid(), "on the world-sheet"))
+    return problems
+
+
 def _crossing(p, q, r, s) -> bool:
     """Whether the segments pq and rs cross (at a point inside both)."""
     def turn(a, b, c):
