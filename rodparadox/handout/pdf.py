@@ -51,6 +51,7 @@ from rodparadox.handout.pdf_blocks import (Break, Measured, Picture, QuestionSet
                                          TextBlock, measure)
 from rodparadox.handout.pdf_text import Pages, Type
 from rodparadox.render.diagram import FIGURE_METADATA
+from rodparadox.render.pdf_fonts import kept_subsets
 from rodparadox.render.styles import STYLES
 from rodparadox.tolerances import FIT_SLACK
 
@@ -278,7 +279,7 @@ def to_pdf(handout: Handout, paper: str = "a4", style: str = "print") -> bytes:
     """The handout as a PDF, one page of `paper` (a4, letter) after another; the same handout gives the same bytes."""
     figures = page_figures(handout, paper, style)
     buffer = io.BytesIO()
-    with render.style_context(style):
+    with render.style_context(style), kept_subsets():  # each font subset made once per process
         with PdfPages(buffer, metadata=dict(FIGURE_METADATA["pdf"])) as pdf:
             for figure in figures:
                 pdf.savefig(figure)
