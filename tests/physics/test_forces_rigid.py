@@ -384,3 +384,18 @@ def test_the_driven_rod_implements_the_interface_and_the_driving_capability():
         g = h.driving.frame_rapidity(end)
         for t in (0.6, 1.0, 1.3):
             assert close(h.driving.force_at(end, g, t), profile.value(t), scale=1.0)
+
+
+def test_a_kept_instants_state_is_the_state_computed_afresh_and_a_callers_change_leaves_it():
+    """A collocated stage keeps each single instant's state (a handout asks for the same instants again and again)."""
+    from rodparadox.physics.rigid.driven import CollocatedStage
+
+    stage = next(st for st in run_rod(load("sears_moving")).stages if isinstance(st, CollocatedStage))
+    tau = 0.37 * stage.tau0 + 0.63 * stage.tau1
+    first = stage.state(tau)
+    assert np.array_equal(first, stage._state_at(tau)) and tau in stage._kept
+    first[0, 0] += 1.0  # the caller's copy
+    again = stage.state(tau)
+    assert np.array_equal(again, stage._state_at(tau)) and again[0, 0] != first[0, 0]
+    # and the one instant agrees with the same instant read among many (the steps' sums, within rounding)
+    assert np.allclose(again[0], stage.state(np.array([tau, stage.tau0]))[0], rtol=1e-13, atol=1e-15)

@@ -48,6 +48,10 @@ MAX_STEPS = 20_000
 CLOSED_FORM_ALPHA = 1e-3
 #: Gauss-Legendre nodes per piece of a slice
 GAUSS_NODES = 24
+#: at most this many single instants' states kept per collocated stage: a handout asks for the same instants again
+#: and again (its strips measured, then drawn; its ledger's slices; handout sears_moving --rod both: 55,688 asked,
+#: 7,704 different); a state is a pure function of the instant, so a kept one is the one computed afresh
+KEEP_INSTANTS = 50_000
 
 _X = -np.cos(np.pi * np.arange(DEGREE + 1) / DEGREE)  # the Lobatto points on [-1, 1], ascending
 _X[0], _X[-1] = -1.0, 1.0
@@ -202,16 +206,17 @@ class CollocatedStage(_Stage):
         self._ab = np.array([(st.a, st.b) for st in steps])
         self._starts_list = [st.a for st in steps]
         self._ab_list = [(st.a, st.b) for st in steps]
+        self._kept: dict[float, np.ndarray] = {}  # the states of single instants asked for (`state`)
 
     def state(self, tau) -> np.ndarray:
         if np.ndim(tau) == 0:  # one instant: the Chebyshev polynomials by their recurrence, then one product
-            i = min(max(bisect.bisect_right(self._starts_list, float(tau)) - 1, 0), len(self.steps) - 1)
-            a, b = self._ab_list[i]
-            u = min(1.0, max(-1.0, (2.0 * float(tau) - a - b) / (b - a)))
-            T = [1.0, u]
-            for _ in range(DEGREE - 1):
-                T.append(2.0 * u * T[-1] - T[-2])
-            return (np.array(T) @ self._coef[i])[None, :]
+            tau = float(tau)
+            kept = self._kept.get(tau)
+            if kept is None:
+                kept = self._kept[tau] = self._state_at(tau)
+                if len(self._kept) > KEEP_INSTANTS:
+                    self._kept.clear()
+            return kept.copy()
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
         i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
         a, b = self._ab[i, 0], self._ab[i, 1]
@@ -222,6 +227,15 @@ class CollocatedStage(_Stage):
         for k in range(DEGREE, 0, -1):
             b1, b2 = c[:, k, :] + 2.0 * u * b1 - b2, b1
         return c[:, 0, :] + u * b1 - b2
+
+    def _state_at(self, tau: float) -> np.ndarray:
+        i = min(max(bisect.bisect_right(self._starts_list, tau) - 1, 0), len(self.steps) - 1)
+        a, b = self._ab_list[i]
+        u = min(1.0, max(-1.0, (2.0 * tau - a - b) / (b - a)))
+        T = [1.0, u]
+        for _ in range(DEGREE - 1):
+            T.append(2.0 * u * T[-1] - T[-2])
+        return (np.array(T) @ self._coef[i])[None, :]
 
     def step_bounds(self) -> list[float]:
         return [st.a for st in self.steps[1:]]
