@@ -154,19 +154,7 @@ def test_a_figure_that_would_float_leaving_its_page_a_third_empty_shrinks_to_fol
 def test_no_page_is_more_than_a_third_empty_but_the_last_before_the_key_and_the_document_s_last(plans):
     """Issue 24: a section runs on after the last where a third of the page or more is left (a handout's first page
     held the paradox alone, 60 % empty); so a section's last page too is at most a third empty."""
-    empty = []
-    for label, doc, plan in plans:
-        ends = {}
-        for block in plan.blocks:
-            for page, _, bottom in block.pieces:
-                ends[page] = max(ends.get(page, 0.0), bottom)
-        in_sections = sum(len(s.blocks) for s in doc.sections)
-        blocks = [b for b in plan.blocks if b.kind != "break"]  # the document's blocks, in order
-        key_pages = [p for b in blocks[in_sections:] for p, _, _ in b.pieces]
-        before_key = min(key_pages) - 1 if key_pages else None
-        for page in range(plan.pages - 1):
-            if page != before_key and ends.get(page, 0.0) < (1 - THIRD) * plan.text_height:
-                empty.append((label, page + 1, round(1 - ends.get(page, 0.0) / plan.text_height, 2)))
+    empty = [(label, page, round(e, 2)) for label, page, e in _third_rule_pages(plans) if e > THIRD]
     assert not empty, empty
 
 
