@@ -148,8 +148,13 @@ def events_table(r: ForcesReading, f: FrameForces, blank=None, stem: str = "", b
 
 
 def _p(x: float) -> str:
+    """A momentum cell: 0 where it is nought, else four decimals, a rounding zero without a sign's minus (+0.0000,
+    as the other tables set one), never −0.0000."""
     x = zero(x)
-    return "0" if x == 0.0 else f"{x:+.4f}".replace("-", MINUS)
+    if x == 0.0:
+        return "0"
+    text = f"{x:+.4f}"
+    return "+0.0000" if float(text) == 0.0 else text.replace("-", MINUS)
 
 
 def momentum_table(r: ForcesReading, f: FrameForces, compared: bool = False, blank: bool = False) -> Table:

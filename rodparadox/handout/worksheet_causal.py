@@ -60,9 +60,15 @@ def question_far_end(c: Comparison, tabled: bool = True) -> Asked:
     text = (f"{start} {D} strikes the {f.far} end {at}. When "
             f"does light from {C} reach the {f.far} end? What sets the causal rod\u2019s {f.far} end moving, and when "
             f"does the rigid rod\u2019s {f.far} end start to move?")
+    if not rigid:  # no turn from rest about C: the rigid rod's far end moves with D, or never
+        rigid = (f" The rigid rod\u2019s {f.far} end never moves in S: {C} and {D}"
+                 f"{', at one instant of S,' if same else ''} together leave the rigid rod at rest."
+                 if f.t_rigid_moves is None else
+                 f" The rigid rod\u2019s {f.far} end starts to move at t = {in_l(f.t_rigid_moves, ANSWER_DIGITS)}.")
     answer = (f"{C} strikes at t = {in_l(f.t_contact, ANSWER_DIGITS)}. " + light + rigid,
-              f"{D} comes first, so in the causal rod, where no push travels faster than light, the {f.far} end is set "
-              f"moving by {D} itself, and the fronts from {C} and {D} cross inside the rod.")
+              f"{D} strikes the {f.far} end before light from {C} reaches it, so in the causal rod, where no push "
+              f"travels faster than light, the {f.far} end is set moving by {D} itself, and the fronts from {C} and "
+              f"{D} cross inside the rod.")
     asks.append(told_claim(f"{D} sets the causal far end moving", f"set moving by {D} itself"))
     return Asked(text, answer, tuple(asks))
 

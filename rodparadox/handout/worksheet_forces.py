@@ -160,9 +160,9 @@ def push_questions(r: ForcesReading, a: FrameForces, b: FrameForces) -> list[Ask
     u = math.tanh(stop.rapidity)
     dx = abs(stop.event.x - start.event.x) / L
     tau = stop.rapidity / a_
-    kind = "push" if F > 0 else "pull"
+    kind, does = ("push", "pushes") if F > 0 else ("pull", "pulls")
     first = Asked(
-        f"The agent {kind}s the {end} end with a constant force F = {answer_numeral(F)} M c²/L, from t = "
+        f"The agent {does} the {end} end with a constant force F = {answer_numeral(F)} M c²/L, from t = "
         f"{in_l(start.event.t / L)} to t = {in_l(stop.event.t / L)} in S. A rigid rod's end driven so, with nothing "
         f"at the other end, has a proper acceleration of size |F|/M. How fast does that end move in S when the "
         f"{kind} ends, and how far has it gone?",

@@ -87,6 +87,18 @@ def test_two_particles_the_far_end_is_struck_before_light_arrives(compared, sect
         assert f.t_causal == pytest.approx(f.own.event.t, abs=1e-12)
     assert "set moving by A₁ itself" in _text(sections["fig2"])
     assert compared["fig1"].far_end.t_rigid is None and compared["fig2"].far_end.t_rigid == pytest.approx(5 / 6)
+    # the question asks when the rigid rod's far end starts to move: fig1's equal and opposite impacts at one
+    # instant of S leave the rigid rod at rest (its right end's world-line one straight piece, at rest), fig2's at B₁
+    from rodparadox.handout.worksheet_causal import question_far_end
+
+    rigid_fig1 = history("fig1", V)
+    end = rigid_fig1.material_worldline(rigid_fig1.scenario.L)
+    assert end.rapidity_at_time(0.0) == end.rapidity_at_time(10.0) == 0.0
+    assert compared["fig1"].far_end.t_rigid_moves is None
+    assert compared["fig2"].far_end.t_rigid_moves == compared["fig2"].far_end.t_rigid
+    fig1 = " ".join(question_far_end(compared["fig1"]).answer)
+    assert "The rigid rod’s right end never moves in S: A₁ and B₁, at one instant of S, together leave" in fig1
+    assert "B₁ strikes the right end before light from A₁ reaches it" in fig1 and "comes first" not in fig1
 
 
 def test_one_particle_leaves_as_the_closed_form_says_in_both_frames(compared, sections):

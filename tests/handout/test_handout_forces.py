@@ -173,6 +173,8 @@ def test_push_rigid_hyperbolic_motion_and_causal_staircase(push, push_sheet):
     assert f"{u:.4f}" in asks["the pushed end's velocity when the push ends, in S"].forms
     assert f"{dx:.4f}" in asks["the pushed end's distance"].forms
     assert f"{math.asinh(a * (t1 - t0)) / a:.4f}" in asks["the push's proper duration"].forms
+    questions = [q.text for q in push_sheet.sections[1].blocks if isinstance(q, Question)]
+    assert questions[0].startswith("The agent pushes the left end with a constant force F = 0.25 M c²/L")  # not "pushs"
     x1, t1p = -0.5 + dx, GAMMA * (t1 + V * (-0.5 + dx))
     assert f"{t1p:.4f}" in asks["the push's end in S′"].forms
 
@@ -527,3 +529,13 @@ def test_a_strip_s_arrow_is_as_long_as_its_force_and_points_into_the_rod():
                 assert points == pytest.approx(band_points(STYLES["print"]), rel=1e-6)
             else:  # the left force at t′ = 1 (t = 1.1 at x = −1/2): 0.2 sin²(0.6 π), by hand
                 assert points == pytest.approx(band_points(STYLES["print"]) * math.sin(0.6 * math.pi) ** 2, rel=1e-6)
+
+
+def test_a_momentum_cell_is_nought_four_decimals_or_a_rounding_zero_without_a_minus(sears):
+    """Found looking at sears at 0.95: S′'s table printed −0.0000 where the right agent had just begun to pull."""
+    from rodparadox.handout.forces import _p
+
+    assert (_p(0.0), _p(-2e-6), _p(3e-5), _p(-0.0003), _p(0.32026)) == ("0", "+0.0000", "+0.0000", "\u22120.0003",
+                                                                       "+0.3203")
+    cells = [c.text for t in tables(sears, "Where the momentum is") for row in t.rows for c in row[1:]]
+    assert cells and not any(c.startswith("\u22120.0000") or c == "-0.0000" for c in cells)
