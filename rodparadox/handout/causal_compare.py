@@ -157,6 +157,8 @@ def far_end_text(c: Comparison) -> str:
     if f.t_rigid is not None:
         text += (f" The rigid rod\u2019s {f.far} end starts to move already at t = {in_l(f.t_rigid)}, at "
                  f"{C}\u2019s instant of S.")
+    elif f.t_rigid_moves is None:
+        text += f" The rigid rod never moves in S: {C} and {D} together leave it at rest."  # both ends at rest
     return text
 
 

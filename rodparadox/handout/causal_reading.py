@@ -42,8 +42,8 @@ class FarEnd:
     rapidity_struck: float
     #: when the rigid rod's far end starts to move in S (a turn from rest about the contact), or None
     t_rigid: float | None
-    #: when the rigid rod's far end first moves in S by any impact (None: it never moves, as in fig1, whose equal and
-    #: opposite impacts at one instant of S leave the rigid rod at rest)
+    #: when the rigid rod's far end first moves in S by any impact (None: neither end ever moves, the rigid rod at rest
+    #: in S throughout, as in fig1, whose equal and opposite impacts at one instant of S cancel)
     t_rigid_moves: float | None = None
 
 
@@ -171,8 +171,9 @@ def far_end(rigid, causal) -> FarEnd:
     u_causal = math.tanh(line.rapidity_at_time(line.first.t, after=True))
     turn = next(iter(rigid.turning.turns), None)
     t_rigid = turn.pivot.t / L if turn is not None and turn.rapidity_from == 0.0 else None
-    end = rigid.material_worldline(0.0 if far == "left" else L)
-    still = not end.segments and end.rapidity_before == 0.0 == end.rapidity_after
+    ends = {side: rigid.material_worldline(sigma) for side, sigma in (("left", 0.0), ("right", L))}
+    still = all(not e.segments and e.rapidity_before == 0.0 == e.rapidity_after for e in ends.values())
+    end = ends[far]
     t_moves = None if still else (end.segments[0].start.t if end.segments else end.origin.t) / L
     return FarEnd(contact, far, contact.event.t / L, contact.event.t / L + 1.0, t_causal, by_light,
                   None if by_light else own, u_causal, contact.rod_rapidity_after, t_rigid, t_moves)

@@ -92,13 +92,16 @@ def test_two_particles_the_far_end_is_struck_before_light_arrives(compared, sect
     from rodparadox.handout.worksheet_causal import question_far_end
 
     rigid_fig1 = history("fig1", V)
-    end = rigid_fig1.material_worldline(rigid_fig1.scenario.L)
-    assert end.rapidity_at_time(0.0) == end.rapidity_at_time(10.0) == 0.0
+    for sigma in (0.0, rigid_fig1.scenario.L):  # both ends at rest before and long after the impacts
+        end = rigid_fig1.material_worldline(sigma)
+        assert end.rapidity_at_time(0.0) == end.rapidity_at_time(10.0) == 0.0
     assert compared["fig1"].far_end.t_rigid_moves is None
     assert compared["fig2"].far_end.t_rigid_moves == compared["fig2"].far_end.t_rigid
     fig1 = " ".join(question_far_end(compared["fig1"]).answer)
     assert "The rigid rod’s right end never moves in S: A₁ and B₁, at one instant of S, together leave" in fig1
     assert "B₁ strikes the right end before light from A₁ reaches it" in fig1 and "comes first" not in fig1
+    assert "The rigid rod never moves in S: A₁ and B₁ together leave it at rest." in _text(sections["fig1"])
+    assert "never moves" not in _text(sections["fig2"])
 
 
 def test_one_particle_leaves_as_the_closed_form_says_in_both_frames(compared, sections):
