@@ -202,19 +202,22 @@ def energy_text(c: Comparison) -> str:
     parts = []
     for e in c.energy:
         lost = _zero(e.lost_causal, 1.0)
-        # a frame where the particles leave with more energy than they came with: said as a gain, the sum as a loss
-        said = f"lose {numeral(lost)} M c²" if lost >= 0 else \
-            f"gain {numeral(-lost)} M c²: what they lose, {numeral(lost)} M c²,"
-        parts.append(f"in {frame_name(e.frame)} the particles {said} = "
-                     f"{numeral(e.internal)} M c² of internal energy + {_signed_energy(e.bulk_change)} of bulk "
-                     f"kinetic energy (from {numeral(_zero(e.bulk_before, 1.0))} to {numeral(_zero(e.bulk_after, 1.0))} "
-                     f"M c²)")
-    rigid = listed([f"{numeral(_zero(e.lost_rigid, 1.0))} M c² in {frame_name(e.frame)}" for e in c.energy])
+        bulk = (f"(from {numeral(_zero(e.bulk_before, 1.0))} to {numeral(_zero(e.bulk_after, 1.0))} M c²)")
+        if lost >= 0:
+            parts.append(f"in {frame_name(e.frame)} the particles lose {numeral(lost)} M c² = {numeral(e.internal)} M "
+                         f"c² of internal energy + {_signed_energy(e.bulk_change)} of bulk kinetic energy {bulk}")
+        else:  # they leave with more than they came with (single in S′): the rod gives up bulk kinetic energy
+            parts.append(f"in {frame_name(e.frame)} the particles gain {numeral(-lost)} M c² = the "
+                         f"{numeral(-e.bulk_change)} M c² of bulk kinetic energy the rod gives up {bulk} \u2212 the "
+                         f"{numeral(e.internal)} M c² of internal energy it gains")
+    rigid = listed([f"{numeral(x)} M c² lost in {frame_name(e.frame)}" if x >= 0 else
+                    f"{numeral(-x)} M c² gained in {frame_name(e.frame)}"
+                    for e in c.energy for x in [_zero(e.lost_rigid, 1.0)]])
     text = "; ".join(parts)
     return (f"Where the energy went. From before the first impact to after the last separation, {text}. The rise of "
             f"the rest mass is the same in every frame; the bulk kinetic energy, and so what the particles lose, is "
-            f"not. The rigid rod\u2019s rest mass stays M, so what the particles lose to it, {rigid}, is all bulk "
-            f"kinetic energy.")
+            f"not. The rigid rod\u2019s rest mass stays M, so what the particles exchange with it, {rigid}, is all "
+            f"bulk kinetic energy.")
 
 
 def _signed_energy(E: float) -> str:

@@ -107,14 +107,20 @@ def test_energy_lost_by_the_particles_is_internal_plus_bulk_in_every_frame(compa
         assert lost == pytest.approx(internal + bulk_after - bulk_before, abs=1e-9)
         assert (e.lost_causal, e.internal, e.bulk_before, e.bulk_after) == pytest.approx(
             (lost, internal, bulk_before, bulk_after), abs=1e-9)
-        said = (f"the particles lose {_n(lost)} M c² = " if lost >= 0 else  # a gain said as one (single in S′)
-                f"the particles gain {_n(-lost)} M c²: what they lose, {_n(lost)} M c², = ") + \
-            f"{_n(internal)} M c² of internal energy + "
+        if lost >= 0:
+            said = f"the particles lose {_n(lost)} M c² = {_n(internal)} M c² of internal energy + "
+        else:  # a gain said as one (single in S′): the bulk kinetic energy the rod gives up less its internal gain
+            said = (f"the particles gain {_n(-lost)} M c² = the {_n(bulk_before - bulk_after)} M c² of bulk kinetic "
+                    f"energy the rod gives up (from {_n(bulk_before)} to {_n(bulk_after)} M c²) \u2212 the "
+                    f"{_n(internal)} M c² of internal energy it gains")
+            assert bulk_before - bulk_after > internal >= 0
         assert said in text, (key, frame.name, said)
         assert f"(from {_n(bulk_before)} to {_n(bulk_after)} M c²)" in text
         # the rigid rod keeps M: the particles' loss is its bulk kinetic energy, cosh(θ_final − η) − cosh η
         rigid_lost = math.cosh(rigid.final_rapidity - eta) - math.cosh(eta)
         assert e.lost_rigid == pytest.approx(rigid_lost, abs=1e-9)
+        exchanged = (f"{_n(rigid_lost)} M c² lost in" if rigid_lost >= 0 else f"{_n(-rigid_lost)} M c² gained in")
+        assert exchanged in text, (key, frame.name, exchanged)
 
 
 @pytest.mark.parametrize("key", [("single", 0.45), ("fig2", 0.7), "gen_a"], ids=str)
