@@ -30,6 +30,9 @@ from rodparadox.tolerances import FIT_SLACK
 #: a worksheet's ruled answer lines: their distance (about that of ruled paper), and how many at least and at most
 ANSWER_LINE_GAP = 8 * MM
 ANSWER_LINES = (3, 8)
+#: room kept under a worksheet question's last ruled line, so that a line at the foot of a page does not read as a
+#: second footer rule (the footer's rule is a few points under the text area; 2 to 7 points were left)
+ANSWER_FOOT = 0.5 * ANSWER_LINE_GAP
 #: a strip's row in a handout, in units of the least row `draw_strips_into` accepts: room for the particles' letters
 STRIP_ROWS = 1.25
 #: a table at most this part of a page high is short: it moves whole, with its introduction
@@ -393,7 +396,7 @@ class QuestionSet(Measured):
         if ruled:  # room in proportion to the worked answer: handwriting is larger than type
             count = sum(len(lines) for lines in answers)
             self.count = min(max(round(1.5 * count) + 1, ANSWER_LINES[0]), ANSWER_LINES[1])
-            self.lead = self.text.lead + self.count * ANSWER_LINE_GAP
+            self.lead = self.text.lead + self.count * ANSWER_LINE_GAP + ANSWER_FOOT
         else:
             first = [("Answer.", True, False)]
             self.answers = [TextBlock(wrap((first if k == 0 else []) + words_of(p), t.body, answer_width), t.body,

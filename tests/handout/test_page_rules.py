@@ -178,3 +178,24 @@ def test_a_block_of_strips_split_between_pages_is_headed_again_on_the_next():
             page, top, bottom = next(p for p in placed.pieces if p[0] > first_page)
             assert top == 0.0 and 0.0 < bottom - top <= 2 * 1.3 * 12, (name, placed.pieces)
     assert split >= 1
+
+
+def test_a_worksheet_question_s_last_ruled_line_keeps_clear_of_the_footer_rule():
+    """Found looking at every page: a question's lines ran to the text area's foot, 2 to 7 points above the
+    footer's rule, and printed as a double rule (unequal_masses at 0.95 with both rods, page 4: 4 points). Read off
+    the drawn pages: every answer line stays at least ANSWER_FOOT above its page's footer rule."""
+    from rodparadox.handout.pdf import page_figures
+    from rodparadox.handout.pdf_blocks import ANSWER_FOOT
+
+    # the plans' worksheet whose lines came nearest the footer (5.7 points on page 2), a page set as any other
+    doc = next(d for label, d, _ in _all_plans()["letter"] if label == "fig1 worksheet v=0.95 letter")
+    gaps = []
+    for figure in page_figures(doc, "letter", "print"):
+        height = figure.get_size_inches()[1] * 72.0
+        ys = {}
+        for artist in figure.artists:
+            if artist.get_gid() in ("answer-line", "footer-rule"):
+                ys.setdefault(artist.get_gid(), []).append(float(artist.get_ydata()[0]) * height)
+        if "answer-line" in ys:
+            gaps.append(min(ys["answer-line"]) - max(ys["footer-rule"]))  # points, upward from the footer rule
+    assert len(gaps) >= 2 and min(gaps) >= ANSWER_FOOT, gaps
