@@ -114,10 +114,20 @@ def suptitle(scenario: Scenario, width: float, size: float, after: str = "") -> 
     return head
 
 
+#: a unit (and what closes after it) that stays on the line of the number before it: "3.207 L)", "0.5 M c²"
+_UNIT = re.compile(r"(?:L|c|c²|M)[),.;:]*")
+
+
 def note_lines(note: str, width: float, size: float) -> list[str]:
-    """A paragraph of plain text (a figure's note) broken into lines no wider than `width` points at `size`."""
-    room, lines = width / 1.08, []  # long runs of text draw up to 6 % wider than measured
+    """A paragraph of plain text (a figure's note) broken into lines no wider than `width` points at `size`, never
+    between a number and its unit."""
+    room, lines, words = width / 1.08, [], []  # long runs of text draw up to 6 % wider than measured
     for word in note.split(" ") if note else ():
+        if words and _UNIT.fullmatch(word):
+            words[-1] += f" {word}"
+        else:
+            words.append(word)
+    for word in words:
         if lines and approximate_size(f"{lines[-1]} {word}", size)[0] <= room:
             lines[-1] += f" {word}"
         else:

@@ -128,3 +128,16 @@ def test_two_particles_closer_than_a_letter_have_their_letters_apart():
             assert a.x1 <= b.x0 and not a.overlaps(b), style
             assert far["B"].get_horizontalalignment() == "center" and "A" not in far
             assert [t.get_text() for t in rows[0].texts if "-beyond-" in str(t.get_gid())] == ["A"]
+
+
+def test_a_note_never_breaks_between_a_number_and_its_unit():
+    """Found looking at every page: a comparison's note under a figure broke 'B₁ at 3.207 / L)'."""
+    from rodparadox.render.text import approximate_size, note_lines
+
+    note = ("The rigid rod: A₁ and B₁ are not simultaneous in S (A₁ at 0.7763 L, B₁ at 0.5263 L) or S′ (A₁ at "
+            "0.8713 L, B₁ at 3.207 L), the particles carrying 0.5 M c² of kinetic energy at 0.95 c.")
+    for width in range(80, 400, 7):
+        lines = note_lines(note, width, 9.0)
+        assert " ".join(lines) == note  # nothing lost or added
+        assert not any(line.split(" ")[0] in ("L", "L)", "L),", "L,", "c", "c.", "c²", "M") for line in lines[1:])
+        assert all(approximate_size(line, 9.0)[0] <= width / 1.08 for line in lines if " " in line)
