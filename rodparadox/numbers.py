@@ -101,7 +101,7 @@ def shown_signed(value: float, significant: int = 10) -> str:
 TABLE_DIGITS = 7
 
 
-def _without_zero_sign(text: str) -> str:
+def without_zero_sign(text: str) -> str:
     """A number's text without the sign of a zero: -0.000 is +0.000 (a value that rounds to zero has no sign)."""
     mantissa = text.split("e")[0]
     return "+" + text[1:] if text.startswith("-") and not any(c in "123456789" for c in mantissa) else text
@@ -122,9 +122,9 @@ def coordinate_format(values: list[float], signed: bool = True):
         if abs(x) <= PRINTED_ZERO * largest:
             x = 0.0
         if scientific and x != 0.0:
-            written = _without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
+            written = without_zero_sign(f"{x + 0.0:+#.{TABLE_DIGITS}g}")
         else:
-            written = _without_zero_sign(f"{x + 0.0:+.{decimals}f}")
+            written = without_zero_sign(f"{x + 0.0:+.{decimals}f}")
         return written if signed else written.lstrip("+")
     return text
 
@@ -145,7 +145,7 @@ def velocity_format(velocities: list[float]):
     decimals = max([decimals] + [near_c(u) for u in velocities])
 
     def text(u: float) -> str:
-        return _without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c(u))}f}")
+        return without_zero_sign(f"{u + 0.0:+.{max(decimals, near_c(u))}f}")
     return text
 
 

@@ -23,7 +23,7 @@ from rodparadox.handout.forces_reading import (ZERO, ForcesReading, FrameForces,
 from rodparadox.handout.narrative import frame_described
 from rodparadox.handout.words import in_c, in_l, listed, numeral, time_name
 from rodparadox.handout.worksheet_forces import force_questions, timed_frame
-from rodparadox.numbers import MINUS, coordinate_format, exact, velocity_format
+from rodparadox.numbers import MINUS, coordinate_format, exact, velocity_format, without_zero_sign
 from rodparadox.physics.frames import Frame, frame_name, frame_symbol, frame_word
 from rodparadox.tables.build import coordinates, with_fraction
 from rodparadox.tables.comparison import force_text
@@ -151,10 +151,7 @@ def _p(x: float) -> str:
     """A momentum cell: 0 where it is nought, else four decimals, a rounding zero without a sign's minus (+0.0000,
     as the other tables set one), never −0.0000."""
     x = zero(x)
-    if x == 0.0:
-        return "0"
-    text = f"{x:+.4f}"
-    return "+0.0000" if float(text) == 0.0 else text.replace("-", MINUS)
+    return "0" if x == 0.0 else without_zero_sign(f"{x:+.4f}").replace("-", MINUS)
 
 
 def momentum_table(r: ForcesReading, f: FrameForces, compared: bool = False, blank: bool = False) -> Table:

@@ -39,22 +39,25 @@ def sine2_area(peak: float, start: float, duration: float, t: float) -> float:
     return peak * (s / 2 - duration * math.sin(2 * math.pi * s / duration) / (4 * math.pi))
 
 
+def compared(name: str, worksheet: bool = False):
+    """The preset's handout (or worksheet) comparing its rigid and causal rods."""
+    rigid, causal = rods(name)
+    return build([(name, rigid, None, causal)], worksheet=worksheet)
+
+
 @pytest.fixture(scope="module")
 def sears():
-    rigid, causal = rods("sears")
-    return build([("sears", rigid, None, causal)])
+    return compared("sears")
 
 
 @pytest.fixture(scope="module")
 def sears_sheet():
-    rigid, causal = rods("sears")
-    return build([("sears", rigid, None, causal)], worksheet=True)
+    return compared("sears", worksheet=True)
 
 
 @pytest.fixture(scope="module")
 def push():
-    rigid, causal = rods("push")
-    return build([("push", rigid, None, causal)])
+    return compared("push")
 
 
 @pytest.fixture(scope="module")
