@@ -10,6 +10,8 @@ gives the same bytes as separate processes (the determinism tests check that).
 
 `--quick` hashes a smaller grid (one speed, no animations of every style). `--models` adds the causal rod, both
 rods, the rod's own view and the html page at the presets' own speeds (with `--quick`, their grid alone).
+`--forces` adds the rods driven by forces (push, sears, sears_moving) in every command (with `--quick`, their
+grid alone).
 """
 
 from __future__ import annotations
@@ -101,12 +103,38 @@ def model_commands() -> list[list[str]]:
     return grid
 
 
+FORCES = ("push", "sears", "sears_moving")
+
+
+def forces_commands() -> list[list[str]]:
+    """The rods driven by forces at the ends: every command, both rods, at the presets' own speeds and one other."""
+    grid: list[list[str]] = []
+    for name in FORCES:
+        for vv in ([], ["--v", "0.3"]):
+            for rod in ("rigid", "causal", "both"):
+                grid.append(["events", name, *vv, "--rod", rod])
+                grid.append(["export", name, *vv, "--rod", rod, "--format", "json"])
+                grid.append(["plot", name, *vv, "--rod", rod, "--format", "svg,pdf", "-o", "{out}"])
+                grid.append(["ledger", name, *vv, "--rod", rod, "--format", "json"])
+                grid.append(["ledger", name, *vv, "--rod", rod, "--format", "svg", "-o", "{out}"])
+                grid.append(["handout", name, *vv, "--rod", rod, "-o", "{out}"])
+            grid.append(["plot", name, *vv, "--frame", "both,rod", "--style", "print", "--format", "pdf", "-o", "{out}"])
+            grid.append(["handout", name, *vv, "--worksheet", "-o", "{out}"])
+        grid.append(["export", name, "--format", "csv"])
+        grid.append(["ledger", name, "--format", "text"])
+        grid.append(["animate", name, "--fps", "4", "--seconds", "1", "-o", "{out}"])
+        grid.append(["animate", name, "--rod", "causal", "--mode", "boost", "--fps", "4", "--seconds", "1", "-o", "{out}"])
+        grid.append(["html", name, "--rod", "both", "-o", "{out}"])
+    return grid
+
+
 def main_(argv: list[str]) -> int:
     quick = "--quick" in argv
     runner = CliRunner(mix_stderr=False) if 'mix_stderr' in CliRunner.__init__.__code__.co_varnames else CliRunner()
     with tempfile.TemporaryDirectory() as tmp:
-        grid = commands(quick) if not (quick and "--models" in argv) else []
-        for k, args in enumerate(grid + (model_commands() if "--models" in argv else [])):
+        extra = (model_commands() if "--models" in argv else []) + (forces_commands() if "--forces" in argv else [])
+        grid = commands(quick) if not (quick and extra) else []
+        for k, args in enumerate(grid + extra):
             out = Path(tmp) / f"run{k}"
             out.mkdir()
             args = [a.replace("{out}", str(out)) for a in args]
