@@ -225,3 +225,18 @@ def test_event_and_rapidity_at_time_are_event_at_time_and_rapidity_at_time(name)
             assert len(w.segments) >= 1
             for t in times:
                 assert w.event_and_rapidity_at_time(t) == (w.event_at_time(t), w.rapidity_at_time(t)), (sigma, eta, t)
+
+
+def test_kept_world_lines_boosts_and_arc_ends_are_what_a_fresh_computation_gives():
+    """The caches of `History.material_worldline`, `WorldLine.seen_from` (the last frame) and the ends of arcs and
+    world-lines (found once) return what building everything afresh returns, per object, -0.0 a frame of its own."""
+    from rodparadox.physics.rigid.turns import material_worldline
+
+    h = run(load("fig2").with_overrides(v=0.6))
+    kept = h.material_worldline(0.3)
+    assert h.material_worldline(0.3) is kept and kept == material_worldline(h, 0.3)
+    for f in (0.4, 0.4, -0.0, 0.0):
+        seen, fresh = kept.seen_from(f), material_worldline(h, 0.3).seen_from(f)
+        assert repr(seen) == repr(fresh) and repr((seen.first, seen.last)) == repr((fresh.first, fresh.last))
+        assert repr([(s.start, s.end) for s in seen.segments]) == repr([(s.start, s.end) for s in fresh.segments])
+    assert kept.seen_from(0.4) is kept.seen_from(0.4)
