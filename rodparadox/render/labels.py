@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from operator import itemgetter
 from typing import NamedTuple
 
 import numpy as np
@@ -147,29 +148,23 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
     angles = np.arange(0.0, 360.0, 15.0)
     never = 10 ** 9
 
-    class Placed(NamedTuple):
-        """Where a label goes (points): its text's position and alignment, its padded box, its ground, its leader."""
+    # what a label's candidates are and which lines each crosses depend on the label alone, not on the labels placed
+    # before it: found once per label, for every arrangement (`arrange`), each chunk of rings once it is reached
+    known: dict[int, tuple] = {}
+    known_chunks: dict[tuple[int, int], tuple] = {}
 
-        position: tuple[float, float]
-        alignment: tuple[str, str]
-        box: tuple[float, float, float, float]
-        ground: bool
-        leader: np.ndarray | None
-        cost: float
+    def candidates(i: int) -> tuple:
+        if i not in known:
+            known[i] = _candidates(labels[i])
+        return known[i]
 
-    def choose(label: Label, taken: list, leaders: list, leader_extents) -> Placed:
+    def _candidates(label: Label) -> tuple:
         if label.box_size:
             w, h = label.box_size
         else:  # crowded: as tall as a line of its type (a text's drawn box, its ground's too), not as its glyphs
             w, h = text_size(label.text, label.size, label.italic)[:2]
             h = max(h, label.size) if crowded else h
         anchors = to_pt(np.array(label.anchors))
-        # what the label and its leader keep clear of: every placed label, and every marker but one whose centre its
-        # own marker covers (one blot, B₁ on A₁ at v near c: a label beside it or a leader from it cannot keep off it)
-        own = _marker_box(anchors[0], label.avoid_radius - 1.0) if label.avoid_radius else None  # as drawn
-        mine = _marker_box(anchors[0], label.avoid_radius) if label.avoid_radius else None  # as kept clear
-        clear = [box for j, box in enumerate(taken) if own is None or j >= len(markers_taken) or tuple(box) == tuple(mine)
-                 or not _covers(own, box)]
         turn = np.abs((angles - label.preferred + 180) % 360 - 180)
         order = angles[np.lexsort((angles, turn))]
         # candidates ordered by ring, then anchor, then direction: that order breaks ties in cost
@@ -185,18 +180,41 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         boxes = np.column_stack([bx - pad, by - pad, bx + w + pad, by + h + pad])
         inside = ((boxes[:, 0] >= edge) & (boxes[:, 1] >= edge) & (boxes[:, 2] <= frame.width - edge)
                   & (boxes[:, 3] <= frame.height - edge))
+        return w, h, anchors, ring, which, px, py, ha, va, bx, by, boxes, inside
+
+    def lines_crossed(i: int, first: int, last: int) -> tuple:
+        """The chunk of label i's candidates in rings first to last (inside the panel), their boxes, and how many
+        obstacles (the sheet included, for a particle's letter) and guides each crosses."""
+        if (i, first) not in known_chunks:
+            label, (ring, boxes, inside) = labels[i], itemgetter(3, 11, 12)(candidates(i))
+            chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
+            b = boxes[chunk]
+            if len(chunk) == 0:
+                known_chunks[i, first] = chunk, b, None, None
+            else:
+                blocked = crossings(b, hard_extents)
+                if label.off_sheet and on_sheet is not None:
+                    blocked = blocked + on_sheet(np.column_stack([(b[:, 0] + b[:, 2]) / 2, (b[:, 1] + b[:, 3]) / 2]))
+                known_chunks[i, first] = chunk, b, blocked, crossings(b, soft_extents)
+        return known_chunks[i, first]
+
+    def choose(i: int, taken: list, leaders: list, leader_extents) -> _Placed:
+        label = labels[i]
+        w, h, anchors, ring, which, px, py, ha, va, bx, by, boxes, inside = candidates(i)
+        # what the label and its leader keep clear of: every placed label, and every marker but one whose centre its
+        # own marker covers (one blot, B₁ on A₁ at v near c: a label beside it or a leader from it cannot keep off it)
+        own = _marker_box(anchors[0], label.avoid_radius - 1.0) if label.avoid_radius else None  # as drawn
+        mine = _marker_box(anchors[0], label.avoid_radius) if label.avoid_radius else None  # as kept clear
+        clear = [box for j, box in enumerate(taken) if own is None or j >= len(markers_taken) or tuple(box) == tuple(mine)
+                 or not _covers(own, box)]
         cost = np.full(len(boxes), never)
         crossed_guides = np.zeros(len(boxes), dtype=int)
         for first, last in ((0, 3), (3, 6), (6, 9), (9, 11), (11, len(radii))):  # nearest rings first; stop once one is free
             if first >= len(radii):
                 break
-            chunk = np.flatnonzero(inside & (ring >= first) & (ring < last))
+            chunk, b, blocked, guides_crossed = lines_crossed(i, first, last)
             if len(chunk) == 0:
                 continue
-            b = boxes[chunk]
-            blocked = crossings(b, hard_extents)
-            if label.off_sheet and on_sheet is not None:
-                blocked = blocked + on_sheet(np.column_stack([(b[:, 0] + b[:, 2]) / 2, (b[:, 1] + b[:, 3]) / 2]))
             # on a marker, on another label or on a leader, or a leader across a marker, a label or another leader:
             # a label read for another, never chosen while any candidate avoids it (a line crossed is read through)
             faults = crossings(b, leader_extents) if leaders else np.zeros(len(chunk), dtype=int)
@@ -204,7 +222,7 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
                 other = np.array(clear)
                 faults += ((b[:, None, 0] < other[None, :, 2]) & (other[None, :, 0] < b[:, None, 2])
                            & (b[:, None, 1] < other[None, :, 3]) & (other[None, :, 1] < b[:, None, 3])).sum(1)
-            crossed_guides[chunk] = crossings(b, soft_extents)
+            crossed_guides[chunk] = guides_crossed
             if label.avoid_radius and clear:  # the leader it would need
                 faults += _leaders_blocked(anchors[0], b, pad, label.avoid_radius, clear)
                 faults += _leaders_crossing(anchors[0], b, pad, label.avoid_radius, leaders)
@@ -226,15 +244,15 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
         leader = None
         if label.avoid_radius and cost[k] != never:
             leader = _leader(anchors[0], (bx[k], by[k], bx[k] + w, by[k] + h), label.avoid_radius - 1.0)
-        return Placed(tuple(position), alignment, tuple(box), bool(ground), leader, float(cost[k]))
+        return _Placed(tuple(position), alignment, tuple(box), bool(ground), leader, float(cost[k]))
 
-    def arrange(order: list[int]) -> tuple[dict[int, Placed], tuple[int, int]]:
+    def arrange(order: list[int]) -> tuple[dict[int, _Placed], tuple[int, int]]:
         """Each label placed in this order, and how many of them could not avoid a fault, and a line."""
         taken, leaders = list(markers_taken), []
         leader_extents = extents(np.empty((0, 4)))
-        out: dict[int, Placed] = {}
+        out: dict[int, _Placed] = {}
         for i in order:
-            out[i] = placed = choose(labels[i], taken, leaders, leader_extents)
+            out[i] = placed = choose(i, taken, leaders, leader_extents)
             taken.append(placed.box)
             if placed.leader is not None:
                 leaders.append(placed.leader)
@@ -272,6 +290,17 @@ def place(ax, frame: Area, labels: list[Label], obstacles: list[np.ndarray], gui
             artists += (line,)
         drawn.append(artists)
     return drawn
+
+
+class _Placed(NamedTuple):
+    """Where a label goes (points): its text's position and alignment, its padded box, its ground, its leader."""
+
+    position: tuple[float, float]
+    alignment: tuple[str, str]
+    box: tuple[float, float, float, float]
+    ground: bool
+    leader: np.ndarray | None
+    cost: float
 
 
 def _candidate_leaders(centre: np.ndarray, padded: np.ndarray, pad: float, radius: float
