@@ -490,11 +490,14 @@ class ChartCurve:
         if not math.isfinite(self.T_end):
             raise ValueError("an endless chart curve is sampled only when clipped to a window")
         knots = [self.T_start, *self.chart.breaks(self.X, self.T_start, self.T_end), self.T_end]
-        known: dict[float, Event] = {}  # each chart time's point once: a half's ends are its parent's end and middle
+        known: dict[float, tuple[float, float]] = {}  # each chart time's point once: a half's ends are its parent's
+        a_, b_, X = self.chart.a, self.chart.b, self.X  # end and middle; as (x, t), the arithmetic of `point`
+        e_minus, e_plus = math.exp(-self.f), math.exp(self.f)
 
-        def at(T: float) -> Event:
+        def at(T: float) -> tuple[float, float]:
             if T not in known:
-                known[T] = self.point(T)
+                U, V = e_minus * a_(T + X), e_plus * b_(T - X)
+                known[T] = (0.5 * (U - V), 0.5 * (U + V))
             return known[T]
 
         out = [at(self.T_start)]
@@ -504,13 +507,13 @@ class ChartCurve:
             stack = [(a0, b0, 0)]
             while stack:
                 a, b, depth = stack.pop()
-                pa, pb, pm = at(a), at(b), at(0.5 * (a + b))
-                dx, dt = pb.x - pa.x, pb.t - pa.t
+                (ax, at_), pb, (mx, mt) = at(a), at(b), at(0.5 * (a + b))
+                dx, dt = pb[0] - ax, pb[1] - at_
                 chord = math.hypot(dx, dt)
-                error = abs(dx * (pm.t - pa.t) - dt * (pm.x - pa.x)) / chord if chord > 0 else 0.0
+                error = abs(dx * (mt - at_) - dt * (mx - ax)) / chord if chord > 0 else 0.0
                 if (error > tolerance or depth < 2) and depth < 40:
                     stack.append((0.5 * (a + b), b, depth + 1))
                     stack.append((a, 0.5 * (a + b), depth + 1))
                 else:
                     out.append(pb)
-        return np.array([[p.x, p.t] for p in out])
+        return np.array(out)
