@@ -232,14 +232,14 @@ class WorldLine:
     def seen_from(self, frame_rapidity: float) -> "WorldLine":
         """The same world-line in the coordinates of the frame of rapidity `frame_rapidity` relative to this one's."""
         # the last frame's world-line is kept: a slice of the rod, a grid of instants, reads one material point in one
-        # frame many times (History.material_worldline keeps the points). A float's own: -0.0 boosts as -0.0, not 0.0.
+        # frame many times (History.material_worldline keeps the points). The same value of the same type: -0.0 boosts
+        # as -0.0, not as 0.0, and a numpy scalar gives numpy scalars.
         last = self.__dict__.get("_seen")
-        if last is not None and last[0] == frame_rapidity and type(frame_rapidity) is float \
+        if last is not None and last[0] == frame_rapidity and type(last[0]) is type(frame_rapidity) \
                 and math.copysign(1.0, last[0]) == math.copysign(1.0, frame_rapidity):
             return last[1]
         seen = self._boosted(frame_rapidity)
-        if type(frame_rapidity) is float:
-            self.__dict__["_seen"] = (frame_rapidity, seen)
+        self.__dict__["_seen"] = (frame_rapidity, seen)
         return seen
 
     def _boosted(self, frame_rapidity: float) -> "WorldLine":

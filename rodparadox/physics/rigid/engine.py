@@ -74,16 +74,18 @@ class History:
         """The exact world-line in S of the material point at proper distance sigma from the left end."""
         # each point's world-line is built once per history and kept (in the instance's __dict__, outside the frozen
         # fields: equality and hash are the fields'): a slice of the rod (`rod.rod_slice`), a material velocity on a
-        # grid of instants, reads the same few points again and again. Only for a plain float, so that a numpy
-        # scalar still gets a world-line of numpy scalars; 0.0 and -0.0 give the same world-line.
-        if type(sigma) is not float:
-            return material_worldline(self, sigma)
+        # grid of instants, reads the same few points again and again. Kept by value and type: a numpy scalar's
+        # world-line holds numpy scalars, a float's floats; 0.0 and -0.0 give the same world-line.
         known = self.__dict__.get("_material")
         if known is None:
             known = self.__dict__["_material"] = {}
-        line = known.get(sigma)
+        key = (sigma, type(sigma))
+        try:
+            line = known.get(key)
+        except TypeError:  # an unhashable number (a numpy array of one value): built afresh
+            return material_worldline(self, sigma)
         if line is None:
-            line = known[sigma] = material_worldline(self, sigma)
+            line = known[key] = material_worldline(self, sigma)
         return line
 
     def rapidity_range(self) -> tuple[float, float]:
