@@ -120,21 +120,20 @@ class _View:
         while isinstance(base, _View):  # flattened: a view of a view is a view of the base
             base, shift, sign = base.base, shift + base.shift, sign * base.sign
         self.base, self.shift, self.sign, self.lo, self.hi = base, shift, sign, lo, hi
-        self._p0 = self._primitive(lo, True)
-        self._m0 = self._primitive(lo, False)
-
-    def _primitive(self, s: float, plus: bool) -> float:
-        plus = plus if self.sign > 0 else not plus
-        return self.base.ep(s - self.shift) if plus else self.base.em(s - self.shift)
+        # the base's primitives of exp(+-r) read as this view's, chosen once (the sign swaps them): the chart map
+        # reads them at every step of every search
+        self._base_ep, self._base_em = (base.ep, base.em) if sign > 0 else (base.em, base.ep)
+        self._p0 = self._base_ep(lo - shift)
+        self._m0 = self._base_em(lo - shift)
 
     def r(self, s: float) -> float:
         return self.sign * self.base.r(s - self.shift)
 
     def ep(self, s: float) -> float:
-        return self._primitive(s, True) - self._p0
+        return self._base_ep(s - self.shift) - self._p0
 
     def em(self, s: float) -> float:
-        return self._primitive(s, False) - self._m0
+        return self._base_em(s - self.shift) - self._m0
 
     @property
     def constant(self) -> float | None:
@@ -229,6 +228,19 @@ class Invariant:
         p, m = self._integrals(s)
         return p + n * self.tail_gain[0], m + n * self.tail_gain[1]
 
+    def integral(self, s: float, plus: bool = True) -> float:
+        """int_0^s exp(r) (`plus`) or int_0^s exp(-r): one of `integrals(s)`, the same float, the other left
+        uncomputed (the chart map a, b reads only the first, at every step of every search: half the work)."""
+        s, n = self._reduce(s)
+        k = bisect.bisect_right(self.starts, s) - 1
+        if k < 0:
+            value = s
+        else:
+            piece = self.pieces[k]
+            at = piece.hi if piece.hi < s else s  # min(s, piece.hi), without the call
+            value = self.offsets[k][0] + piece.ep(at) if plus else self.offsets[k][1] + piece.em(at)
+        return value + n * self.tail_gain[0 if plus else 1]
+
     def breaks(self, lo: float, hi: float) -> list[float]:
         """Every piece boundary (a front, or where a contact starts or ends) in (lo, hi)."""
         if self.period is None:
@@ -300,13 +312,13 @@ class Solution:
     def a(self, u: float) -> float:
         value = self._a.get(u)
         if value is None:
-            value = self._a[u] = -0.5 * self.L + self.plus.integrals(u)[0]
+            value = self._a[u] = -0.5 * self.L + self.plus.integral(u)
         return value
 
     def b(self, w: float) -> float:
         value = self._b.get(w)
         if value is None:
-            value = self._b[w] = 0.5 * self.L + self.minus.integrals(w)[0]
+            value = self._b[w] = 0.5 * self.L + self.minus.integral(w)
         return value
 
     def r_plus(self, u: float) -> float:
@@ -337,10 +349,10 @@ class Characteristics:
         self.minus.append(Const(T_first - 2 * L, T_first - L, 0.0))
 
     def a(self, u: float) -> float:
-        return -0.5 * self.L + self.plus.integrals(u)[0]
+        return -0.5 * self.L + self.plus.integral(u)
 
     def b(self, w: float) -> float:
-        return 0.5 * self.L + self.minus.integrals(w)[0]
+        return 0.5 * self.L + self.minus.integral(w)
 
     def end_inputs(self, end: str, lo: float, hi: float) -> list:  # an end's input pieces, as views in end time
         L = self.L
