@@ -100,7 +100,8 @@ class Solved:
         if self.depth > MAX_DEPTH:  # its own polynomial: reading the input would read every earlier contact's
             st = self._step(s)
             return _clenshaw(st.out, _place(st, s))
-        return self.r_in(s) - 2.0 * self.psi(s)
+        st = self._step(s)
+        return self.r_in(s) - 2.0 * _clenshaw(st.psi, _place(st, s))  # r_in - 2 psi
 
     def ep(self, s: float) -> float:
         st = self._step(s)

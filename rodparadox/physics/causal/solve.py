@@ -99,8 +99,12 @@ class _Contact:
     def psi(self, s: float) -> float:
         return self.r_in + self.delta(s)
 
-    def r(self, s: float) -> float:
-        return -self.r_in - 2.0 * self.delta(s)
+    def r(self, s: float) -> float:  # -r_in - 2 delta(s), `delta` and `q` written out (the same floats)
+        if self.log_k is not None:
+            q = math.exp(self.log_k - self.c * (s - self.lo))
+        else:
+            q = self.k * math.exp(-self.c * (s - self.lo))
+        return -self.r_in - 2.0 * (2.0 * math.atanh(q))
 
     def ep(self, s: float) -> float:
         q, q0 = self.q(s), self.k
@@ -208,11 +212,14 @@ class Invariant:
         return None if k < 0 or (k == len(self.pieces) - 1 and s > self.pieces[k].hi) else self.pieces[k]
 
     def r(self, s: float) -> float:
-        s, _ = self._reduce(s)
-        k = self._index(s)
+        # `_reduce` and `_index` written out (the same floats): the chart map reads r at every step of every search
+        if not (self.period is None or s < self.tail_start + self.period):
+            s = s - math.floor((s - self.tail_start) / self.period) * self.period
+        k = bisect.bisect_right(self.starts, s) - 1
         if k < 0:
             return 0.0
-        return self.pieces[k].r(min(s, self.pieces[k].hi))
+        piece = self.pieces[k]
+        return piece.r(piece.hi if piece.hi < s else s)  # min(s, piece.hi)
 
     def _integrals(self, s: float) -> tuple[float, float]:
         k = self._index(s)
@@ -231,7 +238,10 @@ class Invariant:
     def integral(self, s: float, plus: bool = True) -> float:
         """int_0^s exp(r) (`plus`) or int_0^s exp(-r): one of `integrals(s)`, the same float, the other left
         uncomputed (the chart map a, b reads only the first, at every step of every search: half the work)."""
-        s, n = self._reduce(s)
+        n = 0
+        if not (self.period is None or s < self.tail_start + self.period):  # `_reduce`, written out
+            n = math.floor((s - self.tail_start) / self.period)
+            s = s - n * self.period
         k = bisect.bisect_right(self.starts, s) - 1
         if k < 0:
             value = s
