@@ -176,6 +176,9 @@ class Arrays:
         k = np.searchsorted(starts, s, side="right") - 1
         if not len(k):
             return []
+        first = k[0]
+        if (k == first).all():  # all in one piece (as often, once a search closes in): no sort
+            return [(int(first), np.arange(len(k)))] if first >= 0 else []
         order = np.argsort(k, kind="stable")
         ordered = k[order]
         firsts = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))

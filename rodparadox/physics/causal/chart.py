@@ -92,7 +92,7 @@ def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np
     ef = math.exp(f)
     xs, rapidities = [], []
     T = None
-    for X in sigmas:
+    for X in np.asarray(sigmas, dtype=float).tolist():  # Python floats: numpy scalars cost twice as much, same floats
         def time(T_: float) -> float:
             return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
         if T is None:

@@ -319,23 +319,25 @@ class Solution:
         self._a: dict[float, float] = {}  # the chart map at each u and w read: every frame, every layer and
         self._b: dict[float, float] = {}  # the contacts (the ends' own curves) read the same chart times again
 
+    # each reads its invariant at a Python float: a numpy scalar (a chart time taken from an array) gives the same
+    # floats through every piece, at twice the cost of every operation (measured)
     def a(self, u: float) -> float:
         value = self._a.get(u)
         if value is None:
-            value = self._a[u] = -0.5 * self.L + self.plus.integral(u)
+            value = self._a[u] = -0.5 * self.L + self.plus.integral(float(u))
         return value
 
     def b(self, w: float) -> float:
         value = self._b.get(w)
         if value is None:
-            value = self._b[w] = 0.5 * self.L + self.minus.integral(w)
+            value = self._b[w] = 0.5 * self.L + self.minus.integral(float(w))
         return value
 
     def r_plus(self, u: float) -> float:
-        return self.plus.r(u)
+        return self.plus.r(float(u))
 
     def r_minus(self, w: float) -> float:
-        return self.minus.r(w)
+        return self.minus.r(float(w))
 
     def breaks(self, X: float, T_lo: float, T_hi: float) -> list[float]:
         """The chart times in (T_lo, T_hi) where a front crosses the material line X."""
