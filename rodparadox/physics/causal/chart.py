@@ -89,6 +89,7 @@ def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np
     rapidity there: the chart time T on the slice, t(T) = (e^-f a(T + X) + e^f b(T - X))/2 = t, by Newton's method
     (dt/dT = (e^(r+ - f) + e^(r- + f))/2 > 0) kept inside a bracket, from the neighbour's T; to 1e-13 of t."""
     sol, L = history.solution, history.scenario.L
+    f, t = float(f), float(t)  # Python floats: numpy scalars cost twice as much, the same floats
     ef = math.exp(f)
     xs, rapidities = [], []
     T = None

@@ -246,8 +246,9 @@ class CausalHistory:
         key = (end, frame_rapidity, t)  # each slice's ends are asked for by every layer: found once
         if key not in self._end_times:
             X = 0.0 if end == "left" else self.scenario.L
-            line = ChartCurve(self.solution, X, -math.inf, math.inf, frame_rapidity)
-            self._end_times[key] = line.chart_time(t)
+            # at Python floats: a numpy scalar's arithmetic (a time taken from an array) costs more, the floats the same
+            line = ChartCurve(self.solution, X, -math.inf, math.inf, float(frame_rapidity))
+            self._end_times[key] = line.chart_time(float(t))
         return self._end_times[key]
 
     def rod_energy_momentum(self, frame_rapidity: float, t: float) -> EnergyMomentum:
