@@ -110,3 +110,13 @@ def test_the_shortcuts_give_the_general_paths_floats_bit_for_bit():
     assert np.array_equal(r, tables.plus.r(s)) and np.array_equal(m, tables.plus.m(s))
     fresh = type(sol)(sol.L, sol.plus, sol.minus, sol.events, sol.riders)  # an empty memo of a and b
     assert [fresh.a(u) for u in s] == [-0.5 * sol.L + sol.plus.integrals(u)[0] for u in s.tolist()]
+
+
+def test_the_fields_on_their_grid_are_read_once_per_history():
+    """`extremes._chart_extremes` is kept per history (both ranges read it): a hit is what a fresh reading gives."""
+    from rodparadox.physics.causal.extremes import _chart_extremes
+
+    h = causal_history("fig1")
+    kept = _chart_extremes(h)
+    assert _chart_extremes(h) is kept
+    assert all(np.array_equal(a, b) for a, b in zip(kept, _chart_extremes.__wrapped__(h)))

@@ -52,8 +52,9 @@ class CausalChart:
     def to_chart(self, event: Event) -> tuple[float, float]:
         """(T, X) of an event in S: the whole plane is charted (outside the rod, by light rays from its ends)."""
         sol = self.solution
-        u = _inverse(sol.a, lambda s: math.exp(sol.r_plus(s)), event.t + event.x, self.L)
-        w = _inverse(sol.b, lambda s: math.exp(sol.r_minus(s)), event.t - event.x, self.L)
+        # at Python floats (an event's coordinates may be numpy scalars: the same floats, at a higher cost)
+        u = _inverse(sol.a, lambda s: math.exp(sol.r_plus(s)), float(event.t + event.x), self.L)
+        w = _inverse(sol.b, lambda s: math.exp(sol.r_minus(s)), float(event.t - event.x), self.L)
         return 0.5 * (u + w), 0.5 * (u - w)
 
     def placed(self, event: Event) -> list[tuple[float, float, int]]:
