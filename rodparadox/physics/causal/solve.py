@@ -99,12 +99,8 @@ class _Contact:
     def psi(self, s: float) -> float:
         return self.r_in + self.delta(s)
 
-    def r(self, s: float) -> float:  # -r_in - 2 delta(s), `delta` and `q` written out (the same floats)
-        if self.log_k is not None:
-            q = math.exp(self.log_k - self.c * (s - self.lo))
-        else:
-            q = self.k * math.exp(-self.c * (s - self.lo))
-        return -self.r_in - 2.0 * (2.0 * math.atanh(q))
+    def r(self, s: float) -> float:
+        return -self.r_in - 2.0 * self.delta(s)
 
     def ep(self, s: float) -> float:
         q, q0 = self.q(s), self.k
@@ -124,9 +120,7 @@ class _View:
         while isinstance(base, _View):  # flattened: a view of a view is a view of the base
             base, shift, sign = base.base, shift + base.shift, sign * base.sign
         self.base, self.shift, self.sign, self.lo, self.hi = base, shift, sign, lo, hi
-        # the base's primitives of exp(+-r) read as this view's, chosen once (the sign swaps them): the chart map
-        # reads them at every step of every search
-        self._base_ep, self._base_em = (base.ep, base.em) if sign > 0 else (base.em, base.ep)
+        self._base_ep, self._base_em = (base.ep, base.em) if sign > 0 else (base.em, base.ep)  # chosen once
         self._p0 = self._base_ep(lo - shift)
         self._m0 = self._base_em(lo - shift)
 
@@ -193,8 +187,8 @@ class Invariant:
         while self.pieces and self.pieces[-1].lo >= cut:
             self.pieces.pop(), self.starts.pop(), self.offsets.pop()
         self.period, self.tail_start = period, tail_start
-        a0, b0 = self._integrals(tail_start)
-        a1, b1 = self._integrals(cut)
+        a0, b0 = self._integral(tail_start, True), self._integral(tail_start, False)
+        a1, b1 = self._integral(cut, True), self._integral(cut, False)
         self.tail_gain = (a1 - a0, b1 - b0)
 
     def _reduce(self, s: float) -> tuple[float, int]:
@@ -212,44 +206,28 @@ class Invariant:
         return None if k < 0 or (k == len(self.pieces) - 1 and s > self.pieces[k].hi) else self.pieces[k]
 
     def r(self, s: float) -> float:
-        # `_reduce` and `_index` written out (the same floats): the chart map reads r at every step of every search
-        if not (self.period is None or s < self.tail_start + self.period):
-            s = s - math.floor((s - self.tail_start) / self.period) * self.period
-        k = bisect.bisect_right(self.starts, s) - 1
+        s, _ = self._reduce(s)
+        k = bisect.bisect_right(self.starts, s) - 1  # `_index`, written out: r is read at every step of a search
         if k < 0:
             return 0.0
-        piece = self.pieces[k]
-        return piece.r(piece.hi if piece.hi < s else s)  # min(s, piece.hi)
+        return self.pieces[k].r(min(s, self.pieces[k].hi))
 
-    def _integrals(self, s: float) -> tuple[float, float]:
+    def _integral(self, s: float, plus: bool) -> float:
+        """int_0^s exp(r) (`plus`) or exp(-r), s before any tail."""
         k = self._index(s)
         if k < 0:
-            return s, s
-        piece = self.pieces[k]
-        p0, m0 = self.offsets[k]
-        return p0 + piece.ep(min(s, piece.hi)), m0 + piece.em(min(s, piece.hi))
+            return s
+        piece, at = self.pieces[k], min(s, self.pieces[k].hi)
+        return self.offsets[k][0] + piece.ep(at) if plus else self.offsets[k][1] + piece.em(at)
 
     def integrals(self, s: float) -> tuple[float, float]:
         """(int_0^s exp(r), int_0^s exp(-r))."""
-        s, n = self._reduce(s)
-        p, m = self._integrals(s)
-        return p + n * self.tail_gain[0], m + n * self.tail_gain[1]
+        return self.integral(s), self.integral(s, False)
 
     def integral(self, s: float, plus: bool = True) -> float:
-        """int_0^s exp(r) (`plus`) or int_0^s exp(-r): one of `integrals(s)`, the same float, the other left
-        uncomputed (the chart map a, b reads only the first, at every step of every search: half the work)."""
-        n = 0
-        if not (self.period is None or s < self.tail_start + self.period):  # `_reduce`, written out
-            n = math.floor((s - self.tail_start) / self.period)
-            s = s - n * self.period
-        k = bisect.bisect_right(self.starts, s) - 1
-        if k < 0:
-            value = s
-        else:
-            piece = self.pieces[k]
-            at = piece.hi if piece.hi < s else s  # min(s, piece.hi), without the call
-            value = self.offsets[k][0] + piece.ep(at) if plus else self.offsets[k][1] + piece.em(at)
-        return value + n * self.tail_gain[0 if plus else 1]
+        """One of `integrals(s)`, the other not computed (a and b read only the first, at every step of a search)."""
+        s, n = self._reduce(s)
+        return self._integral(s, plus) + n * self.tail_gain[0 if plus else 1]
 
     def breaks(self, lo: float, hi: float) -> list[float]:
         """Every piece boundary (a front, or where a contact starts or ends) in (lo, hi)."""
@@ -319,8 +297,6 @@ class Solution:
         self._a: dict[float, float] = {}  # the chart map at each u and w read: every frame, every layer and
         self._b: dict[float, float] = {}  # the contacts (the ends' own curves) read the same chart times again
 
-    # each reads its invariant at a Python float: a numpy scalar (a chart time taken from an array) gives the same
-    # floats through every piece, at twice the cost of every operation (measured)
     def a(self, u: float) -> float:
         value = self._a.get(u)
         if value is None:
@@ -333,7 +309,7 @@ class Solution:
             value = self._b[w] = 0.5 * self.L + self.minus.integral(float(w))
         return value
 
-    def r_plus(self, u: float) -> float:
+    def r_plus(self, u: float) -> float:  # a, b, r+, r- at Python floats: numpy's cost twice theirs, the same floats
         return self.plus.r(float(u))
 
     def r_minus(self, w: float) -> float:
