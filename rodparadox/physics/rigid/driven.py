@@ -207,8 +207,14 @@ class CollocatedStage(_Stage):
         self._starts_list = [st.a for st in steps]
         self._ab_list = [(st.a, st.b) for st in steps]
         self._kept: dict[float, np.ndarray] = {}  # the states of single instants asked for (`state`)
+        # the coefficients degree first, (DEGREE + 1, steps, 7), and the same of (t, x, phi) alone: `state` gathers
+        # each instant's step once into arrays it reads degree by degree
+        self._by_degree = np.ascontiguousarray(self._coef.transpose(1, 0, 2))
+        self._by_degree_txphi = np.ascontiguousarray(self._by_degree[:, :, :PHI + 1])
 
-    def state(self, tau) -> np.ndarray:
+    def state(self, tau, motion_only: bool = False) -> np.ndarray:
+        """The state at tau; for an array and `motion_only`, the left end's (t, x, phi) alone (shape (n, 3)), the
+        same numbers as the first three columns of the whole state (each column's sums are its own)."""
         if np.ndim(tau) == 0:  # one instant: the Chebyshev polynomials by their recurrence, then one product
             tau = float(tau)
             kept = self._kept.get(tau)
@@ -221,12 +227,7 @@ class CollocatedStage(_Stage):
         i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
         a, b = self._ab[i, 0], self._ab[i, 1]
         u = np.clip((2.0 * tau - a - b) / (b - a), -1.0, 1.0)[:, None]
-        c = self._coef[i]
-        b1 = np.zeros((len(tau), 7))
-        b2 = np.zeros((len(tau), 7))
-        for k in range(DEGREE, 0, -1):
-            b1, b2 = c[:, k, :] + 2.0 * u * b1 - b2, b1
-        return c[:, 0, :] + u * b1 - b2
+        return _clenshaw((self._by_degree_txphi if motion_only else self._by_degree)[:, i], u)
 
     def _state_at(self, tau: float) -> np.ndarray:
         i = min(max(bisect.bisect_right(self._starts_list, tau) - 1, 0), len(self.steps) - 1)
@@ -239,6 +240,24 @@ class CollocatedStage(_Stage):
 
     def step_bounds(self) -> list[float]:
         return [st.a for st in self.steps[1:]]
+
+
+def _clenshaw(c: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """sum_k c[k] T_k(u) by Clenshaw's recurrence, c of shape (DEGREE + 1, n, m), u of shape (n, 1).
+
+    b1 <- c[k] + 2 u b1 - b2 in place, in three buffers: each number is the one the plain expression gives
+    ((c + (2 u) b1) - b2, the sum's operands swapped, which leaves it exact), without a new array per operation (it
+    halved the time of a driven rod's slice, `DrivenHistory.slice_nodes`, which runs it in every Newton step)."""
+    u2 = 2.0 * u
+    b1 = np.zeros(c.shape[1:])
+    b2 = np.zeros(c.shape[1:])
+    spare = np.empty(c.shape[1:])
+    for k in range(DEGREE, 0, -1):
+        np.multiply(u2, b1, out=spare)
+        np.add(spare, c[k], out=spare)
+        np.subtract(spare, b2, out=spare)
+        b1, b2, spare = spare, b1, b2
+    return c[0] + u * b1 - b2
 
 
 def _collocate(rates: _Rates, y_a: np.ndarray, a: float, b: float) -> np.ndarray | None:

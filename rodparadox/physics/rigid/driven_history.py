@@ -24,6 +24,10 @@ from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive,
                                              GAUSS_X, Solution, solve, stage_piece)
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
+#: at most this many slices' nodes kept per history (`DrivenHistory.slice_nodes`): a ledger's row reads its slice's
+#: parts, then its centre of energy; a handout's key slice is read twice. A slice is a pure function of (frame, t).
+KEEP_SLICES = 1024
+
 def run_forces(scenario: Scenario) -> "DrivenHistory":
     """The rigid rod of the scenario driven by its forces."""
     scenario.forces.check_pull("rigid")
@@ -50,6 +54,8 @@ class DrivenHistory:
         self._y0 = np.array([st.state(st.tau0)[0] for st in stages])
         self.final_rapidity = float(self._y0[-1, PHI])
         self.driving = Driving(self)
+        self._cut_states = None  # the states where a stage or a step begins (`_cuts`), read on every slice
+        self._slices: dict[tuple, dict[str, np.ndarray]] = {}  # the slices' nodes asked for (`slice_nodes`)
 
     # --- the interface ----------------------------------------------------------------------------------------------
 
@@ -113,6 +119,29 @@ class DrivenHistory:
             out[sel] = self.stages[i].state(tau[sel])
         return out
 
+    def _states_alpha_forces(self, tau: np.ndarray):
+        """`_states(tau)` and `_alpha_forces(tau)` (alpha, F_L), the same numbers, each stage's states computed once:
+        alpha and the forces are functions of the state (`_Stage.alpha`, `_Stage.forces`)."""
+        tau = np.asarray(tau, dtype=float)
+        out = np.empty((len(tau), 7))
+        a, FL = np.zeros(len(tau)), np.zeros(len(tau))
+        k = np.searchsorted(self._tau0, tau, side="right") - 1
+        before = k < 0
+        if np.any(before):
+            y0 = self._y0[0]
+            out[before] = y0
+            out[before, T_] = y0[T_] + tau[before]
+        for i in np.unique(k[~before]):
+            sel = k == i
+            st = self.stages[i]
+            Y = out[sel] = st.state(tau[sel])
+            if isinstance(st, ConstantStage):
+                a[sel], FL[sel] = st.alpha(tau[sel]), st.FL
+            else:
+                F = st.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
+                a[sel], FL[sel] = st.rates.alpha(*F), F[0]
+        return out, a, FL
+
     def _alpha_forces(self, tau: np.ndarray):
         """alpha and (F_L, F_R) at each tau (zero before the first stage)."""
         tau = np.asarray(tau, dtype=float)
@@ -152,13 +181,15 @@ class DrivenHistory:
 
     def _cuts(self, f: float, T: float) -> list[float]:
         """Where the slice meets the normal lines at which a stage or a step begins (units of L), within (0, 1)."""
-        taus = list(self._tau0)
-        for st in self.stages:
-            if isinstance(st, CollocatedStage):
-                taus.extend(st.step_bounds())
-        if not taus:
+        if self._cut_states is None:
+            taus = list(self._tau0)
+            for st in self.stages:
+                if isinstance(st, CollocatedStage):
+                    taus.extend(st.step_bounds())
+            self._cut_states = self._states(np.array(taus)) if taus else np.empty((0, 7))
+        Y = self._cut_states
+        if not len(Y):
             return []
-        Y = self._states(np.array(taus))
         s = np.sinh(Y[:, PHI] - f)
         tf = math.cosh(f) * Y[:, T_] - math.sinh(f) * Y[:, X_]
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # inf, nan: no crossing in (0, 1)
@@ -168,7 +199,18 @@ class DrivenHistory:
     def slice_nodes(self, frame_rapidity: float, t: float) -> dict[str, np.ndarray]:
         """The Gauss-Legendre nodes of the slice t of the frame (units of L): each material point sigma, its weight,
         its rapidity psi in the frame where it crosses the slice, the stress p there (units of M c^2/L), and its x
-        in the frame (the scenario's unit)."""
+        in the frame (the scenario's unit). Kept per slice (`KEEP_SLICES`), read-only."""
+        key = (frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))  # -0.0 apart from 0.0
+        kept = self._slices.get(key)
+        if kept is None:
+            if len(self._slices) >= KEEP_SLICES:
+                self._slices.clear()
+            kept = self._slices[key] = self._slice_nodes(frame_rapidity, t)
+            for array in kept.values():
+                array.flags.writeable = False
+        return dict(kept)
+
+    def _slice_nodes(self, frame_rapidity: float, t: float) -> dict[str, np.ndarray]:
         f, T = frame_rapidity, t / self.L
         cuts = [0.0, *self._cuts(f, T), 1.0]
         edges = sorted(set(np.concatenate([np.linspace(a, b, 3) for a, b in zip(cuts, cuts[1:])])))
@@ -178,8 +220,7 @@ class DrivenHistory:
             w.append(0.5 * (b - a) * GAUSS_W)
         sig, w = np.concatenate(sig), np.concatenate(w)
         tau = self._crossings(sig, f, T)
-        Y = self._states(tau)
-        a, FL, _ = self._alpha_forces(tau)
+        Y, a, FL = self._states_alpha_forces(tau)
         x_s = Y[:, X_] + sig * np.cosh(Y[:, PHI])
         t_s = Y[:, T_] + sig * np.sinh(Y[:, PHI])
         return {"sigma": sig, "weight": w, "psi": Y[:, PHI] - f,
@@ -202,7 +243,7 @@ def _newton_crossing(stage: CollocatedStage, sigma: np.ndarray, f: float, T: flo
     tau = 0.5 * (lo + hi)
     ch, sh = math.cosh(f), math.sinh(f)
     for _ in range(100):
-        Y = stage.state(tau)
+        Y = stage.state(tau, motion_only=True)  # (t, x, phi) alone: the same numbers, 3/7 of the sums
         FL, FR = stage.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
         a = stage.rates.alpha(FL, FR)
         g = ch * Y[:, T_] - sh * Y[:, X_] + sigma * np.sinh(Y[:, PHI] - f) - T
