@@ -207,10 +207,7 @@ class CollocatedStage(_Stage):
         self._starts_list = [st.a for st in steps]
         self._ab_list = [(st.a, st.b) for st in steps]
         self._kept: dict[float, np.ndarray] = {}  # the states of single instants asked for (`state`)
-        # the coefficients degree first, (DEGREE + 1, steps, 7), and the same of (t, x, phi) alone: `state` gathers
-        # each instant's step once into arrays it reads degree by degree
-        self._by_degree = np.ascontiguousarray(self._coef.transpose(1, 0, 2))
-        self._by_degree_txphi = np.ascontiguousarray(self._by_degree[:, :, :PHI + 1])
+        self._coef_motion = np.ascontiguousarray(self._coef[:, :, :PHI + 1])  # (t, x, phi) alone
 
     def state(self, tau, motion_only: bool = False) -> np.ndarray:
         """The state at tau; for an array and `motion_only`, the left end's (t, x, phi) alone (shape (n, 3)), the
@@ -227,7 +224,7 @@ class CollocatedStage(_Stage):
         i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
         a, b = self._ab[i, 0], self._ab[i, 1]
         u = np.clip((2.0 * tau - a - b) / (b - a), -1.0, 1.0)[:, None]
-        return _clenshaw((self._by_degree_txphi if motion_only else self._by_degree)[:, i], u)
+        return _clenshaw((self._coef_motion if motion_only else self._coef)[i], u)
 
     def _state_at(self, tau: float) -> np.ndarray:
         i = min(max(bisect.bisect_right(self._starts_list, tau) - 1, 0), len(self.steps) - 1)
@@ -243,21 +240,22 @@ class CollocatedStage(_Stage):
 
 
 def _clenshaw(c: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """sum_k c[k] T_k(u) by Clenshaw's recurrence, c of shape (DEGREE + 1, n, m), u of shape (n, 1).
+    """sum_k c[:, k] T_k(u) by Clenshaw's recurrence, c of shape (n, DEGREE + 1, m), u of shape (n, 1).
 
     b1 <- c[k] + 2 u b1 - b2 in place, in three buffers: each number is the one the plain expression gives
     ((c + (2 u) b1) - b2, the sum's operands swapped, which leaves it exact), without a new array per operation (it
     halved the time of a driven rod's slice, `DrivenHistory.slice_nodes`, which runs it in every Newton step)."""
     u2 = 2.0 * u
-    b1 = np.zeros(c.shape[1:])
-    b2 = np.zeros(c.shape[1:])
-    spare = np.empty(c.shape[1:])
+    shape = (c.shape[0], c.shape[2])
+    b1 = np.zeros(shape)
+    b2 = np.zeros(shape)
+    spare = np.empty(shape)
     for k in range(DEGREE, 0, -1):
         np.multiply(u2, b1, out=spare)
-        np.add(spare, c[k], out=spare)
+        np.add(spare, c[:, k, :], out=spare)
         np.subtract(spare, b2, out=spare)
         b1, b2, spare = spare, b1, b2
-    return c[0] + u * b1 - b2
+    return c[:, 0, :] + u * b1 - b2
 
 
 def _collocate(rates: _Rates, y_a: np.ndarray, a: float, b: float) -> np.ndarray | None:
@@ -420,6 +418,7 @@ class DrivenArc:
 
     def __init__(self, stage: _Stage, sigma: float, tau0: float, tau1: float, f: float = 0.0, scale: float = 1.0):
         self.stage, self.sigma, self.tau0, self.tau1, self.f, self.scale = stage, sigma, tau0, tau1, f, scale
+        self._last_time = None  # (t, its sign, tau_at_time(t)): a strip reads the event, then the rapidity, at one t
 
     def point(self, tau: float) -> Event:
         y = self.stage.state(tau)[0]
@@ -457,9 +456,22 @@ class DrivenArc:
     def seen_from(self, frame_rapidity: float) -> "DrivenArc":
         return DrivenArc(self.stage, self.sigma, self.tau0, self.tau1, self.f + frame_rapidity, self.scale)
 
+    def _time(self, tau: float) -> float:
+        """`point(tau).t`, the same number, without its two Events (a root's every step reads it)."""
+        y = self.stage.state(tau)[0]
+        k = self.scale
+        x = float(k * (y[X_] + self.sigma * math.cosh(y[PHI])))
+        t = float(k * (y[T_] + self.sigma * math.sinh(y[PHI])))
+        return math.cosh(self.f) * t - math.sinh(self.f) * x
+
     def tau_at_time(self, t: float) -> float:
-        """The tau at which the arc is at time t of its frame (clamped to the arc)."""
-        return _root(lambda tau: self.point(tau).t - t, self.tau0, self.tau1)
+        """The tau at which the arc is at time t of its frame (clamped to the arc); the last one kept."""
+        last = self._last_time
+        if last is not None and last[0] == t and last[1] == math.copysign(1.0, t):
+            return last[2]
+        tau = _root(lambda tau: self._time(tau) - t, self.tau0, self.tau1)
+        self._last_time = (t, math.copysign(1.0, t), tau)
+        return tau
 
     def event_at_time(self, t: float) -> Event:
         return self.point(self.tau_at_time(t))

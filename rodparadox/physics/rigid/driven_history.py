@@ -54,16 +54,20 @@ class DrivenHistory:
         self._y0 = np.array([st.state(st.tau0)[0] for st in stages])
         self.final_rapidity = float(self._y0[-1, PHI])
         self.driving = Driving(self)
+        self._chart = None
         self._cut_states = None  # the states where a stage or a step begins (`_cuts`), read on every slice
         self._slices: dict[tuple, dict[str, np.ndarray]] = {}  # the slices' nodes asked for (`slice_nodes`)
 
     # --- the interface ----------------------------------------------------------------------------------------------
 
     def own_chart(self):
-        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`)."""
-        from rodparadox.physics.rigid.driven_chart import DrivenChart
+        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`),
+        made once per history (it keeps the alpha its clocks read)."""
+        if self._chart is None:
+            from rodparadox.physics.rigid.driven_chart import DrivenChart
 
-        return DrivenChart(self)
+            self._chart = DrivenChart(self)
+        return self._chart
 
     def worldline(self, name: str) -> WorldLine | None:
         if name == "rod_left":
