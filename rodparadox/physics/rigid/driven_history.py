@@ -250,15 +250,16 @@ def _newton_crossing(stage: CollocatedStage, sigma: np.ndarray, f: float, T: flo
         Y = stage.state(tau, motion_only=True)  # (t, x, phi) alone: the same numbers, 3/7 of the sums
         FL, FR = stage.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
         a = stage.rates.alpha(FL, FR)
-        g = ch * Y[:, T_] - sh * Y[:, X_] + sigma * np.sinh(Y[:, PHI] - f) - T
-        dg = (1.0 + a * sigma) * np.cosh(Y[:, PHI] - f)
+        psi = Y[:, PHI] - f
+        g = ch * Y[:, T_] - sh * Y[:, X_] + sigma * np.sinh(psi) - T
+        dg = (1.0 + a * sigma) * np.cosh(psi)
         lo = np.where(g <= 0.0, tau, lo)
         hi = np.where(g >= 0.0, tau, hi)
         new = tau - g / dg
         bad = ~((new > lo) & (new < hi))
         new = np.where(bad, 0.5 * (lo + hi), new)
         new = np.where(g == 0.0, tau, new)
-        done = np.max(np.abs(new - tau)) <= 2e-16 * (np.max(np.abs(tau)) + 1.0)
+        done = np.abs(new - tau).max() <= 2e-16 * (np.abs(tau).max() + 1.0)
         tau = new
         if done:
             break
@@ -271,6 +272,10 @@ class Driving:
     def __init__(self, history: DrivenHistory):
         self.history = history
         self._force_events = None
+        # each end's tau and delivered (E, p) on the slices asked for (a ledger's row reads each twice: alone and in
+        # `total`), KEEP_SLICES of each at most
+        self._end_taus: dict[tuple, float] = {}
+        self._delivered: dict[tuple, EnergyMomentum] = {}
 
     @property
     def forces(self) -> Forces:
@@ -284,12 +289,28 @@ class Driving:
         return math.atanh(self.forces.at(end).frame_velocity(self.history.scenario.v))
 
     def end_tau(self, end: str, frame_rapidity: float, t: float) -> float:
-        h = self.history
-        return float(h._crossings(np.array([0.0 if end == "left" else 1.0]), frame_rapidity, t / h.L)[0])
+        key = (end, frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))
+        kept = self._end_taus.get(key)
+        if kept is None:
+            if len(self._end_taus) >= KEEP_SLICES:
+                self._end_taus.clear()
+            h = self.history
+            kept = self._end_taus[key] = float(h._crossings(np.array([0.0 if end == "left" else 1.0]), frame_rapidity,
+                                                            t / h.L)[0])
+        return kept
 
     def delivered(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The (E, p), in the frame, the agent at `end` delivered up to that end's event on the slice t of the
         frame."""
+        key = (end, frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))
+        kept = self._delivered.get(key)
+        if kept is None:
+            if len(self._delivered) >= KEEP_SLICES:
+                self._delivered.clear()
+            kept = self._delivered[key] = self._delivered_afresh(end, frame_rapidity, t)
+        return kept
+
+    def _delivered_afresh(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
         h = self.history
         if self.forces.at(end) is None:
             return EnergyMomentum(0.0, 0.0, 0.0)
