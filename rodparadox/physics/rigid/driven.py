@@ -521,10 +521,21 @@ class DrivenArc:
         return pts
 
 
+def _end_states(stage: _Stage) -> np.ndarray:
+    """`stage.state([stage.tau0, stage.tau1])`, kept on the stage for its ends: a strip's material points (96 of
+    them) each ask for it, stage by stage. Read-only, as it is shared."""
+    kept = getattr(stage, "_ends", None)
+    if kept is None or kept[0] != (stage.tau0, stage.tau1):
+        states = stage.state([stage.tau0, stage.tau1])
+        states.flags.writeable = False
+        kept = stage._ends = ((stage.tau0, stage.tau1), states)
+    return kept[1]
+
+
 def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
     """The material point sigma (units of L) world-line in S during the stage, for a rod of length `scale`: a Line,
     a HyperbolicArc or a DrivenArc."""
-    y0, y1 = stage.state([stage.tau0, stage.tau1])
+    y0, y1 = _end_states(stage)
     k = scale
     e0 = Event(float(k * (y0[X_] + sigma * math.cosh(y0[PHI]))), float(k * (y0[T_] + sigma * math.sinh(y0[PHI]))))
     e1 = Event(float(k * (y1[X_] + sigma * math.cosh(y1[PHI]))), float(k * (y1[T_] + sigma * math.sinh(y1[PHI]))))
