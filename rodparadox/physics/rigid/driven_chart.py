@@ -53,7 +53,7 @@ class DrivenChart:
         if kept is None:
             if len(self._alphas) >= KEEP_ALPHAS:
                 self._alphas.clear()
-            _, a, _ = self.history._states_alpha_forces(np.array([self._tau(T)]))  # alpha of the state: computed once
+            _, a, _ = self.history._motion_alpha_forces(np.array([self._tau(T)]))  # alpha of the state: computed once
             kept = self._alphas[key] = float(a[0])
         return kept
 

@@ -123,25 +123,27 @@ class DrivenHistory:
             out[sel] = self.stages[i].state(tau[sel])
         return out
 
-    def _states_alpha_forces(self, tau: np.ndarray):
-        """`_states(tau)` and `_alpha_forces(tau)` (alpha, F_L), the same numbers, each stage's states computed once:
-        alpha and the forces are functions of the state (`_Stage.alpha`, `_Stage.forces`)."""
+    def _motion_alpha_forces(self, tau: np.ndarray):
+        """The left end's (t, x, phi) (`_states(tau)[:, :3]`) and `_alpha_forces(tau)`'s alpha and F_L, the same
+        numbers, each stage's states computed once: alpha and the forces are functions of the state (`_Stage.alpha`,
+        `_Stage.forces`)."""
         tau = np.asarray(tau, dtype=float)
-        out = np.empty((len(tau), 7))
+        out = np.empty((len(tau), PHI + 1))
         a, FL = np.zeros(len(tau)), np.zeros(len(tau))
         k = np.searchsorted(self._tau0, tau, side="right") - 1
         before = k < 0
         if np.any(before):
-            y0 = self._y0[0]
+            y0 = self._y0[0, :PHI + 1]
             out[before] = y0
             out[before, T_] = y0[T_] + tau[before]
         for i in np.unique(k[~before]):
             sel = k == i
             st = self.stages[i]
-            Y = out[sel] = st.state(tau[sel])
             if isinstance(st, ConstantStage):
+                out[sel] = st.state(tau[sel])[:, :PHI + 1]
                 a[sel], FL[sel] = st.alpha(tau[sel]), st.FL
             else:
+                Y = out[sel] = st.state(tau[sel], motion_only=True)
                 F = st.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
                 a[sel], FL[sel] = st.rates.alpha(*F), F[0]
         return out, a, FL
@@ -224,7 +226,7 @@ class DrivenHistory:
             w.append(0.5 * (b - a) * GAUSS_W)
         sig, w = np.concatenate(sig), np.concatenate(w)
         tau = self._crossings(sig, f, T)
-        Y, a, FL = self._states_alpha_forces(tau)
+        Y, a, FL = self._motion_alpha_forces(tau)
         x_s = Y[:, X_] + sig * np.cosh(Y[:, PHI])
         t_s = Y[:, T_] + sig * np.sinh(Y[:, PHI])
         return {"sigma": sig, "weight": w, "psi": Y[:, PHI] - f,
