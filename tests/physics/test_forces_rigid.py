@@ -399,3 +399,29 @@ def test_a_kept_instants_state_is_the_state_computed_afresh_and_a_callers_change
     assert np.array_equal(again, stage._state_at(tau)) and again[0, 0] != first[0, 0]
     # and the one instant agrees with the same instant read among many (the steps' sums, within rounding)
     assert np.allclose(again[0], stage.state(np.array([tau, stage.tau0]))[0], rtol=1e-13, atol=1e-15)
+
+
+def test_what_a_driven_rod_keeps_per_slice_is_what_it_computes_afresh():
+    """A driven rod keeps each slice's nodes, each end's delivered (E, p), its chart's alpha and an arc's last root
+    (a ledger row, a handout's strips and clocks read them again): a kept one is the one computed afresh."""
+    from rodparadox.physics.rigid.driven import DrivenArc
+
+    h = run_rod(load("sears_moving"))
+    f, t = -math.atanh(V), 1.1
+    first = h.slice_nodes(f, t)
+    assert h.slice_nodes(f, t)["x"] is first["x"] and not first["x"].flags.writeable
+    fresh = h._slice_nodes(f, t)
+    assert all(np.array_equal(first[k], fresh[k]) for k in fresh)
+    assert h.slice_nodes(f, -0.0)["x"] is not h.slice_nodes(f, 0.0)["x"]  # -0.0 kept apart from 0.0
+    assert h.driving.delivered("left", f, t) == h.driving.delivered("left", f, t) == \
+        h.driving._delivered_afresh("left", f, t)
+    chart = h.own_chart()
+    assert chart is h.own_chart() and chart.alpha(1.3) == chart.alpha(1.3) == type(chart)(h).alpha(1.3)
+    arc = next(p for p in h.material_worldline(0.4).seen_from(f).segments if isinstance(p, DrivenArc))
+    t_mid = 0.5 * (arc.start.t + arc.end.t)
+    tau = arc.tau_at_time(t_mid)
+    assert arc.tau_at_time(t_mid) == tau == DrivenArc(arc.stage, arc.sigma, arc.tau0, arc.tau1, arc.f,
+                                                      arc.scale).tau_at_time(t_mid)
+    # the crossing's Newton steps read (t, x, phi) alone: the same numbers as the whole state's
+    taus = np.linspace(arc.stage.tau0, arc.stage.tau1, 7)
+    assert np.array_equal(arc.stage.state(taus, motion_only=True), arc.stage.state(taus)[:, :3])

@@ -207,8 +207,12 @@ class CollocatedStage(_Stage):
         self._starts_list = [st.a for st in steps]
         self._ab_list = [(st.a, st.b) for st in steps]
         self._kept: dict[float, np.ndarray] = {}  # the states of single instants asked for (`state`)
+        self._coef_motion = np.ascontiguousarray(self._coef[:, :, :PHI + 1])  # (t, x, phi) alone
+        self._later_starts = self._starts[1:]  # an instant's step: how many of these it has reached
 
-    def state(self, tau) -> np.ndarray:
+    def state(self, tau, motion_only: bool = False) -> np.ndarray:
+        """The state at tau; for an array and `motion_only`, the left end's (t, x, phi) alone (shape (n, 3)), the
+        same numbers as the first three columns of the whole state (each column's sums are its own)."""
         if np.ndim(tau) == 0:  # one instant: the Chebyshev polynomials by their recurrence, then one product
             tau = float(tau)
             kept = self._kept.get(tau)
@@ -218,15 +222,12 @@ class CollocatedStage(_Stage):
                     self._kept.clear()
             return kept.copy()
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
-        i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
+        # the step (the last one starting at or before tau, the first before them all) and u clipped to [-1, 1], by
+        # ufuncs: np.clip's Python wrapper cost a tenth of a slice's crossing
+        i = np.searchsorted(self._later_starts, tau, side="right")
         a, b = self._ab[i, 0], self._ab[i, 1]
-        u = np.clip((2.0 * tau - a - b) / (b - a), -1.0, 1.0)[:, None]
-        c = self._coef[i]
-        b1 = np.zeros((len(tau), 7))
-        b2 = np.zeros((len(tau), 7))
-        for k in range(DEGREE, 0, -1):
-            b1, b2 = c[:, k, :] + 2.0 * u * b1 - b2, b1
-        return c[:, 0, :] + u * b1 - b2
+        u = np.minimum(np.maximum((2.0 * tau - a - b) / (b - a), -1.0), 1.0)[:, None]
+        return _clenshaw((self._coef_motion if motion_only else self._coef)[i], u)
 
     def _state_at(self, tau: float) -> np.ndarray:
         i = min(max(bisect.bisect_right(self._starts_list, tau) - 1, 0), len(self.steps) - 1)
@@ -239,6 +240,25 @@ class CollocatedStage(_Stage):
 
     def step_bounds(self) -> list[float]:
         return [st.a for st in self.steps[1:]]
+
+
+def _clenshaw(c: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """sum_k c[:, k] T_k(u) by Clenshaw's recurrence, c of shape (n, DEGREE + 1, m), u of shape (n, 1).
+
+    b1 <- c[k] + 2 u b1 - b2 in place, in three buffers: each number is the one the plain expression gives
+    ((c + (2 u) b1) - b2, the sum's operands swapped, which leaves it exact), without a new array per operation (it
+    halved the time of a driven rod's slice, `DrivenHistory.slice_nodes`, which runs it in every Newton step)."""
+    u2 = 2.0 * u
+    shape = (c.shape[0], c.shape[2])
+    b1 = np.zeros(shape)
+    b2 = np.zeros(shape)
+    spare = np.empty(shape)
+    for k in range(DEGREE, 0, -1):
+        np.multiply(u2, b1, out=spare)
+        np.add(spare, c[:, k, :], out=spare)
+        np.subtract(spare, b2, out=spare)
+        b1, b2, spare = spare, b1, b2
+    return c[:, 0, :] + u * b1 - b2
 
 
 def _collocate(rates: _Rates, y_a: np.ndarray, a: float, b: float) -> np.ndarray | None:
@@ -401,6 +421,7 @@ class DrivenArc:
 
     def __init__(self, stage: _Stage, sigma: float, tau0: float, tau1: float, f: float = 0.0, scale: float = 1.0):
         self.stage, self.sigma, self.tau0, self.tau1, self.f, self.scale = stage, sigma, tau0, tau1, f, scale
+        self._last_time = None  # (t, its sign, tau_at_time(t)): a strip reads the event, then the rapidity, at one t
 
     def point(self, tau: float) -> Event:
         y = self.stage.state(tau)[0]
@@ -438,9 +459,22 @@ class DrivenArc:
     def seen_from(self, frame_rapidity: float) -> "DrivenArc":
         return DrivenArc(self.stage, self.sigma, self.tau0, self.tau1, self.f + frame_rapidity, self.scale)
 
+    def _time(self, tau: float) -> float:
+        """`point(tau).t`, the same number, without its two Events (a root's every step reads it)."""
+        y = self.stage.state(tau)[0]
+        k = self.scale
+        x = float(k * (y[X_] + self.sigma * math.cosh(y[PHI])))
+        t = float(k * (y[T_] + self.sigma * math.sinh(y[PHI])))
+        return math.cosh(self.f) * t - math.sinh(self.f) * x
+
     def tau_at_time(self, t: float) -> float:
-        """The tau at which the arc is at time t of its frame (clamped to the arc)."""
-        return _root(lambda tau: self.point(tau).t - t, self.tau0, self.tau1)
+        """The tau at which the arc is at time t of its frame (clamped to the arc); the last one kept."""
+        last = self._last_time
+        if last is not None and last[0] == t and last[1] == math.copysign(1.0, t):
+            return last[2]
+        tau = _root(lambda tau: self._time(tau) - t, self.tau0, self.tau1)
+        self._last_time = (t, math.copysign(1.0, t), tau)
+        return tau
 
     def event_at_time(self, t: float) -> Event:
         return self.point(self.tau_at_time(t))
@@ -487,10 +521,21 @@ class DrivenArc:
         return pts
 
 
+def _end_states(stage: _Stage) -> np.ndarray:
+    """`stage.state([stage.tau0, stage.tau1])`, kept on the stage for its ends: a strip's material points (96 of
+    them) each ask for it, stage by stage. Read-only, as it is shared."""
+    kept = getattr(stage, "_ends", None)
+    if kept is None or kept[0] != (stage.tau0, stage.tau1):
+        states = stage.state([stage.tau0, stage.tau1])
+        states.flags.writeable = False
+        kept = stage._ends = ((stage.tau0, stage.tau1), states)
+    return kept[1]
+
+
 def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
     """The material point sigma (units of L) world-line in S during the stage, for a rod of length `scale`: a Line,
     a HyperbolicArc or a DrivenArc."""
-    y0, y1 = stage.state([stage.tau0, stage.tau1])
+    y0, y1 = _end_states(stage)
     k = scale
     e0 = Event(float(k * (y0[X_] + sigma * math.cosh(y0[PHI]))), float(k * (y0[T_] + sigma * math.sinh(y0[PHI]))))
     e1 = Event(float(k * (y1[X_] + sigma * math.cosh(y1[PHI]))), float(k * (y1[T_] + sigma * math.sinh(y1[PHI]))))
