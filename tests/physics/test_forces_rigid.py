@@ -404,7 +404,7 @@ def test_a_kept_instants_state_is_the_state_computed_afresh_and_a_callers_change
 def test_what_a_driven_rod_keeps_per_slice_is_what_it_computes_afresh():
     """A driven rod keeps each slice's nodes, each end's delivered (E, p), its chart's alpha and an arc's last root
     (a ledger row, a handout's strips and clocks read them again): a kept one is the one computed afresh."""
-    from rodparadox.physics.rigid.driven import DrivenArc
+    from rodparadox.physics.rigid.driven_worldlines import DrivenArc
 
     h = run_rod(load("sears_moving"))
     f, t = -math.atanh(V), 1.1

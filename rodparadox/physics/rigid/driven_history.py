@@ -21,7 +21,8 @@ from rodparadox.physics.forces import ENDS, ForceProfile, Forces, centre_velocit
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, CollocatedStage, ConstantStage, GAUSS_W,
-                                             GAUSS_X, Solution, solve, stage_piece)
+                                             GAUSS_X, Solution, solve)
+from rodparadox.physics.rigid.driven_worldlines import stage_piece
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
 
 #: at most this many slices' nodes kept per history (`DrivenHistory.slice_nodes`): a ledger's row reads its slice's
@@ -125,8 +126,8 @@ class DrivenHistory:
 
     def _motion_alpha_forces(self, tau: np.ndarray):
         """The left end's (t, x, phi) (`_states(tau)[:, :3]`) and `_alpha_forces(tau)`'s alpha and F_L, the same
-        numbers, each stage's states computed once: alpha and the forces are functions of the state (`_Stage.alpha`,
-        `_Stage.forces`)."""
+        numbers, each stage's states computed once: alpha and the forces are functions of the state (`Stage.alpha`,
+        `Stage.forces`)."""
         tau = np.asarray(tau, dtype=float)
         out = np.empty((len(tau), PHI + 1))
         a, FL = np.zeros(len(tau)), np.zeros(len(tau))
