@@ -381,12 +381,28 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
             d = drives[end]
             if _end_time(d, Y[-1], L) >= target:
                 hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
+            elif (k := _first_reaching(d, Y, target, L)) is not None:  # reached inside the step, then left behind
+                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a,
+                                        a + 0.5 * (b - a) * (1.0 + _X[k])))
         if hits:
             probe.tau1 = min(hits)
             return probe
         a, y_a = b, Y[-1]
         h = 2.0 * h if halvings == 0 else h
         halvings = 0
+
+
+def _first_reaching(drive: Drive, Y: np.ndarray, target: float, L: float) -> int | None:
+    """The first Lobatto point of a step at which the end's time has reached `target`, or None.
+
+    A step is solved with the stage's pieces of the profiles beyond the stage's end (the step is then cut at the
+    first event), and there an extrapolated force can be strong enough for the right end to lie beyond the rod's
+    horizon (1 + alpha L < 0), where its time runs backwards: an event passed inside the step may no longer show at
+    its end (a step of a force profile in S' was missed so, and its end delivered 0.89 of its impulse)."""
+    for k in range(1, len(Y) - 1):
+        if _end_time(drive, Y[k], L) >= target:
+            return k
+    return None
 
 
 def rising_root(g, lo: float, hi: float) -> float:
