@@ -66,8 +66,11 @@ def strip_at(history: RodHistory, frame: Frame, t: float, flash: float, points: 
         if material is None:
             material = material_points(history, frame, points)
         sigmas = np.linspace(0.0, history.scenario.L, len(material))
-        x = np.array([w.event_at_time(t).x for w in material])
-        rapidity = np.array([w.rapidity_at_time(t) for w in material])
+        # each world-line's event and rapidity with its ends and piece found once (the same numbers as
+        # `event_at_time`, `rapidity_at_time`)
+        both = [w.event_and_rapidity_at_time(t) for w in material]
+        x = np.array([e.x for e, _ in both])
+        rapidity = np.array([r for _, r in both])
     particles = tuple((name, history.worldline(name).seen_from(eta).event_at_time(t).x)
                       for name in ("A", "B") if history.worldline(name) is not None)
     lit = [i for i in history.impacts if abs(i.event.time_in(eta) - t) <= flash]

@@ -9,6 +9,7 @@ to row), centred on the rod at its instant, with its own ticks.
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 from typing import Sequence
 
@@ -71,11 +72,18 @@ def strips_at(history: RodHistory, frame: Frame, times: tuple[float, ...], flash
     """The strips (`physics.snapshot.strip_at`) of these instants, kept: a handout measures a block of strips for
     every row count it tries, then draws it, and its caption says whether the rows follow the rod
     (`strips_follow_rod`). Their arrays are made read-only, as they are shared."""
-    strips = tuple(strip_at(history, frame, t, flash) for t in times)
-    for strip in strips:
-        for array in (strip.sigma, strip.x, strip.velocity):
-            array.flags.writeable = False
-    return strips
+    return tuple(_strip_at(history, frame, t, flash, math.copysign(1.0, t)) for t in times)
+
+
+@lru_cache(maxsize=512, typed=True)
+def _strip_at(history: RodHistory, frame: Frame, t: float, flash: float, sign: float) -> Strip:
+    """One instant's strip, kept: the blocks of one frame share instants (a block measured, its partner's rows, the
+    caption's question), each asked for as a whole (a handout of the forces presets read a third of its strips
+    twice). Its arrays are made read-only, as it is shared. `sign`: t's, keeping -0.0 apart from 0.0."""
+    strip = strip_at(history, frame, t, flash)
+    for array in (strip.sigma, strip.x, strip.velocity):
+        array.flags.writeable = False
+    return strip
 
 
 def outside(strip: Strip, window: tuple[float, float], L: float) -> tuple[tuple[str, str], ...]:

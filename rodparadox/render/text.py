@@ -172,7 +172,7 @@ def text_size(text: str, size: float, italic: bool = False, ismath: bool | None 
                      tuple(value(rc, "font.sans-serif")), tuple(value(rc, "font.serif")))
 
 
-@lru_cache(maxsize=2048)  # a figure measures a few hundred texts; bounded, as a long-lived process draws many
+@lru_cache(maxsize=8192)  # a figure measures a few hundred texts, a handout thousands; bounded for a long-lived process
 def _measured(text: str, size: float, italic: bool, ismath: bool, bold: bool, *fonts) -> tuple[float, float, float]:
     """`text_size` for the current rcParams, whose font settings are `fonts` (part of the cache key only)."""
     prop = FontProperties(size=size, style="italic" if italic else "normal", weight="bold" if bold else "normal")

@@ -70,16 +70,22 @@ def leaks(fact: Fact, text: str, latex: bool = False, ascii_digits: bool = False
     """The forms of the fact found in the text: a number standing alone (no digit or point-digit either side), a
     phrase anywhere; in LaTeX each form as `tex.prose` writes it; with `ascii_digits` (a PDF's text) B₁ as B1."""
     text = text.replace("’", "'")  # the pages set every apostrophe typographic: either is the same word
-    return [form for form in fact.forms if _pattern(form, fact.number, latex, ascii_digits).search(text)]
+    found = []
+    for form in fact.forms:
+        written, pattern = _pattern(form, fact.number, latex, ascii_digits)
+        if written in text and pattern.search(text):  # the plain substring first: a regex opening with a
+            found.append(form)                         # look-behind scans the text character by character
+    return found
 
 
 @functools.lru_cache(maxsize=None)
-def _pattern(form: str, number: bool, latex: bool, ascii_digits: bool) -> re.Pattern:
-    """A fact's form as `leaks` searches for it, compiled once (the search meets each form thousands of times)."""
+def _pattern(form: str, number: bool, latex: bool, ascii_digits: bool) -> tuple[str, re.Pattern]:
+    """A fact's form as `leaks` searches for it (as written, and compiled once: the search meets each form
+    thousands of times)."""
     form = form.replace("’", "'")
     written = prose(form) if latex else _ascii(form) if ascii_digits else form
-    return re.compile(rf"(?<![0-9.]){re.escape(written)}(?![0-9]|\.[0-9])" if number else
-                      re.escape(written) + ("(?![′'])" if not latex else r"(?!')"))  # "in S" is not "in S′"
+    return written, re.compile(rf"(?<![0-9.]){re.escape(written)}(?![0-9]|\.[0-9])" if number else
+                               re.escape(written) + ("(?![′'])" if not latex else r"(?!')"))  # "in S" is not "in S′"
 
 
 def _page_texts(figures) -> list[str]:

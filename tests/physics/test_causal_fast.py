@@ -87,3 +87,34 @@ def test_the_stress_part_is_the_stress_of_the_material_lines(f, t):
     assert stress.E == pytest.approx(E, abs=1.5e-2 * scale) and stress.p == pytest.approx(p, abs=1.5e-2 * scale)
     rod = h.rod_energy_momentum(f, t)
     assert (matter.E + stress.E, matter.p + stress.p) == pytest.approx((rod.E, rod.p), abs=1e-14)
+
+
+def test_the_shortcuts_give_the_general_paths_floats_bit_for_bit():
+    """The chart map's shortcuts (a run's pieces read once for two results, a numpy scalar read as a float) give
+    the very floats of the general paths: `Arrays.piece_both` those of `piece_r` and `piece_primitive`, a table's
+    `both` its `r` and `m`, a(u) at np.float64 that of `integrals` at a float."""
+    h = causal_history("unequal_masses", 0.97)  # long contacts: solved pieces read through chains of views
+    sol, arrays = h.solution, h.arrays
+    s = np.linspace(sol.plus.starts[0] - 1.0, sol.plus.tail_start + 5.0, 301)
+    for invariant in (sol.plus, sol.minus):
+        for piece in invariant.pieces:
+            at = np.clip(s, piece.lo, piece.hi)
+            for plus in (True, False):
+                r, primitive = arrays.piece_both(piece, at, plus)
+                assert np.array_equal(r, arrays.piece_r(piece, at))
+                assert np.array_equal(primitive, arrays.piece_primitive(piece, at, plus))
+    tables = h.chart_tables(s[0], s[-1])
+    r, m = tables.plus.both(s)
+    assert np.array_equal(r, tables.plus.r(s)) and np.array_equal(m, tables.plus.m(s))
+    fresh = type(sol)(sol.L, sol.plus, sol.minus, sol.events, sol.riders)  # an empty memo of a and b
+    assert [fresh.a(u) for u in s] == [-0.5 * sol.L + sol.plus.integrals(u)[0] for u in s.tolist()]
+
+
+def test_the_fields_on_their_grid_are_read_once_per_history():
+    """`extremes._chart_extremes` is kept per history (both ranges read it): a hit is what a fresh reading gives."""
+    from rodparadox.physics.causal.extremes import _chart_extremes
+
+    h = causal_history("fig1")
+    kept = _chart_extremes(h)
+    assert _chart_extremes(h) is kept
+    assert all(np.array_equal(a, b) for a, b in zip(kept, _chart_extremes.__wrapped__(h)))

@@ -315,6 +315,28 @@ def test_a_tiny_constant_force_is_uniform_motion_not_lost_digits():
     assert len(h.stages) == 3 and close(h.driving.delivered("right", 0.0, 9.0).p, -right.area())
 
 
+def test_an_event_passed_inside_a_step_is_not_missed_where_the_extrapolated_force_turns_the_end_back():
+    """Found by hypothesis: a left pull falling fast past its piece's end (extrapolated over the step, beyond the
+    stage's end, -0.75 and falling) put the right end beyond the rod's horizon by the step's end, where its time
+    ran backwards below the step force's start in S'; the right force's start was missed, the stage ran on with it
+    off, and the right end delivered -0.887 of its impulse of 1. Now: each end's events in order, each impulse whole,
+    the right force switching on at its own start (t' = 0 at the right end, to rounding)."""
+    left = ForceProfile("points", points=((-0.5, 1.0), (0.0, -0.75), (0.5, 0.0), (1.0, 0.0), (2.0, 0.0)), frame=0.5,
+                        key="forces.left")
+    right = ForceProfile("step", peak=1.0, start=0.0, duration=1.0, frame="moving", key="forces.right")
+    h = run_rod(Scenario("missed", 0.5, (), forces=Forces(left, right)))
+    for end, profile in h.driving.profiles():
+        g = h.driving.frame_rapidity(end)
+        assert close(h.driving.delivered(end, g, 1e3).p, (1 if end == "left" else -1) * profile.area(), rel=1e-12)
+    # the right end's time in S' at the end of the first stage is its force's start: the event the step passed
+    from rodparadox.physics.rigid.driven import PHI, T_, X_
+    first = h.stages[0]
+    t0, x0, phi = (float(first.state(first.tau1)[0][k]) for k in (T_, X_, PHI))
+    t_right, x_right = t0 + math.sinh(phi), x0 + math.cosh(phi)  # L = 1: the normal line's far end
+    gamma = 1 / math.sqrt(1 - 0.5 ** 2)  # S' moves at -v relative to S (the rod at rest in S moves at +v in it)
+    assert abs(gamma * (t_right + 0.5 * x_right)) <= 1e-12
+
+
 def _independent_in_frame(profiles, v_frame_rapidity, L, tau_end, h=2e-3):
     """An independent solution, in the frame where the profiles are timed (rapidity g relative to S): the rod
     starts at rest in S, so at rapidity -g there; the same law of motion, integrated by classical RK4 in the left
@@ -399,3 +421,29 @@ def test_a_kept_instants_state_is_the_state_computed_afresh_and_a_callers_change
     assert np.array_equal(again, stage._state_at(tau)) and again[0, 0] != first[0, 0]
     # and the one instant agrees with the same instant read among many (the steps' sums, within rounding)
     assert np.allclose(again[0], stage.state(np.array([tau, stage.tau0]))[0], rtol=1e-13, atol=1e-15)
+
+
+def test_what_a_driven_rod_keeps_per_slice_is_what_it_computes_afresh():
+    """A driven rod keeps each slice's nodes, each end's delivered (E, p), its chart's alpha and an arc's last root
+    (a ledger row, a handout's strips and clocks read them again): a kept one is the one computed afresh."""
+    from rodparadox.physics.rigid.driven_worldlines import DrivenArc
+
+    h = run_rod(load("sears_moving"))
+    f, t = -math.atanh(V), 1.1
+    first = h.slice_nodes(f, t)
+    assert h.slice_nodes(f, t)["x"] is first["x"] and not first["x"].flags.writeable
+    fresh = h._slice_nodes(f, t)
+    assert all(np.array_equal(first[k], fresh[k]) for k in fresh)
+    assert h.slice_nodes(f, -0.0)["x"] is not h.slice_nodes(f, 0.0)["x"]  # -0.0 kept apart from 0.0
+    assert h.driving.delivered("left", f, t) == h.driving.delivered("left", f, t) == \
+        h.driving._delivered_afresh("left", f, t)
+    chart = h.own_chart()
+    assert chart is h.own_chart() and chart.alpha(1.3) == chart.alpha(1.3) == type(chart)(h).alpha(1.3)
+    arc = next(p for p in h.material_worldline(0.4).seen_from(f).segments if isinstance(p, DrivenArc))
+    t_mid = 0.5 * (arc.start.t + arc.end.t)
+    tau = arc.tau_at_time(t_mid)
+    assert arc.tau_at_time(t_mid) == tau == DrivenArc(arc.stage, arc.sigma, arc.tau0, arc.tau1, arc.f,
+                                                      arc.scale).tau_at_time(t_mid)
+    # the crossing's Newton steps read (t, x, phi) alone: the same numbers as the whole state's
+    taus = np.linspace(arc.stage.tau0, arc.stage.tau1, 7)
+    assert np.array_equal(arc.stage.state(taus, motion_only=True), arc.stage.state(taus)[:, :3])

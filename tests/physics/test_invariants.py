@@ -637,14 +637,19 @@ def check_scaling(history: History, k: float) -> None:
         assert n1 == n2 and e2.x / kL == pytest.approx(e1.x / L, rel=rel, abs=rel)
 
 
-def polyline_distance(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
-    """Euclidean distance in the (x, t) plane of each point to the polyline."""
+def polyline_distance(points: np.ndarray, polyline: np.ndarray, window: int = 3) -> np.ndarray:
+    """Euclidean distance in the (x, t) plane of each point to the polyline, both running forward in time (a
+    world-line): each point is measured against the segment spanning its time and `window` segments either side.
+    Leaving segments out can only lengthen a distance, so a check that passes with these passes with all (the
+    whole product of 3001 points and every segment took 2.7 s of the suite)."""
     a, b = polyline[:-1], polyline[1:]
     d = b - a
     length2 = np.maximum((d * d).sum(axis=1), 1e-300)
-    rel = points[:, None, :] - a[None, :, :]
-    f = np.clip((rel * d[None]).sum(axis=2) / length2[None], 0.0, 1.0)
-    nearest = a[None] + f[..., None] * d[None]
+    k = np.clip(np.searchsorted(polyline[:, 1], points[:, 1]) - 1, 0, len(a) - 1)
+    near = np.clip(k[:, None] + np.arange(-window, window + 1)[None, :], 0, len(a) - 1)  # (points, 2 window + 1)
+    rel = points[:, None, :] - a[near]
+    f = np.clip((rel * d[near]).sum(axis=2) / length2[near], 0.0, 1.0)
+    nearest = a[near] + f[..., None] * d[near]
     return np.sqrt(((points[:, None, :] - nearest) ** 2).sum(axis=2)).min(axis=1)
 
 

@@ -99,12 +99,24 @@ def _dense(points: np.ndarray, step: float) -> np.ndarray:
 
 
 def _least_distance(a: np.ndarray, b: np.ndarray, step: float = 0.3) -> float:
-    """Brute force: the least distance between two polylines given in display points, within step / 2."""
+    """Brute force: the least distance between two polylines given in display points, within step / 2.
+
+    Every pair of the resampled points is a candidate, but only pairs less than an upper bound apart in y can be the
+    closest: `bound` is the distance of an actual pair (each point of a to the point of b nearest it in y), and each
+    point of a is compared with the points of b within `bound` of it in y. The closest pair is among those, so the
+    least distance is the very float the whole product gives (which took 1.2 s of the suite)."""
     a, b = _dense(a, step), _dense(b, step)
-    best = np.inf
-    for chunk in np.array_split(a, max(1, len(a) * len(b) // 2_000_000 + 1)):
-        best = min(best, float(np.sqrt(((chunk[:, None, :] - b[None, :, :]) ** 2).sum(2).min())))
-    return best
+    b = b[np.argsort(b[:, 1], kind="stable")]
+    k = np.clip(np.searchsorted(b[:, 1], a[:, 1]), 0, len(b) - 1)
+    bound = float(np.sqrt(((a - b[k]) ** 2).sum(1)).min())
+    lo = np.searchsorted(b[:, 1], a[:, 1] - bound, side="left")
+    hi = np.searchsorted(b[:, 1], a[:, 1] + bound, side="right")
+    width = int((hi - lo).max())
+    index = lo[:, None] + np.arange(max(width, 1))[None, :]
+    inside = index < hi[:, None]
+    near = b[np.minimum(index, len(b) - 1)]
+    d2 = np.where(inside, ((a[:, None, :] - near) ** 2).sum(2), np.inf)
+    return min(bound, float(np.sqrt(d2.min())))
 
 
 def _on_page(ax, points: np.ndarray) -> np.ndarray:

@@ -1,11 +1,13 @@
-"""A PDF's font subsets are made once per process inside the package's PDF writers, and the files keep their bytes."""
+"""A PDF's font subsets and text layouts are made once per process inside the package's PDF writers, and the files
+keep their bytes."""
 
 from __future__ import annotations
 
 import io
 
 import pytest
-from matplotlib.backends import _backend_pdf_ps
+from matplotlib import _text_helpers
+from matplotlib.backends import _backend_pdf_ps, backend_pdf
 from matplotlib.figure import Figure
 
 from rodparadox.render import pdf_fonts
@@ -38,6 +40,23 @@ def test_a_kept_subset_gives_the_bytes_a_fresh_one_gives_and_is_made_once():
     assert _matplotlibs_own(_figure("Kept glyphs: qwz")) == first
     other = figure_bytes(_figure("Other glyphs: jk"), "pdf")  # other glyphs: another subset, other bytes
     assert other != first and other == _matplotlibs_own(_figure("Other glyphs: jk"))
+
+
+@pytest.mark.skipif(not pdf_fonts._LAYOUT_USABLE, reason="this matplotlib's PDF text drawing is not the one expected")
+def test_a_kept_layout_gives_the_bytes_a_fresh_one_gives_at_every_size():
+    """The same words at three sizes and kerned pairs (AV, To), drawn twice: the second drawing takes the kept
+    layouts, and both are what matplotlib writes laying out every text itself."""
+    def figure() -> Figure:
+        f = Figure(figsize=(3, 2))
+        for k, size in enumerate((7, 10, 10.5)):
+            f.text(0.05, 0.1 + 0.3 * k, "AVAST To Wave: kept layout", size=size)
+        return f
+
+    first = figure_bytes(figure(), "pdf")
+    kept = pdf_fonts.kept_layouts()
+    assert kept >= 3 or kept == pdf_fonts.KEEP_LAYOUTS
+    assert figure_bytes(figure(), "pdf") == first == _matplotlibs_own(figure())
+    assert backend_pdf._text_helpers is _text_helpers and "_get_font_ttf" not in vars(backend_pdf.RendererPdf)
 
 
 def test_matplotlibs_other_users_get_its_own_functions():

@@ -236,3 +236,16 @@ def render_size_fits(h, frame, times) -> bool:
     with style_context("print"):
         render.draw_strips_into(Figure(figsize=(w / 72 + 0.01, hh / 72 + 0.01), dpi=72), h, frame, times, "print")
     return True
+
+
+def test_a_kept_instants_strip_is_the_strip_computed_afresh():
+    """`strips_at` keeps each instant's strip: blocks sharing an instant share it, read-only, and it is the strip
+    `strip_at` computes afresh."""
+    from rodparadox.render.strip_windows import strips_at
+
+    h, frame = history(), Frame("moving", -0.6)
+    first, second = strips_at(h, frame, (0.5, 1.5), 0.01), strips_at(h, frame, (1.5, 2.5), 0.01)
+    assert first[1] is second[0] and not first[1].x.flags.writeable
+    fresh = strip_at(h, frame, 1.5, 0.01)
+    assert np.array_equal(first[1].x, fresh.x) and np.array_equal(first[1].velocity, fresh.velocity)
+    assert first[1].t == fresh.t and first[1].particles == fresh.particles

@@ -20,8 +20,11 @@ FEW = 24
 
 def _clenshaw(coef: np.ndarray, k: np.ndarray, x: np.ndarray) -> np.ndarray:
     """sum_j coef[j, k] T_j(x): each point x with its own column k of coefficients (`ode._clenshaw` for arrays; a
-    few points one by one, in plain floats: numpy's cost per call would dominate)."""
+    few points one by one, in plain floats: numpy's cost per call would dominate). `coef` (degrees, steps), or
+    (degrees, m, steps) for m sums at each point at once, (m, points)."""
     if len(x) <= FEW:
+        if coef.ndim == 3:
+            return np.array([_clenshaw(coef[:, i, :], k, x) for i in range(coef.shape[1])])
         out = []
         for column, xi in zip(coef.T[k].tolist(), x.tolist()):
             b1 = b2 = 0.0
@@ -30,11 +33,18 @@ def _clenshaw(coef: np.ndarray, k: np.ndarray, x: np.ndarray) -> np.ndarray:
                 b1, b2 = c + twice * b1 - b2, b1
             out.append(column[0] + xi * b1 - b2)
         return np.array(out)
-    b1, b2 = np.zeros_like(x), np.zeros_like(x)
+    # the same operations in the same order as b1, b2 = c_j + 2 x b1 - b2, b1, with the points' columns gathered
+    # once and no array made per operation: numpy's cost per call dominates these short arrays (measured: a third
+    # of the time of the whole-array path)
+    rows = coef[..., k]
     twice = 2.0 * x
+    b1, b2, spare = np.zeros(rows.shape[1:]), np.zeros(rows.shape[1:]), np.empty(rows.shape[1:])
     for j in range(coef.shape[0] - 1, 0, -1):
-        b1, b2 = coef[j, k] + twice * b1 - b2, b1
-    return coef[0, k] + x * b1 - b2
+        np.multiply(twice, b1, out=spare)
+        np.add(rows[j], spare, out=spare)
+        np.subtract(spare, b2, out=spare)
+        b1, b2, spare = spare, b1, b2
+    return rows[0] + x * b1 - b2
 
 
 class _Steps:
@@ -51,6 +61,11 @@ class _Steps:
         self.plus = np.array([st.plus for st in steps]).T.copy()
         self.minus = np.array([st.minus for st in steps]).T.copy()
         self.out = np.array([st.out for st in steps]).T.copy() if steps[0].out is not None else None
+        # psi with each primitive, summed together (`Arrays.piece_both`): psi has one degree fewer, its top
+        # coefficient 0 leaves Clenshaw's sums at their start (0 + 2x 0 - 0 = +0), so its values are the same floats
+        padded = np.vstack([self.psi, np.zeros((self.plus.shape[0] - self.psi.shape[0], len(steps)))])
+        self.psi_plus = np.ascontiguousarray(np.stack([padded, self.plus], axis=1))
+        self.psi_minus = np.ascontiguousarray(np.stack([padded, self.minus], axis=1))
 
     def place(self, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Each s's step and its place in the step's window [-1, 1] (clipped, as `ode.Step.x`)."""
@@ -109,6 +124,32 @@ class Arrays:
         coef, start = (steps.plus, steps.plus0) if plus else (steps.minus, steps.minus0)
         return start[k] + 0.5 * (steps.b[k] - steps.a[k]) * _clenshaw(coef, k, x)
 
+    def piece_both(self, piece, s: np.ndarray, plus: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """`piece_r` and `piece_primitive` at once, the same floats: a step is placed, a contact's q and a view's
+        base read once for both (the chart map reads both at every step of every search)."""
+        form = piece.form
+        if form == "const":
+            return np.full_like(s, piece.c), np.exp(piece.c if plus else -piece.c) * (s - piece.lo)
+        if form == "contact":
+            q, q0 = self._q(piece, s), piece.k
+            r = -piece.r_in - 2.0 * (2.0 * np.arctanh(q))
+            if plus:
+                return r, np.exp(-piece.r_in) * ((s - piece.lo) - 4.0 / piece.c * (q0 - q) / ((1.0 + q) * (1.0 + q0)))
+            return r, np.exp(piece.r_in) * ((s - piece.lo) + 4.0 / piece.c * (q0 - q) / ((1.0 - q) * (1.0 - q0)))
+        if form == "view":
+            inner = plus if piece.sign > 0 else not plus
+            r, base_at = self.piece_both(piece.base, np.concatenate([[piece.lo], s]) - piece.shift, inner)
+            return piece.sign * r[1:], base_at[1:] - base_at[0]
+        steps = self._solved(piece)
+        k, x = steps.place(s)
+        coef, start = (steps.plus, steps.plus0) if plus else (steps.minus, steps.minus0)
+        if steps.out is not None:  # a long chain of contacts: its own polynomial (`ode.MAX_DEPTH`)
+            r, primitive = _clenshaw(steps.out, k, x), _clenshaw(coef, k, x)
+        else:
+            psi, primitive = _clenshaw(steps.psi_plus if plus else steps.psi_minus, k, x)
+            r = self.piece_r(piece.r_in.__self__, s) - 2.0 * psi
+        return r, start[k] + 0.5 * (steps.b[k] - steps.a[k]) * primitive
+
     @staticmethod
     def _q(piece, s: np.ndarray) -> np.ndarray:
         if piece.log_k is not None:
@@ -135,6 +176,9 @@ class Arrays:
         k = np.searchsorted(starts, s, side="right") - 1
         if not len(k):
             return []
+        first = k[0]
+        if (k == first).all():  # all in one piece (as often, once a search closes in): no sort
+            return [(int(first), np.arange(len(k)))] if first >= 0 else []
         order = np.argsort(k, kind="stable")
         ordered = k[order]
         firsts = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
@@ -150,9 +194,11 @@ class Arrays:
         for j, here in self._groups(invariant, s):
             piece = invariant.pieces[j]
             at = np.minimum(s[here], piece.hi)
-            r[here] = self.piece_r(piece, at)
             if primitive:
-                m[here] = invariant.offsets[j][0] + self.piece_primitive(piece, at, True)
+                r[here], at_m = self.piece_both(piece, at)
+                m[here] = invariant.offsets[j][0] + at_m
+            else:
+                r[here] = self.piece_r(piece, at)
         return r.reshape(shape), (m + n * invariant.tail_gain[0]).reshape(shape)
 
     def minus_integral(self, invariant, s) -> np.ndarray:

@@ -52,8 +52,9 @@ class CausalChart:
     def to_chart(self, event: Event) -> tuple[float, float]:
         """(T, X) of an event in S: the whole plane is charted (outside the rod, by light rays from its ends)."""
         sol = self.solution
-        u = _inverse(sol.a, lambda s: math.exp(sol.r_plus(s)), event.t + event.x, self.L)
-        w = _inverse(sol.b, lambda s: math.exp(sol.r_minus(s)), event.t - event.x, self.L)
+        # at Python floats (an event's coordinates may be numpy scalars: the same floats, at a higher cost)
+        u = _inverse(sol.a, lambda s: math.exp(sol.r_plus(s)), float(event.t + event.x), self.L)
+        w = _inverse(sol.b, lambda s: math.exp(sol.r_minus(s)), float(event.t - event.x), self.L)
         return 0.5 * (u + w), 0.5 * (u - w)
 
     def placed(self, event: Event) -> list[tuple[float, float, int]]:
@@ -89,10 +90,11 @@ def points_on_slice(history, f: float, t: float, sigmas: np.ndarray) -> tuple[np
     rapidity there: the chart time T on the slice, t(T) = (e^-f a(T + X) + e^f b(T - X))/2 = t, by Newton's method
     (dt/dT = (e^(r+ - f) + e^(r- + f))/2 > 0) kept inside a bracket, from the neighbour's T; to 1e-13 of t."""
     sol, L = history.solution, history.scenario.L
+    f, t = float(f), float(t)  # Python floats: numpy scalars cost twice as much, the same floats
     ef = math.exp(f)
     xs, rapidities = [], []
     T = None
-    for X in sigmas:
+    for X in np.asarray(sigmas, dtype=float).tolist():  # Python floats: numpy scalars cost twice as much, same floats
         def time(T_: float) -> float:
             return 0.5 * (sol.a(T_ + X) / ef + ef * sol.b(T_ - X))
         if T is None:

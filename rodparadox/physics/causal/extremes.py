@@ -10,9 +10,11 @@ import math
 import numpy as np
 
 
+@functools.lru_cache(maxsize=16)
 def _chart_extremes(history) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """r+(u), r-(w) on a grid of each invariant's pieces (both sides of every jump, and inside), over the whole
-    history (the ringing tail is periodic: one period of it is all of it), and which (u, w) pairs lie in the rod."""
+    history (the ringing tail is periodic: one period of it is all of it), and which (u, w) pairs lie in the rod.
+    Read once per history (both ranges below read it; a history is immutable), bounded like them."""
     sol, L = history.solution, history.scenario.L
     lo = min(sol.plus.starts[0], sol.minus.starts[0]) - 2 * L
     hi = max(sol.plus.tail_start, sol.minus.tail_start) + 3 * L

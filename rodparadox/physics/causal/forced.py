@@ -136,7 +136,7 @@ class Driving:
         With T_UV = rho0/4, T_UU = (rho0/4) e^(-2 r+), T_VV = (rho0/4) e^(-2 r-) (`causal.history`), e dx on the
         slice is (rho0/2) dx + (rho0/4) e^(f - r+) du + (rho0/4) e^(-f - r-) dw, and x there is e^-f a(u) - t on
         the light line u, t - e^f b(w) on the light line w: one-variable integrals over the invariants' pieces."""
-        h, f = self.history, frame_rapidity
+        h, f, t = self.history, float(frame_rapidity), float(t)  # Python floats: numpy scalars cost more, same floats
         sol, L = h.solution, h.scenario.L
         T_L, T_R = h.end_chart_time("left", f, t), h.end_chart_time("right", f, t)
         ef, rho0 = math.exp(f), 1.0 / L

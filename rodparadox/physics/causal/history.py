@@ -246,16 +246,17 @@ class CausalHistory:
         key = (end, frame_rapidity, t)  # each slice's ends are asked for by every layer: found once
         if key not in self._end_times:
             X = 0.0 if end == "left" else self.scenario.L
-            line = ChartCurve(self.solution, X, -math.inf, math.inf, frame_rapidity)
-            self._end_times[key] = line.chart_time(t)
+            # at Python floats: a numpy scalar's arithmetic (a time taken from an array) costs more, the floats the same
+            line = ChartCurve(self.solution, X, -math.inf, math.inf, float(frame_rapidity))
+            self._end_times[key] = line.chart_time(float(t))
         return self._end_times[key]
 
     def rod_energy_momentum(self, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The rod's (E, p) on the slice t of the frame, from its stress-energy (module docstring), exactly."""
         L, f, sol = self.scenario.L, frame_rapidity, self.solution
         T_L, T_R = self.end_chart_time("left", f, t), self.end_chart_time("right", f, t)
-        I_plus = sol.plus.integrals(T_R + L)[1] - sol.plus.integrals(T_L)[1]
-        I_minus = sol.minus.integrals(T_L)[1] - sol.minus.integrals(T_R - L)[1]
+        I_plus = sol.plus.integral(T_R + L, False) - sol.plus.integral(T_L, False)
+        I_minus = sol.minus.integral(T_L, False) - sol.minus.integral(T_R - L, False)
         x_L = ChartCurve(sol, 0.0, T_L, T_L, f).point(T_L).x
         x_R = ChartCurve(sol, L, T_R, T_R, f).point(T_R).x
         rho0 = 1.0 / L

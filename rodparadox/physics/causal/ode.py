@@ -53,7 +53,7 @@ def _clenshaw(coef: list[float], x: float) -> float:
     """sum c_k T_k(x), for one x (plain floats: faster than numpy for a scalar)."""
     b1 = b2 = 0.0
     x2 = 2.0 * x
-    for c in reversed(coef[1:]):
+    for c in coef[:0:-1]:
         b1, b2 = c + x2 * b1 - b2, b1
     return coef[0] + x * b1 - b2
 
@@ -71,6 +71,13 @@ class Step:
         return min(1.0, max(-1.0, (2.0 * s - self.a - self.b) / (self.b - self.a)))
 
 
+def _place(st: Step, s: float) -> float:
+    """`st.x(s)`, the same float, without the calls (min(1, max(-1, x)), NaN to -1 as there): the scalar chart
+    map reads a step at every step of every search."""
+    x = (2.0 * s - st.a - st.b) / (st.b - st.a)
+    return x if -1.0 < x < 1.0 else (1.0 if x >= 1.0 else -1.0)
+
+
 class Solved:
     """An end in contact while its input varies: psi, out = in - 2 psi and the integrals of exp(+-out) from lo,
     on [lo, hi], as polynomials on steps (the dense solution)."""
@@ -82,25 +89,27 @@ class Solved:
         self._starts = [st.a for st in steps]
 
     def _step(self, s: float) -> Step:
-        return self.steps[max(0, bisect.bisect_right(self._starts, s) - 1)]
+        k = bisect.bisect_right(self._starts, s) - 1
+        return self.steps[k if k > 0 else 0]
 
     def psi(self, s: float) -> float:
         st = self._step(s)
-        return _clenshaw(st.psi, st.x(s))
+        return _clenshaw(st.psi, _place(st, s))
 
     def r(self, s: float) -> float:
         if self.depth > MAX_DEPTH:  # its own polynomial: reading the input would read every earlier contact's
             st = self._step(s)
-            return _clenshaw(st.out, st.x(s))
-        return self.r_in(s) - 2.0 * self.psi(s)
+            return _clenshaw(st.out, _place(st, s))
+        st = self._step(s)
+        return self.r_in(s) - 2.0 * _clenshaw(st.psi, _place(st, s))  # r_in - 2 psi
 
     def ep(self, s: float) -> float:
         st = self._step(s)
-        return st.plus0 + 0.5 * (st.b - st.a) * _clenshaw(st.plus, st.x(s))
+        return st.plus0 + 0.5 * (st.b - st.a) * _clenshaw(st.plus, _place(st, s))
 
     def em(self, s: float) -> float:
         st = self._step(s)
-        return st.minus0 + 0.5 * (st.b - st.a) * _clenshaw(st.minus, st.x(s))
+        return st.minus0 + 0.5 * (st.b - st.a) * _clenshaw(st.minus, _place(st, s))
 
 
 def _tail(coef: np.ndarray, scale: float, noise: float = 0.0) -> bool:

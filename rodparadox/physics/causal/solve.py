@@ -120,21 +120,18 @@ class _View:
         while isinstance(base, _View):  # flattened: a view of a view is a view of the base
             base, shift, sign = base.base, shift + base.shift, sign * base.sign
         self.base, self.shift, self.sign, self.lo, self.hi = base, shift, sign, lo, hi
-        self._p0 = self._primitive(lo, True)
-        self._m0 = self._primitive(lo, False)
-
-    def _primitive(self, s: float, plus: bool) -> float:
-        plus = plus if self.sign > 0 else not plus
-        return self.base.ep(s - self.shift) if plus else self.base.em(s - self.shift)
+        self._base_ep, self._base_em = (base.ep, base.em) if sign > 0 else (base.em, base.ep)  # chosen once
+        self._p0 = self._base_ep(lo - shift)
+        self._m0 = self._base_em(lo - shift)
 
     def r(self, s: float) -> float:
         return self.sign * self.base.r(s - self.shift)
 
     def ep(self, s: float) -> float:
-        return self._primitive(s, True) - self._p0
+        return self._base_ep(s - self.shift) - self._p0
 
     def em(self, s: float) -> float:
-        return self._primitive(s, False) - self._m0
+        return self._base_em(s - self.shift) - self._m0
 
     @property
     def constant(self) -> float | None:
@@ -190,8 +187,8 @@ class Invariant:
         while self.pieces and self.pieces[-1].lo >= cut:
             self.pieces.pop(), self.starts.pop(), self.offsets.pop()
         self.period, self.tail_start = period, tail_start
-        a0, b0 = self._integrals(tail_start)
-        a1, b1 = self._integrals(cut)
+        a0, b0 = self._integral(tail_start, True), self._integral(tail_start, False)
+        a1, b1 = self._integral(cut, True), self._integral(cut, False)
         self.tail_gain = (a1 - a0, b1 - b0)
 
     def _reduce(self, s: float) -> tuple[float, int]:
@@ -210,24 +207,27 @@ class Invariant:
 
     def r(self, s: float) -> float:
         s, _ = self._reduce(s)
-        k = self._index(s)
+        k = bisect.bisect_right(self.starts, s) - 1  # `_index`, written out: r is read at every step of a search
         if k < 0:
             return 0.0
         return self.pieces[k].r(min(s, self.pieces[k].hi))
 
-    def _integrals(self, s: float) -> tuple[float, float]:
+    def _integral(self, s: float, plus: bool) -> float:
+        """int_0^s exp(r) (`plus`) or exp(-r), s before any tail."""
         k = self._index(s)
         if k < 0:
-            return s, s
-        piece = self.pieces[k]
-        p0, m0 = self.offsets[k]
-        return p0 + piece.ep(min(s, piece.hi)), m0 + piece.em(min(s, piece.hi))
+            return s
+        piece, at = self.pieces[k], min(s, self.pieces[k].hi)
+        return self.offsets[k][0] + piece.ep(at) if plus else self.offsets[k][1] + piece.em(at)
 
     def integrals(self, s: float) -> tuple[float, float]:
         """(int_0^s exp(r), int_0^s exp(-r))."""
+        return self.integral(s), self.integral(s, False)
+
+    def integral(self, s: float, plus: bool = True) -> float:
+        """One of `integrals(s)`, the other not computed (a and b read only the first, at every step of a search)."""
         s, n = self._reduce(s)
-        p, m = self._integrals(s)
-        return p + n * self.tail_gain[0], m + n * self.tail_gain[1]
+        return self._integral(s, plus) + n * self.tail_gain[0 if plus else 1]
 
     def breaks(self, lo: float, hi: float) -> list[float]:
         """Every piece boundary (a front, or where a contact starts or ends) in (lo, hi)."""
@@ -300,20 +300,20 @@ class Solution:
     def a(self, u: float) -> float:
         value = self._a.get(u)
         if value is None:
-            value = self._a[u] = -0.5 * self.L + self.plus.integrals(u)[0]
+            value = self._a[u] = -0.5 * self.L + self.plus.integral(float(u))
         return value
 
     def b(self, w: float) -> float:
         value = self._b.get(w)
         if value is None:
-            value = self._b[w] = 0.5 * self.L + self.minus.integrals(w)[0]
+            value = self._b[w] = 0.5 * self.L + self.minus.integral(float(w))
         return value
 
-    def r_plus(self, u: float) -> float:
-        return self.plus.r(u)
+    def r_plus(self, u: float) -> float:  # a, b, r+, r- at Python floats: numpy's cost twice theirs, the same floats
+        return self.plus.r(float(u))
 
     def r_minus(self, w: float) -> float:
-        return self.minus.r(w)
+        return self.minus.r(float(w))
 
     def breaks(self, X: float, T_lo: float, T_hi: float) -> list[float]:
         """The chart times in (T_lo, T_hi) where a front crosses the material line X."""
@@ -337,10 +337,10 @@ class Characteristics:
         self.minus.append(Const(T_first - 2 * L, T_first - L, 0.0))
 
     def a(self, u: float) -> float:
-        return -0.5 * self.L + self.plus.integrals(u)[0]
+        return -0.5 * self.L + self.plus.integral(u)
 
     def b(self, w: float) -> float:
-        return 0.5 * self.L + self.minus.integrals(w)[0]
+        return 0.5 * self.L + self.minus.integral(w)
 
     def end_inputs(self, end: str, lo: float, hi: float) -> list:  # an end's input pieces, as views in end time
         L = self.L

@@ -20,7 +20,7 @@ other stage is solved by Chebyshev collocation (`CollocatedStage`: on each step 
 DEGREE through its values at the Chebyshev-Lobatto points, fixed by Picard iteration; a step is kept when its last
 coefficients are below ODE_RTOL relative, so its dense output is the solution to that everywhere on the step),
 with the momentum each agent delivered as exact integrals of the interpolants. A material world-line there is a
-`DrivenArc`, exact to the same tolerance anywhere, in any frame.
+`DrivenArc` (`driven_worldlines`), exact to the same tolerance anywhere, in any frame.
 """
 
 from __future__ import annotations
@@ -33,7 +33,6 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from rodparadox.errors import ScenarioError
-from rodparadox.physics.kinematics import Event, HyperbolicArc, Line
 
 #: the relative tolerance of the collocated stages (issue 26: 1e-12 relative)
 ODE_RTOL = 1e-13
@@ -122,7 +121,7 @@ class _Rates:
         return np.column_stack([ch, sh, a, FL * sh, FL * ch, right * sh, right * ch])
 
 
-class _Stage:
+class Stage:
     """A stretch of the history with each end's force on one piece of its profile: tau in [tau0, tau1]."""
 
     tau0: float
@@ -143,7 +142,7 @@ class _Stage:
         return self.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
 
 
-class ConstantStage(_Stage):
+class ConstantStage(Stage):
     """Both forces constant: alpha constant, the left end on a hyperbola (a line for alpha = 0), in closed form."""
 
     def __init__(self, tau0: float, tau1: float, y0: np.ndarray, rates: _Rates, FL: float, FR: float):
@@ -196,7 +195,7 @@ class _Step:
         self.a, self.b, self.coef = a, b, coef  # coef: (DEGREE + 1, 7)
 
 
-class CollocatedStage(_Stage):
+class CollocatedStage(Stage):
     """A stage solved by Chebyshev collocation: the state on each step is a polynomial in tau."""
 
     def __init__(self, tau0: float, steps: list[_Step], rates: _Rates, tau1: float):
@@ -207,8 +206,12 @@ class CollocatedStage(_Stage):
         self._starts_list = [st.a for st in steps]
         self._ab_list = [(st.a, st.b) for st in steps]
         self._kept: dict[float, np.ndarray] = {}  # the states of single instants asked for (`state`)
+        self._coef_motion = np.ascontiguousarray(self._coef[:, :, :PHI + 1])  # (t, x, phi) alone
+        self._later_starts = self._starts[1:]  # an instant's step: how many of these it has reached
 
-    def state(self, tau) -> np.ndarray:
+    def state(self, tau, motion_only: bool = False) -> np.ndarray:
+        """The state at tau; for an array and `motion_only`, the left end's (t, x, phi) alone (shape (n, 3)), the
+        same numbers as the first three columns of the whole state (each column's sums are its own)."""
         if np.ndim(tau) == 0:  # one instant: the Chebyshev polynomials by their recurrence, then one product
             tau = float(tau)
             kept = self._kept.get(tau)
@@ -218,15 +221,12 @@ class CollocatedStage(_Stage):
                     self._kept.clear()
             return kept.copy()
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
-        i = np.clip(np.searchsorted(self._starts, tau, side="right") - 1, 0, len(self.steps) - 1)
+        # the step (the last one starting at or before tau, the first before them all) and u clipped to [-1, 1], by
+        # ufuncs: np.clip's Python wrapper cost a tenth of a slice's crossing
+        i = np.searchsorted(self._later_starts, tau, side="right")
         a, b = self._ab[i, 0], self._ab[i, 1]
-        u = np.clip((2.0 * tau - a - b) / (b - a), -1.0, 1.0)[:, None]
-        c = self._coef[i]
-        b1 = np.zeros((len(tau), 7))
-        b2 = np.zeros((len(tau), 7))
-        for k in range(DEGREE, 0, -1):
-            b1, b2 = c[:, k, :] + 2.0 * u * b1 - b2, b1
-        return c[:, 0, :] + u * b1 - b2
+        u = np.minimum(np.maximum((2.0 * tau - a - b) / (b - a), -1.0), 1.0)[:, None]
+        return _clenshaw((self._coef_motion if motion_only else self._coef)[i], u)
 
     def _state_at(self, tau: float) -> np.ndarray:
         i = min(max(bisect.bisect_right(self._starts_list, tau) - 1, 0), len(self.steps) - 1)
@@ -239,6 +239,25 @@ class CollocatedStage(_Stage):
 
     def step_bounds(self) -> list[float]:
         return [st.a for st in self.steps[1:]]
+
+
+def _clenshaw(c: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """sum_k c[:, k] T_k(u) by Clenshaw's recurrence, c of shape (n, DEGREE + 1, m), u of shape (n, 1).
+
+    b1 <- c[k] + 2 u b1 - b2 in place, in three buffers: each number is the one the plain expression gives
+    ((c + (2 u) b1) - b2, the sum's operands swapped, which leaves it exact), without a new array per operation (it
+    halved the time of a driven rod's slice, `DrivenHistory.slice_nodes`, which runs it in every Newton step)."""
+    u2 = 2.0 * u
+    shape = (c.shape[0], c.shape[2])
+    b1 = np.zeros(shape)
+    b2 = np.zeros(shape)
+    spare = np.empty(shape)
+    for k in range(DEGREE, 0, -1):
+        np.multiply(u2, b1, out=spare)
+        np.add(spare, c[:, k, :], out=spare)
+        np.subtract(spare, b2, out=spare)
+        b1, b2, spare = spare, b1, b2
+    return c[:, 0, :] + u * b1 - b2
 
 
 def _collocate(rates: _Rates, y_a: np.ndarray, a: float, b: float) -> np.ndarray | None:
@@ -361,7 +380,10 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
         for end, target in pending.items():
             d = drives[end]
             if _end_time(d, Y[-1], L) >= target:
-                hits.append(_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
+                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
+            elif (k := _first_reaching(d, Y, target, L)) is not None:  # reached inside the step, then left behind
+                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a,
+                                        a + 0.5 * (b - a) * (1.0 + _X[k])))
         if hits:
             probe.tau1 = min(hits)
             return probe
@@ -370,7 +392,20 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
         halvings = 0
 
 
-def _root(g, lo: float, hi: float) -> float:
+def _first_reaching(drive: Drive, Y: np.ndarray, target: float, L: float) -> int | None:
+    """The first Lobatto point of a step at which the end's time has reached `target`, or None.
+
+    A step is solved with the stage's pieces of the profiles beyond the stage's end (the step is then cut at the
+    first event), and there an extrapolated force can be strong enough for the right end to lie beyond the rod's
+    horizon (1 + alpha L < 0), where its time runs backwards: an event passed inside the step may no longer show at
+    its end (a step of a force profile in S' was missed so, and its end delivered 0.89 of its impulse)."""
+    for k in range(1, len(Y) - 1):
+        if _end_time(drive, Y[k], L) >= target:
+            return k
+    return None
+
+
+def rising_root(g, lo: float, hi: float) -> float:
     """The root of the increasing g on [lo, hi] (g(lo) <= 0 <= g(hi)), by bisection with secant steps, to
     rounding."""
     glo, ghi = g(lo), g(hi)
@@ -390,116 +425,3 @@ def _root(g, lo: float, hi: float) -> float:
         else:
             hi, ghi = mid, gm
     return hi if abs(ghi) <= abs(glo) else lo
-
-
-# --- the world-lines ------------------------------------------------------------------------------------------------
-
-class DrivenArc:
-    """The world-line of the material point sigma during one stage, tau in [tau0, tau1], seen from the frame of
-    rapidity f: the event z(tau) + sigma (sinh phi, cosh phi) of S, boosted; its rapidity phi(tau) - f. Exact to the
-    stage's tolerance at every tau (`_Stage.state`). Proper time along it is (tau - tau0) + sigma (phi - phi0)."""
-
-    def __init__(self, stage: _Stage, sigma: float, tau0: float, tau1: float, f: float = 0.0, scale: float = 1.0):
-        self.stage, self.sigma, self.tau0, self.tau1, self.f, self.scale = stage, sigma, tau0, tau1, f, scale
-
-    def point(self, tau: float) -> Event:
-        y = self.stage.state(tau)[0]
-        k = self.scale
-        return Event(float(k * (y[X_] + self.sigma * math.cosh(y[PHI]))),
-                     float(k * (y[T_] + self.sigma * math.sinh(y[PHI])))).seen_from(self.f)
-
-    def points(self, tau) -> np.ndarray:
-        """(n, 2) array of [x, t] at many tau."""
-        Y = self.stage.state(tau)
-        x = self.scale * (Y[:, X_] + self.sigma * np.cosh(Y[:, PHI]))
-        t = self.scale * (Y[:, T_] + self.sigma * np.sinh(Y[:, PHI]))
-        c, s = math.cosh(self.f), math.sinh(self.f)
-        return np.column_stack([c * x - s * t, c * t - s * x])
-
-    def rapidity(self, tau: float) -> float:
-        return float(self.stage.state(tau)[0, PHI]) - self.f
-
-    @property
-    def start(self) -> Event:
-        return self.point(self.tau0)
-
-    @property
-    def end(self) -> Event:
-        return self.point(self.tau1)
-
-    @property
-    def rapidity_at_start(self) -> float:
-        return self.rapidity(self.tau0)
-
-    @property
-    def rapidity_at_end(self) -> float:
-        return self.rapidity(self.tau1)
-
-    def seen_from(self, frame_rapidity: float) -> "DrivenArc":
-        return DrivenArc(self.stage, self.sigma, self.tau0, self.tau1, self.f + frame_rapidity, self.scale)
-
-    def tau_at_time(self, t: float) -> float:
-        """The tau at which the arc is at time t of its frame (clamped to the arc)."""
-        return _root(lambda tau: self.point(tau).t - t, self.tau0, self.tau1)
-
-    def event_at_time(self, t: float) -> Event:
-        return self.point(self.tau_at_time(t))
-
-    def phi_at_time(self, t: float) -> float:
-        return self.rapidity(self.tau_at_time(t))
-
-    def clipped(self, t_lo: float, t_hi: float) -> "DrivenArc | None":
-        a = self.tau0 if t_lo <= self.start.t else self.tau_at_time(t_lo)
-        b = self.tau1 if t_hi >= self.end.t else self.tau_at_time(t_hi)
-        return DrivenArc(self.stage, self.sigma, a, b, self.f, self.scale) if b > a else None
-
-    def proper_duration(self) -> float:
-        return self.proper_duration_to_tau(self.tau1)
-
-    def proper_duration_to_tau(self, tau: float) -> float:
-        phi = self.stage.state([self.tau0, tau])[:, PHI]
-        return self.scale * ((tau - self.tau0) + self.sigma * float(phi[1] - phi[0]))
-
-    def proper_duration_to(self, t: float) -> float:
-        return self.proper_duration_to_tau(self.tau_at_time(t))
-
-    def at_proper_time(self, s: float) -> Event:
-        return self.point(_root(lambda tau: self.proper_duration_to_tau(tau) - s, self.tau0, self.tau1))
-
-    def sample(self, tolerance: float) -> np.ndarray:
-        """Points whose polyline lies within `tolerance` of the arc: every piece of tau whose chord is farther than
-        `tolerance` from the point at its middle is halved (all pieces at once), from 4 pieces on."""
-        taus = np.linspace(self.tau0, self.tau1, 5)
-        pts = self.points(taus)
-        for _ in range(40):
-            mids = 0.5 * (taus[:-1] + taus[1:])
-            pm = self.points(mids)
-            d = pts[1:] - pts[:-1]
-            chord = np.hypot(d[:, 0], d[:, 1])
-            cross = np.abs(d[:, 0] * (pm[:, 1] - pts[:-1, 1]) - d[:, 1] * (pm[:, 0] - pts[:-1, 0]))
-            with np.errstate(invalid="ignore", divide="ignore"):
-                error = np.where(chord > 0, cross / chord, 0.0)
-            split = error > tolerance
-            if not np.any(split):
-                break
-            taus = np.insert(taus, np.nonzero(split)[0] + 1, mids[split])
-            pts = np.insert(pts, np.nonzero(split)[0] + 1, pm[split], axis=0)
-        return pts
-
-
-def stage_piece(stage: _Stage, sigma: float, scale: float = 1.0):
-    """The material point sigma (units of L) world-line in S during the stage, for a rod of length `scale`: a Line,
-    a HyperbolicArc or a DrivenArc."""
-    y0, y1 = stage.state([stage.tau0, stage.tau1])
-    k = scale
-    e0 = Event(float(k * (y0[X_] + sigma * math.cosh(y0[PHI]))), float(k * (y0[T_] + sigma * math.sinh(y0[PHI]))))
-    e1 = Event(float(k * (y1[X_] + sigma * math.cosh(y1[PHI]))), float(k * (y1[T_] + sigma * math.sinh(y1[PHI]))))
-    if isinstance(stage, ConstantStage):
-        a = stage.a
-        if a == 0.0:
-            return Line(e0, e1)
-        if abs(a) >= CLOSED_FORM_ALPHA:
-            centre = Event(float(k * (y0[X_] - math.cosh(y0[PHI]) / a)), float(k * (y0[T_] - math.sinh(y0[PHI]) / a)))
-            radius = k * abs(1.0 / a + sigma)
-            return HyperbolicArc(centre, radius, 1 if a > 0 else -1, float(y0[PHI]), float(y1[PHI]))
-    return DrivenArc(stage, sigma, stage.tau0, stage.tau1, 0.0, scale)

@@ -23,6 +23,9 @@ from rodparadox.physics.rod_view import Clock, quiet_start
 
 #: an event this far outside the rod (in units of L, X below 0 or above L) is still placed: rounding of its ends
 EDGE = 1e-9
+#: at most this many chart times' alpha kept (`DrivenChart.alpha`): the clocks of the rod's material points read it
+#: at the same Gauss-Legendre nodes of each span, one clock after another
+KEEP_ALPHAS = 20_000
 
 
 class DrivenChart:
@@ -38,14 +41,21 @@ class DrivenChart:
             if isinstance(stage, CollocatedStage):
                 taus.extend(stage.step_bounds())
         self._breaks = sorted(self.L * (tau + self._T0) for tau in taus)  # where alpha may have a kink or a jump
+        self._alphas: dict[tuple[float, float], float] = {}  # alpha at the chart times asked for (`alpha`)
 
     def _tau(self, T: float) -> float:
         return T / self.L - self._T0
 
     def alpha(self, T: float) -> float:
         """The left end's proper acceleration (units of 1/L) at chart time T."""
-        a, _, _ = self.history._alpha_forces(np.array([self._tau(T)]))
-        return float(a[0])
+        key = (T, math.copysign(1.0, T))
+        kept = self._alphas.get(key)
+        if kept is None:
+            if len(self._alphas) >= KEEP_ALPHAS:
+                self._alphas.clear()
+            _, a, _ = self.history._motion_alpha_forces(np.array([self._tau(T)]))  # alpha of the state: computed once
+            kept = self._alphas[key] = float(a[0])
+        return kept
 
     def to_event(self, T: float, X: float) -> Event | None:
         """The event at (T, X) (units of the scenario), or None off the rod."""

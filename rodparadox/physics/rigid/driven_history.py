@@ -21,8 +21,13 @@ from rodparadox.physics.forces import ENDS, ForceProfile, Forces, centre_velocit
 from rodparadox.physics.kinematics import Event, WorldLine
 from rodparadox.physics.model import Scenario
 from rodparadox.physics.rigid.driven import (EL, ER, PHI, PL, PR, T_, X_, Drive, CollocatedStage, ConstantStage, GAUSS_W,
-                                             GAUSS_X, Solution, solve, stage_piece)
+                                             GAUSS_X, Solution, solve)
+from rodparadox.physics.rigid.driven_worldlines import stage_piece
 from rodparadox.physics.types import FORCE_MOMENTS, EnergyMomentum, ForceEvent, Slice
+
+#: at most this many slices' nodes kept per history (`DrivenHistory.slice_nodes`): a ledger's row reads its slice's
+#: parts, then its centre of energy; a handout's key slice is read twice. A slice is a pure function of (frame, t).
+KEEP_SLICES = 1024
 
 def run_forces(scenario: Scenario) -> "DrivenHistory":
     """The rigid rod of the scenario driven by its forces."""
@@ -50,14 +55,20 @@ class DrivenHistory:
         self._y0 = np.array([st.state(st.tau0)[0] for st in stages])
         self.final_rapidity = float(self._y0[-1, PHI])
         self.driving = Driving(self)
+        self._chart = None
+        self._cut_states = None  # the states where a stage or a step begins (`_cuts`), read on every slice
+        self._slices: dict[tuple, dict[str, np.ndarray]] = {}  # the slices' nodes asked for (`slice_nodes`)
 
     # --- the interface ----------------------------------------------------------------------------------------------
 
     def own_chart(self):
-        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`)."""
-        from rodparadox.physics.rigid.driven_chart import DrivenChart
+        """The rod's own chart: T the left end's proper time, X the distance from it (`driven_chart.DrivenChart`),
+        made once per history (it keeps the alpha its clocks read)."""
+        if self._chart is None:
+            from rodparadox.physics.rigid.driven_chart import DrivenChart
 
-        return DrivenChart(self)
+            self._chart = DrivenChart(self)
+        return self._chart
 
     def worldline(self, name: str) -> WorldLine | None:
         if name == "rod_left":
@@ -113,6 +124,31 @@ class DrivenHistory:
             out[sel] = self.stages[i].state(tau[sel])
         return out
 
+    def _motion_alpha_forces(self, tau: np.ndarray):
+        """The left end's (t, x, phi) (`_states(tau)[:, :3]`) and `_alpha_forces(tau)`'s alpha and F_L, the same
+        numbers, each stage's states computed once: alpha and the forces are functions of the state (`Stage.alpha`,
+        `Stage.forces`)."""
+        tau = np.asarray(tau, dtype=float)
+        out = np.empty((len(tau), PHI + 1))
+        a, FL = np.zeros(len(tau)), np.zeros(len(tau))
+        k = np.searchsorted(self._tau0, tau, side="right") - 1
+        before = k < 0
+        if np.any(before):
+            y0 = self._y0[0, :PHI + 1]
+            out[before] = y0
+            out[before, T_] = y0[T_] + tau[before]
+        for i in np.unique(k[~before]):
+            sel = k == i
+            st = self.stages[i]
+            if isinstance(st, ConstantStage):
+                out[sel] = st.state(tau[sel])[:, :PHI + 1]
+                a[sel], FL[sel] = st.alpha(tau[sel]), st.FL
+            else:
+                Y = out[sel] = st.state(tau[sel], motion_only=True)
+                F = st.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
+                a[sel], FL[sel] = st.rates.alpha(*F), F[0]
+        return out, a, FL
+
     def _alpha_forces(self, tau: np.ndarray):
         """alpha and (F_L, F_R) at each tau (zero before the first stage)."""
         tau = np.asarray(tau, dtype=float)
@@ -152,13 +188,15 @@ class DrivenHistory:
 
     def _cuts(self, f: float, T: float) -> list[float]:
         """Where the slice meets the normal lines at which a stage or a step begins (units of L), within (0, 1)."""
-        taus = list(self._tau0)
-        for st in self.stages:
-            if isinstance(st, CollocatedStage):
-                taus.extend(st.step_bounds())
-        if not taus:
+        if self._cut_states is None:
+            taus = list(self._tau0)
+            for st in self.stages:
+                if isinstance(st, CollocatedStage):
+                    taus.extend(st.step_bounds())
+            self._cut_states = self._states(np.array(taus)) if taus else np.empty((0, 7))
+        Y = self._cut_states
+        if not len(Y):
             return []
-        Y = self._states(np.array(taus))
         s = np.sinh(Y[:, PHI] - f)
         tf = math.cosh(f) * Y[:, T_] - math.sinh(f) * Y[:, X_]
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # inf, nan: no crossing in (0, 1)
@@ -168,7 +206,18 @@ class DrivenHistory:
     def slice_nodes(self, frame_rapidity: float, t: float) -> dict[str, np.ndarray]:
         """The Gauss-Legendre nodes of the slice t of the frame (units of L): each material point sigma, its weight,
         its rapidity psi in the frame where it crosses the slice, the stress p there (units of M c^2/L), and its x
-        in the frame (the scenario's unit)."""
+        in the frame (the scenario's unit). Kept per slice (`KEEP_SLICES`), read-only."""
+        key = (frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))  # -0.0 apart from 0.0
+        kept = self._slices.get(key)
+        if kept is None:
+            if len(self._slices) >= KEEP_SLICES:
+                self._slices.clear()
+            kept = self._slices[key] = self._slice_nodes(frame_rapidity, t)
+            for array in kept.values():
+                array.flags.writeable = False
+        return dict(kept)
+
+    def _slice_nodes(self, frame_rapidity: float, t: float) -> dict[str, np.ndarray]:
         f, T = frame_rapidity, t / self.L
         cuts = [0.0, *self._cuts(f, T), 1.0]
         edges = sorted(set(np.concatenate([np.linspace(a, b, 3) for a, b in zip(cuts, cuts[1:])])))
@@ -178,8 +227,7 @@ class DrivenHistory:
             w.append(0.5 * (b - a) * GAUSS_W)
         sig, w = np.concatenate(sig), np.concatenate(w)
         tau = self._crossings(sig, f, T)
-        Y = self._states(tau)
-        a, FL, _ = self._alpha_forces(tau)
+        Y, a, FL = self._motion_alpha_forces(tau)
         x_s = Y[:, X_] + sig * np.cosh(Y[:, PHI])
         t_s = Y[:, T_] + sig * np.sinh(Y[:, PHI])
         return {"sigma": sig, "weight": w, "psi": Y[:, PHI] - f,
@@ -202,18 +250,19 @@ def _newton_crossing(stage: CollocatedStage, sigma: np.ndarray, f: float, T: flo
     tau = 0.5 * (lo + hi)
     ch, sh = math.cosh(f), math.sinh(f)
     for _ in range(100):
-        Y = stage.state(tau)
+        Y = stage.state(tau, motion_only=True)  # (t, x, phi) alone: the same numbers, 3/7 of the sums
         FL, FR = stage.rates.forces(Y[:, T_], Y[:, X_], Y[:, PHI])
         a = stage.rates.alpha(FL, FR)
-        g = ch * Y[:, T_] - sh * Y[:, X_] + sigma * np.sinh(Y[:, PHI] - f) - T
-        dg = (1.0 + a * sigma) * np.cosh(Y[:, PHI] - f)
+        psi = Y[:, PHI] - f
+        g = ch * Y[:, T_] - sh * Y[:, X_] + sigma * np.sinh(psi) - T
+        dg = (1.0 + a * sigma) * np.cosh(psi)
         lo = np.where(g <= 0.0, tau, lo)
         hi = np.where(g >= 0.0, tau, hi)
         new = tau - g / dg
         bad = ~((new > lo) & (new < hi))
         new = np.where(bad, 0.5 * (lo + hi), new)
         new = np.where(g == 0.0, tau, new)
-        done = np.max(np.abs(new - tau)) <= 2e-16 * (np.max(np.abs(tau)) + 1.0)
+        done = np.abs(new - tau).max() <= 2e-16 * (np.abs(tau).max() + 1.0)
         tau = new
         if done:
             break
@@ -226,6 +275,10 @@ class Driving:
     def __init__(self, history: DrivenHistory):
         self.history = history
         self._force_events = None
+        # each end's tau and delivered (E, p) on the slices asked for (a ledger's row reads each twice: alone and in
+        # `total`), KEEP_SLICES of each at most
+        self._end_taus: dict[tuple, float] = {}
+        self._delivered: dict[tuple, EnergyMomentum] = {}
 
     @property
     def forces(self) -> Forces:
@@ -239,12 +292,28 @@ class Driving:
         return math.atanh(self.forces.at(end).frame_velocity(self.history.scenario.v))
 
     def end_tau(self, end: str, frame_rapidity: float, t: float) -> float:
-        h = self.history
-        return float(h._crossings(np.array([0.0 if end == "left" else 1.0]), frame_rapidity, t / h.L)[0])
+        key = (end, frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))
+        kept = self._end_taus.get(key)
+        if kept is None:
+            if len(self._end_taus) >= KEEP_SLICES:
+                self._end_taus.clear()
+            h = self.history
+            kept = self._end_taus[key] = float(h._crossings(np.array([0.0 if end == "left" else 1.0]), frame_rapidity,
+                                                            t / h.L)[0])
+        return kept
 
     def delivered(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
         """The (E, p), in the frame, the agent at `end` delivered up to that end's event on the slice t of the
         frame."""
+        key = (end, frame_rapidity, t, math.copysign(1.0, frame_rapidity), math.copysign(1.0, t))
+        kept = self._delivered.get(key)
+        if kept is None:
+            if len(self._delivered) >= KEEP_SLICES:
+                self._delivered.clear()
+            kept = self._delivered[key] = self._delivered_afresh(end, frame_rapidity, t)
+        return kept
+
+    def _delivered_afresh(self, end: str, frame_rapidity: float, t: float) -> EnergyMomentum:
         h = self.history
         if self.forces.at(end) is None:
             return EnergyMomentum(0.0, 0.0, 0.0)
