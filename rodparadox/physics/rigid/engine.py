@@ -35,6 +35,11 @@ from rodparadox.physics.rigid.turns import RigidTurns, Turn, material_worldline
 from rodparadox.physics.types import EnergyMomentum, Impact, Slice, WORLDLINE_NAMES
 from rodparadox.tolerances import DIFFERENCE_ROUNDING, SAME_EVENT, SIMULTANEITY_TOLERANCE, TIMING_MATCH, TURN_LINE_ROUNDING
 
+#: at most this many material points' world-lines kept per history (`History.material_worldline`): a strip's points,
+#: a figure's rod lines and a ledger's grid are a few hundred; a slice integrated by quadrature (thousands of points,
+#: each read once) would only fill memory and the garbage collector's rounds
+KEEP_MATERIAL = 512
+
 #: a scenario with more impacts than this is refused rather than run forever
 MAX_IMPACTS = 1000
 
@@ -85,7 +90,9 @@ class History:
         except TypeError:  # an unhashable number (a numpy array of one value): built afresh
             return material_worldline(self, sigma)
         if line is None:
-            line = known[key] = material_worldline(self, sigma)
+            line = material_worldline(self, sigma)
+            if len(known) < KEEP_MATERIAL:  # the first points asked for; a quadrature's thousands are built and let go
+                known[key] = line
         return line
 
     def rapidity_range(self) -> tuple[float, float]:
