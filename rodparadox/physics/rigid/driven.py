@@ -379,11 +379,14 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
         hits = []
         for end, target in pending.items():
             d = drives[end]
-            if _end_time(d, Y[-1], L) >= target:
-                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
-            elif (k := _first_reaching(d, Y, target, L)) is not None:  # reached inside the step, then left behind
+            past = _end_time(d, Y[-1], L) >= target
+            k = _first_reaching(d, Y, target, L)
+            if k is not None and (not past or any(_end_time(d, y, L) < target for y in Y[k + 1:])):
+                # reached inside the step, then left behind (and perhaps reached again): the first crossing
                 hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a,
                                         a + 0.5 * (b - a) * (1.0 + _X[k])))
+            elif past:
+                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
         if hits:
             probe.tau1 = min(hits)
             return probe
@@ -398,7 +401,8 @@ def _first_reaching(drive: Drive, Y: np.ndarray, target: float, L: float) -> int
     A step is solved with the stage's pieces of the profiles beyond the stage's end (the step is then cut at the
     first event), and there an extrapolated force can be strong enough for the right end to lie beyond the rod's
     horizon (1 + alpha L < 0), where its time runs backwards: an event passed inside the step may no longer show at
-    its end (a step of a force profile in S' was missed so, and its end delivered 0.89 of its impulse)."""
+    its end (a step of a force profile in S' was missed so, and its end delivered 0.89 of its impulse), or the end
+    may show a later crossing than the first."""
     for k in range(1, len(Y) - 1):
         if _end_time(drive, Y[k], L) >= target:
             return k
