@@ -127,11 +127,21 @@ def note_lines(note: str, width: float, size: float) -> list[str]:
             words[-1] += f" {word}"
         else:
             words.append(word)
-    for word in words:
-        if lines and approximate_size(f"{lines[-1]} {word}", size)[0] <= room:
-            lines[-1] += f" {word}"
-        else:
-            lines.append(word)
+    # Each line: its first word, then as many of the next words as fit. A line's measured width never shrinks as
+    # words are added (the box of its glyphs only grows to the right), so the most that fit is found by bisection:
+    # the same lines as adding word after word, from a few measurements a line instead of one a word (a handout's
+    # notes measured thousands of lines growing by a word).
+    start = 0
+    while start < len(words):
+        lo, hi = start + 1, len(words)  # words[start:lo] is the line so far (it fits, or is one word)
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if approximate_size(" ".join(words[start:mid]), size)[0] <= room:
+                lo = mid
+            else:
+                hi = mid - 1
+        lines.append(" ".join(words[start:lo]))
+        start = lo
     return lines
 
 
