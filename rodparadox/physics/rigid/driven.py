@@ -382,11 +382,12 @@ def _collocate_stage(tau0: float, y0: np.ndarray, rates: _Rates, drives: dict, p
             past = _end_time(d, Y[-1], L) >= target
             k = _first_reaching(d, Y, target, L)
             if k is not None and (not past or any(_end_time(d, y, L) < target for y in Y[k + 1:])):
-                # reached inside the step, then left behind (and perhaps reached again): the first crossing
-                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a,
-                                        a + 0.5 * (b - a) * (1.0 + _X[k])))
+                hi = a + 0.5 * (b - a) * (1.0 + _X[k])  # reached inside, then left behind: the first crossing
             elif past:
-                hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, b))
+                hi = b
+            else:
+                continue
+            hits.append(rising_root(lambda s: _end_time(d, probe.state(s)[0], L) - target, a, hi))
         if hits:
             probe.tau1 = min(hits)
             return probe
