@@ -20,13 +20,20 @@ from rodparadox.io.scenario import load
 from rodparadox.numbers import MINUS
 from rodparadox.physics.models import run_rods
 
+from handout_shared import rods as shared_rods
+
 V = 0.6
 GAMMA = 1.25  # 1/√(1 − 0.6²)
 
 
-@functools.lru_cache(maxsize=None)
+#: one worker runs this file and the forces worksheets' tests of test_worksheet_tells_nothing, which read the same
+#: rods (`handout_shared.rods`, run once per process, and read once: `handout.forces_reading.read` is cached on them)
+pytestmark = pytest.mark.xdist_group("handout_forces")
+
+
 def rods(name: str, v: float = V):
-    return run_rods(load(name).with_overrides(v=v), "both")
+    """The preset's rigid and causal rod at v: `run_rods(load(name).with_overrides(v=v), "both")`, run once."""
+    return shared_rods(name, v, "both")
 
 
 def number(text: str) -> float:

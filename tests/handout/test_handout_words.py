@@ -5,28 +5,19 @@ them. The figures' drawn words are searched by `test_worksheet_tells_nothing` (i
 
 from __future__ import annotations
 
-import functools
 import re
 
 import pytest
 
+from handout_shared import causal_alike
 from helpers import history, particle_presets
 from rodparadox.handout.build import build
 from rodparadox.handout.document import Heading, Paragraph, Question, Table
 from rodparadox.handout.own_view import with_rod_views
 
-#: one worker runs this file: its module fixture is built once, not once per worker
-pytestmark = pytest.mark.xdist_group("handout_words")
-
-
-@functools.lru_cache(maxsize=None)
-def causal_alike(name: str, v: float, L: float | None = None):
-    """The causal rod of a preset struck by the rigid rod's particles (`physics.models.run_rods`, like for like),
-    as `handout --rod both` runs it."""
-    from rodparadox.io.scenario import load
-    from rodparadox.physics.models import run_rods
-
-    return run_rods(load(name).with_overrides(v=v, L=L), "both")[1]
+#: one worker runs this file: its module fixture is built once, not once per worker; with the worksheets of
+#: test_worksheet_tells_nothing, which compare the same causal rods (`handout_shared.causal_alike`, run once)
+pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
 
 #: what a student must never read: the software, its files and options, its internal names
 SOFTWARE = re.compile(

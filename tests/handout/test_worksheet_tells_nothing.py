@@ -21,6 +21,7 @@ import pytest
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.text import Text
 
+from handout_shared import causal_alike, rods
 from helpers import history, particle_presets
 from rodparadox import render
 from rodparadox.handout.build import build
@@ -30,20 +31,15 @@ from rodparadox.handout.pdf import page_figures
 from rodparadox.handout.pdf_text import TextRuns
 from rodparadox.handout.tex import ANSWER_KEY_MARK, prose, tex_sources
 from rodparadox.handout.words import told_number
+from rodparadox.render.pdf_fonts import kept_subsets
 from rodparadox.physics.frames import paper_frames
 
 
-@functools.lru_cache(maxsize=None)
-def causal_alike(name: str, v: float, L: float | None = None):
-    """The causal rod of a preset struck by the rigid rod's particles (`physics.models.run_rods`, like for like),
-    as `handout --rod both` runs it."""
-    from rodparadox.io.scenario import load
-    from rodparadox.physics.models import run_rods
-
-    return run_rods(load(name).with_overrides(v=v, L=L), "both")[1]
-
-#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml)
-pytestmark = pytest.mark.xdist_group("worksheet_tells_nothing")
+#: one worker runs this file, so its shared fixtures are built once (`--dist loadgroup`, pyproject.toml), with
+#: test_handout_words, which builds documents of the same causal rods (`handout_shared.causal_alike`); the forces
+#: worksheets' tests run with test_handout_forces instead (ON_FORCES), which runs the same driven rods
+ON_SHEETS = pytest.mark.xdist_group("worksheet_tells_nothing")
+ON_FORCES = pytest.mark.xdist_group("handout_forces")
 
 SPEEDS = (0.3, 0.6, 0.95)
 #: the speeds as test parameters: 0.6 every day, the other two in the full run (`-m slow` leaves them out)
@@ -151,19 +147,26 @@ def _worksheets_at(v: float):
     drawn = _by_section(doc, _page_texts(figures))
     pdf = None
     if v == PDF_SPEED:
-        buffer = io.BytesIO()
-        with render.style_context("print"), PdfPages(buffer) as pages:
-            for figure in figures:
-                pages.savefig(figure)
         # the figures' labels (mathtext) come back as A1, the text's as A₁: read both as A1
         pdf = _by_section(doc, [_ascii(" ".join(p.extract_text().split()))
-                                for p in pypdf.PdfReader(io.BytesIO(buffer.getvalue())).pages])
+                                for p in pypdf.PdfReader(io.BytesIO(_pdf_of(figures))).pages])
     sources = tex_sources(doc)
     main = sources["handout.tex"].split(ANSWER_KEY_MARK)[0]
     main = re.sub(r"\\input\{([^}]*)\}", lambda m: sources[m.group(1)].replace("\\", "\\\\"), main)
     latex = main.split(r"\section*{")[1:]
     assert len(latex) == len(doc.sections)
     return doc, drawn, pdf, latex
+
+
+def _pdf_of(figures) -> bytes:
+    """The pages saved as one PDF, as `handout.pdf.to_pdf` saves them: in the print style, each font subset and text
+    layout kept for the process (`render.pdf_fonts.kept_subsets`, which leaves the bytes as they are: measured, the
+    same file with and without it; without it the 0.95 worksheet's pages took 1.0 s to save, with it 0.35-0.6 s)."""
+    buffer = io.BytesIO()
+    with render.style_context("print"), kept_subsets(), PdfPages(buffer) as pages:
+        for figure in figures:
+            pages.savefig(figure)
+    return buffer.getvalue()
 
 
 def _questions(section) -> list[Question]:
@@ -213,6 +216,7 @@ def found_leaks(section, texts: list[tuple[str, str]]) -> list[tuple]:
     return found
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_no_page_before_the_key_states_what_a_question_asks_or_a_blank_cell_expects(worksheets, v):
     """Every question's facts and every blank cell's number, in every frame, searched in the pages as drawn (text,
@@ -228,6 +232,7 @@ def test_no_page_before_the_key_states_what_a_question_asks_or_a_blank_cell_expe
     assert not found, "\n".join(map(str, found))
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_the_facts_are_what_the_key_answers(worksheets, v):
     """The facts are real: every number is printed in the key's worked answer of its question (in one of its forms),
@@ -254,6 +259,7 @@ def test_the_facts_are_what_the_key_answers(worksheets, v):
                 assert f"{abs(u):.4f}" in asked_here[0].forms, (section.name, what, u, asked_here[0].forms)
 
 
+@ON_SHEETS
 def test_a_planted_leak_is_found():
     """The search's power: a sentence planted before the key that states a question's fact is found, in the model's
     text and as LaTeX (fig2 at 0.6: the rod's velocity after A₁ in S′ is 15/17; B₁ and A₁ share t′ = 17/12)."""
@@ -328,6 +334,7 @@ def fig2_sheet():
     return build([("fig2", history("fig2", 0.6))], worksheet=True)
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("place", ["paragraph", "caption", "cell", "note", "question"])
 def test_a_leak_planted_in_each_place_is_found_in_the_words_and_the_latex(fig2_sheet, place):
     section = fig2_sheet.sections[1]
@@ -340,6 +347,7 @@ def test_a_leak_planted_in_each_place_is_found_in_the_words_and_the_latex(fig2_s
                 (place, plant, where)
 
 
+@ON_SHEETS
 def test_a_leak_planted_in_a_figure_is_found_in_the_drawn_pages_and_the_pdf(fig2_sheet, monkeypatch):
     """A panel's title stating a blank cell's number and a question's: found among the drawn labels, and in the
     PDF's own text."""
@@ -348,11 +356,7 @@ def test_a_leak_planted_in_a_figure_is_found_in_the_drawn_pages_and_the_pdf(fig2
     monkeypatch.setattr(DiagramBlock, "retitle", retitle)
     figures = page_figures(dataclasses.replace(fig2_sheet, answer_key=()))
     drawn = _by_section(fig2_sheet, _page_texts(figures))[1]
-    buffer = io.BytesIO()
-    with render.style_context("print"), PdfPages(buffer) as pages:
-        for figure in figures:
-            pages.savefig(figure)
-    pdf = _ascii(" ".join(" ".join(p.extract_text().split()) for p in pypdf.PdfReader(io.BytesIO(buffer.getvalue())).pages))
+    pdf = _ascii(" ".join(" ".join(p.extract_text().split()) for p in pypdf.PdfReader(io.BytesIO(_pdf_of(figures))).pages))
     for where, text in (("drawn", drawn), ("pdf", pdf)):
         places = {leak[1] for leak in found_leaks(fig2_sheet.sections[1], [(where, text)])}
         assert {"blank cell", "question 3"} <= places, (where, places)
@@ -369,6 +373,7 @@ GENERATED = [
 ]
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("name, v, particles", GENERATED)
 def test_a_generated_scenario_s_worksheet_tells_nothing_it_asks(name, v, particles):
     """A worksheet of a scenario no preset has, with the causal rod's comparison: no question's fact and no blank
@@ -385,6 +390,7 @@ def test_a_generated_scenario_s_worksheet_tells_nothing_it_asks(name, v, particl
     assert not found, "\n".join(map(str, found))
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_the_drawn_pages_name_no_software(worksheets, v):
     """The words of the pages as drawn (the diagrams' legends, titles and labels too) hold none of the word list of
@@ -399,6 +405,7 @@ def test_the_drawn_pages_name_no_software(worksheets, v):
 STRAIGHT_APOSTROPHE = re.compile(r"[A-Za-z]'[A-Za-z]")
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_the_drawn_pages_set_every_apostrophe_typographic(worksheets, v):
     """Issue 24: the pages as drawn, the diagrams' legends, colour bars (rod’s material points) and the rod's own
@@ -413,6 +420,7 @@ def test_the_drawn_pages_set_every_apostrophe_typographic(worksheets, v):
 UNDERSCORED = re.compile(r"[A-Za-z]_[A-Za-z]")
 
 
+@ON_SHEETS
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_the_drawn_pages_write_no_subscript_as_code_does(worksheets, v):
     """Issue 24, found looking at the pages: the question on a turn (off_timing, while_turning) printed
@@ -431,17 +439,16 @@ FORCE_PRESETS = ("sears", "sears_moving", "push")
 
 @functools.lru_cache(maxsize=None)
 def forces_sheet(v: float, compared: bool = False, names: tuple[str, ...] = FORCE_PRESETS):
-    """The worksheet of the forces presets at v, one section each (with the causal rod's comparison: `compared`)."""
-    from rodparadox.io.scenario import load
-    from rodparadox.physics.models import run_rods
-
+    """The worksheet of the forces presets at v, one section each (with the causal rod's comparison: `compared`); the
+    rods are test_handout_forces's, run once (`handout_shared.rods`)."""
     items = []
     for name in names:
-        histories = run_rods(load(name).with_overrides(v=v), "both" if compared else "rigid")
+        histories = rods(name, v, "both" if compared else "rigid")  # run_rods(load(name).with_overrides(v=v), ...)
         items.append((name, histories[0], None, histories[1] if compared else None))
     return build(items, worksheet=True)
 
 
+@ON_FORCES
 @pytest.mark.parametrize("v", SPEED_PARAMS)
 def test_a_forces_worksheet_tells_nothing_it_asks(v):
     """The forces presets' worksheet (both rods at 0.6): every question's facts and every blank cell's number, in the
@@ -464,6 +471,7 @@ def test_a_forces_worksheet_tells_nothing_it_asks(v):
                 assert leaks(fact, " ".join(key.answer)), (q.number, fact.what)
 
 
+@ON_FORCES
 def test_a_forces_worksheet_s_drawn_pages_tell_nothing():
     """sears at 0.95, the pages as drawn (the diagrams' labels, ticks and titles): no fact asked."""
     doc = forces_sheet(0.95, names=("sears",))
@@ -474,6 +482,7 @@ def test_a_forces_worksheet_s_drawn_pages_tell_nothing():
     assert not found, "\n".join(map(str, found))
 
 
+@ON_FORCES
 def test_a_leak_planted_in_a_forces_worksheet_is_found():
     """sears at 0.6: the momentum delivered in S′ by the slice the question names, and which force starts first in
     S′, planted in a paragraph, a cell and a caption, are found in the words and the LaTeX."""
