@@ -5,6 +5,7 @@ them. The figures' drawn words are searched by `test_worksheet_tells_nothing` (i
 
 from __future__ import annotations
 
+import functools
 import re
 
 import pytest
@@ -44,8 +45,14 @@ def words_of(doc) -> list[str]:
 
 
 def software_words(doc) -> list[tuple[str, str]]:
-    return [(m.group(), text[max(0, m.start() - 40):m.end() + 40]) for text in words_of(doc)
-            for m in SOFTWARE.finditer(text)]
+    return [found for text in words_of(doc) for found in _software_in(text)]
+
+
+@functools.lru_cache(maxsize=None)
+def _software_in(text: str) -> tuple[tuple[str, str], ...]:
+    """Each software word in one text, with its context: searched once per text (the documents share most of their
+    texts, and a planted document all but one: the search of the word list took a second of this file)."""
+    return tuple((m.group(), text[max(0, m.start() - 40):m.end() + 40]) for m in SOFTWARE.finditer(text))
 
 
 @pytest.fixture(scope="module")
