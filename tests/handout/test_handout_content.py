@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+import functools
 import math
 import re
 import subprocess
@@ -29,7 +30,10 @@ from rodparadox.io.scenario import load, parse
 from helpers import particle_presets
 
 
+@functools.lru_cache(maxsize=None)
 def history(name: str, v: float | None = None):
+    """The preset's rigid rod at v (None: its own), run once per process: a history is immutable, and what it works
+    out when first asked (its world-lines, their pieces) is then worked out once for every test that reads it."""
     scenario = load(name)
     return run(scenario.with_overrides(v=v) if v is not None else scenario)
 
