@@ -132,6 +132,10 @@ def fillers(n: int) -> tuple[Paragraph, ...]:
     return tuple(Paragraph(f"Filler {k}. {LOREM}") for k in range(n))
 
 
+#: the two tests that ask `most_fillers_on_one_page` run in one worker, which searches once
+ON_FILLERS = pytest.mark.xdist_group("handout_pdf_fillers")
+
+
 @functools.lru_cache(maxsize=None)  # two tests ask; the search sets a page a dozen times
 def most_fillers_on_one_page() -> int:
     n = 1
@@ -169,6 +173,7 @@ def test_a_table_longer_than_a_page_is_split_between_rows_with_its_header_repeat
             assert on[i] == on[i + 1] == on[i + 2]
 
 
+@ON_FILLERS
 def test_a_table_that_does_not_fit_the_rest_of_the_page_is_split_between_rows_rather_than_leave_it_empty():
     """Three fillers fewer than fill a page leave room for a two-row table, and for the start of a twelve-row table
     but not all of it: that one starts there, taller than a quarter page, and goes on on the next page under its
@@ -183,6 +188,7 @@ def test_a_table_that_does_not_fit_the_rest_of_the_page_is_split_between_rows_ra
     assert [sum(f"row{i}left" in t for t in texts) for i in range(12)] == [1] * 12
 
 
+@ON_FILLERS
 def test_a_heading_is_never_left_alone_at_the_foot_of_a_page():
     """After one filler fewer than fill a page, a heading alone fits, a heading and the start of a table do not:
     the heading goes to the next page with the table."""
