@@ -51,8 +51,12 @@ def pytest_xdist_auto_num_workers(config):
 #: tests between two moves of what a worker keeps (its caches) out of the garbage collector's reach
 FREEZE_EVERY = 200
 _tests_since_freeze = 0
-# and those moves are the only full passes: the collector's own (generation 2) would walk everything not yet frozen
-gc.set_threshold(*gc.get_threshold()[:2], 1_000_000)
+# and those moves are the only passes of the collector: its own would walk the young objects of every test again and
+# again (generations 0 and 1: about 10,000 passes a worker) and everything not yet frozen (generation 2). What is
+# garbage waits for the next move, and most of a test's garbage is freed as soon as it is dropped (no cycles).
+# Measured over the whole suite with 2 workers: the collector took 12.7 CPU-s with its own young passes, 8.9 without
+# them; a worker's peak memory 0.76-0.82 -> 0.82-0.92 GB.
+gc.disable()
 
 
 @pytest.hookimpl(hookwrapper=True)
