@@ -39,13 +39,25 @@ def _diagram(name, v, style, options, L, specs):
 
 
 def measured(name: str, v: float | None = None, style: str = "default", specs: tuple = ("rest", "moving")):
-    """(the `diagram` of these arguments, with default options, and the renderer that laid it out as Agg draws it,
-    `measuring_renderer`): drawn and laid out once per process. Read extents with this renderer."""
+    """(a drawing like `diagram`'s of these arguments, with default options; the renderer that laid it out as Agg
+    draws it, `measuring_renderer`): drawn and laid out once per process. Read extents with this renderer."""
     return _measured(name, _own_v(name, v), style, tuple(specs))
 
 
 @lru_cache(maxsize=None)
 def _measured(name, v, style, specs):
-    d = diagram(name, v, style, specs=specs)
+    # its own drawing, not `diagram`'s: the measuring canvas stays on the figure, and a PNG saved through it would
+    # be the shared renderer's (test_render's two renderings of fig2 failed so)
+    d = render.draw(history(name, v), frames_of(specs, v), style)
     with render.style_context(style):
         return d, measuring_renderer(d.figure)
+
+
+def svg(name: str, v: float | None = None, style: str = "default") -> bytes:
+    """`render.figure_bytes` of the `diagram` of these arguments as SVG (what `plot` writes), once per process."""
+    return _svg(name, _own_v(name, v), style)
+
+
+@lru_cache(maxsize=None)
+def _svg(name, v, style):
+    return render.figure_bytes(diagram(name, v, style).figure, "svg", style)

@@ -28,9 +28,13 @@ def drawn_afresh(name: str, v: float = 0.6, style: str = "default", options=INSI
     return h, render.draw(h, paper_frames(h.scenario.v), style, options).figure
 
 
-@lru_cache(maxsize=None)
 def drawn(name: str, v: float = 0.6, style: str = "default", options=INSIDE):
-    """`drawn_afresh`, once per process: the tests only read the figure."""
+    """`drawn_afresh`, once per process (`drawn("fig2")` and `drawn("fig2", 0.6)` alike): the tests only read it."""
+    return _kept(name, v, style, options)
+
+
+@lru_cache(maxsize=None)
+def _kept(name, v, style, options):
     return drawn_afresh(name, v, style, options)
 
 
