@@ -146,3 +146,56 @@ def measuring_renderer(fig):
     canvas = MeasuringCanvas(fig)
     fig.draw_without_rendering()
     return canvas.get_renderer()
+
+
+# --- one fresh interpreter for the command-line tests of several files (test_cli, test_animate_cli, test_robust_cli)
+
+#: part -> (rank, argvs): the command lines each of those tests runs in a fresh interpreter, registered when its
+#: module is imported (pytest imports every test module before running any test). They run in one interpreter,
+#: rank 0 first (the commands that must find matplotlib and scipy not yet imported), then rank 1 (those that draw),
+#: by name within a rank. Each of those tests is marked xdist_group(SHARED_PROCESS_GROUP), so that one worker runs
+#: them all and the interpreter is started once (five before: 4.7 CPU-s measured).
+_SHARED_PROCESS_PARTS: dict[str, tuple[int, tuple[tuple[str, ...], ...]]] = {}
+SHARED_PROCESS_GROUP = "shared-process"
+
+
+def register_shared_process(part: str, argvs, draws: bool) -> None:
+    """Add `argvs` (lists of words) under `part` to the commands the shared interpreter runs; `draws`: whether
+    they may import matplotlib (then they run after every part that must not find it imported)."""
+    assert _shared_process_results.cache_info().currsize == 0, f"{part} registered after the interpreter ran"
+    _SHARED_PROCESS_PARTS[part] = (int(draws), tuple(tuple(str(w) for w in argv) for argv in argvs))
+
+
+@functools.lru_cache(maxsize=None)
+def _shared_process_results() -> tuple[dict[str, list[dict]], str]:
+    import contextlib
+    import pathlib
+    import tempfile
+
+    folder = tempfile.TemporaryDirectory(prefix="shared-process-")
+    _SHARED_PROCESS_FOLDERS.append(folder)  # removed when the worker exits
+    order = sorted(_SHARED_PROCESS_PARTS, key=lambda part: (_SHARED_PROCESS_PARTS[part][0], part))
+    argvs = [list(argv) for part in order for argv in _SHARED_PROCESS_PARTS[part][1]]
+    with contextlib.chdir(folder.name):  # its relative outputs land in an empty folder of its own
+        found = commands_in_one_process(argvs, pathlib.Path(folder.name))
+    for before, result in zip([{"modules": []}, *found], found):  # what the earlier commands had imported
+        result["modules_before"] = before["modules"]
+    results, k = {}, 0
+    for part in order:
+        n = len(_SHARED_PROCESS_PARTS[part][1])
+        results[part], k = found[k:k + n], k + n
+    return results, folder.name
+
+
+_SHARED_PROCESS_FOLDERS: list = []
+
+
+def shared_process(part: str) -> tuple[list[dict], str]:
+    """The results (commands_in_one_process's dicts, copies) of `part`'s commands in the shared interpreter, and
+    the folder it ran in (each command's relative outputs are there). Each result also has modules_before: which
+    of matplotlib, scipy, numpy the commands before it had imported (a test that a command imports none of them
+    checks its part's first has none before it: else an earlier command, not this one, imported it)."""
+    import copy
+
+    results, folder = _shared_process_results()
+    return copy.deepcopy(results[part]), folder

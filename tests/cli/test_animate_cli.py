@@ -8,7 +8,7 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
-from helpers import commands_in_one_process
+from helpers import SHARED_PROCESS_GROUP, register_shared_process, shared_process
 from rodparadox.animate.encoders import check_fps, open_sink
 from rodparadox.animate.timeline import boost_ends, image_count, timeline
 from sears_paradox_cli.main import main
@@ -187,13 +187,26 @@ def test_mp4_without_ffmpeg_is_one_sentence_and_exit_1(here, monkeypatch):
     assert list(here.iterdir()) == []
 
 
-def test_help_and_refused_input_import_no_matplotlib_and_no_progress_bar_when_stderr_is_not_a_terminal(here):
-    """Four processes before, one now: help and two refused inputs (test_help_and_refused_input_import_no_matplotlib)
-    run one after another in one interpreter, matplotlib looked for after each (the first after which it is there
-    is named), then an animation whose standard error is a pipe draws no progress bar
-    (test_no_progress_bar_when_stderr_is_not_a_terminal): its own status, standard output and error."""
-    refused = [["animate", "--help"], ["animate", "fig2", "--fps", "0"], ["animate", "fig2", "--fps", "30"]]
-    *probes, drawn = commands_in_one_process(refused + [["animate", "fig2", *SHORT]], here)
+#: help and two refused inputs: no matplotlib imported; then an animation whose standard error is a pipe
+REFUSED = [["animate", "--help"], ["animate", "fig2", "--fps", "0"], ["animate", "fig2", "--fps", "30"]]
+DRAWN = ["animate", "fig2", *SHORT]
+register_shared_process("animate_refused", REFUSED, draws=False)
+register_shared_process("animate_drawn", [DRAWN], draws=True)
+
+
+@pytest.mark.xdist_group(SHARED_PROCESS_GROUP)
+def test_help_and_refused_input_import_no_matplotlib_and_no_progress_bar_when_stderr_is_not_a_terminal():
+    """Four processes before, one now (helpers.shared_process's, shared with other tests' commands): help and two
+    refused inputs (test_help_and_refused_input_import_no_matplotlib) run one after another in one interpreter,
+    matplotlib looked for after each (the first after which it is there is named; only commands that import no
+    matplotlib run before them), then an animation whose standard error is a pipe draws no progress bar
+    (test_no_progress_bar_when_stderr_is_not_a_terminal): its own status, standard output and error, and its file
+    written in the interpreter's folder, where nothing else writes."""
+    probes, folder = shared_process("animate_refused")
+    [drawn], _ = shared_process("animate_drawn")
+    assert [r["argv"] for r in probes] == REFUSED and drawn["argv"] == DRAWN
+    assert "matplotlib" not in probes[0]["modules_before"], "imported by another test's command"
     for result in probes:
         assert "matplotlib" not in result["modules"], result["argv"]
     assert (drawn["code"], drawn["stdout"], drawn["stderr"]) == (0, b"outputs/fig2_now_fps4_seconds0.5.gif\n", b"")
+    assert Image.open(os.path.join(folder, "outputs", "fig2_now_fps4_seconds0.5.gif")).n_frames == 2

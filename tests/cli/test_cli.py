@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from helpers import commands_in_one_process
+from helpers import SHARED_PROCESS_GROUP, commands_in_one_process, register_shared_process, shared_process
 from test_docs import documented_console_commands
 from sears_paradox_cli.main import main
 
@@ -363,11 +363,20 @@ NON_DRAWING = [["--help"], ["list"], ["events", "fig2"], ["export", "fig2"], ["p
                ["ledger", "fig2", "--format", "markdown", "--at", "1"], ["ledger", "fig2", "--format", "latex"]]
 
 
-def test_non_drawing_paths_never_import_matplotlib(tmp_path):
+register_shared_process("non_drawing", NON_DRAWING, draws=False)
+
+
+@pytest.mark.xdist_group(SHARED_PROCESS_GROUP)
+def test_non_drawing_paths_never_import_matplotlib():
     """Nor scipy: only a causal rod needs an integrator (issue 16, item 8). The commands run in one fresh
     interpreter, one after another (a process each cost 12 interpreters): what is imported accumulates, so the
-    first command after which matplotlib or scipy is there is the one that imported it, and is named."""
-    for result in commands_in_one_process(NON_DRAWING, tmp_path):
+    first command after which matplotlib or scipy is there is the one that imported it, and is named. The
+    interpreter is helpers.shared_process's: before these only other tests' commands that draw nothing (refused
+    inputs, help, an export); those that draw come after."""
+    results, _ = shared_process("non_drawing")
+    assert [r["argv"] for r in results] == NON_DRAWING
+    assert not {"matplotlib", "scipy"} & set(results[0]["modules_before"]), "imported by another test's command"
+    for result in results:
         assert not {"matplotlib", "scipy"} & set(result["modules"]), (result["argv"], result["modules"])
         assert (result["code"], result["left_unflushed"]) == (0, None), result
 
@@ -483,11 +492,18 @@ def test_a_full_standard_output_is_one_sentence_and_exit_1(tmp_path):
             1, b"Error: cannot write to standard output: no space left on device.\n", None), result
 
 
+TO_FULL_DEVICE = ["export", "fig2", "--format", "json", "-o", "/dev/full"]
+if Path("/dev/full").exists():
+    register_shared_process("full_device", [TO_FULL_DEVICE], draws=False)
+
+
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
-def test_a_full_device_as_output_file_is_one_sentence_and_exit_1(tmp_path):
-    result = subprocess.run(_cli_prefix() + ["export", "fig2", "--format", "json", "-o", "/dev/full"],
-                            capture_output=True, text=True, timeout=60)
-    assert (result.returncode, result.stderr) == (1, "Error: cannot write /dev/full: no space left on device.\n")
+@pytest.mark.xdist_group(SHARED_PROCESS_GROUP)
+def test_a_full_device_as_output_file_is_one_sentence_and_exit_1():
+    """In helpers.shared_process's interpreter (a process of its own before), with its own status and error."""
+    [result], _ = shared_process("full_device")
+    assert result["argv"] == TO_FULL_DEVICE
+    assert (result["code"], result["stderr"]) == (1, b"Error: cannot write /dev/full: no space left on device.\n")
 
 
 def test_a_closed_pipe_ends_quietly():
@@ -505,18 +521,25 @@ def _cli_prefix() -> list[str]:
     return [str(script)] if script.exists() else [sys.executable, "-c", "from sears_paradox_cli.main import main; main()"]
 
 
-def test_clicks_own_checks_are_one_sentence_too(tmp_path):
+CLICKS_OWN_CHECKS = [
+    (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', "
+                                           "'slides'."),
+    (["plot", "fig2", "--rod-lines", "-1"], "Invalid value for '--rod-lines': -1 is not in the range 0<=x<=50."),
+    (["events", "fig2", "--v", ""], "Invalid value for '--v': '' is not a valid float."),
+    (["nope"], "No such command 'nope'."),
+]
+register_shared_process("clicks_own_checks", [argv for argv, _ in CLICKS_OWN_CHECKS], draws=False)
+
+
+@pytest.mark.xdist_group(SHARED_PROCESS_GROUP)
+def test_clicks_own_checks_are_one_sentence_too():
     """Found in review: click's usage errors printed three lines (Usage, Try, Error); now one sentence, exit 2.
-    The four calls (a process each before) run one after another in one interpreter, each with its own status
-    and output."""
-    calls = [
-        (["plot", "fig2", "--style", "fancy"], "Invalid value for '--style': 'fancy' is not one of 'default', 'print', "
-                                               "'slides'."),
-        (["plot", "fig2", "--rod-lines", "-1"], "Invalid value for '--rod-lines': -1 is not in the range 0<=x<=50."),
-        (["events", "fig2", "--v", ""], "Invalid value for '--v': '' is not a valid float."),
-        (["nope"], "No such command 'nope'."),
-    ]
-    for result, (argv, message) in zip(commands_in_one_process([argv for argv, _ in calls], tmp_path), calls):
+    The four calls (a process each before) run one after another in one interpreter (helpers.shared_process's),
+    each with its own status and output."""
+    calls = CLICKS_OWN_CHECKS
+    results, _ = shared_process("clicks_own_checks")
+    assert [r["argv"] for r in results] == [argv for argv, _ in calls]
+    for result, (argv, message) in zip(results, calls):
         assert (result["code"], result["stdout"], result["stderr"]) == (2, b"", f"Error: {message}\n".encode()), result
 
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from helpers import commands_in_one_process
+from helpers import SHARED_PROCESS_GROUP, register_shared_process, shared_process
 from helpers import error_of, run
 from sears_paradox_cli.main import main
 
@@ -58,17 +58,24 @@ TABLES_TO_DEV_STDOUT = [(["export", "fig2"], b'{\n "format": "sears-paradox/1"')
                         (["ledger", "fig2"], b"fig2: v = 0.6, L = 1; E in M c^2")]
 
 
-def test_output_to_dev_stdout_in_a_pipe_is_the_data_alone(tmp_path):
+register_shared_process("to_dev_stdout", [args + ["-o", "/dev/stdout"] for args, _ in TO_DEV_STDOUT + TABLES_TO_DEV_STDOUT],
+                        draws=True)
+
+
+@pytest.mark.xdist_group(SHARED_PROCESS_GROUP)
+def test_output_to_dev_stdout_in_a_pipe_is_the_data_alone():
     """/dev/stdout in a pipe leads to `pipe:[...]`, no path: it was "no such file or directory"; now it is written
     in place, and the path written is not printed into the data.
 
     And a table to /dev/stdout takes the format of standard output: no extension to read the format from, json
     for export and text for ledger, as without -o (test_a_table_to_dev_stdout_takes_the_format_of_standard_output
     before). The five commands (a process each before) run one after another in one interpreter whose standard
-    output is a pipe; each has its own status, standard output and standard error."""
+    output is a pipe (helpers.shared_process's, with other tests' commands); each has its own status, standard
+    output and standard error."""
     calls = TO_DEV_STDOUT + TABLES_TO_DEV_STDOUT
-    for result, (args, start) in zip(commands_in_one_process([args + ["-o", "/dev/stdout"] for args, _ in calls],
-                                                             tmp_path), calls):
+    results, _ = shared_process("to_dev_stdout")
+    assert [r["argv"] for r in results] == [args + ["-o", "/dev/stdout"] for args, _ in calls]
+    for result, (args, start) in zip(results, calls):
         assert (result["code"], result["stderr"], result["left_unflushed"]) == (0, b"", None), result
         assert result["stdout"].startswith(start), result["stdout"][:200]
         assert b"/dev/stdout" not in result["stdout"]
