@@ -39,18 +39,21 @@ def _diagram(name, v, style, options, L, specs):
 
 
 def measured(name: str, v: float | None = None, style: str = "default", specs: tuple = ("rest", "moving")):
-    """(a drawing like `diagram`'s of these arguments, with default options; the renderer that laid it out as Agg
-    draws it, `measuring_renderer`): drawn and laid out once per process. Read extents with this renderer."""
+    """(the `diagram` of these arguments, with default options; the renderer that laid it out as Agg draws it,
+    `measuring_renderer`): drawn and laid out once per process. Read extents with this renderer."""
     return _measured(name, _own_v(name, v), style, tuple(specs))
 
 
 @lru_cache(maxsize=None)
 def _measured(name, v, style, specs):
-    # its own drawing, not `diagram`'s: the measuring canvas stays on the figure, and a PNG saved through it would
-    # be the shared renderer's (test_render's two renderings of fig2 failed so)
-    d = render.draw(history(name, v), frames_of(specs, v), style)
+    # `diagram`'s own figure, its canvas put back once measured: a PNG saved through the measuring canvas would be
+    # the shared renderer's (test_render's two renderings of fig2 failed so while the canvas stayed)
+    d = diagram(name, v, style, specs=specs)
+    canvas = d.figure.canvas
     with render.style_context(style):
-        return d, measuring_renderer(d.figure)
+        renderer = measuring_renderer(d.figure)
+    d.figure.set_canvas(canvas)
+    return d, renderer
 
 
 def svg(name: str, v: float | None = None, style: str = "default") -> bytes:
