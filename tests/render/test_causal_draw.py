@@ -42,8 +42,13 @@ def frames(h, *extra: float) -> list[Frame]:
     return [*paper_frames(h.scenario.v), *(Frame(f"u={u}", u) for u in extra)]
 
 
-@lru_cache(maxsize=None)
 def drawn(name: str, v: float, style: str = "default", extra: tuple = ()):
+    """The causal rod's figure, once per process (`drawn("fig2", 0.6)` and `drawn("fig2", 0.6, "default")` alike)."""
+    return _drawn(name, v, style, tuple(extra))
+
+
+@lru_cache(maxsize=None)
+def _drawn(name: str, v: float, style: str, extra: tuple):
     h = causal(name, v)
     return render.draw(h, frames(h, *extra), style)
 

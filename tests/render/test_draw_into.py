@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
+import drawn as shared
 from rodparadox import render
 from rodparadox.physics.rigid import run
 from rodparadox.physics.frames import paper_frames
@@ -36,7 +37,7 @@ def subfigure_diagram(options=render.Options(), style="default"):
 @pytest.mark.parametrize("style", ["default", "slides"])
 def test_a_subfigure_holds_the_same_world_lines_as_draw(style):
     figure, diagram = subfigure_diagram(style=style)
-    alone = lines_by_gid(render.draw(fig2(), paper_frames(0.6), style).figure)
+    alone = lines_by_gid(shared.diagram("fig2", 0.6, style).figure)  # render.draw's, drawn once per process
     assert [p.letter for p in diagram.panels] == ["a", "b"]
     assert [p.frame.name for p in diagram.panels] == ["rest", "moving"]
     for p in diagram.panels:
@@ -103,7 +104,7 @@ def test_disabled_layers_are_absent_and_a_small_target_is_refused():
 
 
 def test_draw_into_a_figure_of_draws_size_lays_it_out_as_draw_does():
-    fig = render.draw(fig2(), paper_frames(0.6)).figure
+    fig = shared.diagram("fig2", 0.6).figure  # render.draw's, drawn once per process
     target = Figure(figsize=fig.get_size_inches(), dpi=72)
     diagram = render.draw_into(target, fig2(), paper_frames(0.6))
     # the same layout, up to the rounding of the size in inches (the bisection of the panels' height may differ)

@@ -10,7 +10,6 @@ from __future__ import annotations
 import itertools
 import logging
 import re
-from functools import lru_cache
 
 import numpy as np
 import pytest
@@ -19,8 +18,7 @@ from matplotlib.lines import Line2D
 from matplotlib.colors import to_rgb
 from matplotlib.patches import Patch
 
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-
+import drawn as shared
 from helpers import history
 from rodparadox import render
 from rodparadox.physics import rod
@@ -33,10 +31,9 @@ EVERYTHING = render.Options(other_axes=True, light_cones=True, hyperbolae=True, 
 MM = 72 / 25.4  # points per millimetre
 
 
-@lru_cache(maxsize=None)
 def diagram(name: str, v: float, style: str = "default", options: render.Options = render.Options()):
-    h = history(name, v)
-    return render.draw(h, paper_frames(h.scenario.v), style, options)
+    """The diagram of S and S', drawn once per process for every test of tests/render that draws it (`drawn`)."""
+    return shared.diagram(name, v, style, options)
 
 
 # --- legends in grey --------------------------------------------------------------------------------------
@@ -150,13 +147,9 @@ def test_an_inset_appears_exactly_where_the_sheet_is_thinner_than_3_mm_and_hides
     """Issue 14.4: `plot while_turning --v 0.97 --style print` drew panel (b) as one thick line. The inset is there
     exactly when the sheet, measured from the world-lines through the axes' transform, is under 3 mm; its
     magnification is the one its note states; it lies inside its panel and covers no label, leader or impact."""
-    d = diagram(name, v, style)
+    # laid out as Agg draws it (every extent as rendered), once per process with test_render's label checks
+    d, renderer = shared.measured(name, v, style)
     h = history(name, v)
-    fig = d.figure
-    canvas = FigureCanvasAgg(fig)
-    with render.style_context(style):
-        renderer = canvas.get_renderer()
-        fig.draw(renderer)
     insets = 0
     for info in d.panels:
         ax = info.axes

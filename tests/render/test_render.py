@@ -16,7 +16,6 @@ import math
 import re
 import warnings
 import xml.etree.ElementTree as ET
-from functools import lru_cache
 from pathlib import Path
 
 import matplotlib
@@ -25,6 +24,7 @@ import numpy as np
 import pytest
 from matplotlib.colors import to_rgb
 
+import drawn as shared
 from helpers import history, measuring_renderer, particle_presets
 from rodparadox import render
 from rodparadox.physics.rigid import run
@@ -39,10 +39,9 @@ ROOT = Path(__file__).resolve().parents[2]
 SPEEDS = (0.1, 0.6, 0.95)
 
 
-@lru_cache(maxsize=None)
 def figure(name: str, v: float = 0.6, style: str = "default", options: render.Options = render.Options(), L=None):
-    h = history(name, v, L)
-    return render.draw(h, paper_frames(h.scenario.v), style, options).figure
+    """The diagram of S and S', drawn once per process for every test of tests/render that draws it (`drawn`)."""
+    return shared.diagram(name, v, style, options, L).figure
 
 
 def artist(fig, gid: str):
@@ -399,17 +398,20 @@ def _collisions(fig, style, renderer=None) -> list[tuple[str, str]]:
     with render.style_context(style):
         for ax in fig.axes:
             axes_box = ax.get_window_extent(renderer)
+            # each line in display units once per panel, not once per text: a marker's centre, a line's path
+            drawn = [(line.get_gid(), True, line.get_transform().transform(xy(line))[0]) if line.get_linestyle() == "None"
+                     else (line.get_gid(), False, line.get_transform().transform_path(line.get_path()))
+                     for line in ax.lines]
             for text in ax.texts:
                 box = text.get_window_extent(renderer)
-                for line in ax.lines:
-                    if line.get_gid() == (text.get_gid() or "").replace("-label-", "-leader-"):
+                for gid, marker, shape in drawn:
+                    if gid == (text.get_gid() or "").replace("-label-", "-leader-"):
                         continue  # a label's own leader line ends at it
-                    if line.get_linestyle() == "None":
-                        centre = line.get_transform().transform(xy(line))[0]
-                        if box.contains(*centre):
-                            problems.append((text.get_gid(), line.get_gid()))
-                    elif line.get_transform().transform_path(line.get_path()).intersects_bbox(box, filled=False):
-                        problems.append((text.get_gid(), line.get_gid()))
+                    if marker:
+                        if box.contains(*shape):
+                            problems.append((text.get_gid(), gid))
+                    elif shape.intersects_bbox(box, filled=False):
+                        problems.append((text.get_gid(), gid))
                 if not (axes_box.x0 <= box.x0 and box.x1 <= axes_box.x1 and axes_box.y0 <= box.y0 and box.y1 <= axes_box.y1):
                     problems.append((text.get_gid(), "outside its panel"))
                 boxes.append((text.get_gid(), box))
@@ -499,9 +501,7 @@ def _leader_faults(fig, style, renderer=None, slack: float = 0.5) -> list[tuple[
 LAYOUT_FRAMES = ("rest", "moving", 0.3, 0.9, -0.5, 0.6, -0.9, 0.99)
 
 
-def frames_of(specs, v: float) -> list[Frame]:
-    named = {"rest": Frame("rest", 0.0), "moving": Frame("moving", -v)}
-    return [named[f] if f in named else Frame(f"u={f}", f) for f in specs]
+frames_of = shared.frames_of
 
 
 def _outer_texts(fig, renderer) -> list[tuple[str, object]]:
@@ -652,7 +652,11 @@ def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits
     figures = {}
 
     def drawn(specs: tuple) -> tuple:
-        """The figure of these frames and the renderer it was rendered with, once."""
+        """The figure of these frames and the renderer it was rendered with, once; S and S' once per process for
+        every test that measures them (`drawn.measured`: test_legible_panels' insets)."""
+        if specs == ("rest", "moving"):
+            d, renderer = shared.measured(name, v, style, specs)
+            return d.figure, renderer
         if specs not in figures:
             fig = render.draw(h, frames_of(specs, v), style).figure
             figures[specs] = (fig, _renderer(fig, style))
@@ -822,7 +826,7 @@ def test_every_preset_renders_to_svg_in_every_style_with_every_worldline_and_imp
     """The SVG (what `plot` writes by default) holds, in both panels, every world-line, impact and label by its id."""
     for name in particle_presets():
         h = history(name)
-        svg = render.figure_bytes(render.draw(h, paper_frames(h.scenario.v), style).figure, "svg", style)
+        svg = shared.svg(name, None, style)  # figure_bytes(render.draw(h, paper_frames(v), style).figure, "svg", style)
         ids = {g.get("id") for g in ET.fromstring(svg).iter(f"{SVG}g")}
         particles = [p for p in ("A", "B") if h.worldline(p) is not None]
         assert particles, name
@@ -857,7 +861,8 @@ def test_pdf_and_png_have_the_figures_size_and_are_deterministic(fmt, style):
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_two_renderings_give_identical_bytes_without_dates_or_versions(fmt):
     h = history("fig2", 0.6)
-    one = render.figure_bytes(render.draw(h, paper_frames(0.6)).figure, fmt)
+    # one drawing kept for every test that reads it (`drawn`), one afresh
+    one = shared.svg("fig2", 0.6) if fmt == "svg" else render.figure_bytes(figure("fig2", 0.6), fmt)
     two = render.figure_bytes(render.draw(h, paper_frames(0.6)).figure, fmt)
     assert one == two
     if fmt != "png":
@@ -866,7 +871,7 @@ def test_two_renderings_give_identical_bytes_without_dates_or_versions(fmt):
 
 
 def test_fig2_svg_stays_small():
-    size = len(render.figure_bytes(figure("fig2", 0.6), "svg"))
+    size = len(shared.svg("fig2", 0.6))  # render.figure_bytes(figure("fig2", 0.6), "svg"), once per process
     assert size < 120_000
 
 
