@@ -168,7 +168,7 @@ def register_shared_process(part: str, argvs, draws: bool) -> None:
 
 @functools.lru_cache(maxsize=None)
 def _shared_process_results() -> tuple[dict[str, list[dict]], str]:
-    import contextlib
+    import os
     import pathlib
     import tempfile
 
@@ -176,8 +176,12 @@ def _shared_process_results() -> tuple[dict[str, list[dict]], str]:
     _SHARED_PROCESS_FOLDERS.append(folder)  # removed when the worker exits
     order = sorted(_SHARED_PROCESS_PARTS, key=lambda part: (_SHARED_PROCESS_PARTS[part][0], part))
     argvs = [list(argv) for part in order for argv in _SHARED_PROCESS_PARTS[part][1]]
-    with contextlib.chdir(folder.name):  # its relative outputs land in an empty folder of its own
+    before = os.getcwd()
+    os.chdir(folder.name)  # its relative outputs land in an empty folder of its own (contextlib.chdir: Python 3.11)
+    try:
         found = commands_in_one_process(argvs, pathlib.Path(folder.name))
+    finally:
+        os.chdir(before)
     for before, result in zip([{"modules": []}, *found], found):  # what the earlier commands had imported
         result["modules_before"] = before["modules"]
     results, k = {}, 0

@@ -503,7 +503,8 @@ def test_a_full_device_as_output_file_is_one_sentence_and_exit_1():
     """In helpers.shared_process's interpreter (a process of its own before), with its own status and error."""
     [result], _ = shared_process("full_device")
     assert result["argv"] == TO_FULL_DEVICE
-    assert (result["code"], result["stderr"]) == (1, b"Error: cannot write /dev/full: no space left on device.\n")
+    assert (result["code"], result["stderr"], result["left_unflushed"]) == (
+        1, b"Error: cannot write /dev/full: no space left on device.\n", None), result
 
 
 def test_a_closed_pipe_ends_quietly():
