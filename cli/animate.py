@@ -90,10 +90,13 @@ def animate(scenario: str, v: float | None, L: float | None, frame: str, mode: s
     from rodparadox.animate.encoders import write_images
 
     drawn = images_of(history, frames, mode, style, line, rod_view)
-    first = next(drawn)  # the scene laid out and its first image drawn: the size is known, nothing is written yet
-    check_cost(count, first.shape[1], first.shape[0], seconds, fps, allow_long)
-    with progress(itertools.chain([first], drawn), count, str(job.path), quiet) as bar:
-        written = write_images(job.path, job.fmt, fps, bar, name=job.stem)
+    try:
+        first = next(drawn)  # the scene laid out and its first image drawn: the size is known, nothing is written yet
+        check_cost(count, first.shape[1], first.shape[0], seconds, fps, allow_long)
+        with progress(itertools.chain([first], drawn), count, str(job.path), quiet) as bar:
+            written = write_images(job.path, job.fmt, fps, bar, name=job.stem)
+    finally:
+        drawn.close()  # a refused or failed run leaves no scene waiting for the collector
     report([(f"{job.path}/" if job.fmt == "png" else job.path, written)], quiet)
 
 

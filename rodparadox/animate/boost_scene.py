@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FuncFormatter, MaxNLocator, ScalarFormatter
 
-from rodparadox.animate.images import blitted
+from rodparadox.animate.images import blitted, in_style
 from rodparadox.animate.timeline import BoostTimeline, boost_tolerance
 from rodparadox.numbers import impact_name, shown
 from rodparadox.physics.types import WORLDLINE_NAMES
@@ -50,11 +50,11 @@ OPTIONS = Options()
 def boost_images(history: RodHistory, timeline: BoostTimeline, style: str) -> Iterator[np.ndarray]:
     """Each instant of the boost as an image: `BoostScene` drawn once, then at each instant only what moves, over
     the saved background (blitting)."""
-    from rodparadox import render
-
-    with render.style_context(style):
+    def draw() -> Iterator[np.ndarray]:
         scene = BoostScene(history, timeline, style)
-        yield from blitted(scene.canvas, (scene.update(k) for k in range(len(timeline))))
+        return blitted(scene.canvas, (scene.update(k) for k in range(len(timeline))))
+
+    return in_style(style, draw)  # the style's rcParams only while an image is drawn
 
 
 class BoostScene:

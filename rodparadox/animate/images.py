@@ -8,9 +8,30 @@ it (`blitted`), so the same figure gives the same pixels every run.
 
 from __future__ import annotations
 
-from typing import Iterable, Iterator, Sequence
+from typing import Callable, Iterable, Iterator, Sequence
 
 import numpy as np
+
+def in_style(style: str, draw: Callable[[], Iterator[np.ndarray]]) -> Iterator[np.ndarray]:
+    """The images `draw()` gives, each drawn inside `render.style_context(style)`, which is left before each image
+    is handed on. A generator that yielded inside the style's context would keep the style's rcParams on the whole
+    process while it waits, and until it is collected when its caller stops early (`animate` refusing a long run
+    after the first image; an error): every figure made meanwhile outside a style (a handout's LaTeX figures take
+    the process's figure.dpi) was laid out at the style's 72 dpi instead of matplotlib's 100, so its bytes depended
+    on when the collector ran. Here nothing is changed between images."""
+    from rodparadox import render
+
+    images = None
+    while True:
+        with render.style_context(style):
+            if images is None:
+                images = draw()
+            try:
+                image = next(images)
+            except StopIteration:
+                return
+        yield image
+
 
 def image_of(canvas) -> np.ndarray:
     """The canvas's pixels as an image: RGB, a copy (the canvas draws the next instant over them)."""

@@ -18,7 +18,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from rodparadox.animate.images import blitted
+from rodparadox.animate.images import blitted, in_style
 from rodparadox.animate.timeline import NowTimeline
 from rodparadox.physics.history import RodHistory
 from rodparadox.numbers import nice_number
@@ -32,13 +32,13 @@ def now_images(history: RodHistory, timeline: NowTimeline, style: str, rod_view:
     x scale. Drawn once; each instant only redraws the moving artists over the saved background (blitting).
     `rod_view` ("first", "last"): the rod's own view beside the panels (alone without frames), its "now" a level
     line sweeping its chart time at an even pace, in lock-step with the panels."""
-    from rodparadox import render
-
-    with render.style_context(style):
+    def draw() -> Iterator[np.ndarray]:
         scene = NowScene(history, timeline, style, rod_view) if timeline.frames else RodNowScene(history, style)
         count = len(timeline)
-        yield from blitted(scene.canvas, (scene.update(k, count) if not timeline.frames else scene.update(k)
-                                          for k in range(count)))
+        return blitted(scene.canvas, (scene.update(k, count) if not timeline.frames else scene.update(k)
+                                      for k in range(count)))
+
+    return in_style(style, draw)  # the style's rcParams only while an image is drawn
 
 
 #: a lens is added under a strip whose rod is never longer than this fraction of the strip's width

@@ -257,6 +257,12 @@ def handout_tex(handout: Handout, placed: list[_Placed], paper: str) -> str:
 # --- figures -------------------------------------------------------------------------------------------------
 
 
+#: the resolution the rod view's and the strips' figures are laid out at (their vector files do not depend on it
+#: but for rounding in the last printed digit): matplotlib's default, given, not read from the process's
+#: rcParams, so a caller's figure.dpi (a style left applied, a notebook's) never changes a byte
+FIGURE_DPI = 100.0
+
+
 def text_width_in(paper: str) -> float:
     """The width of the text on the page, in inches: the paper less a margin each side."""
     return PAPERS[paper][0] - 2 * MARGIN_MM / 25.4
@@ -280,7 +286,7 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
         from matplotlib.figure import Figure
 
         width, height = render.rod_view_size(block.histories, style, text_width_in(paper) * 72)
-        figure = Figure(figsize=(text_width_in(paper), height / 72))
+        figure = Figure(figsize=(text_width_in(paper), height / 72), dpi=FIGURE_DPI)
         render.draw_rod_view_into(figure, block.histories, style)
     else:
         from matplotlib.figure import Figure
@@ -289,7 +295,7 @@ def figure_pdf(block: DiagramBlock | RodViewBlock | Strips, paper: str, style: s
         least = render.strips_size(block.history, block.frame, block.times, style, _STRIPS_ROW_SCALE,
                                    partners=block.partners)[1] / 72
         figure = Figure(figsize=(text_width_in(paper),
-                                 max(_STRIPS_BELOW_IN + _STRIPS_ROW_IN * len(block.times), least)))
+                                 max(_STRIPS_BELOW_IN + _STRIPS_ROW_IN * len(block.times), least)), dpi=FIGURE_DPI)
         render.draw_strips_into(figure, block.history, block.frame, block.times, style, partners=block.partners)
     return render.figure_bytes(figure, "pdf", style)
 

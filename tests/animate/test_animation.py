@@ -227,6 +227,26 @@ def test_image_count_refuses_in_one_sentence(seconds, fps, what, message):
     assert str(e.value) == message and e.value.what == what
 
 
+@pytest.mark.parametrize("mode", ["now", "boost"])
+def test_images_waiting_between_instants_leave_the_process_rcparams_alone(mode):
+    """A generator of images applies its style only while it draws an image: one left waiting (`animate` refusing a
+    long run after the first image) kept the style's rcParams (figure.dpi 72) on the whole process until collected,
+    and a handout's LaTeX figures made meanwhile changed in their last digits."""
+    import matplotlib
+
+    from rodparadox.animate.scenes import images_of
+    from rodparadox.animate.timeline import timeline as make_timeline
+
+    h = run(load("fig2"))
+    frames = paper_frames(0.6)
+    before = dict(matplotlib.rcParams)
+    drawn = images_of(h, frames, mode, "default", make_timeline(h, frames, mode, 2))
+    assert next(drawn).ndim == 3
+    assert dict(matplotlib.rcParams) == before
+    drawn.close()
+    assert dict(matplotlib.rcParams) == before
+
+
 def test_now_images_show_the_diagram_with_a_moving_now_line_and_are_reproducible():
     """The drawing: every image the same size; the now-line's colour (#CC0033) appears on a row of pixels that climbs
     from image to image (t grows upward); two runs give identical pixels."""

@@ -109,6 +109,20 @@ def test_the_same_handout_gives_the_same_bytes(worksheet):
     assert all(b"CreationDate" not in b and b"ModDate" not in b for b in files.values())
 
 
+def test_a_figure_does_not_depend_on_the_process_figure_dpi(worksheet):
+    """A figure's bytes never depend on the process's rcParams: the strips were laid out at whatever figure.dpi the
+    process had (a style a suspended animation left applied: 72), which moved a bar's edge in the last printed
+    digit (146.495562 against 146.495563 pt)."""
+    import matplotlib
+
+    from rodparadox.handout.tex import figure_pdf
+
+    h, files = worksheet
+    block = next(b for s in h.sections for b in s.blocks if isinstance(b, Strips))
+    with matplotlib.rc_context({"figure.dpi": 72}):
+        assert figure_pdf(block, "a4", "print") == files[f"{h.sections[0].name}_strips_{frame_word(block.frame)}.pdf"]
+
+
 def test_paper_and_style_are_checked_and_chosen(worksheet):
     h, files = worksheet
     one = Handout("t", (Section("s", "s", (Paragraph("x"),)),))
