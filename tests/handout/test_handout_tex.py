@@ -118,9 +118,11 @@ def test_a_figure_does_not_depend_on_the_process_figure_dpi(worksheet):
     from rodparadox.handout.tex import figure_pdf
 
     h, files = worksheet
-    block = next(b for s in h.sections for b in s.blocks if isinstance(b, Strips))
+    strips = [(s.name, b) for s in h.sections for b in s.blocks if isinstance(b, Strips)]
+    assert len(strips) == 4  # fig1 and fig2, each in S and S'
     with matplotlib.rc_context({"figure.dpi": 72}):
-        assert figure_pdf(block, "a4", "print") == files[f"{h.sections[0].name}_strips_{frame_word(block.frame)}.pdf"]
+        for name, block in strips:
+            assert figure_pdf(block, "a4", "print") == files[f"{name}_strips_{frame_word(block.frame)}.pdf"], name
 
 
 def test_paper_and_style_are_checked_and_chosen(worksheet):
