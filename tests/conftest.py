@@ -15,7 +15,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from hypothesis import settings
 
 
 # Bytecode: where PYTHONDONTWRITEBYTECODE is set (this machine's image sets it), every process the tests start
@@ -23,10 +22,16 @@ from hypothesis import settings
 # every test module again: measured 0.42 against 0.29 user CPU-s for one `sears-paradox events fig2`. The package
 # is compiled once here (written next to the sources in __pycache__, which git ignores), and pytest may cache its
 # rewritten test modules; a user's own setting for their other programs is left as it is.
+# hypothesis is imported below, not above: pytest rewrites the asserts of every module of a package that ships a
+# pytest plugin (all of hypothesis), and keeps the rewritten code only where bytecode may be written. Imported
+# before this line, each of the three processes (the controller, two workers) rewrote hypothesis's modules again:
+# a process's collection took 3.6 user CPU-s, 2.1 with them kept (the controller, which starts first, writes them).
 sys.dont_write_bytecode = False
 _ROOT = Path(__file__).resolve().parent.parent
 compileall.compile_dir(_ROOT / "rodparadox", quiet=2)
 compileall.compile_dir(_ROOT / "cli", quiet=2)
+
+from hypothesis import settings  # noqa: E402 (after dont_write_bytecode: see above)
 
 # CI (CI=true) runs the same generated examples every time, so a landing never hangs on a lucky draw;
 # a developer's run draws new ones and finds what CI would not
