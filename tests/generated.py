@@ -48,6 +48,11 @@ def runs_enough(prop, minimum: int, counted: str = "ran") -> None:
 velocities = st.floats(0.02, 0.99)
 speeds = st.one_of(st.none(), st.floats(0.02, 0.99))
 masses = st.floats(0.1, 10.0)
+gaps = st.floats(0.0, 3.0)
+lengths = st.floats(0.1, 10.0)
+delays = st.floats(-1.5, 1.5)
+frames = st.one_of(st.sampled_from(["rest", "moving"]), st.floats(-0.99, 0.99))
+
 
 #: "the same mass" or another: `st.one_of(st.just(m), masses)` drawn as one strategy built once (a strategy built
 #: inside a draw is validated again at every draw: a quarter of the time hypothesis spent drawing a scenario); the
@@ -60,10 +65,6 @@ def _same_or_other(draw, mass: float) -> float:
     """`draw(st.one_of(st.just(mass), masses))`."""
     other = draw(_same_or_other_mass)
     return mass if other is _SAME else other
-gaps = st.floats(0.0, 3.0)
-lengths = st.floats(0.1, 10.0)
-delays = st.floats(-1.5, 1.5)
-frames = st.one_of(st.sampled_from(["rest", "moving"]), st.floats(-0.99, 0.99))
 
 
 @st.composite
