@@ -75,14 +75,15 @@ def check_interior_rigidity(history) -> int:
     sigma lies at proper distance sigma from the left end: the point pivot + side d (cosh phi, sinh phi)."""
     L = history.scenario.L
     checked = 0
+    worldlines = {sigma: material_worldline(history, sigma) for sigma in (0.0, 0.13 * L, 0.5 * L, 0.91 * L, L)}
     for turn in history.turns:
         for f in (0.0, 0.37, 1.0):
             phi = turn.rapidity_from + f * (turn.rapidity_stop - turn.rapidity_from)
-            for sigma in (0.0, 0.13 * L, 0.5 * L, 0.91 * L, L):
+            for sigma, worldline in worldlines.items():
                 d = sigma if turn.pivot_end == "left" else L - sigma
                 x = turn.pivot.x + turn.side * d * math.cosh(phi)
                 t = turn.pivot.t + turn.side * d * math.sinh(phi)
-                seen = material_worldline(history, sigma).event_at_time(t)
+                seen = worldline.event_at_time(t)
                 assert seen.x == pytest.approx(x, abs=1e-11 * (L + abs(t) + abs(x))), (turn, sigma, f)
                 checked += 1
     return checked
