@@ -54,7 +54,7 @@ def add_velocities(w: float, u: float) -> float:
 
 
 def scale_of(*values: float) -> float:
-    return max(1.0, *(abs(v) for v in values))
+    return max(1.0, *map(abs, values))
 
 
 def near(actual: float, expected: float, tol: float) -> bool:
