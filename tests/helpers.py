@@ -130,7 +130,8 @@ _MEASURING_SIZE = 3000
 def measuring_renderer(fig):
     """Lay out `fig` as Agg draws it, without rasterising (Figure.draw_without_rendering), and return the renderer
     that measured it: every text's extent and every tick is what a rendered PNG has. Call it inside the figure's
-    style_context. The renderer is shared by every figure of the same dpi that fits it."""
+    style_context. The renderer is shared by every figure of the same dpi that fits it. The figure's own canvas is
+    put back once it is measured: a PNG saved through the measuring canvas would be the shared renderer's."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
 
     class MeasuringCanvas(FigureCanvasAgg):
@@ -143,9 +144,19 @@ def measuring_renderer(fig):
                 _MEASURING_RENDERERS[dpi] = RendererAgg(_MEASURING_SIZE, _MEASURING_SIZE, dpi)
             return _MEASURING_RENDERERS[dpi]
 
+        def draw(self):
+            # Agg's draw without clearing the shared renderer's 3000 x 3000 pixels (3 ms a figure): only
+            # draw_without_rendering draws through this canvas, and it paints no pixel
+            self.renderer = self.get_renderer()
+            self.figure.draw(self.renderer)
+
+    own = fig.canvas
     canvas = MeasuringCanvas(fig)
-    fig.draw_without_rendering()
-    return canvas.get_renderer()
+    try:
+        fig.draw_without_rendering()
+        return canvas.get_renderer()
+    finally:
+        fig.set_canvas(own)
 
 
 # --- one fresh interpreter for the command-line tests of several files (test_cli, test_animate_cli, test_robust_cli)

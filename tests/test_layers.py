@@ -14,6 +14,9 @@ from pathlib import Path
 
 import pytest
 
+#: one worker runs this file: every module is parsed once (0.7 CPU-s), not once on each worker
+pytestmark = pytest.mark.xdist_group("layers")
+
 ROOT = Path(__file__).resolve().parent.parent
 #: the installed packages and the folders that hold them
 PACKAGES = {"rodparadox": ROOT / "rodparadox", "sears_paradox_cli": ROOT / "cli"}
@@ -59,12 +62,12 @@ def is_ours(name: str) -> bool:
     return name.split(".")[0] in PACKAGES
 
 
-def imports(tree: ast.AST, modules=MODULES) -> list[tuple[str, str | None, int]]:
+def imports(source: str, modules=MODULES) -> list[tuple[str, str | None, int]]:
     """(module, name or None, line) for everything a module imports of ours: `import a.b` gives (a.b, None);
     `from a import b` gives (a.b, None) when a.b is a module, else (a, b); a string that is a module's whole dotted
     name (`importlib.import_module("rodparadox.render.diagram")`) gives that module."""
     found = []
-    for node in ast.walk(tree):
+    for node in nodes(source):
         if isinstance(node, ast.Import):
             found += [(alias.name, None, node.lineno) for alias in node.names if is_ours(alias.name)]
         elif isinstance(node, ast.ImportFrom) and node.module and is_ours(node.module):
@@ -95,7 +98,7 @@ def layer_violations(module: str, source: str, modules=MODULES) -> list[str]:
     if me not in MAY_IMPORT and me != "rodparadox":
         return [f"{module}: part {me!r} has no rule in MAY_IMPORT; say which layers it may import"]
     out = []
-    for target, _, line in imports(parsed(source), modules):
+    for target, _, line in imports(source, modules):
         theirs = part(target)
         if theirs == "cli":
             out.append(f"{module}, line {line}: imports the command line ({target})")
@@ -108,10 +111,9 @@ def layer_violations(module: str, source: str, modules=MODULES) -> list[str]:
 def private_imports(module: str, source: str, modules=MODULES) -> list[str]:
     """Every private name (a leading underscore, not a dunder) `module` takes from another module: imported by name,
     or read as an attribute of a module it imported."""
-    tree = parsed(source)
     out = []
     bound: dict[str, str] = {}  # local name -> our module it stands for
-    for node in ast.walk(tree):
+    for node in nodes(source):
         if isinstance(node, ast.Import):
             for alias in node.names:
                 if is_ours(alias.name) and alias.asname:
@@ -123,7 +125,7 @@ def private_imports(module: str, source: str, modules=MODULES) -> list[str]:
                     bound[alias.asname or alias.name] = whole
                 elif _private(alias.name) and node.module != module:
                     out.append(f"{module}, line {node.lineno}: imports {alias.name} from {node.module}")
-    for node in ast.walk(tree):
+    for node in nodes(source):
         if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in bound
                 and _private(node.attr) and bound[node.value.id] != module):
             out.append(f"{module}, line {node.lineno}: reads {node.attr} of {bound[node.value.id]}")
@@ -131,9 +133,10 @@ def private_imports(module: str, source: str, modules=MODULES) -> list[str]:
 
 
 @functools.lru_cache(maxsize=None)
-def parsed(source: str) -> ast.AST:
-    """A module's tree, parsed once for both checks that walk it (neither changes it)."""
-    return ast.parse(source)
+def nodes(source: str) -> tuple[ast.AST, ...]:
+    """Every node of a module's tree in `ast.walk`'s order, parsed and walked once for all the checks that read them
+    (none changes them)."""
+    return tuple(ast.walk(ast.parse(source)))
 
 
 def _private(name: str) -> bool:
@@ -179,7 +182,7 @@ def test_the_library_never_names_an_option():
 def import_graph(sources: dict[str, str], modules=MODULES) -> dict[str, set[str]]:
     """Each module of ours -> the modules of ours it imports (anywhere in it: at the top, inside a function, or
     under TYPE_CHECKING), `from a import b` of a name counted as an import of a."""
-    return {module: {target for target, _, _ in imports(parsed(source), modules) if target != module}
+    return {module: {target for target, _, _ in imports(source, modules) if target != module}
             for module, source in sources.items()}
 
 
@@ -249,7 +252,7 @@ def model_branches(module: str, source: str) -> list[str]:
     """Places that test a history's or a chart's model by name: `getattr(x, "kind"...)`, or a comparison of an
     attribute `kind` or `model` with "rigid" or "causal". A consumer asks for a capability instead."""
     out = []
-    for node in ast.walk(parsed(source)):
+    for node in nodes(source):
         if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "getattr"
                 and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant) and node.args[1].value == "kind"):
             out.append(f"{module}, line {node.lineno}: getattr(..., 'kind')")

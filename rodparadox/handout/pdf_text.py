@@ -223,6 +223,11 @@ class TextRuns(Artist):
         self.stale = False
 
 
+def text_width(paper: str) -> float:
+    """The width of the text on a page of `paper`, in points: the paper less MARGIN each side."""
+    return PAPERS[paper][0] * 72 - 2 * MARGIN
+
+
 class Pages:
     """The pages being filled: one Figure each, the paper's size; `used` is how far down the text area (points
     from its top) the current page is filled. Text areas: MARGIN inside the paper's edges, less the footer's band."""
@@ -232,7 +237,7 @@ class Pages:
         self.width, self.height = width * 72, height * 72  # points
         self.style, self.type = style, type_
         self.left, self.top = MARGIN, MARGIN
-        self.text_width = self.width - 2 * MARGIN
+        self.text_width = text_width(paper)
         self.footer_band = 2.2 * type_.small
         self.text_height = self.height - 2 * MARGIN - self.footer_band
         self.figures: list[Figure] = []

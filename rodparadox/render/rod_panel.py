@@ -217,16 +217,24 @@ def rod_view_size(histories: Sequence, style: str, width: float) -> tuple[float,
     left, key, bottom, top = _margins(st)
     X0, X1, T0, T1 = _union([rod_box(h) for h in histories])
     aspect = (X1 - X0) / (T1 - T0)
-    if width / len(histories) - left - key < MIN_PANEL_WIDTH:  # the keys and tick labels take the whole width
+    check_side_by_side(len(histories), style, width)
+    h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
+    return len(histories) * (left + h_ax * aspect + key), max(h_ax + bottom + top, least_height(histories, style))
+
+
+def check_side_by_side(count: int, style: str, width: float) -> None:
+    """Refuse (OptionError, naming the styles in which they fit) the rods' own views of `count` histories side by
+    side in `width` points when the keys and tick labels take the whole width (`rod_view_size` refuses so before
+    laying them out; a handout asks before building its document, which takes seconds for a driven rod)."""
+    left, key = _margins(STYLES[style])[:2]
+    if width / count - left - key < MIN_PANEL_WIDTH:  # the keys and tick labels take the whole width
         from rodparadox.errors import OptionError
 
-        fit = tuple(name for name, other in STYLES.items() if width / len(histories) - sum(_margins(other)[:2])
+        fit = tuple(name for name, other in STYLES.items() if width / count - sum(_margins(other)[:2])
                     >= MIN_PANEL_WIDTH)
         raise OptionError("style", style, " or ".join(fit) or "a wider page",
                           "the rods' own views do not fit side by side on this page in the {value} style; choose "
                           "{style} {allowed}, or the rigid rod alone ({rod} rigid).")
-    h_ax = min(st.panel_height * 72, (width / len(histories) - left - key) / aspect)
-    return len(histories) * (left + h_ax * aspect + key), max(h_ax + bottom + top, least_height(histories, style))
 
 
 def least_height(histories: Sequence, style: str) -> float:

@@ -41,7 +41,7 @@ def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
     assert run("fig2", *SHORT).output == "outputs/fig2_now_fps4_seconds0.5.gif (unchanged)\n"
     assert os.stat(here / "outputs" / "fig2_now_fps4_seconds0.5.gif").st_mtime_ns == stamp
     (here / "outputs" / "fig2_now_fps4_seconds0.5.gif").unlink()
-    run("fig2", *SHORT, "-q")
+    assert run("fig2", *SHORT, "-q").output == ""
     # byte-identical, and -q prints nothing
     assert (here / "outputs" / "fig2_now_fps4_seconds0.5.gif").read_bytes() == first
 

@@ -308,10 +308,12 @@ def test_help_does_not_import_matplotlib_and_plot_never_imports_pyplot(in_tmp):
 
 #: what a rigid rod's figure draws nothing with, so `plot` of one never imports it (each costs the process time):
 #: the causal rod (its physics, scipy's integrator, its layers and their colour scale), the rod's own view's
-#: Gauss-Legendre nodes (numpy.polynomial), the other commands' packages
+#: Gauss-Legendre nodes (numpy.polynomial), the other commands' packages; and, the probe's figure being an SVG
+#: (plot's default), the PDF's font subsets (fontTools.subset, matplotlib's PDF backend: 0.09 s)
 NOT_FOR_A_RIGID_PLOT = ("scipy", "rodparadox.physics.causal", "rodparadox.render.causal", "rodparadox.render.colour_scale",
                         "rodparadox.render.rod_panel", "numpy.polynomial", "rodparadox.web", "rodparadox.handout",
-                        "rodparadox.animate", "rodparadox.tables")
+                        "rodparadox.animate", "rodparadox.tables", "rodparadox.render.pdf_fonts", "fontTools.subset",
+                        "matplotlib.backends.backend_pdf")
 
 
 @pytest.mark.skipif(shutil.which("make") is None, reason="needs make")

@@ -38,11 +38,34 @@ def test_a_reader_that_leaves_after_a_pause_is_exit_141(args, unbuffered):
     system one write and dropped what the pipe did not take, exiting 0."""
     env = dict(os.environ, PYTHONUNBUFFERED=unbuffered)
     process = subprocess.Popen(_cli() + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
-    time.sleep(1.0)  # the pipe fills and the writer waits
+    _wait_until_full(process)  # the pipe fills and the writer waits
     assert len(process.stdout.read(10)) == 10
     process.stdout.close()
     stderr = process.stderr.read().decode()
     assert (process.wait(timeout=60), stderr) == (141, "")
+
+
+def _wait_until_full(process) -> None:
+    """Until the writer has filled its standard output's pipe and waits (Linux: the pipe holds as many bytes as it
+    can take, seen without reading them); elsewhere a second's pause, as this test had everywhere (a second, most
+    of it waiting, where the writer fills the pipe in about a third)."""
+    try:
+        import fcntl
+        import termios
+
+        capacity = fcntl.fcntl(process.stdout.fileno(), fcntl.F_GETPIPE_SZ)
+        FIONREAD = termios.FIONREAD
+    except (ImportError, AttributeError, OSError):
+        time.sleep(1.0)
+        return
+    held = bytearray(4)
+    deadline = time.monotonic() + 60
+    while True:
+        fcntl.ioctl(process.stdout.fileno(), FIONREAD, held)
+        if int.from_bytes(held, sys.byteorder) >= capacity:
+            return
+        assert process.poll() is None and time.monotonic() < deadline, "the writer never filled the pipe"
+        time.sleep(0.02)
 
 
 # --- item 15: -o /dev/stdout into a pipe ----------------------------------------------------------------

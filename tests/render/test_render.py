@@ -652,7 +652,7 @@ def test_labels_touch_nothing_sit_by_their_markers_and_any_number_of_panels_fits
     figures = {}
 
     def drawn(specs: tuple) -> tuple:
-        """The figure of these frames and the renderer it was rendered with, once; S and S' once per process for
+        """The figure of these frames and the renderer it was measured with, once; S and S' once per process for
         every test that measures them (`drawn.measured`: test_legible_panels' insets)."""
         if specs == ("rest", "moving"):
             d, renderer = shared.measured(name, v, style, specs)
