@@ -6,6 +6,7 @@ tests/handout; imported as `generated` (tests/ is on pytest's `pythonpath`).
 
 from __future__ import annotations
 
+import functools
 from collections import Counter
 
 from hypothesis import HealthCheck, assume, example, note, settings
@@ -53,6 +54,19 @@ delays = st.floats(-1.5, 1.5)
 frames = st.one_of(st.sampled_from(["rest", "moving"]), st.floats(-0.99, 0.99))
 
 
+#: "the same mass" or another: `st.one_of(st.just(m), masses)` drawn as one strategy built once (a strategy built
+#: inside a draw is validated again at every draw: a quarter of the time hypothesis spent drawing a scenario); the
+#: same choices, so the same draws (checked: every test case of every property drawing from here, before and after)
+_SAME = object()
+_same_or_other_mass = st.one_of(st.just(_SAME), masses)
+
+
+def _same_or_other(draw, mass: float) -> float:
+    """`draw(st.one_of(st.just(mass), masses))`."""
+    other = draw(_same_or_other_mass)
+    return mass if other is _SAME else other
+
+
 @st.composite
 def one_particle(draw):
     name = draw(st.sampled_from("AB"))
@@ -62,7 +76,7 @@ def one_particle(draw):
 @st.composite
 def two_gaps(draw):
     m_a = draw(masses)
-    m_b = draw(st.one_of(st.just(m_a), masses))
+    m_b = _same_or_other(draw, m_a)
     return Scenario("two", draw(velocities), (Particle("A", m_a, draw(speeds), draw(gaps)),
                                                Particle("B", m_b, draw(speeds), draw(gaps))), draw(lengths))
 
@@ -71,7 +85,7 @@ def two_gaps(draw):
 def simultaneous(draw):
     """Both particles at the same speed and gap: the impacts are simultaneous in S (rule 5), masses equal or not."""
     m_a = draw(masses)
-    m_b = draw(st.one_of(st.just(m_a), masses))
+    m_b = _same_or_other(draw, m_a)
     speed, gap = draw(speeds), draw(gaps)
     return Scenario("simultaneous", draw(velocities), (Particle("A", m_a, speed, gap), Particle("B", m_b, speed, gap)),
                     draw(lengths))
@@ -83,20 +97,25 @@ def timed(draw):
     first = draw(st.sampled_from("AB"))
     second = "B" if first == "A" else "A"
     m_1 = draw(masses)
-    m_2 = draw(st.one_of(st.just(m_1), masses))
+    m_2 = _same_or_other(draw, m_1)
     timing = Timing(first, draw(frames), draw(delays))
     return Scenario("timed", draw(velocities), (Particle(first, m_1, draw(speeds), draw(gaps)),
                                                  Particle(second, m_2, draw(speeds), timed_with=timing)),
                     draw(lengths))
 
 
+#: while_turning's timings, built once: a strategy built inside a draw is validated again at every draw (half of
+#: the time hypothesis spent drawing a while_turning scenario; the same draws either way)
+_TIMINGS_WHILE_TURNING = st.one_of(st.builds(Timing, st.just("B"), st.just("moving"), st.floats(-0.6, 0.0)),
+                                   st.builds(Timing, st.just("B"), st.just("rest"), st.floats(0.0, 0.6)))
+
+
 @st.composite
 def while_turning(draw):
     """A timed a little before B in S' (or a little after in S): A strikes while the rod still turns from B1 (rule 6)."""
     m_b = draw(masses)
-    m_a = draw(st.one_of(st.just(m_b), masses))
-    timing = draw(st.one_of(st.builds(Timing, st.just("B"), st.just("moving"), st.floats(-0.6, 0.0)),
-                            st.builds(Timing, st.just("B"), st.just("rest"), st.floats(0.0, 0.6))))
+    m_a = _same_or_other(draw, m_b)
+    timing = draw(_TIMINGS_WHILE_TURNING)
     return Scenario("while_turning", draw(velocities), (Particle("B", m_b, draw(speeds), draw(gaps)),
                                                          Particle("A", m_a, draw(speeds), timed_with=timing)),
                     draw(lengths))
@@ -132,22 +151,34 @@ def with_examples(*extra):
 force_frames = st.one_of(st.just("rest"), st.just("moving"), st.floats(-0.8, 0.8))
 
 
+@functools.lru_cache(maxsize=None)
+def _profile_parts(least: float) -> dict:
+    """force_profiles' strategies for a least force, built once (a strategy built inside a draw is validated again
+    at every draw); drawn exactly as they were written inline before, so the same draws."""
+    return {"shape": st.sampled_from(["step", "sine2", "points"]), "n": st.integers(2, 5),
+            "times": {n: st.lists(st.floats(-1.0, 3.0), min_size=n, max_size=n, unique=True) for n in range(2, 6)},
+            "forces": {n: st.lists(st.floats(least, 1.0), min_size=n, max_size=n) for n in range(2, 6)},
+            "peak": st.floats(least, 2.0).filter(lambda p: abs(p) > 1e-3),
+            "start": st.floats(-1.0, 2.0), "duration": st.floats(0.05, 2.0)}
+
+
 @st.composite
 def force_profiles(draw, end: str, least: float):
     """A generated profile for one end: step, sine2 or points (2 to 5 corners), timed in S, S' or a frame u; its
     force never below `least` (a pull the model carries with room: rigid -0.9, causal -0.45)."""
     from rodparadox.physics.forces import ForceProfile
 
-    shape = draw(st.sampled_from(["step", "sine2", "points"]))
+    parts = _profile_parts(least)
+    shape = draw(parts["shape"])
     frame = draw(force_frames)
     if shape == "points":
-        n = draw(st.integers(2, 5))
-        times = sorted(draw(st.lists(st.floats(-1.0, 3.0), min_size=n, max_size=n, unique=True)))
+        n = draw(parts["n"])
+        times = sorted(draw(parts["times"][n]))
         spread = all(b - a > 1e-3 for a, b in zip(times, times[1:]))
-        forces = draw(st.lists(st.floats(least, 1.0), min_size=n, max_size=n))
+        forces = draw(parts["forces"][n])
         if not spread or all(f == 0 for f in forces):
             forces[0], times = 0.3, [k * 0.5 for k in range(n)]
         return ForceProfile("points", points=tuple(zip(times, forces)), frame=frame, key=f"forces.{end}")
-    peak = draw(st.floats(least, 2.0).filter(lambda p: abs(p) > 1e-3))
-    return ForceProfile(shape, peak=peak, start=draw(st.floats(-1.0, 2.0)), duration=draw(st.floats(0.05, 2.0)),
+    peak = draw(parts["peak"])
+    return ForceProfile(shape, peak=peak, start=draw(parts["start"]), duration=draw(parts["duration"]),
                         frame=frame, key=f"forces.{end}")

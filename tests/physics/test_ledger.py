@@ -75,15 +75,18 @@ def check_interior_rigidity(history) -> int:
     sigma lies at proper distance sigma from the left end: the point pivot + side d (cosh phi, sinh phi)."""
     L = history.scenario.L
     checked = 0
+    worldlines = {sigma: material_worldline(history, sigma) for sigma in (0.0, 0.13 * L, 0.5 * L, 0.91 * L, L)}
     for turn in history.turns:
         for f in (0.0, 0.37, 1.0):
             phi = turn.rapidity_from + f * (turn.rapidity_stop - turn.rapidity_from)
-            for sigma in (0.0, 0.13 * L, 0.5 * L, 0.91 * L, L):
+            for sigma, worldline in worldlines.items():
                 d = sigma if turn.pivot_end == "left" else L - sigma
                 x = turn.pivot.x + turn.side * d * math.cosh(phi)
                 t = turn.pivot.t + turn.side * d * math.sinh(phi)
-                seen = material_worldline(history, sigma).event_at_time(t)
-                assert seen.x == pytest.approx(x, abs=1e-11 * (L + abs(t) + abs(x))), (turn, sigma, f)
+                seen = worldline.event_at_time(t)
+                # `seen.x == pytest.approx(x, abs=tol)` by its rules, without building an approx object per point
+                tol = 1e-11 * (L + abs(t) + abs(x))
+                assert seen.x == x or (math.isfinite(x) and abs(seen.x - x) <= tol), (seen.x, x, tol, turn, sigma, f)
                 checked += 1
     return checked
 
@@ -333,10 +336,43 @@ def test_the_ledger_at_every_impact_agrees_with_the_exported_velocities_and_mass
             assert close(kinetic + hidden, (total.E, total.p), 1e-12 * total.E)
 
 
+def rapidities_on_a_slice(history, eta: float, t: float, sigmas: np.ndarray) -> np.ndarray:
+    """The rapidity, in the frame eta, where each material point sigma crosses the slice t, for all of them at once,
+    written out from rule 3 (module docstring of rodparadox.physics.rigid.turns) and the turns alone: at rest in S
+    before the first turn; during a turn on the hyperbola pivot + side d (cosh phi, sinh phi), phi from the turn's
+    rapidity_from to its rapidity_stop, whose time in the frame is t_P + side d sinh(phi - eta); after it straight at
+    rapidity_stop. A point's time rises along its world-line, so the last turn the slice reaches decides."""
+    L = history.scenario.L
+    psi = np.full(len(sigmas), -eta)
+    for turn in history.turns:
+        d = sigmas if turn.pivot_end == "left" else L - sigmas
+        t_pivot, side = turn.pivot.time_in(eta), turn.side
+        start = t_pivot + side * d * math.sinh(turn.rapidity_from - eta)
+        end = t_pivot + side * d * math.sinh(turn.rapidity_stop - eta)
+        on_arc = (start <= t) & (t <= end) & (d > 0)
+        on = np.clip(np.arcsinh((t - t_pivot) / (side * np.where(on_arc, d, 1.0))),  # within the turn's rapidities:
+                     min(turn.rapidity_from, turn.rapidity_stop) - eta,  # a slice through a point's start or end
+                     max(turn.rapidity_from, turn.rapidity_stop) - eta)  # (within rounding) takes that end's
+        psi = np.where(t > end, turn.rapidity_stop - eta, psi)
+        psi = np.where(on_arc, on, psi)
+    return psi
+
+
+#: where the quadrature's rapidities are also read from the material world-lines themselves (`rod_slice`), as
+#: fractions of L: inside the rod, where a point's rapidity is continuous and well conditioned
+SPOT_CHECKS = np.array([0.1, 0.27, 0.5, 0.64, 0.9])
+
+
 def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios():
     """The closed form against the midpoint rule over the material points' rapidities (about 3000 cells): a method
-    that shares nothing with it but the world-lines. The midpoint rule's own error (O(h^2), larger near kinks) bounds
-    the tolerance; the 1e-9 accuracy itself is shown against the hand-derived closed forms above (1e-12)."""
+    that shares nothing with it but the turns. The rapidities come from rule 3 written out for all cells at once
+    (`rapidities_on_a_slice`), and agree with the exact material world-lines (`rod_slice`) at a few points of each
+    slice. Measured with `rod_slice` at every cell (4.2 CPU-s; about 0.5 this way), over this test's examples and
+    2000 more: they agreed within 5e-11, except in cells within about 1e-11 L of a pivot whose instant the slice
+    meets within rounding (there the slice's time carries that rounding divided by d); the error against the
+    closed form, in units of the tolerance, moved by at most 2e-7. The midpoint rule's own error (O(h^2), larger
+    near kinks) bounds the tolerance; the 1e-9 accuracy itself is shown against the hand-derived closed forms
+    above (1e-12)."""
     @settings(SETTINGS, max_examples=60)
     @given(scenarios, st.floats(-0.9, 0.9), st.floats(0.0, 1.0))
     @example(ZIGZAG, -0.95, 0.4)
@@ -356,7 +392,10 @@ def test_the_closed_form_integral_agrees_with_quadrature_for_generated_scenarios
         near = L * np.logspace(-12, -2.4, 250)
         edges = np.unique(np.concatenate([np.linspace(0.0, L, 2501), near, L - near]))
         mids, widths = 0.5 * (edges[1:] + edges[:-1]), np.diff(edges)
-        psi = rod_slice(history, eta, t, mids).rapidity
+        psi = rapidities_on_a_slice(history, eta, t, mids)
+        spots = SPOT_CHECKS * L
+        assert np.allclose(rapidities_on_a_slice(history, eta, t, spots), rod_slice(history, eta, t, spots).rapidity,
+                           rtol=0, atol=1e-9), (t, spots)
         E, p = (np.cosh(psi) * widths).sum() / L, (np.sinh(psi) * widths).sum() / L
         exact = rod_kinetic(history, eta, t)
         assert close(exact, (E, p), 1e-5 * math.cosh(np.abs(psi).max())), (t, exact, E, p)
