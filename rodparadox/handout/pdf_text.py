@@ -85,7 +85,24 @@ def wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
     and never starts a line.
 
     A word wider than a whole line (a long number, a path) is cut between characters, so nothing runs off the page.
+
+    Each text is set once per process for its size, width and the rcParams' fonts (`_wrapped`): a worksheet and its
+    key, a handout of the same run on A4 and Letter, set the same paragraphs, questions and captions again.
     """
+    value = dict.__getitem__  # the fonts `render.text_size` measures with (its cache key)
+    rc = matplotlib.rcParams
+    return list(_wrapped(tuple(words), float(size), float(width), value(rc, "mathtext.fontset"),
+                         tuple(value(rc, "font.family")), tuple(value(rc, "font.sans-serif")),
+                         tuple(value(rc, "font.serif"))))
+
+
+@lru_cache(maxsize=4096)  # a handout sets a few hundred texts; bounded for a long-lived process
+def _wrapped(words: tuple, size: float, width: float, *fonts) -> tuple[Line, ...]:
+    """`wrap` for the current rcParams, whose font settings are `fonts` (part of the cache key only)."""
+    return tuple(_wrap(words, size, width))
+
+
+def _wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
     lines: list[list[tuple[str, bool, bool, float, bool]]] = [[]]  # (word, bold, italic, x, glued)
     x = 0.0
     room = width - WRAP_SLACK

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from rodparadox.handout.document import (PAPERS, Block, DiagramBlock, Handout, Heading, PageBreak, Paragraph, Question,
                                          RodViewBlock, Section, Strips, Table)
@@ -187,6 +188,7 @@ def _variable(token: str) -> str:
 _SUBSCRIPT_LETTERS = str.maketrans("ᵤ₀₁₂₃₄₅₆₇₈₉", "u0123456789")
 
 
+@lru_cache(maxsize=4096)  # a worksheet and its key, a handout and its worksheet, say the same sentences; bounded
 def prose(text: str) -> str:
     """Running text as LaTeX (`latex_text`), its variables (`words.math_pieces`: v, L, t′, x, E, p, u) in math
     italics, as the PDF sets them; units (c, M), frames (S′) and labels (A, B₁) upright."""

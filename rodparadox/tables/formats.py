@@ -17,6 +17,7 @@ last column.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Sequence
 
 from rodparadox.tables.table import Cell, Table
@@ -56,6 +57,7 @@ _SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿ", "0123456789+-n"
 _SYMBOL_MARKS = {"\N{PRIME}", "\N{DOUBLE PRIME}", *(c for c, letter in _SUBSCRIPTS.items() if letter.isalpha())}
 
 
+@lru_cache(maxsize=8192)  # a table repeats its headers and numbers, a handout its tables in the key; bounded
 def latex_text(text: str) -> str:
     """Plain Unicode text as LaTeX text: the special characters escaped, and B₁, t′, x′, xᵤ, γ, −, ², × written
     in math mode (B$_{1}$, $t'$, $x_{u}$, $\\gamma$, $-$, $^{2}$, $\\times$), consecutive math in one $...$.

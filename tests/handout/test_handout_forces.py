@@ -46,8 +46,10 @@ def sine2_area(peak: float, start: float, duration: float, t: float) -> float:
     return peak * (s / 2 - duration * math.sin(2 * math.pi * s / duration) / (4 * math.pi))
 
 
+@functools.lru_cache(maxsize=None)
 def compared(name: str, worksheet: bool = False):
-    """The preset's handout (or worksheet) comparing its rigid and causal rods."""
+    """The preset's handout (or worksheet) comparing its rigid and causal rods, built once per process (a document is
+    frozen: the fixtures below and the page rules' test read the same one)."""
     rigid, causal = rods(name)
     return build([(name, rigid, None, causal)], worksheet=worksheet)
 
@@ -319,10 +321,8 @@ def test_the_pages_are_set_like_a_book(name):
     import test_page_rules as rules
     from rodparadox.handout.pdf import page_plan
 
-    rigid, causal = rods(name)
-    plans = [(f"{name} {kind}", doc, page_plan(doc, "a4"))
-             for kind, doc in (("handout", build([(name, rigid, None, causal)])),
-                               ("worksheet", build([(name, rigid, None, causal)], worksheet=True)))]
+    plans = [(f"{name} {kind}", doc, page_plan(doc, "a4"))  # build([(name, rigid, None, causal)], worksheet=...)
+             for kind, doc in (("handout", compared(name)), ("worksheet", compared(name, worksheet=True)))]
     rules.test_no_heading_or_introduction_is_left_apart_from_what_follows_it(plans)
     rules.test_a_short_table_is_whole_and_on_its_introduction_s_page(plans)
     rules.test_no_page_is_more_than_a_quarter_empty_but_a_section_s_last(plans)
