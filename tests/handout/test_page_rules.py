@@ -164,12 +164,10 @@ def test_a_block_of_strips_split_between_pages_is_headed_again_on_the_next():
     top of the page, set before the rows. Read off the plan: the block's first piece on a later page starts at the
     text area's top and is one line high (not a row of strips); at least one block is split, so this asks
     something."""
-    from rodparadox.handout.pdf import page_plan
-
     split = 0
     for name in ("fig1", "fig2"):
-        doc = build([(name, history(name, 0.95))])
-        plan = page_plan(doc, "a4")
+        # the plans' own: build([(name, history(name, 0.95))]) and page_plan(doc, "a4"), made once
+        [(doc, plan)] = [(d, p) for label, d, p in _all_plans()["a4"] if label == f"{name} handout v=0.95 a4"]
         for placed, block in zip([b for b in plan.blocks if b.kind != "break"], doc.blocks()):
             if type(block).__name__ != "Strips" or len({page for page, _, _ in placed.pieces}) < 2:
                 continue
