@@ -9,6 +9,7 @@ one slice. Lengths and times are multiples of L, energies of M c², momenta of M
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -247,7 +248,14 @@ def stress_slice(rigid, causal, frames) -> StressSlice:
 
 
 def compare(rigid, causal, frames) -> Comparison:
-    """The numbers of the comparison of one scenario's two rods, `frames` the handout's (S, S′ ...)."""
+    """The numbers of the comparison of one scenario's two rods, `frames` the handout's (S, S′ ...): worked out once
+    per pair of histories and frames (a handout and its worksheet, a worksheet and its key, compare the same rods;
+    the Comparison is frozen and only read)."""
+    return _compare(rigid, causal, tuple(frames))
+
+
+@functools.lru_cache(maxsize=16)
+def _compare(rigid, causal, frames: tuple[Frame, ...]) -> Comparison:
     first = {p.name: (p.mass, math.tanh(next(i for i in causal.impacts if i.particle == p.name)
                                         .particle_rapidity_before)) for p in causal.scenario.particles}
     ring = ringing(rigid, causal)
