@@ -156,9 +156,10 @@ def test_several_scenarios_and_formats_in_one_call(in_tmp):
     assert (in_tmp / "figs" / "fig2_rest.png").read_bytes().startswith(b"\x89PNG")
 
 
-def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp):
+def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp, monkeypatch):
     assert run("fig1", "-o", "paper-figure.pdf").output == "paper-figure.pdf\n"
     assert (in_tmp / "paper-figure.pdf").read_bytes().startswith(b"%PDF-")
+    _figures_stood_in(monkeypatch)  # the second name alone is checked
     assert run("fig1", "-o", "slide.png", "--format", "png", "--style", "slides").output == "slide.png\n"
 
 

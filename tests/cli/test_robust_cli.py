@@ -122,9 +122,15 @@ def test_ledger_refuses_an_extension_that_contradicts_the_format(tmp_path, monke
 
 
 def test_ledger_still_writes_an_agreeing_or_unknown_extension(tmp_path, monkeypatch):
+    from rodparadox import render
+    from rodparadox.render import ledger_figure
+
     monkeypatch.chdir(tmp_path)
     run("ledger", "fig2", "-o", "x.TXT", "--format", "text")
     run("ledger", "fig2", "-o", "table.dat", "--format", "json")
+    # the figure's name is checked, not the figure (drawn and read in test_ledger_cli): it is stood in for
+    monkeypatch.setattr(ledger_figure, "draw", lambda history, frames, style: (frames, style))
+    monkeypatch.setattr(render, "figure_bytes", lambda figure, fmt, style="default": repr((figure, fmt)).encode())
     run("ledger", "fig2", "-o", "x.svg", "--format", "svg")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["table.dat", "x.TXT", "x.svg"]
     assert (tmp_path / "table.dat").read_text().startswith('{\n "format": "sears-paradox-ledger/1"')
