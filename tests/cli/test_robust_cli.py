@@ -403,8 +403,16 @@ def test_a_long_animation_is_refused_unless_allowed(tmp_path, monkeypatch):
         "or --fps.")
     assert list(tmp_path.iterdir()) == [Path("outputs")] or [p.name for p in tmp_path.iterdir()] == ["outputs"]
     assert list((tmp_path / "outputs").iterdir()) == []
-    # a bound a short run (2 images, the fewest an animation has) passes only when allowed
+    # a bound a short run (2 images, the fewest an animation has) passes only when allowed; the bound and the
+    # refusal are what is checked, so its images are stood in for, blank, of the size just refused (the first
+    # image's drawing and the message with its size: above)
+    import numpy as np
+
+    import rodparadox.animate.scenes as scenes
+
     monkeypatch.setattr(timeline, "MAX_PIXELS", 1 * 1049 * 1101)
+    monkeypatch.setattr(scenes, "images_of", lambda history, frames, mode, style, line, rod_view=None: (
+        np.full((1101, 1049, 3), 255, dtype=np.uint8) for _ in range(len(line))))
     assert "give --allow-long" in error_of("animate", "fig2", "--fps", "2", "--seconds", "1")
     assert run("animate", "fig2", "--fps", "2", "--seconds", "1", "--allow-long").output == \
         "outputs/fig2_now_fps2_seconds1.gif\n"
