@@ -125,9 +125,6 @@ def test_quiet_prints_nothing_and_still_writes(in_tmp, flag, monkeypatch):
 def test_every_non_default_option_is_in_the_file_name(options, name, monkeypatch):
     """The name is the planning's: the figure itself (drawn and checked everywhere else) is stood in for here,
     so that these 27 cases cost what naming costs, not 27 drawings."""
-    from rodparadox import render
-    from sears_paradox_cli import plot
-
     _figures_stood_in(monkeypatch)
     assert run("fig2", *options).output == f"outputs/{name}.svg\n"
 
