@@ -260,7 +260,6 @@ def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():
 
 
 @functools.cache
-@functools.lru_cache(maxsize=None)
 def _rasterised(name: str, v: float, style: str):
     """The rigid rod's own view of a preset alone in a small figure, drawn by Agg: (axes, artists, grey levels).
     Drawn once per process (fig2 at 0.6 in the default style serves the pivot's test and the names' test); the
