@@ -118,26 +118,15 @@ def handout(scenarios: tuple[str, ...], v: float | None, L: float | None, frame:
     planned.prepare([job], described, output)
 
     before_matplotlib()
-    if any(len(histories) > 1 for histories in views.values()):
-        # the rods' own views side by side, refused here if the page's text is too narrow for them, as setting the
-        # page would refuse them, but before the document is built (`handout sears --frame both,rod --rod both
-        # --style slides`: 1.5 s before)
-        from rodparadox.render.rod_panel import check_side_by_side
-
-        if job.fmt == "pdf":
-            from rodparadox.handout.pdf_text import text_width
-        else:
-            from rodparadox.handout.tex import text_width_in as text_width
-        check_side_by_side(max(len(histories) for histories in views.values()), style,
-                           text_width(paper) * (1 if job.fmt == "pdf" else 72))
     from rodparadox.handout.build import build
+    from rodparadox.handout.own_view import refuse_views_too_wide, with_rod_views
     from rodparadox.io.output import write_atomic, write_folder
+
+    refuse_views_too_wide(views, job.fmt, paper, style)
 
     document = build(items, worksheet=worksheet, compare_v=compare_v, chosen=numbers, equal_scales=equal_scales,
                      sections=sections)
     if views:
-        from rodparadox.handout.own_view import with_rod_views
-
         document = with_rod_views(document, views)
     if job.fmt == "pdf":
         from rodparadox.handout.pdf import to_pdf  # matplotlib: only now, after every input has been checked

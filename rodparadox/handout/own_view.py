@@ -1,5 +1,6 @@
 """The rod's own view in a handout (`handout --frame both,rod`): a figure after each section's diagram, and its
-caption, generated from the histories (docs/plot.md, "The rod's own view"). Pure: no matplotlib.
+caption, generated from the histories (docs/plot.md, "The rod's own view"). Pure: no matplotlib, except
+`refuse_views_too_wide`, which measures the page as the PDF or LaTeX writer sets it.
 """
 
 from __future__ import annotations
@@ -87,3 +88,25 @@ def with_rod_views(handout: Handout, views: dict[str, tuple]) -> Handout:
             blocks.insert(at + 1, RodViewBlock("rod_view", tuple(histories), caption))
         sections.append(replace(section, blocks=tuple(blocks)))
     return replace(handout, sections=tuple(sections))
+
+
+def refuse_views_too_wide(views: dict[str, tuple], fmt: str, paper: str, style: str) -> None:
+    """Refuse (OptionError) the rods' own views side by side where the page's text is too narrow for them, as
+    setting the page would refuse them, but before the document is built (seconds for a driven rod: `handout sears
+    --frame both,rod --rod both --style slides` took 1.5 s before refusing). `views`: each section's histories, as
+    `with_rod_views` takes them; `fmt` "pdf" (the text width of `handout.pdf`) or "tex" (that of `handout.tex`).
+    Imports matplotlib: call it once every other input has been checked."""
+    count = max((len(histories) for histories in views.values()), default=0)
+    if count < 2:
+        return
+    from rodparadox.render.rod_panel import check_side_by_side
+
+    if fmt == "pdf":
+        from rodparadox.handout.pdf_text import text_width
+
+        width = text_width(paper)
+    else:
+        from rodparadox.handout.tex import text_width_in
+
+        width = text_width_in(paper) * 72
+    check_side_by_side(count, style, width)
