@@ -74,11 +74,20 @@ def palette_of(colours: np.ndarray, counts: np.ndarray, size: int = GIF_COLOURS)
 def nearest_entries(colours: np.ndarray, palette: np.ndarray) -> np.ndarray:
     """For each colour (0xRRGGBB integers), the index of the nearest palette entry (squared RGB distance; the
     first of equals)."""
+    # |c - p|^2 = |c|^2 - 2 c.p + |p|^2, and |c|^2 is the same for every entry: the nearest entry minimises
+    # |p|^2 - 2 c.p, whole numbers below 2^19 (exact in int32): the same order, and the same first of equals, as
+    # the distances themselves, from two-dimensional sums instead of a (colours, entries, 3) array of
+    # differences (a fifth of the time; the suite's GIFs spent 1.3 s here). No matrix product: OpenBLAS's
+    # threads would spin beside the test workers.
     rgb = unpack(colours).astype(np.int32)
     pal = palette.astype(np.int32)
+    norms = (pal ** 2).sum(1)
+    r, g, b = (2 * pal[:, i] for i in range(3))
     out = np.empty(len(rgb), dtype=np.int64)
     for start in range(0, len(rgb), 4096):
         chunk = rgb[start:start + 4096]
-        d = ((chunk[:, None, :] - pal[None, :, :]) ** 2).sum(2)
+        d = norms - chunk[:, 0:1] * r
+        d -= chunk[:, 1:2] * g
+        d -= chunk[:, 2:3] * b
         out[start:start + 4096] = np.argmin(d, axis=1)
     return out

@@ -54,10 +54,29 @@ def test_default_is_a_now_gif_in_outputs_with_its_frames_and_duration(here):
     (["--frame", "rest,moving", "--v", "0.6"], "outputs/fig2_now_fps4_seconds0.5.gif"),
     (["--L", "2", "--fps", "5"], "outputs/fig2_now_L2_fps5_seconds0.5.gif"),
 ])
-def test_names_follow_plots_rule_with_the_mode_as_the_kind(here, args, path):
-    """The rate and length are named when not the defaults (25 and 6), after the other options (issue 15)."""
+def test_names_follow_plots_rule_with_the_mode_as_the_kind(here, args, path, monkeypatch):
+    """The rate and length are named when not the defaults (25 and 6), after the other options (issue 15). The name
+    is the planning's, made before anything is drawn: the images are stood in for (`_images_stood_in`), so these
+    cases cost what naming and writing cost, not five drawings (the images themselves: tests/animate, and the
+    command's real drawings in the other tests here)."""
+    _images_stood_in(monkeypatch)
     assert run("fig2", *SHORT, *args).output == f"{path}\n"
     assert (here / path).is_file()
+
+
+def _images_stood_in(monkeypatch) -> None:
+    """`animate` draws stand-ins instead of its scene: as many images as its timeline has instants (the real
+    count, checked and written as always), each 8 x 8 pixels of one grey. Everything before the drawing (options,
+    planning, the history, the timeline, the checks) and after it (the cost check, the encoder, the file) is the
+    command's own."""
+    import numpy as np
+
+    import rodparadox.animate.scenes as scenes
+
+    def images_of(history, frames, mode, style, timeline, rod_view=None):
+        return (np.full((8, 8, 3), 40 * k, dtype=np.uint8) for k in range(len(timeline)))
+
+    monkeypatch.setattr(scenes, "images_of", images_of)
 
 
 def test_boost_has_its_frame_count(here):
@@ -77,7 +96,10 @@ def test_png_writes_numbered_stills_into_a_folder_named_like_the_file(here):
     assert {n: (here / "stills" / n).read_bytes() for n in names} == before
 
 
-def test_output_file_and_folder(here):
+def test_output_file_and_folder(here, monkeypatch):
+    """Where -o puts the file: planned before anything is drawn, so the images are stood in for
+    (`_images_stood_in`, as for the names above)."""
+    _images_stood_in(monkeypatch)
     (here / "anims").mkdir()
     assert run("fig2", *SHORT, "-o", "anims").output == "anims/fig2_now_fps4_seconds0.5.gif\n"
     assert run("fig2", *SHORT, "-o", "anims/lecture.GIF").output == "anims/lecture.GIF\n"

@@ -139,7 +139,7 @@ def test_tables_go_to_a_file_atomically_and_say_unchanged(in_tmp):
 
 # --- the figure ---------------------------------------------------------------------------------------
 
-def test_the_figure_is_named_as_plot_names_its_figures_and_is_deterministic(in_tmp):
+def test_the_figure_is_named_as_plot_names_its_figures_and_is_deterministic(in_tmp, monkeypatch):
     assert run("fig2").output.startswith("fig2: v = 0.6")  # no format, no -o: the text table
     assert run("fig2", "--format", "svg").output == "outputs/fig2_ledger.svg\n"
     stamp = os.stat("outputs/fig2_ledger.svg").st_mtime_ns
@@ -148,6 +148,12 @@ def test_the_figure_is_named_as_plot_names_its_figures_and_is_deterministic(in_t
     # the file, comparing the bytes read back, showed this again; across processes: test_determinism's ledger)
     assert run("fig2", "--format", "svg").output == "outputs/fig2_ledger.svg (unchanged)\n"
     assert os.stat("outputs/fig2_ledger.svg").st_mtime_ns == stamp
+    # the other names and formats: each figure blank (an empty figure), written by its real writer
+    from matplotlib.figure import Figure
+
+    from rodparadox.render import ledger_figure
+
+    monkeypatch.setattr(ledger_figure, "draw", lambda history, frames, style: Figure(figsize=(2, 2)))
     assert run("fig2", "--v", "0.8", "--style", "print", "--format", "svg,pdf").output == (
         "outputs/fig2_ledger_v0.8_print.svg\noutputs/fig2_ledger_v0.8_print.pdf\n")
     assert run("fig2", "--frame", "moving", "-o", "m.png").output == "m.png\n"

@@ -82,7 +82,9 @@ def test_an_unchanged_figure_is_not_rewritten_and_its_path_is_printed_as_unchang
 
 
 @pytest.mark.parametrize("flag", ["-q", "--quiet"])
-def test_quiet_prints_nothing_and_still_writes(in_tmp, flag):
+def test_quiet_prints_nothing_and_still_writes(in_tmp, flag, monkeypatch):
+    """What is printed, written and then found unchanged: the figure is stood in for (`_figures_stood_in`)."""
+    _figures_stood_in(monkeypatch)
     assert run("fig2", flag).output == ""
     assert _files(in_tmp) == {"outputs/fig2.svg"}
     assert run("fig2", flag).output == ""
@@ -123,15 +125,24 @@ def test_quiet_prints_nothing_and_still_writes(in_tmp, flag):
 def test_every_non_default_option_is_in_the_file_name(options, name, monkeypatch):
     """The name is the planning's: the figure itself (drawn and checked everywhere else) is stood in for here,
     so that these 27 cases cost what naming costs, not 27 drawings."""
+    _figures_stood_in(monkeypatch)
+    assert run("fig2", *options).output == f"outputs/{name}.svg\n"
+
+
+def _figures_stood_in(monkeypatch) -> None:
+    """`plot` draws no figure: each stands in as (its history, frames, style, options), and its bytes are those of
+    its frames and style (the same figure, the same bytes; another, others). For the tests whose checks are made
+    before the drawing (names, folders, messages) or after it (what is printed, written, left unchanged): the
+    figures themselves are drawn and checked in every other test."""
     from rodparadox import render
     from sears_paradox_cli import plot
 
     monkeypatch.setattr(plot, "_figure", lambda run, frames, style, options: (run, frames, style, options))
     monkeypatch.setattr(render, "figure_bytes", lambda figure, fmt, style="default": repr(figure[1:3]).encode())
-    assert run("fig2", *options).output == f"outputs/{name}.svg\n"
 
 
-def test_several_scenarios_and_formats_in_one_call(in_tmp):
+def test_several_scenarios_and_formats_in_one_call(in_tmp, monkeypatch):
+    _blank_figures(monkeypatch)  # the planning and the writers are checked, not what is drawn
     (in_tmp / "figs").mkdir()
     shutil.copy(ROOT / "configs" / "fig1.yaml", in_tmp / "mine.yaml")
     # one panel each (--frame rest; both before): the same planning of several scenarios and formats, a third
@@ -143,22 +154,40 @@ def test_several_scenarios_and_formats_in_one_call(in_tmp):
     assert (in_tmp / "figs" / "fig2_rest.png").read_bytes().startswith(b"\x89PNG")
 
 
-def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp):
+def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp, monkeypatch):
+    _blank_figures(monkeypatch)  # the names and the format written are checked, not what is drawn
     assert run("fig1", "-o", "paper-figure.pdf").output == "paper-figure.pdf\n"
     assert (in_tmp / "paper-figure.pdf").read_bytes().startswith(b"%PDF-")
     assert run("fig1", "-o", "slide.png", "--format", "png", "--style", "slides").output == "slide.png\n"
 
 
-def test_the_default_folder_is_created_but_no_other(in_tmp):
+def _blank_figures(monkeypatch) -> None:
+    """`plot` draws each figure blank (an empty 2 x 2 inch figure) and writes it with its real writer
+    (`render.figure_bytes`): for the tests that check names and formats written, not what is drawn."""
+    from matplotlib.figure import Figure
+
+    from sears_paradox_cli import plot
+
+    monkeypatch.setattr(plot, "_figure", lambda run, frames, style, options: Figure(figsize=(2, 2)))
+
+
+def test_the_default_folder_is_created_but_no_other(in_tmp, monkeypatch):
+    _figures_stood_in(monkeypatch)
     run("fig1")
     assert (in_tmp / "outputs").is_dir()
 
 
 def test_same_scenario_twice_is_drawn_and_written_once(monkeypatch):
+    """Each draw is counted, then stood in for (an object whose figure is its scenario's name): what is drawn and
+    written is checked here, not how."""
+    from types import SimpleNamespace
+
     from rodparadox import render
 
-    real, drawn = render.draw, []
-    monkeypatch.setattr(render, "draw", lambda history, *args: drawn.append(history.scenario.name) or real(history, *args))
+    drawn = []
+    monkeypatch.setattr(render, "draw", lambda history, *args: drawn.append(history.scenario.name) or
+                        SimpleNamespace(figure=history.scenario.name))
+    monkeypatch.setattr(render, "figure_bytes", lambda figure, fmt, style="default": repr((figure, fmt)).encode())
     assert run("fig2", "fig2", "fig1", "fig2").output == "outputs/fig2.svg\noutputs/fig1.svg\n"
     assert drawn == ["fig2", "fig1"]
 
@@ -215,7 +244,8 @@ def test_bad_frame():
         "for double precision to place the events, got 1.5.")
 
 
-def test_more_panels_than_a_figure_holds():
+def test_more_panels_than_a_figure_holds(monkeypatch):
+    _figures_stood_in(monkeypatch)  # the last call's name is checked: its frames are fig2's two, drawn above
     nine = ",".join(str(k / 10) for k in range(1, 10))
     assert error_of("fig2", "--frame", nine) == (
         "option --frame: 9 different frames asked for; at most 8 panels fit in one figure.")
@@ -261,6 +291,7 @@ def test_a_failed_write_leaves_no_partial_file(in_tmp, monkeypatch):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
     monkeypatch.setattr(rodparadox.io.output.os, "replace", full_disk)
+    _figures_stood_in(monkeypatch)  # the write fails, whatever is written
     result = run("fig2", expect=1)  # the system failed, not the input: exit status 1
     assert result.output == "Error: cannot write outputs/fig2.svg: no space left on device.\n"
     assert _files(in_tmp) == set()

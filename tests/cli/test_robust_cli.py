@@ -122,9 +122,15 @@ def test_ledger_refuses_an_extension_that_contradicts_the_format(tmp_path, monke
 
 
 def test_ledger_still_writes_an_agreeing_or_unknown_extension(tmp_path, monkeypatch):
+    from rodparadox import render
+    from rodparadox.render import ledger_figure
+
     monkeypatch.chdir(tmp_path)
     run("ledger", "fig2", "-o", "x.TXT", "--format", "text")
     run("ledger", "fig2", "-o", "table.dat", "--format", "json")
+    # the figure's name is checked, not the figure (drawn and read in test_ledger_cli): it is stood in for
+    monkeypatch.setattr(ledger_figure, "draw", lambda history, frames, style: (frames, style))
+    monkeypatch.setattr(render, "figure_bytes", lambda figure, fmt, style="default": repr((figure, fmt)).encode())
     run("ledger", "fig2", "-o", "x.svg", "--format", "svg")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["table.dat", "x.TXT", "x.svg"]
     assert (tmp_path / "table.dat").read_text().startswith('{\n "format": "sears-paradox-ledger/1"')
@@ -132,8 +138,13 @@ def test_ledger_still_writes_an_agreeing_or_unknown_extension(tmp_path, monkeypa
 
 # --- item 9: handout --format tex -o DIR is DIR every time ------------------------------------------------
 
-def test_handout_tex_writes_into_the_folder_named_every_time(tmp_path):
-    """`single` in the rest frame alone (fig2 in both before): the same -o DIR handling, in fewer pieces."""
+def test_handout_tex_writes_into_the_folder_named_every_time(tmp_path, monkeypatch):
+    """`single` in the rest frame alone (fig2 in both before): the same -o DIR handling, in fewer pieces. The -o
+    DIR handling is checked, not the figures: each stands in as a few bytes (drawn in tests/handout)."""
+    import rodparadox.handout.tex
+
+    monkeypatch.setattr(rodparadox.handout.tex, "figure_pdf",
+                        lambda block, paper, style: repr((type(block).__name__, paper, style)).encode())
     folder = tmp_path / "pieces"
     first = run("handout", "single", "--frame", "rest", "--format", "tex", "-o", folder, "-q")
     second = run("handout", "single", "--frame", "rest", "--format", "tex", "-o", folder)
@@ -392,8 +403,16 @@ def test_a_long_animation_is_refused_unless_allowed(tmp_path, monkeypatch):
         "or --fps.")
     assert list(tmp_path.iterdir()) == [Path("outputs")] or [p.name for p in tmp_path.iterdir()] == ["outputs"]
     assert list((tmp_path / "outputs").iterdir()) == []
-    # a bound a short run (2 images, the fewest an animation has) passes only when allowed
+    # a bound a short run (2 images, the fewest an animation has) passes only when allowed; the bound and the
+    # refusal are what is checked, so its images are stood in for, blank, of the size just refused (the first
+    # image's drawing and the message with its size: above)
+    import numpy as np
+
+    import rodparadox.animate.scenes as scenes
+
     monkeypatch.setattr(timeline, "MAX_PIXELS", 1 * 1049 * 1101)
+    monkeypatch.setattr(scenes, "images_of", lambda history, frames, mode, style, line, rod_view=None: (
+        np.full((1101, 1049, 3), 255, dtype=np.uint8) for _ in range(len(line))))
     assert "give --allow-long" in error_of("animate", "fig2", "--fps", "2", "--seconds", "1")
     assert run("animate", "fig2", "--fps", "2", "--seconds", "1", "--allow-long").output == \
         "outputs/fig2_now_fps2_seconds1.gif\n"

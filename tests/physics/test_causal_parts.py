@@ -17,8 +17,6 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import quad_vec
-from scipy.optimize import brentq
 
 from rodparadox.errors import BeyondBounds, ScenarioError
 from rodparadox.io.scenario import load
@@ -31,6 +29,9 @@ SPEEDS = (0.05, 0.6, 0.97, 0.99, 0.999)
 
 def _root(g, lo: float, hi: float, scale: float) -> float:
     """The root of g, increasing, bracketed by widening [lo, hi] in steps of `scale`."""
+    from scipy.optimize import brentq  # scipy here, not at the top: collecting this file imports no scipy (0.35
+    # CPU-s a process: every worker collects every file, one runs this one; the package itself never imports scipy)
+
     step = scale
     while g(lo) > 0:
         lo, step = lo - step, 2 * step
@@ -47,6 +48,9 @@ def reference(history, f: float, t: float) -> np.ndarray:
     moves at rapidity th = (r+ - r-)/2 - f under compression lam = exp(-(r+ + r-)/2). Its element dX is dX/lam
     long at rest, dX/(lam cosh th) long in the frame: the densities of T = rho u u + p (u u - eta) (rho and p as
     docs/model.md gives them) per unit length of the frame times that."""
+    from scipy.integrate import quad_vec  # (see _root)
+    from scipy.optimize import brentq
+
     sol, L = history.solution, history.scenario.L
     ef = math.exp(f)
 

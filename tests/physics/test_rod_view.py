@@ -261,7 +261,9 @@ def test_the_rod_view_in_an_animation_sweeps_its_own_now_from_bottom_to_top():
 
 @functools.cache
 def _rasterised(name: str, v: float, style: str):
-    """The rigid rod's own view of a preset alone in a small figure, drawn by Agg: (axes, artists, grey levels)."""
+    """The rigid rod's own view of a preset alone in a small figure, drawn by Agg: (axes, artists, grey levels).
+    Drawn once per process (fig2 at 0.6 in the default style serves the pivot's test and the names' test); the
+    tests only read it, and the grey levels are read-only."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -272,7 +274,9 @@ def _rasterised(name: str, v: float, style: str):
     drawn = draw_rod_panel(ax, history(name, v), style)
     canvas = FigureCanvasAgg(figure)
     canvas.draw()
-    return ax, drawn, np.asarray(canvas.buffer_rgba())[:, :, :3].astype(float).mean(axis=2)  # grey level 0..255
+    grey = np.asarray(canvas.buffer_rgba())[:, :, :3].astype(float).mean(axis=2)  # grey level 0..255
+    grey.flags.writeable = False
+    return ax, drawn, grey
 
 
 def test_a_pivot_is_drawn_dotted_on_the_end_as_its_key_says_in_every_style():
