@@ -89,11 +89,7 @@ def wrap(words: Sequence[tuple], size: float, width: float) -> list[Line]:
     Each text is set once per process for its size, width and the rcParams' fonts (`_wrapped`): a worksheet and its
     key, a handout of the same run on A4 and Letter, set the same paragraphs, questions and captions again.
     """
-    value = dict.__getitem__  # the fonts `render.text_size` measures with (its cache key)
-    rc = matplotlib.rcParams
-    return list(_wrapped(tuple(words), float(size), float(width), value(rc, "mathtext.fontset"),
-                         tuple(value(rc, "font.family")), tuple(value(rc, "font.sans-serif")),
-                         tuple(value(rc, "font.serif"))))
+    return list(_wrapped(tuple(words), float(size), float(width), *render.measuring_fonts()))
 
 
 @lru_cache(maxsize=4096)  # a handout sets a few hundred texts; bounded for a long-lived process

@@ -54,7 +54,8 @@ _HOME = {
                     "rodparadox.render.rod_panel"),
     **dict.fromkeys(("LAYERS", "LEGEND", "Layer", "LayerArtists", "Options", "PanelContext"), "rodparadox.render.layers"),
     **dict.fromkeys(("approximate_size", "axis_label", "coordinate_names", "frame_symbol",
-                     "impact_text_size", "text_size", "text_size_cache_info"), "rodparadox.render.text"),
+                     "impact_text_size", "measuring_fonts", "text_size", "text_size_cache_info"),
+                    "rodparadox.render.text"),
 }
 
 __all__ = sorted(_HOME)

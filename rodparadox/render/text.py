@@ -175,11 +175,17 @@ def text_size(text: str, size: float, italic: bool = False, ismath: bool | None 
     and the renderer parses each string again, so mathtext is sized from its
     glyphs instead (`approximate_size`, `impact_text_size`).
     """
+    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath), bool(bold),
+                     *measuring_fonts())
+
+
+def measuring_fonts() -> tuple:
+    """The current rcParams' font settings that decide what `text_size` measures: the key of what is kept for
+    them (its own cache, and `handout.pdf_text.wrap`'s)."""
     value = dict.__getitem__  # the stored values, without RcParams' per-read checks: called ~10^5 times a handout
     rc = matplotlib.rcParams
-    return _measured(text, float(size), italic, is_math_text(text) if ismath is None else bool(ismath), bool(bold),
-                     value(rc, "mathtext.fontset"), tuple(value(rc, "font.family")),
-                     tuple(value(rc, "font.sans-serif")), tuple(value(rc, "font.serif")))
+    return (value(rc, "mathtext.fontset"), tuple(value(rc, "font.family")), tuple(value(rc, "font.sans-serif")),
+            tuple(value(rc, "font.serif")))
 
 
 @lru_cache(maxsize=8192)  # a figure measures a few hundred texts, a handout thousands; bounded for a long-lived process
