@@ -64,6 +64,14 @@ _tests_since_freeze = 0
 gc.disable()
 
 
+def pytest_collection_modifyitems(items):
+    """The long tests (marked `slow`) first, the rest in their files' order: the two workers take tests in this
+    order, so that the run ends with short tests on both rather than with one worker building the documentation
+    site or running the notebook while the other has nothing left (measured: one worker ended 3.5 to 4.5 s before
+    the other). `--dist loadgroup` still hands out each group (its tests together) before any single test."""
+    items.sort(key=lambda item: item.get_closest_marker("slow") is None)  # stable: the files' order kept within
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_protocol(item, nextitem):
     """Every FREEZE_EVERY tests: collect what is garbage, then freeze what survives (gc.freeze), so that the

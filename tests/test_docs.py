@@ -209,6 +209,7 @@ def documented_console_commands() -> set[str]:
 PAGES_WITH_EXAMPLES = [p for p in PAGES if blocks(p, "console") or blocks(p, "python")]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("page", PAGES_WITH_EXAMPLES, ids=_name)
 def test_every_example_runs_and_prints_what_the_page_shows(page, tmp_path, monkeypatch):
     import matplotlib.pyplot as plt
@@ -274,6 +275,7 @@ def _missing(*modules: str) -> list[str]:
     return [m for m in modules if importlib.util.find_spec(m) is None]
 
 
+@pytest.mark.slow
 def test_the_site_builds_with_warnings_as_errors_and_has_every_option(tmp_path):
     missing = _missing("sphinx", "furo", "myst_parser", "sphinx_click")
     if missing:
@@ -297,6 +299,7 @@ def test_the_site_builds_with_warnings_as_errors_and_has_every_option(tmp_path):
     assert (out / "_images").is_dir() and (out / "python.html").read_text().count('class="sig-name') >= 20
 
 
+@pytest.mark.slow
 def test_the_notebook_runs(tmp_path):
     missing = _missing("nbclient", "nbformat", "ipykernel")
     if missing:

@@ -96,6 +96,7 @@ def two_runs(tmp_path_factory) -> tuple[dict[str, bytes], dict[str, bytes]]:
     return _files(fresh), _files(here)
 
 
+@pytest.mark.slow
 def test_a_fresh_process_with_another_hash_seed_and_this_one_write_every_output_kind_with_the_same_bytes(
         tmp_path_factory):
     """One test, so that the pair of runs is made once whichever worker process takes it."""

@@ -44,6 +44,7 @@ def events_coordinates(*args) -> list[str]:
     return [cell for row in rows for cell in row[2:4]]
 
 
+@pytest.mark.slow
 def test_default_is_an_a4_pdf_in_outputs_and_the_same_bytes_twice(here):
     # `single`, the cheapest handout (one particle): the default paper and the unchanged report are the same for all
     assert run("handout", "single").output == "outputs/single_handout.pdf\n"
@@ -103,6 +104,7 @@ def test_letter_paper_and_names(fig1_fig2_letter):
         assert (float(page.mediabox.width), float(page.mediabox.height)) == (612.0, 792.0)
 
 
+@pytest.mark.slow
 def test_the_worksheets_answer_key_holds_what_its_tables_leave_blank(here):
     assert run("handout", "fig2", "--worksheet").output == "outputs/fig2_worksheet.pdf\n"
     pages = [normalised(t) for t in pages_text(here / "outputs" / "fig2_worksheet.pdf")]

@@ -347,6 +347,7 @@ NOT_FOR_A_RIGID_PLOT = ("scipy", "rodparadox.physics.causal", "rodparadox.render
                         "matplotlib.backends.backend_pdf")
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("make") is None, reason="needs make")
 def test_make_figures_has_a_rule_for_every_config_builds_in_parallel_and_then_only_what_changed(in_tmp):
     out = in_tmp / "made"

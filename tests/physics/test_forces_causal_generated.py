@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -21,6 +22,7 @@ def profiles(end):
     return force_profiles(end, -0.45)
 
 
+@pytest.mark.slow
 @given(left=st.one_of(st.none(), profiles("left")), right=st.one_of(st.none(), profiles("right")),
        v=st.floats(0.05, 0.95), t=st.floats(-2.0, 6.0), u=st.floats(-0.9, 0.9))
 def test_generated_profiles_conserve_on_slices_of_S_S_prime_and_u(left, right, v, t, u):

@@ -289,6 +289,7 @@ def profiles(end):
     return force_profiles(end, -0.9)
 
 
+@pytest.mark.slow
 @settings(deadline=None)  # a run solves the rod's ODE: milliseconds to a few tenths of a second
 @given(left=st.one_of(st.none(), profiles("left")), right=st.one_of(st.none(), profiles("right")),
        v=st.floats(0.05, 0.95), t=st.floats(-2.0, 5.0), u=st.floats(-0.9, 0.9))
