@@ -9,6 +9,7 @@ from __future__ import annotations
 import difflib
 import importlib.util
 import re
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -223,7 +224,17 @@ def _check_expanded_size(root: yaml.Node) -> None:
 
 
 def parse(text: str, source: str, default_name: str) -> Scenario:
-    """Read a scenario from YAML text; every error names `source`, the key path and its line."""
+    """Read a scenario from YAML text; every error names `source`, the key path and its line.
+
+    The same text, source and name give the same (frozen) Scenario, read once per process: PyYAML's pure-Python
+    composer takes about 5 ms a file, and a notebook or a Makefile's long-lived process (and the tests: about 600
+    commands in one process) reads the same built-in scenarios again and again. A text that is refused is read
+    again each time (an error is not kept)."""
+    return _parsed(text, source, default_name)
+
+
+@lru_cache(maxsize=256)  # a few hundred scenarios' texts, each a few hundred bytes; bounded for a long-lived process
+def _parsed(text: str, source: str, default_name: str) -> Scenario:
     try:
         document = _Document(text)
     except ScenarioError as e:
@@ -306,8 +317,10 @@ def _check_sound_speed(value: Any) -> None:
 
 # --- built-in scenarios and files ----------------------------------------------------------
 
+@lru_cache(maxsize=1)
 def configs_folder() -> Path:
-    """Where the built-in scenarios are: the repository's configs/ (installed as rodparadox.configs)."""
+    """Where the built-in scenarios are: the repository's configs/ (installed as rodparadox.configs); looked up once
+    per process (`importlib.util.find_spec` searches the path each time: about 1 ms)."""
     spec = importlib.util.find_spec("rodparadox.configs")
     if spec is not None and spec.submodule_search_locations:
         return Path(list(spec.submodule_search_locations)[0])

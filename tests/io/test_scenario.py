@@ -184,6 +184,22 @@ def test_frozen():
         s.v = 0.7
 
 
+def test_a_text_is_read_once_per_process_an_edited_file_again_and_a_refused_one_every_time(tmp_path):
+    text = "name: kept\nv: 0.3\nparticles: {B: {gap: 0.5}}\n"
+    first = parse(text, "a.yaml", "a")
+    assert parse(text, "a.yaml", "a") is first  # kept: the same frozen scenario
+    assert parse(text, "b.yaml", "b") is not first  # another source or name is read on its own
+    path = tmp_path / "s.yaml"
+    path.write_text(text)
+    assert load(str(path)).v == 0.3
+    path.write_text(text.replace("0.3", "0.4"))  # edited between two loads of one process
+    assert load(str(path)).v == 0.4
+    path.write_text("v: 0.3\nparticles: {B: {gap: -1}}\n")
+    for _ in range(2):  # refused each time, with its own sentence
+        with pytest.raises(ScenarioError, match=r"s\.yaml, line 2: "):
+            load(str(path))
+
+
 # --- the work of reading a file is bounded by its size, whatever its shape (issue 6, items 6, 7) ------------
 
 def _laughs(levels: int = 10, width: int = 9) -> str:
