@@ -7,7 +7,7 @@ The rules for examples (docs/contributing.md, "The documentation"):
   next `$ ` are exactly what it prints on standard output, and every file or folder it prints exists and is what its
   name says (SVG, PDF, PNG, GIF, HTML, JSON). `sears-paradox` runs in this process (click's runner); another
   command (`mkdir`) in a shell. `html` runs on a coarser speed grid (2 speeds, 3 ledger instants): the same
-  command and output path; tests/test_html.py checks the full page.
+  command and output path; tests/web/test_html.py checks the full page.
 * a `python` block runs in that folder; `print(...)  # -> TEXT` must print TEXT (`...` in TEXT stands for any
   text), and every file name it writes (a string ending in .png, .pdf, .svg, .gif) must exist afterwards.
 * every `sears-paradox ...` command written out in prose or in a `sh` block is parsed by the command's own options
@@ -98,6 +98,18 @@ def test_every_relative_link_of_the_readme_and_the_pages_reaches_a_file():
             if "://" in target:
                 continue
             assert (page.parent / target).exists(), f"{_name(page)} links to {target}, which does not exist"
+
+
+def test_every_test_file_the_pages_the_code_and_the_tests_name_exists():
+    """A path like tests/web/test_html.py named anywhere (the pages tell readers to run it; comments send the next
+    reader to it) is a file of the repository: when the tests moved into folders by layer, eight such names in
+    fifteen places were left pointing at files that no longer existed."""
+    sources = [*PAGES, ROOT / "pyproject.toml", ROOT / "Makefile",
+               *(p for folder in ("rodparadox", "cli", "tests") for p in (ROOT / folder).rglob("*.py"))]
+    missing = {(str(source.relative_to(ROOT)), name) for source in sources
+               for name in re.findall(r"\btests/[\w/]+\.py\b", source.read_text(encoding="utf-8"))
+               if not (ROOT / name).is_file()}
+    assert not missing, sorted(missing)
 
 
 # --- commands written out: parsed by their own options -------------------------------------------------------------

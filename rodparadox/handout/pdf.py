@@ -166,7 +166,7 @@ def page_figures(handout: Handout, paper: str = "a4", style: str = "print") -> t
 
 
 def page_plan(handout: Handout, paper: str = "a4", style: str = "print") -> PagePlan:
-    """Where each block of the handout lands on its pages (the rules of setting, tested: tests/test_page_rules.py)."""
+    """Where each block of the handout lands on its pages (the rules of setting, tested: tests/handout/test_page_rules.py)."""
     return _set_pages(handout, paper, style, drawing=False)[1]
 
 

@@ -171,7 +171,7 @@ def test_a_small_rod_gets_a_lens_with_a_round_magnification_and_a_large_one_none
             if motion.lens_title is None:  # one magnification holds the rod at every instant
                 assert hi - lo == pytest.approx(span / motion.magnification)
                 assert longest <= hi - lo  # the rod fits in the lens at every instant
-            else:  # the lens follows the rod's length (tests/test_legibility.py), in units of its half-width
+            else:  # the lens follows the rod's length (tests/render/test_legibility.py), in units of its half-width
                 assert (lo, hi) == (-1.0, 1.0)
     assert s.panels[1].lens is not None  # S' at v = 0.95: the rod is L/g = 0.31 L on a panel about 30 L wide
     big = history("fig2", 0.3)

@@ -90,7 +90,7 @@ def test_rod_key_and_option(tmp_path):
     assert "rod must be rigid or causal, got 1 (a whole number)." in run("events", str(path), expect=2).output
 
 
-def test_commands_without_both_refuse_it():  # (html takes the causal rod and both now: tests/test_html.py)
+def test_commands_without_both_refuse_it():  # (html takes the causal rod and both now: tests/web/test_html.py)
     out = run("animate", "fig1", "--rod", "both", expect=2).output
     assert "shows one rod at a time, so it does not take --rod both; run it once with --rod rigid and once with --rod causal." in out
 

@@ -74,7 +74,7 @@ def test_every_command_has_help_with_an_example_and_is_in_the_documentation(comm
 def test_every_help_example_runs_in_an_empty_folder(command, tmp_path, monkeypatch):
     """The example is what a new user types first, outside a checkout: it must work as printed."""
     monkeypatch.chdir(tmp_path)
-    if command == "html":  # the same command on a coarser speed grid (tests/test_html.py checks the full page): 0.3 s, not 3
+    if command == "html":  # the same command on a coarser speed grid (tests/web/test_html.py checks the full page): 0.3 s, not 3
         import rodparadox.web.data as web_data
 
         monkeypatch.setattr(web_data, "SPEED_STEPS", 2)

@@ -56,7 +56,7 @@ def test_default_is_an_a4_pdf_in_outputs_and_the_same_bytes_twice(here):
     assert len(reader.pages) >= 2
     stamp = os.stat(path).st_mtime_ns
     # built again in this process, the same bytes: reported unchanged and not rewritten (handout's -q is checked
-    # with its LaTeX folder, tests/test_robust_cli.py)
+    # with its LaTeX folder, tests/cli/test_robust_cli.py)
     assert run("handout", "single").output == f"{path.relative_to(here)} (unchanged)\n"
     assert os.stat(path).st_mtime_ns == stamp
 
@@ -139,7 +139,7 @@ def test_tex_writes_a_folder_of_pieces(here, monkeypatch):
     names = {p.name for p in folder.iterdir()}
     assert "handout.tex" in names
     assert any(n.endswith(".dat") for n in names) and any(n.endswith(".pdf") for n in names)
-    # a second run reports each piece unchanged: tests/test_robust_cli.py (handout --format tex -o DIR, twice)
+    # a second run reports each piece unchanged: tests/cli/test_robust_cli.py (handout --format tex -o DIR, twice)
 
 
 @pytest.mark.parametrize("args, message", [

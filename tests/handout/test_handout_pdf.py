@@ -405,7 +405,7 @@ def test_a_worksheet_question_has_ruled_lines_and_the_answer_key_its_worked_answ
     assert "Question 3." in texts[0] and "+0.882353" not in texts[0]
     assert "Question 3." in texts[1] and "It is +0.882353 (15/17)." in texts[1]
     ruled = [line for line in figures[0].findobj(Line2D) if line.get_gid() == "answer-line"]
-    assert len(ruled) >= 3  # as the last question before the key, its page's rest (tests/test_look.py)
+    assert len(ruled) >= 3  # as the last question before the key, its page's rest (tests/handout/test_look.py)
     assert not [line for line in figures[1].findobj(Line2D) if line.get_gid() == "answer-line"]
 
 

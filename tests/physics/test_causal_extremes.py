@@ -16,7 +16,7 @@ from rodparadox.physics.model import Particle, Scenario
 
 def _decimal_final_rapidity(v: float, mu: float) -> Decimal:
     """The light particle's rapidity after its contact with the resting rod, to 60 digits: psi_f = 2 atanh(k
-    exp(-2 mu)), k = tanh(th0/2), th0 = atanh(v) (the closed form of tests/test_causal.py), in exact decimals
+    exp(-2 mu)), k = tanh(th0/2), th0 = atanh(v) (the closed form of tests/physics/test_causal.py), in exact decimals
     (no underflow: Decimal's exponent reaches -999999)."""
     getcontext().prec = 60
     getcontext().Emin = -999999999
