@@ -227,9 +227,9 @@ def parse(text: str, source: str, default_name: str) -> Scenario:
     """Read a scenario from YAML text; every error names `source`, the key path and its line.
 
     The same text, source and name give the same (frozen) Scenario, read once per process: PyYAML's pure-Python
-    composer takes about 5 ms a file, and a notebook or a Makefile's long-lived process (and the tests: about 600
-    commands in one process) reads the same built-in scenarios again and again. A text that is refused is read
-    again each time (an error is not kept)."""
+    composer takes 1.2-1.6 ms for a built-in scenario, and a notebook's long-lived process (and the tests: about
+    600 commands and thousands of loads in one process) reads the same built-in scenarios again and again. A text
+    that is refused is read again each time (an error is not kept)."""
     return _parsed(text, source, default_name)
 
 
@@ -320,7 +320,7 @@ def _check_sound_speed(value: Any) -> None:
 @lru_cache(maxsize=1)
 def configs_folder() -> Path:
     """Where the built-in scenarios are: the repository's configs/ (installed as rodparadox.configs); looked up once
-    per process (`importlib.util.find_spec` searches the path each time: about 1 ms)."""
+    per process (`importlib.util.find_spec` takes 0.07 ms, and every load of a built-in and `list` ask)."""
     spec = importlib.util.find_spec("rodparadox.configs")
     if spec is not None and spec.submodule_search_locations:
         return Path(list(spec.submodule_search_locations)[0])
