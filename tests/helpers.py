@@ -50,6 +50,24 @@ def error_of(*args) -> str:
     return lines[0][len("Error: "):]
 
 
+# --- stand-ins for a drawing, where a command-line test checks names, folders or messages, not the figure -------
+
+def tex_figures_stood_in(monkeypatch) -> None:
+    """`handout --format tex` writes each figure's PDF as a few bytes naming its block, paper and style (the
+    figures are drawn and read in tests/handout and test_determinism)."""
+    import rodparadox.handout.tex
+
+    monkeypatch.setattr(rodparadox.handout.tex, "figure_pdf",
+                        lambda block, paper, style: repr((type(block).__name__, paper, style)).encode())
+
+
+def blank_figure(*args):
+    """An empty 2 x 2 inch figure, whatever it stands for: written by the real writers (`render.figure_bytes`)."""
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(2, 2))
+
+
 # --- shared by test_cli.py, test_animate_cli.py, test_robust_cli.py  ---------------------------------
 
 #: runs several command lines one after another in one interpreter (argv[1]: JSON list of argvs, argv[2]: the

@@ -12,6 +12,8 @@ from click.testing import CliRunner
 
 from sears_paradox_cli.main import main
 
+from helpers import tex_figures_stood_in
+
 pypdf = pytest.importorskip("pypdf")
 
 
@@ -129,10 +131,7 @@ def test_several_scenarios_make_one_document_with_a_section_each(fig1_fig2_lette
 def test_tex_writes_a_folder_of_pieces(here, monkeypatch):
     """The pieces' names: each figure stands in as a few bytes (its pieces are drawn and read in tests/handout and
     test_determinism)."""
-    import rodparadox.handout.tex
-
-    monkeypatch.setattr(rodparadox.handout.tex, "figure_pdf",
-                        lambda block, paper, style: repr((type(block).__name__, paper, style)).encode())
+    tex_figures_stood_in(monkeypatch)
     out = run("handout", "fig2", "--format", "tex").output.splitlines()
     folder = here / "outputs" / "fig2_handout"
     assert "outputs/fig2_handout/handout.tex" in out

@@ -21,6 +21,8 @@ from rodparadox.io.scenario import load
 from sears_paradox_cli.ledger import ledger
 from sears_paradox_cli.main import main
 
+from helpers import blank_figure
+
 ROOT = Path(__file__).resolve().parents[2]
 #: the ledger's page of the documentation
 LEDGER_PAGE = (ROOT / "docs" / "ledger.md").read_text()
@@ -149,11 +151,9 @@ def test_the_figure_is_named_as_plot_names_its_figures_and_is_deterministic(in_t
     assert run("fig2", "--format", "svg").output == "outputs/fig2_ledger.svg (unchanged)\n"
     assert os.stat("outputs/fig2_ledger.svg").st_mtime_ns == stamp
     # the other names and formats: each figure blank (an empty figure), written by its real writer
-    from matplotlib.figure import Figure
-
     from rodparadox.render import ledger_figure
 
-    monkeypatch.setattr(ledger_figure, "draw", lambda history, frames, style: Figure(figsize=(2, 2)))
+    monkeypatch.setattr(ledger_figure, "draw", blank_figure)
     assert run("fig2", "--v", "0.8", "--style", "print", "--format", "svg,pdf").output == (
         "outputs/fig2_ledger_v0.8_print.svg\noutputs/fig2_ledger_v0.8_print.pdf\n")
     assert run("fig2", "--frame", "moving", "-o", "m.png").output == "m.png\n"

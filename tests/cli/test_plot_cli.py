@@ -22,6 +22,8 @@ from click.testing import CliRunner
 from sears_paradox_cli.main import main
 from sears_paradox_cli.plot import plot
 
+from helpers import blank_figure
+
 ROOT = Path(__file__).resolve().parents[2]
 #: plot's page of the documentation
 PLOT_PAGE = (ROOT / "docs" / "plot.md").read_text()
@@ -164,11 +166,9 @@ def test_o_may_name_the_file_and_its_extension_gives_the_format(in_tmp, monkeypa
 def _blank_figures(monkeypatch) -> None:
     """`plot` draws each figure blank (an empty 2 x 2 inch figure) and writes it with its real writer
     (`render.figure_bytes`): for the tests that check names and formats written, not what is drawn."""
-    from matplotlib.figure import Figure
-
     from sears_paradox_cli import plot
 
-    monkeypatch.setattr(plot, "_figure", lambda run, frames, style, options: Figure(figsize=(2, 2)))
+    monkeypatch.setattr(plot, "_figure", blank_figure)
 
 
 def test_the_default_folder_is_created_but_no_other(in_tmp, monkeypatch):

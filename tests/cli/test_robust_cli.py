@@ -14,7 +14,7 @@ import pytest
 from click.testing import CliRunner
 
 from helpers import SHARED_PROCESS_GROUP, register_shared_process, shared_process
-from helpers import error_of, run
+from helpers import error_of, run, tex_figures_stood_in
 from sears_paradox_cli.main import main
 
 
@@ -141,10 +141,7 @@ def test_ledger_still_writes_an_agreeing_or_unknown_extension(tmp_path, monkeypa
 def test_handout_tex_writes_into_the_folder_named_every_time(tmp_path, monkeypatch):
     """`single` in the rest frame alone (fig2 in both before): the same -o DIR handling, in fewer pieces. The -o
     DIR handling is checked, not the figures: each stands in as a few bytes (drawn in tests/handout)."""
-    import rodparadox.handout.tex
-
-    monkeypatch.setattr(rodparadox.handout.tex, "figure_pdf",
-                        lambda block, paper, style: repr((type(block).__name__, paper, style)).encode())
+    tex_figures_stood_in(monkeypatch)
     folder = tmp_path / "pieces"
     first = run("handout", "single", "--frame", "rest", "--format", "tex", "-o", folder, "-q")
     second = run("handout", "single", "--frame", "rest", "--format", "tex", "-o", folder)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import functools
 
 from rodparadox.io.scenario import load
-from rodparadox.physics.models import models_of, run_forces, run_rods
+from rodparadox.physics.models import models_of, run_rods
 
 
 @functools.lru_cache(maxsize=None)
@@ -21,9 +21,8 @@ def rods(name: str, v: float, which: str = "both") -> tuple:
     the handout's caches (`handout.forces_reading.read`, the causal ledger's slices) are keyed on them: one run
     here, one reading for every document built of it in the process.
 
-    A driven rod is run per model as `run_rods` runs it (`run_forces(scenario.with_overrides(rod=model))` for each
-    model of `which`: nothing placed, so the models' runs are independent), each once (`driven`): `rods(name, v,
-    "rigid")` is the rigid rod of `rods(name, v, "both")`, run and read once."""
+    A driven rod is run one model at a time (`driven`: nothing is placed, so the models' runs are independent), each
+    once: `rods(name, v, "rigid")` is the rigid rod of `rods(name, v, "both")`, run and read once."""
     scenario = load(name).with_overrides(v=v)
     if scenario.forces is not None:
         return tuple(driven(name, v, model) for model in models_of(which, scenario))
@@ -32,9 +31,9 @@ def rods(name: str, v: float, which: str = "both") -> tuple:
 
 @functools.lru_cache(maxsize=None)
 def driven(name: str, v: float, model: str):
-    """A driven preset's rod of one model at v, as `run_rods` runs it: `run_forces(load(name).with_overrides(v=v)
-    .with_overrides(rod=model))`."""
-    return run_forces(load(name).with_overrides(v=v).with_overrides(rod=model))
+    """A driven preset's rod of one model at v: `run_rods(load(name).with_overrides(v=v), model)`, its only rod."""
+    [rod] = run_rods(load(name).with_overrides(v=v), model)
+    return rod
 
 
 @functools.lru_cache(maxsize=None)
